@@ -1,0 +1,51 @@
+// Static (steady) solves of a SystemOperator, F(t, y, 0) = 0, with SUNDIALS KINSOL: Newton's
+// method with an exact Jacobian (rebuilt every iteration), KLU, and optional line search.
+#pragma once
+#include <exception>
+
+#include "core/system_operator.hpp"
+#include "solvers/sundials_handles.hpp"
+
+namespace rfmems {
+
+struct KinsolOptions {
+  // Converged when ||F||_inf <= relative_tolerance * ||F(y0)||_inf (scaled by KINSOL's fscale).
+  Real relative_tolerance = 1e-9;
+  int max_iterations = 50;
+  bool line_search = false;
+  Real max_newton_step = 0;  // 0: KINSOL's default scaled by the problem (see solve())
+};
+
+struct NonlinearStats {
+  long newton_iters = 0, residual_evals = 0, jacobian_evals = 0, linear_iters = 0;
+  Real initial_residual = 0, final_residual = 0;
+};
+
+class KinsolSolver {
+ public:
+  KinsolSolver(SystemOperator& op, const KinsolOptions& options);
+  ~KinsolSolver();
+  KinsolSolver(const KinsolSolver&) = delete;
+  KinsolSolver& operator=(const KinsolSolver&) = delete;
+
+  // Solves F(t, y, 0) = 0 starting from y (overwritten with the solution).
+  NonlinearStats solve(Real t, std::span<Real> y);
+
+ private:
+  static int residual_trampoline(N_Vector y, N_Vector f, void* self);
+  static int jacobian_trampoline(N_Vector y, N_Vector f, SUNMatrix J, void* self, N_Vector,
+                                 N_Vector);
+
+  SystemOperator& op_;
+  KinsolOptions options_;
+  sundials::Context ctx_;
+  sundials::Vector y_, scale_u_, scale_f_, zero_;
+  sundials::Matrix jac_;
+  sundials::LinearSolver solver_;
+  void* mem_ = nullptr;
+  Real t_ = 0;
+  long residual_calls_ = 0;
+  std::exception_ptr pending_;
+};
+
+}  // namespace rfmems
