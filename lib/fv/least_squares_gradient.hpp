@@ -7,6 +7,12 @@
 // (Dirichlet, symmetry); boundary faces left out (traction) are extrapolated implicitly, which
 // leaves the fit unchanged. Storing g_j lets an operator both evaluate the gradient and
 // differentiate it exactly (the analytic Jacobian).
+//
+// Cells that touch the boundary use a quadratic fit over two rings of neighbours instead:
+// their linear stencil is one-sided, which makes the gradient only first-order accurate
+// there; in bending this error acts as a spurious couple at free edges that grows like
+// (cell length / thickness)^2. The quadratic fit keeps the gradient exact for quadratic
+// fields (pure bending) and the stencil form unchanged.
 #pragma once
 #include <functional>
 #include <span>
@@ -18,7 +24,7 @@ namespace rfmems {
 
 struct GradientNeighbour {
   Index face;  // the face crossed to reach the neighbour
-  Index cell;  // neighbour cell, or -1 for a boundary-face value
+  Index cell;  // neighbour cell, or -1 for a boundary-face value (then `face` is that face)
   Vec3 weight; // g_j
 };
 

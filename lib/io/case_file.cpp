@@ -37,7 +37,9 @@ std::string join_key(const std::string& path, const std::string& key) {
   return path.empty() ? key : path + "." + key;
 }
 
-std::string join_index(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
+std::string join_index(const std::string& path, std::size_t i) {
+  return path + "[" + std::to_string(i) + "]";
+}
 
 // The value as shown in messages: numbers bare, other scalars quoted, collections in YAML
 // flow style; one line, cut if long.
@@ -65,8 +67,8 @@ void validate_tree(const YAML::Node& node, const std::string& path, const std::s
     std::set<std::string> seen;
     for (const auto& kv : node) {
       if (!kv.first.IsScalar())
-        throw InputError(fmt::format("{}: key {} in '{}' is not a plain name", file, describe(kv.first),
-                                     path.empty() ? "(top level)" : path));
+        throw InputError(fmt::format("{}: key {} in '{}' is not a plain name", file,
+                                     describe(kv.first), path.empty() ? "(top level)" : path));
       const std::string key = join_key(path, kv.first.Scalar());
       if (!seen.insert(kv.first.Scalar()).second)
         throw InputError(fmt::format("{}: key '{}' appears twice", file, key));
@@ -95,7 +97,8 @@ std::optional<std::string> first_unused(const YAML::Node& node, const std::strin
 
 std::string read_file(const std::string& path) {
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, not a case file");
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path + ": is a directory, not a case file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open the case file");
   std::ostringstream text;
@@ -109,7 +112,8 @@ YAML::Node parse_yaml(const std::string& text, const std::string& where) {
     return YAML::Load(text);
   } catch (const YAML::Exception& e) {
     if (e.mark.is_null()) throw InputError(fmt::format("{}: {}", where, e.msg));
-    throw InputError(fmt::format("{}: line {}, column {}: {}", where, e.mark.line + 1, e.mark.column + 1, e.msg));
+    throw InputError(fmt::format("{}: line {}, column {}: {}", where, e.mark.line + 1,
+                                 e.mark.column + 1, e.msg));
   }
 }
 
@@ -170,9 +174,11 @@ void apply_override(detail::CaseState& state, const std::string& override_text) 
   const std::string key_text = eq == std::string::npos ? "" : override_text.substr(0, eq);
   const std::vector<PathToken> tokens = split_override_path(key_text);
   if (eq == std::string::npos || tokens.empty())
-    throw InputError(fmt::format("{}: malformed override '{}' (expected dotted.key=value)", state.file, override_text));
+    throw InputError(fmt::format("{}: malformed override '{}' (expected dotted.key=value)",
+                                 state.file, override_text));
   const std::string full = path_string(tokens, tokens.size());
-  const std::string where = fmt::format("{}: key '{}' in override '{}'", state.file, full, override_text);
+  const std::string where =
+      fmt::format("{}: key '{}' in override '{}'", state.file, full, override_text);
   const YAML::Node value = parse_yaml(override_text.substr(eq + 1), where);
 
   YAML::Node node = state.root;  // handles share the tree: assignments below edit it
@@ -185,7 +191,8 @@ void apply_override(detail::CaseState& state, const std::string& override_text) 
       const auto index = as_index(tokens[t]);
       if (!index) throw InputError(fmt::format("{}: '{}' is a sequence, not a map", where, parent));
       if (*index >= node.size())
-        throw InputError(fmt::format("{}: '{}' has no item {} (it has {})", where, parent, *index, node.size()));
+        throw InputError(
+            fmt::format("{}: '{}' has no item {} (it has {})", where, parent, *index, node.size()));
       if (last) {
         node[*index] = value;
         return;
@@ -194,7 +201,8 @@ void apply_override(detail::CaseState& state, const std::string& override_text) 
       found = true;
     } else if (node.IsMap() || (node.IsNull() && t > 0)) {
       const auto* key = std::get_if<std::string>(&tokens[t]);
-      if (key == nullptr) throw InputError(fmt::format("{}: '{}' is a map, not a sequence", where, parent));
+      if (key == nullptr)
+        throw InputError(fmt::format("{}: '{}' is a map, not a sequence", where, parent));
       if (last) {
         node[*key] = value;  // replaces, or adds at the end of the map
         return;
@@ -209,7 +217,8 @@ void apply_override(detail::CaseState& state, const std::string& override_text) 
     } else {
       throw InputError(fmt::format("{}: '{}' is not a map", where, parent));
     }
-    if (!found) throw InputError(fmt::format("{}: '{}' does not exist", where, path_string(tokens, t + 1)));
+    if (!found)
+      throw InputError(fmt::format("{}: '{}' does not exist", where, path_string(tokens, t + 1)));
     node.reset(next);
   }
 }
@@ -227,7 +236,8 @@ bool Range::contains(double x) const {
 std::string Range::describe() const {
   const bool has_min = std::isfinite(min), has_max = std::isfinite(max);
   if (has_min && has_max)
-    return fmt::format("must be in {}{}, {}{}", min_open ? "(" : "[", min, max, max_open ? ")" : "]");
+    return fmt::format("must be in {}{}, {}{}", min_open ? "(" : "[", min, max,
+                       max_open ? ")" : "]");
   if (has_min) return fmt::format("must be {} {}", min_open ? ">" : ">=", min);
   if (has_max) return fmt::format("must be {} {}", max_open ? "<" : "<=", max);
   return "must be a number";
@@ -308,12 +318,13 @@ CaseNode CaseNode::item(std::size_t i) const {
 // ---- CaseNode: errors ---------------------------------------------------------------------
 
 void CaseNode::fail(const std::string& key, const std::string& what) const {
-  YAML::Node value;
+  std::optional<YAML::Node> value;
   if (!absent(node_) && node_.IsMap())
     for (const auto& kv : node_)
-      if (kv.first.Scalar() == key) value.reset(kv.second);  // reset: '=' would edit the tree
-  if (absent(value)) throw InputError(fmt::format("{}: key '{}': {}", file(), key_path(key), what));
-  throw InputError(fmt::format("{}: key '{}' = {}: {}", file(), key_path(key), describe(value), what));
+      if (kv.first.Scalar() == key) value.emplace(kv.second);
+  if (!value) throw InputError(fmt::format("{}: key '{}': {}", file(), key_path(key), what));
+  throw InputError(
+      fmt::format("{}: key '{}' = {}: {}", file(), key_path(key), describe(*value), what));
 }
 
 void CaseNode::require(bool condition, const std::string& key, const std::string& what) const {
@@ -327,7 +338,8 @@ void CaseNode::fail(const std::string& what) const {
 
 // ---- CaseNode: conversions ----------------------------------------------------------------
 
-std::string CaseNode::scalar_text(const std::string& key, const YAML::Node& value, const char* expected) const {
+std::string CaseNode::scalar_text(const std::string& key, const YAML::Node& value,
+                                  const char* expected) const {
   if (!value.IsScalar()) fail(key, expected);
   return value.Scalar();
 }
@@ -347,7 +359,8 @@ long CaseNode::to_int(const std::string& key, const YAML::Node& value) const {
   if (r.ec == std::errc() && r.ptr == digits.data() + digits.size() && !digits.empty()) return n;
   // Also accept reals with an integral value, e.g. "1e6".
   double x = 0.0;
-  if (parse_real(text, x) && x == std::floor(x) && std::abs(x) < 9.0e15) return static_cast<long>(x);
+  if (parse_real(text, x) && x == std::floor(x) && std::abs(x) < 9.0e15)
+    return static_cast<long>(x);
   fail(key, "expected an integer");
 }
 
@@ -365,8 +378,8 @@ void CaseNode::check_range(const std::string& key, Real x, const Range& range) c
 }
 
 Vec3 CaseNode::to_vec3(const std::string& key, const YAML::Node& value, const Dimension* d) const {
-  const std::string expected =
-      d ? "expected a sequence of 2 or 3 " + dimension_name(*d) + "s" : "expected a sequence of 2 or 3 numbers";
+  const std::string expected = d ? "expected a sequence of 2 or 3 " + dimension_name(*d) + "s"
+                                 : "expected a sequence of 2 or 3 numbers";
   if (!value.IsSequence() || value.size() < 2 || value.size() > 3) fail(key, expected);
   Vec3 v = Vec3::Zero();
   for (std::size_t i = 0; i < value.size(); ++i) {
@@ -449,7 +462,8 @@ std::string CaseNode::get_string(const std::string& key, const std::string& defa
   return absent(v) ? default_value : scalar_text(key, v, "expected a string");
 }
 
-std::string CaseNode::get_choice(const std::string& key, const std::vector<std::string>& allowed) const {
+std::string CaseNode::get_choice(const std::string& key,
+                                 const std::vector<std::string>& allowed) const {
   const std::string s = get_string(key);
   if (std::find(allowed.begin(), allowed.end(), s) == allowed.end())
     fail(key, fmt::format("expected one of: {}", fmt::join(allowed, ", ")));
@@ -476,7 +490,8 @@ Real CaseNode::get_quantity(const std::string& key, Dimension d, const Range& ra
   return x;
 }
 
-Real CaseNode::get_quantity(const std::string& key, Dimension d, Real default_value, const Range& range) const {
+Real CaseNode::get_quantity(const std::string& key, Dimension d, Real default_value,
+                            const Range& range) const {
   const YAML::Node v = lookup(key);
   if (absent(v)) return default_value;
   const Real x = to_quantity(key, v, d);
@@ -484,7 +499,9 @@ Real CaseNode::get_quantity(const std::string& key, Dimension d, Real default_va
   return x;
 }
 
-Vec3 CaseNode::get_vec3(const std::string& key) const { return to_vec3(key, require_key(key), nullptr); }
+Vec3 CaseNode::get_vec3(const std::string& key) const {
+  return to_vec3(key, require_key(key), nullptr);
+}
 
 Vec3 CaseNode::get_vec3(const std::string& key, const Vec3& default_value) const {
   const YAML::Node v = lookup(key);
@@ -500,7 +517,8 @@ std::vector<Real> CaseNode::get_reals(const std::string& key) const {
   if (!v.IsSequence()) fail(key, "expected a sequence of numbers");
   std::vector<Real> out(v.size());
   for (std::size_t i = 0; i < v.size(); ++i)
-    if (!v[i].IsScalar() || !parse_real(v[i].Scalar(), out[i])) fail(key, "expected a sequence of numbers");
+    if (!v[i].IsScalar() || !parse_real(v[i].Scalar(), out[i]))
+      fail(key, "expected a sequence of numbers");
   return out;
 }
 
@@ -537,7 +555,8 @@ CaseFile CaseFile::load(const std::string& path, const std::vector<std::string>&
   return parse(read_file(path), path, overrides);
 }
 
-CaseFile CaseFile::parse(const std::string& text, const std::string& name, const std::vector<std::string>& overrides) {
+CaseFile CaseFile::parse(const std::string& text, const std::string& name,
+                         const std::vector<std::string>& overrides) {
   auto state = std::make_shared<detail::CaseState>();
   state->file = name;
   state->text = text;

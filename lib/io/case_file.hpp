@@ -10,12 +10,12 @@
 //
 // Sequence items get paths like 'probes[0].name'.
 #pragma once
+#include <yaml-cpp/yaml.h>
+
 #include <limits>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include <yaml-cpp/yaml.h>
 
 #include "core/error.hpp"
 #include "core/types.hpp"
@@ -31,7 +31,9 @@ struct Range {
   bool max_open = false;
 
   static Range positive() { return {0.0, std::numeric_limits<double>::infinity(), true, false}; }
-  static Range non_negative() { return {0.0, std::numeric_limits<double>::infinity(), false, false}; }
+  static Range non_negative() {
+    return {0.0, std::numeric_limits<double>::infinity(), false, false};
+  }
   static Range closed(double a, double b) { return {a, b, false, false}; }
   static Range open(double a, double b) { return {a, b, true, true}; }
 
@@ -100,7 +102,8 @@ class CaseNode {
   Real get_quantity(const std::string& key, Dimension d) const;
   Real get_quantity(const std::string& key, Dimension d, Real default_value) const;
   Real get_quantity(const std::string& key, Dimension d, const Range& range) const;
-  Real get_quantity(const std::string& key, Dimension d, Real default_value, const Range& range) const;
+  Real get_quantity(const std::string& key, Dimension d, Real default_value,
+                    const Range& range) const;
 
   // A sequence of 2 or 3 numbers; a missing z is 0.
   Vec3 get_vec3(const std::string& key) const;
@@ -132,7 +135,8 @@ class CaseNode {
   long to_int(const std::string& key, const YAML::Node& value) const;
   Real to_quantity(const std::string& key, const YAML::Node& value, Dimension d) const;
   void check_range(const std::string& key, Real x, const Range& range) const;
-  std::string scalar_text(const std::string& key, const YAML::Node& value, const char* expected) const;
+  std::string scalar_text(const std::string& key, const YAML::Node& value,
+                          const char* expected) const;
   Vec3 to_vec3(const std::string& key, const YAML::Node& value, const Dimension* d) const;
 
   std::shared_ptr<detail::CaseState> state_;

@@ -22,14 +22,16 @@ H5Handle vlen_utf8_type(const std::string& file) {
 }
 
 // Creates attribute `name` on object (replacing one of that name) and writes data to it.
-void put_attribute(hid_t object, const std::string& name, hid_t file_type, hid_t mem_type, hid_t space,
-                   const void* data, const std::string& file) {
+void put_attribute(hid_t object, const std::string& name, hid_t file_type, hid_t mem_type,
+                   hid_t space, const void* data, const std::string& file) {
   const std::string what = "writing attribute '" + name + "'";
   const htri_t exists = H5Aexists(object, name.c_str());
   check_status(exists < 0 ? -1 : 0, file, what);
   if (exists > 0) check_status(H5Adelete(object, name.c_str()), file, what);
-  H5Handle attr(check_id(H5Acreate2(object, name.c_str(), file_type, space, H5P_DEFAULT, H5P_DEFAULT), file, what),
-                H5Aclose);
+  H5Handle attr(
+      check_id(H5Acreate2(object, name.c_str(), file_type, space, H5P_DEFAULT, H5P_DEFAULT), file,
+               what),
+      H5Aclose);
   check_status(H5Awrite(attr.get(), mem_type, data), file, what);
 }
 
@@ -46,7 +48,8 @@ std::string hdf5_error_message() {
 hid_t check_id(hid_t id, const std::string& file, const std::string& what) {
   if (id < 0) {
     const std::string detail = hdf5_error_message();
-    throw std::runtime_error(file + ": HDF5 error while " + what + (detail.empty() ? "" : ": " + detail));
+    throw std::runtime_error(file + ": HDF5 error while " + what +
+                             (detail.empty() ? "" : ": " + detail));
   }
   return id;
 }
@@ -54,7 +57,8 @@ hid_t check_id(hid_t id, const std::string& file, const std::string& what) {
 void check_status(herr_t status, const std::string& file, const std::string& what) {
   if (status < 0) {
     const std::string detail = hdf5_error_message();
-    throw std::runtime_error(file + ": HDF5 error while " + what + (detail.empty() ? "" : ": " + detail));
+    throw std::runtime_error(file + ": HDF5 error while " + what +
+                             (detail.empty() ? "" : ": " + detail));
   }
 }
 
@@ -63,12 +67,14 @@ void write_attribute(hid_t object, const std::string& name, double value, const 
   put_attribute(object, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, space.get(), &value, file);
 }
 
-void write_attribute(hid_t object, const std::string& name, long long value, const std::string& file) {
+void write_attribute(hid_t object, const std::string& name, long long value,
+                     const std::string& file) {
   H5Handle space(check_id(H5Screate(H5S_SCALAR), file, "creating a dataspace"), H5Sclose);
   put_attribute(object, name, H5T_STD_I64LE, H5T_NATIVE_LLONG, space.get(), &value, file);
 }
 
-void write_attribute(hid_t object, const std::string& name, const std::string& value, const std::string& file) {
+void write_attribute(hid_t object, const std::string& name, const std::string& value,
+                     const std::string& file) {
   H5Handle space(check_id(H5Screate(H5S_SCALAR), file, "creating a dataspace"), H5Sclose);
   const H5Handle type = vlen_utf8_type(file);
   const char* text = value.c_str();
@@ -78,7 +84,8 @@ void write_attribute(hid_t object, const std::string& name, const std::string& v
 void write_attribute(hid_t object, const std::string& name, const std::vector<std::string>& value,
                      const std::string& file) {
   const hsize_t n = value.size();
-  H5Handle space(check_id(H5Screate_simple(1, &n, nullptr), file, "creating a dataspace"), H5Sclose);
+  H5Handle space(check_id(H5Screate_simple(1, &n, nullptr), file, "creating a dataspace"),
+                 H5Sclose);
   const H5Handle type = vlen_utf8_type(file);
   std::vector<const char*> texts;
   for (const auto& s : value) texts.push_back(s.c_str());
@@ -86,18 +93,19 @@ void write_attribute(hid_t object, const std::string& name, const std::vector<st
 }
 
 H5Handle write_dataset(hid_t location, const std::string& path, hid_t mem_type, const void* data,
-                   const std::vector<hsize_t>& shape, const std::string& file) {
+                       const std::vector<hsize_t>& shape, const std::string& file) {
   const std::string what = "writing dataset '" + path + "'";
-  H5Handle space(check_id(H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr), file, what),
-                 H5Sclose);
+  H5Handle space(
+      check_id(H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr), file, what),
+      H5Sclose);
   H5Handle link_props(check_id(H5Pcreate(H5P_LINK_CREATE), file, what), H5Pclose);
   check_status(H5Pset_create_intermediate_group(link_props.get(), 1), file, what);
   // Stored little-endian whatever the machine, like the rest of the file.
-  const hid_t file_type = H5Tequal(mem_type, H5T_NATIVE_DOUBLE) > 0 ? H5T_IEEE_F64LE
+  const hid_t file_type = H5Tequal(mem_type, H5T_NATIVE_DOUBLE) > 0  ? H5T_IEEE_F64LE
                           : H5Tequal(mem_type, H5T_NATIVE_INT64) > 0 ? H5T_STD_I64LE
-                                                                       : mem_type;
-  H5Handle set(check_id(H5Dcreate2(location, path.c_str(), file_type, space.get(), link_props.get(), H5P_DEFAULT,
-                                   H5P_DEFAULT),
+                                                                     : mem_type;
+  H5Handle set(check_id(H5Dcreate2(location, path.c_str(), file_type, space.get(), link_props.get(),
+                                   H5P_DEFAULT, H5P_DEFAULT),
                         file, what),
                H5Dclose);
   hsize_t count = 1;

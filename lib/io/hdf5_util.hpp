@@ -58,8 +58,10 @@ void check_status(herr_t status, const std::string& file, const std::string& wha
 // Attribute writers: an existing attribute of the same name is replaced. `file` is only for
 // messages. Strings are variable-length UTF-8 (h5py reads them as str, any length).
 void write_attribute(hid_t object, const std::string& name, double value, const std::string& file);
-void write_attribute(hid_t object, const std::string& name, long long value, const std::string& file);
-void write_attribute(hid_t object, const std::string& name, const std::string& value, const std::string& file);
+void write_attribute(hid_t object, const std::string& name, long long value,
+                     const std::string& file);
+void write_attribute(hid_t object, const std::string& name, const std::string& value,
+                     const std::string& file);
 void write_attribute(hid_t object, const std::string& name, const std::vector<std::string>& value,
                      const std::string& file);
 
@@ -67,6 +69,6 @@ void write_attribute(hid_t object, const std::string& name, const std::vector<st
 // contiguous row-major data of the given shape; mem_type e.g. H5T_NATIVE_DOUBLE. Returns the
 // open dataset (for attributes).
 H5Handle write_dataset(hid_t location, const std::string& path, hid_t mem_type, const void* data,
-                   const std::vector<hsize_t>& shape, const std::string& file);
+                       const std::vector<hsize_t>& shape, const std::string& file);
 
 }  // namespace rfmems

@@ -1,9 +1,8 @@
 // The one-object JSON summary each driver prints with --json (and may save to a file).
 // The type is nlohmann::json; this file adds only output helpers.
 #pragma once
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 namespace rfmems {
 

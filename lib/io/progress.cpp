@@ -22,7 +22,9 @@ std::string format_duration(double s) {
   return fmt::format("{}h{:02}m", total / 3600, (total % 3600) / 60);
 }
 
-double seconds(std::chrono::steady_clock::duration d) { return std::chrono::duration<double>(d).count(); }
+double seconds(std::chrono::steady_clock::duration d) {
+  return std::chrono::duration<double>(d).count();
+}
 
 }  // namespace
 
@@ -42,7 +44,8 @@ ProgressReporter::~ProgressReporter() {
 std::string ProgressReporter::line(Clock::time_point now) const {
   std::string s = fmt::format("t = {:.4g} s", t_);
   if (t_end_ > 0) s += fmt::format(" / {:.4g} s ({:.1f}%)", t_end_, 100.0 * t_ / t_end_);
-  s += fmt::format("  h = {:.3g} s  steps {}  elapsed {}", h_, steps_, format_duration(seconds(now - start_)));
+  s += fmt::format("  h = {:.3g} s  steps {}  elapsed {}", h_, steps_,
+                   format_duration(seconds(now - start_)));
   if (t_end_ > 0 && !finished_) {
     const double dt_wall = seconds(now - wall_first_), dt_sim = t_ - t_first_;
     const double left = dt_sim > 0 && dt_wall > 0 ? (t_end_ - t_) * dt_wall / dt_sim : -1.0;

@@ -42,12 +42,14 @@ class ResultWriter {
   // give z even in 2D), 6 (symmetric tensor, Voigt order xx yy zz yz xz xy) or 9.
   // All fields of one step_index must share its time. component_names, if given, is stored
   // as the dataset attribute "components".
-  void write_cell_field_at(int step_index, double time, const std::string& name, const std::vector<double>& values,
-                           int n_components, const std::vector<std::string>& component_names = {});
+  void write_cell_field_at(int step_index, double time, const std::string& name,
+                           const std::vector<double>& values, int n_components,
+                           const std::vector<std::string>& component_names = {});
 
   // Writes /<group>/<name>/time (n_t) and /<group>/<name>/values (n_t × n_comp; values[i]
   // is the sample at t[i], all of the same length). group may be nested ("stats/solver").
-  void write_time_series(const std::string& group, const std::string& name, const std::vector<double>& t,
+  void write_time_series(const std::string& group, const std::string& name,
+                         const std::vector<double>& t,
                          const std::vector<std::vector<double>>& values,
                          const std::vector<std::string>& component_names = {});
 

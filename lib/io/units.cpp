@@ -96,7 +96,10 @@ std::string normalise_symbol(std::string_view s) {
       out += static_cast<char>(c);
     }
   }
-  if (out.size() >= 2 && out.ends_with("m3")) out.insert(out.size() - 1, "^");
+  if (out.ends_with("m3")) {
+    out.pop_back();
+    out += "^3";
+  }
   return out;
 }
 
@@ -129,19 +132,32 @@ std::size_t parse_leading_real(std::string_view s, double& value) {
 
 std::string dimension_name(Dimension d) {
   switch (d) {
-    case D::Dimensionless: return "dimensionless number";
-    case D::Length: return "length";
-    case D::Pressure: return "pressure";
-    case D::Time: return "time";
-    case D::Density: return "density";
-    case D::Force: return "force";
-    case D::ForcePerLength: return "force per length";
-    case D::Voltage: return "voltage";
-    case D::Frequency: return "frequency";
-    case D::Mass: return "mass";
-    case D::Temperature: return "temperature";
-    case D::Velocity: return "velocity";
-    case D::Viscosity: return "viscosity";
+    case D::Dimensionless:
+      return "dimensionless number";
+    case D::Length:
+      return "length";
+    case D::Pressure:
+      return "pressure";
+    case D::Time:
+      return "time";
+    case D::Density:
+      return "density";
+    case D::Force:
+      return "force";
+    case D::ForcePerLength:
+      return "force per length";
+    case D::Voltage:
+      return "voltage";
+    case D::Frequency:
+      return "frequency";
+    case D::Mass:
+      return "mass";
+    case D::Temperature:
+      return "temperature";
+    case D::Velocity:
+      return "velocity";
+    case D::Viscosity:
+      return "viscosity";
   }
   return "quantity";
 }
@@ -178,8 +194,9 @@ double parse_quantity(std::string_view text, Dimension expected) {
   const std::size_t used = parse_leading_real(text, number);
   if (used == 0 || !std::isfinite(number)) {
     if (expected == D::Dimensionless) throw std::invalid_argument("expected a number");
-    throw std::invalid_argument("expected " + with_article(expected) + ", a number with an optional unit (" +
-                                example_units(expected) + ")");
+    throw std::invalid_argument("expected " + with_article(expected) +
+                                ", a number with an optional unit (" + example_units(expected) +
+                                ")");
   }
   const std::string_view symbol = trim(text.substr(used));
   if (symbol.empty()) return number;  // SI
@@ -187,13 +204,14 @@ double parse_quantity(std::string_view text, Dimension expected) {
   const Unit* unit = find_unit(symbol);
   if (unit == nullptr) {
     if (expected == D::Dimensionless)
-      throw std::invalid_argument("unknown unit '" + std::string(symbol) + "' (expected a plain number)");
-    throw std::invalid_argument("unknown unit '" + std::string(symbol) + "' (expected " + with_article(expected) +
-                                ": " + example_units(expected) + ")");
+      throw std::invalid_argument("unknown unit '" + std::string(symbol) +
+                                  "' (expected a plain number)");
+    throw std::invalid_argument("unknown unit '" + std::string(symbol) + "' (expected " +
+                                with_article(expected) + ": " + example_units(expected) + ")");
   }
   if (unit->dimension != expected) {
-    std::string what = "unit '" + std::string(symbol) + "' is " + with_article(unit->dimension) + ", expected " +
-                       with_article(expected);
+    std::string what = "unit '" + std::string(symbol) + "' is " + with_article(unit->dimension) +
+                       ", expected " + with_article(expected);
     if (expected != D::Dimensionless) what += " (" + example_units(expected) + ")";
     throw std::invalid_argument(what);
   }

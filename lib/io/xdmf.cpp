@@ -13,12 +13,23 @@ std::string xml_escape(const std::string& s) {
   std::string out;
   for (const char c : s) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -26,23 +37,33 @@ std::string xml_escape(const std::string& s) {
 
 const char* attribute_type(int n_components) {
   switch (n_components) {
-    case 1: return "Scalar";
-    case 3: return "Vector";
-    case 6: return "Tensor6";
-    case 9: return "Tensor";
+    case 1:
+      return "Scalar";
+    case 3:
+      return "Vector";
+    case 6:
+      return "Tensor6";
+    case 9:
+      return "Tensor";
   }
-  throw std::invalid_argument(fmt::format("XDMF attribute with {} components (need 1, 3, 6 or 9)", n_components));
+  throw std::invalid_argument(
+      fmt::format("XDMF attribute with {} components (need 1, 3, 6 or 9)", n_components));
 }
 
 void append_mesh(std::string& out, const XdmfMesh& mesh, const std::string& indent) {
   const std::string h5 = xml_escape(mesh.h5_name);
-  out += fmt::format("{}<Topology TopologyType=\"Mixed\" NumberOfElements=\"{}\">\n", indent, mesh.n_cells);
-  out += fmt::format("{}  <DataItem Dimensions=\"{}\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">{}:/mesh/topology</DataItem>\n",
-                     indent, mesh.topology_length, h5);
+  out += fmt::format("{}<Topology TopologyType=\"Mixed\" NumberOfElements=\"{}\">\n", indent,
+                     mesh.n_cells);
+  out += fmt::format(
+      "{}  <DataItem Dimensions=\"{}\" NumberType=\"Int\" Precision=\"8\" "
+      "Format=\"HDF\">{}:/mesh/topology</DataItem>\n",
+      indent, mesh.topology_length, h5);
   out += fmt::format("{}</Topology>\n", indent);
   out += fmt::format("{}<Geometry GeometryType=\"XYZ\">\n", indent);
-  out += fmt::format("{}  <DataItem Dimensions=\"{} 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">{}:/mesh/nodes</DataItem>\n",
-                     indent, mesh.n_nodes, h5);
+  out += fmt::format(
+      "{}  <DataItem Dimensions=\"{} 3\" NumberType=\"Float\" Precision=\"8\" "
+      "Format=\"HDF\">{}:/mesh/nodes</DataItem>\n",
+      indent, mesh.n_nodes, h5);
   out += fmt::format("{}</Geometry>\n", indent);
 }
 
@@ -66,10 +87,11 @@ std::string xdmf_text(const XdmfMesh& mesh, const std::vector<XdmfStep>& steps) 
       out += fmt::format("        <Time Value=\"{}\" />\n", steps[s].time);
       append_mesh(out, mesh, "        ");
       for (const auto& f : steps[s].fields) {
-        out += fmt::format("        <Attribute Name=\"{}\" AttributeType=\"{}\" Center=\"Cell\">\n", xml_escape(f.name),
-                           attribute_type(f.n_components));
+        out += fmt::format("        <Attribute Name=\"{}\" AttributeType=\"{}\" Center=\"Cell\">\n",
+                           xml_escape(f.name), attribute_type(f.n_components));
         out += fmt::format(
-            "          <DataItem Dimensions=\"{} {}\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">{}:{}</DataItem>\n",
+            "          <DataItem Dimensions=\"{} {}\" NumberType=\"Float\" Precision=\"8\" "
+            "Format=\"HDF\">{}:{}</DataItem>\n",
             mesh.n_cells, f.n_components, xml_escape(mesh.h5_name), xml_escape(f.dataset));
         out += "        </Attribute>\n";
       }

@@ -10,7 +10,7 @@ namespace rfmems {
 
 struct KinsolOptions {
   // Converged when ||F||_inf <= relative_tolerance * ||F(y0)||_inf (scaled by KINSOL's fscale).
-  Real relative_tolerance = 1e-9;
+  Real relative_tolerance = 1e-7;
   int max_iterations = 50;
   bool line_search = false;
   Real max_newton_step = 0;  // 0: KINSOL's default scaled by the problem (see solve())

@@ -116,6 +116,7 @@ void ElasticityOperator::internal_residual(Real t, std::span<const Real> u, std:
     const Vec3& S = mesh_.face_area(f);
     const Vec3& e = face_e_[f];
     const Mat3 project = Mat3::Identity() - e * e.transpose();
+    const Mat3 reflect = Mat3::Identity() - 2 * e * e.transpose();
     if (n >= 0) {
       Real w = owner_weight_[f];
       Mat3 G = (w * grad[p] + (1 - w) * grad[n]) * project +
@@ -130,7 +131,9 @@ void ElasticityOperator::internal_residual(Real t, std::span<const Real> u, std:
       add(p, -bc.at(mesh_.face_centroid(f), t) * S.norm());
       continue;
     }
-    Mat3 G = grad[p] * project + (boundary_value(f, t, u) - cell_u(u, p)) / face_d_[f] * e.transpose();
+    // Normal derivative from the parabola through u_P and u_b with slope G_P e at P
+    // (second order where the boundary gradient is exact for quadratics).
+    Mat3 G = grad[p] * reflect + 2 * (boundary_value(f, t, u) - cell_u(u, p)) / face_d_[f] * e.transpose();
     Vec3 F = face_force(G, S);
     if (bc.kind == Kind::Symmetry) F = normal_projector(S) * F;
     add(p, -F);
@@ -142,14 +145,17 @@ void ElasticityOperator::internal_residual(Real t, std::span<const Real> u, std:
 
 void ElasticityOperator::append_cell_gradient_terms(Index c, const Mat3& project, Real scale,
                                                     std::vector<Term>& terms) const {
-  // G_c = sum_j (u_j - u_c) g_j^T with u_j a cell value, a symmetry reflection S u_c, or a
+  // G_c = sum_j (u_j - u_c) g_j^T with u_j a cell value, a symmetry reflection S u_owner, or a
   // constant Dirichlet value (no term). Right-multiplied by `project` and scaled.
   for (const GradientNeighbour& nb : gradient_->neighbours(c)) {
     Vec3 h = scale * (project * nb.weight);
     if (nb.cell >= 0) {
       terms.push_back({nb.cell, Mat3::Identity(), h});
     } else if (boundaries_[mesh_.face_patch(nb.face)].kind == Kind::Symmetry) {
-      terms.push_back({c, Mat3::Identity() - normal_projector(mesh_.face_area(nb.face)), h});
+      // The reflected value belongs to the face's own cell (a second-ring face in a
+      // quadratic fit is not on c).
+      terms.push_back({mesh_.face_owner(nb.face),
+                       Mat3::Identity() - normal_projector(mesh_.face_area(nb.face)), h});
     }
   }
   terms.push_back({c, Mat3::Identity(), -scale * (project * gradient_->weight_sum(c))});
@@ -175,11 +181,11 @@ void ElasticityOperator::stiffness(Real, std::span<const Real>, std::span<Real> 
     } else {
       const ElasticityBoundary& bc = boundaries_[mesh_.face_patch(f)];
       if (bc.kind == Kind::Traction) continue;
-      append_cell_gradient_terms(p, project, 1, terms);
-      terms.push_back({p, Mat3::Identity(), -direct});
+      append_cell_gradient_terms(p, Mat3::Identity() - 2 * e * e.transpose(), 1, terms);
+      terms.push_back({p, Mat3::Identity(), -2 * direct});
       if (bc.kind == Kind::Symmetry) {
         Mat3 nn = normal_projector(S);
-        terms.push_back({p, Mat3::Identity() - nn, direct});
+        terms.push_back({p, Mat3::Identity() - nn, 2 * direct});
         out = nn;
       }
     }

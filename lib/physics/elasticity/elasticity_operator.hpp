@@ -7,7 +7,8 @@
 // Cell balance: M u'' + R(t, u) = 0 with M = rho V and R_P = -sum_f sigma_f S_f - b V.
 // Face gradient: G_f = Gbar (I - e e^T) + (u_N - u_P)/|d| e^T, Gbar interpolated from
 // least-squares cell gradients: the compact difference along the centroid line (the primary
-// part) plus the non-orthogonal (secondary) part.
+// part) plus the non-orthogonal (secondary) part. On a fixed or symmetry face the normal
+// derivative is 2 (u_b - u_P)/|d| - G_P e (second order; G_P is a quadratic fit there).
 //
 // Jacobian: the full linearisation of the stress tensor (thesis "Formulation 2"): the
 // transpose and trace terms and the secondary gradients all enter dR/du through the stencil
