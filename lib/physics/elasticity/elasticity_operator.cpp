@@ -18,7 +18,7 @@ Mat3 normal_projector(const Vec3& S) {
 
 ElasticityOperator::ElasticityOperator(const Mesh& mesh, const LinearElastic& material,
                                        std::vector<ElasticityBoundary> boundaries,
-                                       VectorField body_force)
+                                       VectorField body_force, int reconstruction_degree)
     : mesh_(mesh),
       material_(material),
       boundaries_(std::move(boundaries)),
@@ -29,45 +29,63 @@ ElasticityOperator::ElasticityOperator(const Mesh& mesh, const LinearElastic& ma
   if (boundaries_.size() != mesh_.patches().size())
     throw InputError(fmt::format("elasticity: {} boundary conditions for {} patches",
                                  boundaries_.size(), mesh_.patches().size()));
-  gradient_ = std::make_unique<LeastSquaresGradient>(mesh_, [this](Index f) {
-    return boundaries_[mesh_.face_patch(f)].supplies_value();
-  });
+  reconstruction_ = std::make_unique<PolynomialReconstruction>(
+      mesh_,
+      [this](Index f) {
+        switch (boundaries_[mesh_.face_patch(f)].kind) {
+          case Kind::Fixed: return BoundaryPoint::Value;
+          case Kind::Symmetry: return BoundaryPoint::Mirror;
+          default: return BoundaryPoint::None;
+        }
+      },
+      reconstruction_degree);
 
+  // Geometry of each face and the evaluation weights of the reconstructions at it.
   const Index nf = mesh_.n_faces();
-  owner_weight_.assign(mesh_.n_interior_faces(), 0.5);
   face_e_.resize(nf);
   face_d_.resize(nf);
+  sides_.resize(2 * nf);
+  std::vector<Real> value;
+  std::vector<Vec3> gradient;
+  auto add_side = [&](Index f, int which, Index c) {
+    reconstruction_->weights_at(c, mesh_.face_centroid(f), value, gradient);
+    FaceSide& s = sides_[2 * f + which];
+    s.cell = c;
+    s.begin = static_cast<Index>(side_value_.size());
+    side_value_.insert(side_value_.end(), value.begin(), value.end());
+    side_gradient_.insert(side_gradient_.end(), gradient.begin(), gradient.end());
+    s.end = static_cast<Index>(side_value_.size());
+  };
   for (Index f = 0; f < nf; ++f) {
-    const Vec3& xp = mesh_.cell_centroid(mesh_.face_owner(f));
-    Vec3 d = (mesh_.is_boundary(f) ? mesh_.face_centroid(f)
-                                   : mesh_.cell_centroid(mesh_.face_neighbour(f))) - xp;
+    const Index p = mesh_.face_owner(f), n = mesh_.face_neighbour(f);
+    Vec3 d = (n >= 0 ? mesh_.cell_centroid(n) : mesh_.face_centroid(f)) - mesh_.cell_centroid(p);
     face_d_[f] = d.norm();
     face_e_[f] = d / face_d_[f];
-    if (!mesh_.is_boundary(f)) owner_weight_[f] = owner_interpolation_weight(mesh_, f);
+    add_side(f, 0, p);
+    if (n >= 0) add_side(f, 1, n);
+  }
+  centroid_offset_.push_back(0);
+  for (Index c = 0; c < mesh_.n_cells(); ++c) {
+    reconstruction_->weights_at(c, mesh_.cell_centroid(c), value, gradient);
+    centroid_gradient_.insert(centroid_gradient_.end(), gradient.begin(), gradient.end());
+    centroid_offset_.push_back(static_cast<Index>(centroid_gradient_.size()));
   }
 
   // Stencil of each cell: the cells its face forces depend on.
   std::vector<std::set<Index>> stencils(mesh_.n_cells());
-  std::vector<Term> terms;
-  for (Index f = 0; f < nf; ++f) {
-    Index p = mesh_.face_owner(f), n = mesh_.face_neighbour(f);
-    terms.clear();
-    if (n >= 0) {
-      append_cell_gradient_terms(p, Mat3::Identity(), 1, terms);
-      append_cell_gradient_terms(n, Mat3::Identity(), 1, terms);
-    } else {
-      append_cell_gradient_terms(p, Mat3::Identity(), 1, terms);
-    }
-    stencils[p].insert(p);
-    for (const Term& t : terms) stencils[p].insert(t.cell);
-    if (n >= 0) {
-      stencils[n].insert(n);
-      stencils[p].insert(n);
-      stencils[n].insert(p);
-      for (const Term& t : terms) stencils[n].insert(t.cell);
-    }
-  }
   for (Index c = 0; c < mesh_.n_cells(); ++c) stencils[c].insert(c);
+  for (Index f = 0; f < nf; ++f) {
+    const Index p = mesh_.face_owner(f), n = mesh_.face_neighbour(f);
+    std::set<Index> cells{p};
+    for (int which = 0; which < (n >= 0 ? 2 : 1); ++which) {
+      const FaceSide& s = side(f, which);
+      cells.insert(s.cell);
+      for (const StencilPoint& pt : reconstruction_->points(s.cell))
+        if (pt.kind != StencilPoint::Kind::BoundaryValue) cells.insert(pt.cell);
+    }
+    stencils[p].insert(cells.begin(), cells.end());
+    if (n >= 0) stencils[n].insert(cells.begin(), cells.end());
+  }
   sparsity_ = std::make_unique<BlockSparsity>(stencils, dim_);
 }
 
@@ -77,26 +95,40 @@ Vec3 ElasticityOperator::cell_u(std::span<const Real> u, Index c) const {
   return v;
 }
 
-Vec3 ElasticityOperator::boundary_value(Index f, Real t, std::span<const Real> u) const {
-  const ElasticityBoundary& bc = boundaries_[mesh_.face_patch(f)];
-  if (bc.kind == Kind::Symmetry) {
-    // Reflection plane: the tangential part of the cell value, zero normal part.
-    Vec3 up = cell_u(u, mesh_.face_owner(f));
-    return up - normal_projector(mesh_.face_area(f)) * up;
+Mat3 ElasticityOperator::point_map(const StencilPoint& p) const {
+  // A mirror image carries the reflected vector: normal component reversed.
+  return p.kind == StencilPoint::Kind::Mirror
+             ? Mat3(Mat3::Identity() - 2 * normal_projector(mesh_.face_area(p.face)))
+             : Mat3(Mat3::Identity());
+}
+
+Vec3 ElasticityOperator::point_value(const StencilPoint& p, Real t, std::span<const Real> u) const {
+  if (p.kind == StencilPoint::Kind::BoundaryValue)
+    return boundaries_[mesh_.face_patch(p.face)].at(mesh_.face_centroid(p.face), t);
+  return point_map(p) * cell_u(u, p.cell);
+}
+
+void ElasticityOperator::evaluate_side(const FaceSide& s, Real t, std::span<const Real> u,
+                                       Vec3& value, Mat3& gradient) const {
+  const Vec3 uc = cell_u(u, s.cell);
+  value = uc;
+  gradient.setZero();
+  auto points = reconstruction_->points(s.cell);
+  for (Index j = 0; j < s.end - s.begin; ++j) {
+    Vec3 delta = point_value(points[j], t, u) - uc;
+    value += side_value_[s.begin + j] * delta;
+    gradient += delta * side_gradient_[s.begin + j].transpose();
   }
-  return bc.at(mesh_.face_centroid(f), t);
 }
 
 std::vector<Mat3> ElasticityOperator::cell_gradients(Real t, std::span<const Real> u) const {
   std::vector<Mat3> grad(mesh_.n_cells(), Mat3::Zero());
   for (Index c = 0; c < mesh_.n_cells(); ++c) {
-    Vec3 uc = cell_u(u, c);
-    Mat3 G = Mat3::Zero();
-    for (const GradientNeighbour& nb : gradient_->neighbours(c)) {
-      Vec3 value = nb.cell >= 0 ? cell_u(u, nb.cell) : boundary_value(nb.face, t, u);
-      G += (value - uc) * nb.weight.transpose();
-    }
-    grad[c] = G;
+    const Vec3 uc = cell_u(u, c);
+    auto points = reconstruction_->points(c);
+    for (std::size_t j = 0; j < points.size(); ++j)
+      grad[c] += (point_value(points[j], t, u) - uc) *
+                 centroid_gradient_[centroid_offset_[c] + j].transpose();
   }
   return grad;
 }
@@ -107,21 +139,20 @@ Vec3 ElasticityOperator::face_force(const Mat3& G, const Vec3& S) const {
 
 void ElasticityOperator::internal_residual(Real t, std::span<const Real> u, std::span<Real> r) {
   std::fill(r.begin(), r.end(), 0.0);
-  const std::vector<Mat3> grad = cell_gradients(t, u);
   auto add = [&](Index c, const Vec3& v) {
     for (int k = 0; k < dim_; ++k) r[c * dim_ + k] += v[k];
   };
+  Vec3 vp, vn;
+  Mat3 gp, gn;
   for (Index f = 0; f < mesh_.n_faces(); ++f) {
     const Index p = mesh_.face_owner(f), n = mesh_.face_neighbour(f);
     const Vec3& S = mesh_.face_area(f);
     const Vec3& e = face_e_[f];
-    const Mat3 project = Mat3::Identity() - e * e.transpose();
-    const Mat3 reflect = Mat3::Identity() - 2 * e * e.transpose();
+    const Real inv_d = 1.0 / face_d_[f];
     if (n >= 0) {
-      Real w = owner_weight_[f];
-      Mat3 G = (w * grad[p] + (1 - w) * grad[n]) * project +
-               (cell_u(u, n) - cell_u(u, p)) / face_d_[f] * e.transpose();
-      Vec3 F = face_force(G, S);
+      evaluate_side(side(f, 0), t, u, vp, gp);
+      evaluate_side(side(f, 1), t, u, vn, gn);
+      Vec3 F = face_force(0.5 * (gp + gn) + (vn - vp) * inv_d * e.transpose(), S);
       add(p, -F);
       add(n, F);
       continue;
@@ -131,68 +162,70 @@ void ElasticityOperator::internal_residual(Real t, std::span<const Real> u, std:
       add(p, -bc.at(mesh_.face_centroid(f), t) * S.norm());
       continue;
     }
-    // Normal derivative from the parabola through u_P and u_b with slope G_P e at P
-    // (second order where the boundary gradient is exact for quadratics).
-    Mat3 G = grad[p] * reflect + 2 * (boundary_value(f, t, u) - cell_u(u, p)) / face_d_[f] * e.transpose();
-    Vec3 F = face_force(G, S);
-    if (bc.kind == Kind::Symmetry) F = normal_projector(S) * F;
-    add(p, -F);
+    evaluate_side(side(f, 0), t, u, vp, gp);
+    if (bc.kind == Kind::Fixed) {
+      add(p, -face_force(gp + (bc.at(mesh_.face_centroid(f), t) - vp) * inv_d * e.transpose(), S));
+    } else {  // symmetry: no normal displacement, only the normal force is transmitted
+      Mat3 nn = normal_projector(S);
+      add(p, -(nn * face_force(gp - (nn * vp) * inv_d * e.transpose(), S)));
+    }
   }
   if (body_force_)
     for (Index c = 0; c < mesh_.n_cells(); ++c)
       add(c, -body_force_(mesh_.cell_centroid(c), t) * mesh_.cell_volume(c));
 }
 
-void ElasticityOperator::append_cell_gradient_terms(Index c, const Mat3& project, Real scale,
-                                                    std::vector<Term>& terms) const {
-  // G_c = sum_j (u_j - u_c) g_j^T with u_j a cell value, a symmetry reflection S u_owner, or a
-  // constant Dirichlet value (no term). Right-multiplied by `project` and scaled.
-  for (const GradientNeighbour& nb : gradient_->neighbours(c)) {
-    Vec3 h = scale * (project * nb.weight);
-    if (nb.cell >= 0) {
-      terms.push_back({nb.cell, Mat3::Identity(), h});
-    } else if (boundaries_[mesh_.face_patch(nb.face)].kind == Kind::Symmetry) {
-      // The reflected value belongs to the face's own cell (a second-ring face in a
-      // quadratic fit is not on c).
-      terms.push_back({mesh_.face_owner(nb.face),
-                       Mat3::Identity() - normal_projector(mesh_.face_area(nb.face)), h});
-    }
+void ElasticityOperator::append_side_terms(const FaceSide& s, Real grad_factor,
+                                           Real value_factor, const Mat3& value_map,
+                                           const Vec3& e, std::vector<Term>& terms) const {
+  // p(x_f) = u_c + sum_j s_j (v_j - u_c), grad p(x_f) = sum_j (v_j - u_c) g_j^T with
+  // v_j = M_j u_{cell_j} (or a constant boundary value, which has no derivative).
+  auto points = reconstruction_->points(s.cell);
+  Vec3 grad_sum = Vec3::Zero();
+  Real value_sum = 0;
+  for (Index j = 0; j < s.end - s.begin; ++j) {
+    const Vec3& g = side_gradient_[s.begin + j];
+    const Real v = side_value_[s.begin + j];
+    grad_sum += g;
+    value_sum += v;
+    const StencilPoint& pt = points[j];
+    if (pt.kind == StencilPoint::Kind::BoundaryValue) continue;
+    const Mat3 M = point_map(pt);
+    terms.push_back({pt.cell, M, grad_factor * g});
+    terms.push_back({pt.cell, value_map * M, value_factor * v * e});
   }
-  terms.push_back({c, Mat3::Identity(), -scale * (project * gradient_->weight_sum(c))});
+  terms.push_back({s.cell, Mat3::Identity(), -grad_factor * grad_sum});
+  terms.push_back({s.cell, value_map, value_factor * (1 - value_sum) * e});
 }
 
 void ElasticityOperator::stiffness(Real, std::span<const Real>, std::span<Real> values) {
   std::fill(values.begin(), values.end(), 0.0);
   std::vector<Term> terms;
+  const Mat3 I = Mat3::Identity();
   for (Index f = 0; f < mesh_.n_faces(); ++f) {
     const Index p = mesh_.face_owner(f), n = mesh_.face_neighbour(f);
     const Vec3& S = mesh_.face_area(f);
     const Vec3& e = face_e_[f];
-    const Mat3 project = Mat3::Identity() - e * e.transpose();
-    const Vec3 direct = e / face_d_[f];
+    const Real inv_d = 1.0 / face_d_[f];
     terms.clear();
-    Mat3 out = Mat3::Identity();  // maps the face force to what the cell receives
+    Mat3 out = I;  // maps the face force to what the cells receive
     if (n >= 0) {
-      Real w = owner_weight_[f];
-      append_cell_gradient_terms(p, project, w, terms);
-      append_cell_gradient_terms(n, project, 1 - w, terms);
-      terms.push_back({n, Mat3::Identity(), direct});
-      terms.push_back({p, Mat3::Identity(), -direct});
+      append_side_terms(side(f, 0), 0.5, -inv_d, I, e, terms);
+      append_side_terms(side(f, 1), 0.5, inv_d, I, e, terms);
     } else {
       const ElasticityBoundary& bc = boundaries_[mesh_.face_patch(f)];
       if (bc.kind == Kind::Traction) continue;
-      append_cell_gradient_terms(p, Mat3::Identity() - 2 * e * e.transpose(), 1, terms);
-      terms.push_back({p, Mat3::Identity(), -2 * direct});
-      if (bc.kind == Kind::Symmetry) {
-        Mat3 nn = normal_projector(S);
-        terms.push_back({p, Mat3::Identity() - nn, 2 * direct});
-        out = nn;
+      if (bc.kind == Kind::Fixed) {
+        append_side_terms(side(f, 0), 1.0, -inv_d, I, e, terms);
+      } else {
+        out = normal_projector(S);
+        append_side_terms(side(f, 0), 1.0, -inv_d, out, e, terms);
       }
     }
     // F = mu (G S + G^T S) + lambda tr(G) S with G = a h^T, a = T u_c:
     // dF/da = mu (h.S) I + mu h S^T + lambda S h^T.
     for (const Term& term : terms) {
-      Mat3 dF = mu_ * term.h.dot(S) * Mat3::Identity() + mu_ * term.h * S.transpose() +
+      Mat3 dF = mu_ * term.h.dot(S) * I + mu_ * term.h * S.transpose() +
                 lambda_ * S * term.h.transpose();
       Mat3 block = out * dF * term.T;
       sparsity_->add_block(values, p, term.cell, -block);

@@ -5,22 +5,26 @@
 //
 // Unknowns: the displacement at cell centroids, interleaved (cell * dim + component).
 // Cell balance: M u'' + R(t, u) = 0 with M = rho V and R_P = -sum_f sigma_f S_f - b V.
-// Face gradient: G_f = Gbar (I - e e^T) + (u_N - u_P)/|d| e^T, Gbar interpolated from
-// least-squares cell gradients: the compact difference along the centroid line (the primary
-// part) plus the non-orthogonal (secondary) part. On a fixed or symmetry face the normal
-// derivative is 2 (u_b - u_P)/|d| - G_P e (second order; G_P is a quadratic fit there).
+// Face gradient from the polynomial reconstructions p_P, p_N of both cells (cubic by default,
+// see fv/polynomial_reconstruction.hpp):
+//   interior:  G_f = (grad p_P + grad p_N)(x_f)/2 + (p_N(x_f) - p_P(x_f)) e^T / |d|
+//   fixed:     G_f = grad p_P(x_f) + (u_b - p_P(x_f)) e^T / |d|
+//   symmetry:  G_f = grad p_P(x_f) - (n n^T p_P(x_f)) e^T / |d|, force projected on n
+//              (mirror images of the cell enter the reconstructions)
+//   traction:  the force is the prescribed traction times the face area.
+// The jump term is the compact "primary" coupling (u_N - u_P)/|d| plus its high-order
+// correction; with linear reconstruction this is the classical scheme of the thesis.
 //
 // Jacobian: the full linearisation of the stress tensor (thesis "Formulation 2"): the
-// transpose and trace terms and the secondary gradients all enter dR/du through the stencil
-// of the least-squares gradients (both cells of a face and their face neighbours), so a linear
-// static problem converges in one Newton step.
+// transpose and trace terms and the reconstruction stencils all enter dR/du exactly, so a
+// linear static problem converges in one Newton step.
 #pragma once
 #include <memory>
 #include <vector>
 
 #include "core/system_operator.hpp"
 #include "fv/block_sparsity.hpp"
-#include "fv/least_squares_gradient.hpp"
+#include "fv/polynomial_reconstruction.hpp"
 #include "materials/linear_elastic.hpp"
 #include "mesh/mesh.hpp"
 #include "physics/elasticity/elasticity_boundary.hpp"
@@ -30,8 +34,10 @@ namespace rfmems {
 class ElasticityOperator : public SecondOrderOperator {
  public:
   // boundaries[p] applies to mesh patch p. body_force is per unit volume (may be empty).
+  // reconstruction_degree: 1 (linear, the thesis's scheme) to 3 (cubic, default).
   ElasticityOperator(const Mesh& mesh, const LinearElastic& material,
-                     std::vector<ElasticityBoundary> boundaries, VectorField body_force = {});
+                     std::vector<ElasticityBoundary> boundaries, VectorField body_force = {},
+                     int reconstruction_degree = 3);
 
   Index size() const override { return mesh_.n_cells() * dim_; }
   int dim() const { return dim_; }
@@ -60,10 +66,21 @@ class ElasticityOperator : public SecondOrderOperator {
     Mat3 T;   // acts on u_cell
     Vec3 h;   // G_f += (T u_cell) h^T
   };
-  // Linear terms of the gradient of cell c (without the constant Dirichlet part).
-  void append_cell_gradient_terms(Index c, const Mat3& project, Real scale,
-                                  std::vector<Term>& terms) const;
-  Vec3 boundary_value(Index f, Real t, std::span<const Real> u) const;
+  // Evaluation weights of one cell's reconstruction at one face centroid.
+  struct FaceSide {
+    Index cell;
+    Index begin, end;  // into side_value_ / side_gradient_, parallel to the cell's points
+  };
+  const FaceSide& side(Index f, int which) const { return sides_[2 * f + which]; }
+  // Value of a stencil point and the matrix that maps its source cell's u to it.
+  Vec3 point_value(const StencilPoint& p, Real t, std::span<const Real> u) const;
+  Mat3 point_map(const StencilPoint& p) const;
+  // p_c(x_f) and grad p_c(x_f) for one face side.
+  void evaluate_side(const FaceSide& s, Real t, std::span<const Real> u, Vec3& value,
+                     Mat3& gradient) const;
+  // Linear terms of G_f from one side: grad_factor * grad p + value_factor * value_map p e^T.
+  void append_side_terms(const FaceSide& s, Real grad_factor, Real value_factor,
+                         const Mat3& value_map, const Vec3& e, std::vector<Term>& terms) const;
   Vec3 cell_u(std::span<const Real> u, Index c) const;
   // Face force sigma_f S_f for face f given the face gradient.
   Vec3 face_force(const Mat3& G, const Vec3& S) const;
@@ -74,11 +91,15 @@ class ElasticityOperator : public SecondOrderOperator {
   VectorField body_force_;
   int dim_;
   Real mu_, lambda_;
-  std::unique_ptr<LeastSquaresGradient> gradient_;
+  std::unique_ptr<PolynomialReconstruction> reconstruction_;
   std::unique_ptr<BlockSparsity> sparsity_;
-  std::vector<Real> owner_weight_;  // interior faces
-  std::vector<Vec3> face_e_;        // unit vector P -> N (or P -> face centroid on a boundary)
-  std::vector<Real> face_d_;        // |d|
+  std::vector<FaceSide> sides_;             // two per face (the second unused on boundaries)
+  std::vector<Real> side_value_;
+  std::vector<Vec3> side_gradient_;
+  std::vector<Index> centroid_offset_;      // per cell, into centroid_gradient_
+  std::vector<Vec3> centroid_gradient_;
+  std::vector<Vec3> face_e_;                // unit vector P -> N (or P -> face centroid)
+  std::vector<Real> face_d_;                // |d|
 };
 
 }  // namespace rfmems

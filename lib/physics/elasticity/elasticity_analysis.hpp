@@ -1,0 +1,77 @@
+// Static and transient analyses of an ElasticityScene, and their case-file settings.
+//
+//   analysis:
+//     type: static                 # static | transient
+//     end_time: 1.25 s             # transient: simulated time, from t = 0
+//     output_interval: 2.5 ms      # transient: fields and probes every this much
+//   solver:                        # static (both stress methods):
+//     tolerance: 1e-8              #   residual reduction ||R||/||R0|| (default 1e-8)
+//     max_iterations: 50           #   Newton (coupled, default 50) or outer iterations
+//                                  #   (segregated, default 100000)
+//   solver:                        # transient (IDA, variable-order variable-step BDF):
+//     rtol: 1e-6                   #   relative tolerance (default 1e-6)
+//     atol: 2e-12                  #   absolute tolerance on u [m] and v [m/s]
+//                                  #   (default 1e-12 x the largest edge of the mesh
+//                                  #   bounding box: 2e-12 for a 2 m beam)
+//     max_order: 5                 #   BDF order limit, 1..5 (default 5)
+//     fixed_step: 0                #   > 0: fixed step size, no error control (default 0)
+//
+// Static: R(t_load, u) = 0 at the time every ramp has finished (scene.load_time), by Newton
+// with KINSOL (coupled) or by the segregated iteration; one output, index 0, at t_load.
+// Transient: M u'' + R(t, u) = 0 as the first-order system [u' - v; M v' + R] with IDA,
+// starting from rest (u = v = 0) with the consistent initial acceleration
+// v'(0) = -M^-1 R(0, 0) (zero when every load ramps from zero). Outputs at t = k dt for
+// k = 0, 1, ... and at end_time.
+#pragma once
+#include <span>
+
+#include "io/case_file.hpp"
+#include "io/progress.hpp"
+#include "physics/elasticity/elasticity_scene.hpp"
+#include "solvers/ida_integrator.hpp"
+#include "solvers/kinsol_solver.hpp"
+
+namespace rfmems {
+
+struct AnalysisSettings {
+  AnalysisType type = AnalysisType::Static;
+  // Static.
+  Real tolerance = 1e-8;
+  long max_iterations = 50;
+  // Transient.
+  Real end_time = 0;
+  Real output_interval = 0;
+  IdaOptions ida;
+};
+
+// analysis.type alone: the scene needs it before the rest can be read.
+AnalysisType read_analysis_type(const CaseNode& root);
+
+// The remaining analysis.* and solver.* keys for this scene (defaults depend on its stress
+// method and mesh size).
+AnalysisSettings read_analysis_settings(const CaseNode& root, const ElasticityScene& scene);
+
+// Receives the state at each output time. v is empty for a static analysis.
+class AnalysisObserver {
+ public:
+  virtual ~AnalysisObserver() = default;
+  virtual void output(int index, Real t, std::span<const Real> u, std::span<const Real> v) = 0;
+};
+
+struct AnalysisStats {
+  AnalysisType type = AnalysisType::Static;
+  StressMethod stress = StressMethod::Coupled;
+  IntegratorStats transient;      // transient
+  NonlinearStats newton;          // static, coupled
+  SegregatedStats segregated;     // static, segregated
+  int n_outputs = 0;
+  Real final_time = 0;
+};
+
+// Runs the analysis. Progress (transients) goes to `progress`; the caller finishes it.
+// SolverError if the integrator or the nonlinear solver fails (also a segregated iteration
+// that has not converged within its iteration limit).
+AnalysisStats run_analysis(ElasticityScene& scene, const AnalysisSettings& settings,
+                           AnalysisObserver& observer, ProgressReporter& progress);
+
+}  // namespace rfmems
