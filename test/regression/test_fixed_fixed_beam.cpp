@@ -20,7 +20,7 @@ namespace {
 constexpr double L = 400e-6, q = 1e3, E = 200e9, nu = 0.31;
 
 struct Beam {
-  double h;
+  double h, dx, dy;
   Mesh mesh;
   std::unique_ptr<ElasticityOperator> op;
 };
@@ -31,7 +31,7 @@ Beam make_beam(int nx, int ny, double h) {
   spec.upper = Vec3(L, h / 2, 0);
   spec.n[0] = nx;
   spec.n[1] = ny;
-  Beam beam{h, make_structured_mesh(spec), nullptr};
+  Beam beam{h, L / nx, h / ny, make_structured_mesh(spec), nullptr};
   std::vector<ElasticityBoundary> bcs(beam.mesh.patches().size());
   for (std::size_t p = 0; p < bcs.size(); ++p) {
     const std::string& name = beam.mesh.patches()[p].name;
@@ -51,7 +51,8 @@ double centre_deflection(const Beam& beam, const std::vector<double>& u) {
   int count = 0;
   for (Index c = 0; c < beam.mesh.n_cells(); ++c) {
     const Vec3& x = beam.mesh.cell_centroid(c);
-    if (std::abs(x.x() - L / 2) < L / 160 && std::abs(x.y()) < beam.h / 16) {
+    // The cells around the centre point (L/2, 0).
+    if (std::abs(x.x() - L / 2) < 0.51 * beam.dx && std::abs(x.y()) < 0.51 * beam.dy) {
       sum += beam.op->displacement_at(c, Vec3(L / 2, 0, 0), u, grad).y();
       ++count;
     }

@@ -112,7 +112,7 @@ AnalysisSettings read_analysis_settings(const CaseNode& root, const ElasticitySc
   const CaseNode solver = root.child_or_empty("solver");
   if (s.type == AnalysisType::Static) {
     const bool coupled = scene.stress == StressMethod::Coupled;
-    s.tolerance = solver.get_real("tolerance", 1e-8, Range::open(0.0, 1.0));
+    s.tolerance = solver.get_real("tolerance", 1e-6, Range::open(0.0, 1.0));
     s.max_iterations = solver.get_int("max_iterations", coupled ? 50 : 100000,
                                       Range::closed(1, 1e9));
     return s;

@@ -64,12 +64,13 @@ ElasticityOperator::ElasticityOperator(const Mesh& mesh, const LinearElastic& ma
     add_side(f, 0, p);
     if (n >= 0) add_side(f, 1, n);
   }
-  centroid_offset_.push_back(0);
+  point_offset_.push_back(0);
   for (Index c = 0; c < mesh_.n_cells(); ++c) {
     reconstruction_->weights_at(c, mesh_.cell_centroid(c), value, gradient);
     centroid_gradient_.insert(centroid_gradient_.end(), gradient.begin(), gradient.end());
-    centroid_offset_.push_back(static_cast<Index>(centroid_gradient_.size()));
+    point_offset_.push_back(static_cast<Index>(centroid_gradient_.size()));
   }
+  point_delta_.resize(centroid_gradient_.size());
 
   // Stencil of each cell: the cells its face forces depend on.
   std::vector<std::set<Index>> stencils(mesh_.n_cells());
@@ -108,28 +109,34 @@ Vec3 ElasticityOperator::point_value(const StencilPoint& p, Real t, std::span<co
   return point_map(p) * cell_u(u, p.cell);
 }
 
-void ElasticityOperator::evaluate_side(const FaceSide& s, Real t, std::span<const Real> u,
-                                       Vec3& value, Mat3& gradient) const {
-  const Vec3 uc = cell_u(u, s.cell);
-  value = uc;
+void ElasticityOperator::compute_point_deltas(Real t, std::span<const Real> u) const {
+  for (Index c = 0; c < mesh_.n_cells(); ++c) {
+    const Vec3 uc = cell_u(u, c);
+    auto points = reconstruction_->points(c);
+    Vec3* delta = point_delta_.data() + point_offset_[c];
+    for (std::size_t j = 0; j < points.size(); ++j)
+      delta[j] = (points[j].kind == StencilPoint::Kind::Cell ? cell_u(u, points[j].cell)
+                                                             : point_value(points[j], t, u)) - uc;
+  }
+}
+
+void ElasticityOperator::evaluate_side(const FaceSide& s, std::span<const Real> u, Vec3& value,
+                                       Mat3& gradient) const {
+  value = cell_u(u, s.cell);
   gradient.setZero();
-  auto points = reconstruction_->points(s.cell);
+  const Vec3* delta = point_delta_.data() + point_offset_[s.cell];
   for (Index j = 0; j < s.end - s.begin; ++j) {
-    Vec3 delta = point_value(points[j], t, u) - uc;
-    value += side_value_[s.begin + j] * delta;
-    gradient += delta * side_gradient_[s.begin + j].transpose();
+    value += side_value_[s.begin + j] * delta[j];
+    gradient += delta[j] * side_gradient_[s.begin + j].transpose();
   }
 }
 
 std::vector<Mat3> ElasticityOperator::cell_gradients(Real t, std::span<const Real> u) const {
+  compute_point_deltas(t, u);
   std::vector<Mat3> grad(mesh_.n_cells(), Mat3::Zero());
-  for (Index c = 0; c < mesh_.n_cells(); ++c) {
-    const Vec3 uc = cell_u(u, c);
-    auto points = reconstruction_->points(c);
-    for (std::size_t j = 0; j < points.size(); ++j)
-      grad[c] += (point_value(points[j], t, u) - uc) *
-                 centroid_gradient_[centroid_offset_[c] + j].transpose();
-  }
+  for (Index c = 0; c < mesh_.n_cells(); ++c)
+    for (Index k = point_offset_[c]; k < point_offset_[c + 1]; ++k)
+      grad[c] += point_delta_[k] * centroid_gradient_[k].transpose();
   return grad;
 }
 
@@ -142,6 +149,7 @@ void ElasticityOperator::internal_residual(Real t, std::span<const Real> u, std:
   auto add = [&](Index c, const Vec3& v) {
     for (int k = 0; k < dim_; ++k) r[c * dim_ + k] += v[k];
   };
+  compute_point_deltas(t, u);
   Vec3 vp, vn;
   Mat3 gp, gn;
   for (Index f = 0; f < mesh_.n_faces(); ++f) {
@@ -150,8 +158,8 @@ void ElasticityOperator::internal_residual(Real t, std::span<const Real> u, std:
     const Vec3& e = face_e_[f];
     const Real inv_d = 1.0 / face_d_[f];
     if (n >= 0) {
-      evaluate_side(side(f, 0), t, u, vp, gp);
-      evaluate_side(side(f, 1), t, u, vn, gn);
+      evaluate_side(side(f, 0), u, vp, gp);
+      evaluate_side(side(f, 1), u, vn, gn);
       Vec3 F = face_force(0.5 * (gp + gn) + (vn - vp) * inv_d * e.transpose(), S);
       add(p, -F);
       add(n, F);
@@ -162,7 +170,7 @@ void ElasticityOperator::internal_residual(Real t, std::span<const Real> u, std:
       add(p, -bc.at(mesh_.face_centroid(f), t) * S.norm());
       continue;
     }
-    evaluate_side(side(f, 0), t, u, vp, gp);
+    evaluate_side(side(f, 0), u, vp, gp);
     if (bc.kind == Kind::Fixed) {
       add(p, -face_force(gp + (bc.at(mesh_.face_centroid(f), t) - vp) * inv_d * e.transpose(), S));
     } else {  // symmetry: no normal displacement, only the normal force is transmitted

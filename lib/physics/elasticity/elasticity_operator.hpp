@@ -75,8 +75,10 @@ class ElasticityOperator : public SecondOrderOperator {
   // Value of a stencil point and the matrix that maps its source cell's u to it.
   Vec3 point_value(const StencilPoint& p, Real t, std::span<const Real> u) const;
   Mat3 point_map(const StencilPoint& p) const;
-  // p_c(x_f) and grad p_c(x_f) for one face side.
-  void evaluate_side(const FaceSide& s, Real t, std::span<const Real> u, Vec3& value,
+  // Fills point_delta_ with v_j - u_c for every stencil point of every cell.
+  void compute_point_deltas(Real t, std::span<const Real> u) const;
+  // p_c(x_f) and grad p_c(x_f) for one face side (after compute_point_deltas).
+  void evaluate_side(const FaceSide& s, std::span<const Real> u, Vec3& value,
                      Mat3& gradient) const;
   // Linear terms of G_f from one side: grad_factor * grad p + value_factor * value_map p e^T.
   void append_side_terms(const FaceSide& s, Real grad_factor, Real value_factor,
@@ -96,8 +98,9 @@ class ElasticityOperator : public SecondOrderOperator {
   std::vector<FaceSide> sides_;             // two per face (the second unused on boundaries)
   std::vector<Real> side_value_;
   std::vector<Vec3> side_gradient_;
-  std::vector<Index> centroid_offset_;      // per cell, into centroid_gradient_
-  std::vector<Vec3> centroid_gradient_;
+  std::vector<Index> point_offset_;         // per cell, into its stencil points (and deltas)
+  mutable std::vector<Vec3> point_delta_;   // scratch: v_j - u_c
+  std::vector<Vec3> centroid_gradient_;     // parallel to the stencil points
   std::vector<Vec3> face_e_;                // unit vector P -> N (or P -> face centroid)
   std::vector<Real> face_d_;                // |d|
 };
