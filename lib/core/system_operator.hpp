@@ -34,6 +34,14 @@ class SystemOperator {
   // Values of dF/dy + c_j dF/dy' in jacobian_pattern() order.
   virtual void jacobian(Real t, Real c_j, std::span<const Real> y, std::span<const Real> yp,
                         std::span<Real> values) = 0;
+
+  // Optional preconditioner P ~ dF/dy + c_j dF/dy' for Krylov solvers (SPGMR). Operators
+  // without one get the generic lagged-Jacobian LU preconditioner of the solver layer.
+  virtual bool has_preconditioner() const { return false; }
+  virtual void preconditioner_setup(Real /*t*/, Real /*c_j*/, std::span<const Real> /*y*/,
+                                    std::span<const Real> /*yp*/) {}
+  // z = P^{-1} r.
+  virtual void preconditioner_solve(std::span<const Real> /*r*/, std::span<Real> /*z*/) {}
 };
 
 // A structural system M y'' + R(t, y) = 0 with a diagonal (lumped FV) mass matrix. The

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <ida/ida.h>
 #include <sunlinsol/sunlinsol_klu.h>
+#include <sunlinsol/sunlinsol_spgmr.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 
 #include "core/error.hpp"
@@ -37,9 +38,16 @@ IdaIntegrator::IdaIntegrator(SystemOperator& op, const IdaOptions& options)
   const Index n = op_.size();
   y_ = sundials::make_serial_vector(n, ctx_.get());
   yp_ = sundials::make_serial_vector(n, ctx_.get());
-  jac_ = sundials::make_csr_matrix(op_.jacobian_pattern(), ctx_.get());
-  solver_ = sundials::LinearSolver(SUNLinSol_KLU(y_.get(), jac_.get(), ctx_.get()));
-  if (!solver_) throw SolverError("SUNLinSol_KLU failed");
+  if (options_.linear_solver == IdaOptions::LinearSolver::Klu) {
+    jac_ = sundials::make_csr_matrix(op_.jacobian_pattern(), ctx_.get());
+    solver_ = sundials::LinearSolver(SUNLinSol_KLU(y_.get(), jac_.get(), ctx_.get()));
+  } else {
+    solver_ = sundials::LinearSolver(
+        SUNLinSol_SPGMR(y_.get(), SUN_PREC_LEFT, options_.krylov_dimension, ctx_.get()));
+    if (!op_.has_preconditioner())
+      fallback_preconditioner_ = std::make_unique<JacobianLuPreconditioner>(op_);
+  }
+  if (!solver_) throw SolverError("creating the IDA linear solver failed");
   mem_ = IDACreate(ctx_.get());
   if (!mem_) throw SolverError("IDACreate failed");
 }
@@ -57,7 +65,13 @@ void IdaIntegrator::initialize(Real t0, std::span<const Real> y0, std::span<cons
   check(IDASStolerances(mem_, fixed ? 1e10 : options_.rtol, fixed ? 1e10 : options_.atol),
         "IDASStolerances");
   check(IDASetLinearSolver(mem_, solver_.get(), jac_.get()), "IDASetLinearSolver");
-  check(IDASetJacFn(mem_, jacobian_trampoline), "IDASetJacFn");
+  if (jac_) {
+    check(IDASetJacFn(mem_, jacobian_trampoline), "IDASetJacFn");
+  } else {
+    check(IDASetPreconditioner(mem_, preconditioner_setup_trampoline,
+                               preconditioner_solve_trampoline),
+          "IDASetPreconditioner");
+  }
   check(IDASetMaxOrd(mem_, options_.max_order), "IDASetMaxOrd");
   check(IDASetMaxNumSteps(mem_, options_.max_steps), "IDASetMaxNumSteps");
   auto id = sundials::make_serial_vector(op_.size(), ctx_.get());
@@ -118,6 +132,8 @@ IntegratorStats IdaIntegrator::stats() const {
   IDAGetNumNonlinSolvConvFails(mem_, &s.newton_fails);
   IDAGetLastOrder(mem_, &s.last_order);
   IDAGetLastStep(mem_, &s.last_step);
+  IDAGetNumLinIters(mem_, &s.linear_iters);
+  IDAGetNumPrecEvals(mem_, &s.preconditioner_setups);
   return s;
 }
 
@@ -145,6 +161,29 @@ int IdaIntegrator::root_trampoline(Real t, N_Vector y, N_Vector yp, Real* g, voi
   return me->guarded([&] {
     me->roots_(t, sundials::as_span(y), sundials::as_span(yp),
                std::span<Real>(g, static_cast<std::size_t>(me->n_roots_)));
+  });
+}
+
+int IdaIntegrator::preconditioner_setup_trampoline(Real t, N_Vector y, N_Vector yp, N_Vector,
+                                                   Real c_j, void* self) {
+  auto* me = static_cast<IdaIntegrator*>(self);
+  return me->guarded([&] {
+    if (me->fallback_preconditioner_)
+      me->fallback_preconditioner_->setup(t, c_j, sundials::as_span(y), sundials::as_span(yp));
+    else
+      me->op_.preconditioner_setup(t, c_j, sundials::as_span(y), sundials::as_span(yp));
+  });
+}
+
+int IdaIntegrator::preconditioner_solve_trampoline(Real, N_Vector, N_Vector, N_Vector,
+                                                   N_Vector rv, N_Vector zv, Real, Real,
+                                                   void* self) {
+  auto* me = static_cast<IdaIntegrator*>(self);
+  return me->guarded([&] {
+    if (me->fallback_preconditioner_)
+      me->fallback_preconditioner_->solve(sundials::as_span(rv), sundials::as_span(zv));
+    else
+      me->op_.preconditioner_solve(sundials::as_span(rv), sundials::as_span(zv));
   });
 }
 

@@ -6,11 +6,17 @@
 #include <vector>
 
 #include "core/system_operator.hpp"
+#include "solvers/jacobian_lu_preconditioner.hpp"
 #include "solvers/sundials_handles.hpp"
 
 namespace rfmems {
 
 struct IdaOptions {
+  // Klu: sparse direct Newton solves. Spgmr: GMRES preconditioned by the operator's own
+  // preconditioner, or by an LU factorisation of its Jacobian lagged between setups.
+  enum class LinearSolver { Klu, Spgmr };
+  LinearSolver linear_solver = LinearSolver::Klu;
+  int krylov_dimension = 30;
   Real rtol = 1e-6;
   Real atol = 1e-12;
   int max_order = 5;
@@ -24,6 +30,7 @@ struct IdaOptions {
 
 struct IntegratorStats {
   long steps = 0, residual_evals = 0, jacobian_evals = 0, newton_iters = 0, linear_setups = 0;
+  long linear_iters = 0, preconditioner_setups = 0;
   long error_test_fails = 0, newton_fails = 0;
   int last_order = 0;
   Real last_step = 0;
@@ -59,6 +66,11 @@ class IdaIntegrator {
   static int jacobian_trampoline(Real t, Real c_j, N_Vector y, N_Vector yp, N_Vector r,
                                  SUNMatrix J, void* self, N_Vector, N_Vector, N_Vector);
   static int root_trampoline(Real t, N_Vector y, N_Vector yp, Real* g, void* self);
+  static int preconditioner_setup_trampoline(Real t, N_Vector y, N_Vector yp, N_Vector r,
+                                             Real c_j, void* self);
+  static int preconditioner_solve_trampoline(Real t, N_Vector y, N_Vector yp, N_Vector r,
+                                             N_Vector rv, N_Vector zv, Real c_j, Real delta,
+                                             void* self);
   template <class F>
   int guarded(F&& body);
 
@@ -74,6 +86,7 @@ class IdaIntegrator {
   int n_roots_ = 0;
   RootFunction roots_;
   std::exception_ptr pending_;
+  std::unique_ptr<JacobianLuPreconditioner> fallback_preconditioner_;
 };
 
 }  // namespace rfmems

@@ -1,0 +1,155 @@
+// The SUNDIALS layer on problems with closed-form answers:
+//  - IDA (KLU and SPGMR) on undamped oscillators m u'' + k u = 0: u = cos(w t);
+//  - IDA root finding: the first zero of u at t = pi / (2 w);
+//  - fixed-step mode with max order 1 is exactly backward Euler (discrete recurrence);
+//  - a RecoverableError in the residual makes IDA retry with a smaller step;
+//  - KINSOL with the exact Jacobian on a nonlinear system, and the one-step linear case.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/error.hpp"
+#include "core/structural_systems.hpp"
+#include "solvers/ida_integrator.hpp"
+#include "solvers/kinsol_solver.hpp"
+#include "solvers/static_solve.hpp"
+
+using namespace rfmems;
+
+namespace {
+
+// n independent oscillators m u'' + k_i u + c_i u^3 = f_i.
+class Oscillators : public SecondOrderOperator {
+ public:
+  Oscillators(std::vector<double> k, std::vector<double> cubic = {}, std::vector<double> f = {})
+      : k_(std::move(k)), c_(cubic), f_(f) {
+    c_.resize(k_.size(), 0.0);
+    f_.resize(k_.size(), 0.0);
+    for (std::size_t i = 0; i < k_.size(); ++i) {
+      pattern_.col_idx.push_back(static_cast<Index>(i));
+      pattern_.row_ptr.push_back(static_cast<Index>(i + 1));
+    }
+  }
+  Index size() const override { return static_cast<Index>(k_.size()); }
+  void internal_residual(Real t, std::span<const Real> y, std::span<Real> r) override {
+    if (fail_after >= 0 && t > fail_after && !failed_once) {
+      failed_once = true;
+      throw RecoverableError("try a smaller step");
+    }
+    for (std::size_t i = 0; i < k_.size(); ++i) r[i] = k_[i] * y[i] + c_[i] * std::pow(y[i], 3) - f_[i];
+  }
+  const CsrPattern& stiffness_pattern() const override { return pattern_; }
+  void stiffness(Real, std::span<const Real> y, std::span<Real> v) override {
+    for (std::size_t i = 0; i < k_.size(); ++i) v[i] = k_[i] + 3 * c_[i] * y[i] * y[i];
+  }
+  std::vector<Real> mass_diagonal() const override { return std::vector<Real>(k_.size(), 1.0); }
+  double fail_after = -1;
+  bool failed_once = false;
+
+ private:
+  std::vector<double> k_, c_, f_;
+  CsrPattern pattern_;
+};
+
+void run_oscillators(IdaOptions::LinearSolver solver) {
+  Oscillators osc({1.0, 4.0, 25.0});  // w = 1, 2, 5
+  FirstOrderSystem system(osc);
+  IdaOptions options;
+  options.rtol = 1e-9;
+  options.atol = 1e-12;
+  options.linear_solver = solver;
+  IdaIntegrator ida(system, options);
+  std::vector<double> y0 = {1, 1, 1, 0, 0, 0}, yp0 = {0, 0, 0, -1, -4, -25};
+  ida.initialize(0.0, y0, yp0);
+  ida.advance(3.0);
+  const double w[3] = {1, 2, 5};
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(ida.y()[i], std::cos(w[i] * 3.0), 1e-6) << "oscillator " << i;
+  IntegratorStats s = ida.stats();
+  EXPECT_GT(s.steps, 50);
+  if (solver == IdaOptions::LinearSolver::Spgmr) {
+    EXPECT_GT(s.linear_iters, 0);
+  }
+}
+
+}  // namespace
+
+TEST(Ida, OscillatorsWithKlu) { run_oscillators(IdaOptions::LinearSolver::Klu); }
+TEST(Ida, OscillatorsWithPreconditionedSpgmr) { run_oscillators(IdaOptions::LinearSolver::Spgmr); }
+
+TEST(Ida, RootFindingLocatesTheFirstZero) {
+  Oscillators osc({4.0});
+  FirstOrderSystem system(osc);
+  IdaOptions options;
+  options.rtol = 1e-8;
+  options.atol = 1e-12;
+  IdaIntegrator ida(system, options);
+  ida.set_roots(1, [](double, std::span<const double> y, std::span<const double>, std::span<double> g) {
+    g[0] = y[0];
+  });
+  std::vector<double> y0 = {1, 0}, yp0 = {0, -4};
+  ida.initialize(0.0, y0, yp0);
+  EXPECT_EQ(ida.advance(10.0), IdaIntegrator::Status::Root);
+  EXPECT_NEAR(ida.time(), M_PI / 4, 1e-6);
+  EXPECT_EQ(ida.roots_found()[0], -1);  // falling through zero
+}
+
+TEST(Ida, FixedStepOrderOneIsBackwardEuler) {
+  const double w2 = 9.0, h = 0.01;
+  Oscillators osc({w2});
+  FirstOrderSystem system(osc);
+  IdaOptions options;
+  options.max_order = 1;
+  options.fixed_step = h;
+  IdaIntegrator ida(system, options);
+  std::vector<double> y0 = {1, 0}, yp0 = {0, -w2};
+  ida.initialize(0.0, y0, yp0);
+  ida.advance(0.5);
+  // Backward Euler: u' = v, v' = -w2 u  =>  [1, -h; h w2, 1] x_{n+1} = x_n.
+  double u = 1, v = 0;
+  const int steps = static_cast<int>(std::round(ida.time() / h));
+  for (int n = 0; n < steps; ++n) {
+    double det = 1 + h * h * w2;
+    double un = (u + h * v) / det, vn = (v - h * w2 * u) / det;
+    u = un;
+    v = vn;
+  }
+  EXPECT_EQ(ida.stats().steps, steps);
+  EXPECT_NEAR(ida.y()[0], u, 1e-9);
+  EXPECT_NEAR(ida.y()[1], v, 1e-8);
+}
+
+TEST(Ida, RecoverableErrorRetriesTheStep) {
+  Oscillators osc({1.0});
+  osc.fail_after = 0.5;
+  FirstOrderSystem system(osc);
+  IdaOptions options;
+  options.rtol = 1e-8;
+  options.atol = 1e-12;
+  IdaIntegrator ida(system, options);
+  std::vector<double> y0 = {1, 0}, yp0 = {0, -1};
+  ida.initialize(0.0, y0, yp0);
+  ida.advance(2.0);
+  EXPECT_TRUE(osc.failed_once);
+  EXPECT_NEAR(ida.y()[0], std::cos(2.0), 1e-6);
+}
+
+TEST(Kinsol, NewtonOnANonlinearSystem) {
+  // u + u^3 = 10 has the root u = 2.
+  Oscillators osc({1.0, 1.0}, {1.0, 0.0}, {10.0, 3.0});
+  KinsolOptions options;
+  options.relative_tolerance = 1e-12;
+  options.line_search = true;
+  StaticSolution s = solve_static(osc, 0.0, options, {1.0, 0.0});
+  EXPECT_NEAR(s.y[0], 2.0, 1e-10);
+  EXPECT_NEAR(s.y[1], 3.0, 1e-12);
+  EXPECT_GT(s.stats.newton_iters, 2);
+  EXPECT_LT(s.stats.final_residual, 1e-10);
+}
+
+TEST(Kinsol, LinearProblemTakesOneNewtonStep) {
+  Oscillators osc({2.0, 5.0}, {}, {4.0, -10.0});
+  StaticSolution s = solve_static(osc, 0.0);
+  EXPECT_EQ(s.stats.newton_iters, 1);
+  EXPECT_NEAR(s.y[0], 2.0, 1e-12);
+  EXPECT_NEAR(s.y[1], -2.0, 1e-12);
+}
