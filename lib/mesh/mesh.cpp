@@ -199,6 +199,11 @@ void MeshBuilder::add_boundary_face(std::vector<Index> nodes, const std::string&
   tagged_faces_.emplace_back(std::move(nodes), patch);
 }
 
+void MeshBuilder::set_ownership(Index n_owned, std::vector<Index> global_ids) {
+  n_owned_ = n_owned;
+  global_ids_ = std::move(global_ids);
+}
+
 void MeshBuilder::reverse_all_cells() {
   for (auto& cell : cells_) std::reverse(cell.second.begin(), cell.second.end());
 }
@@ -325,9 +330,9 @@ Mesh MeshBuilder::build(const std::string& source, const std::string& default_pa
     mesh.cell_node_offsets_.push_back(static_cast<Index>(mesh.cell_node_list_.size()));
     for (Index r : cell_raw_faces[c]) mesh.cell_face_list_.push_back(new_index[r]);
     mesh.cell_face_offsets_.push_back(static_cast<Index>(mesh.cell_face_list_.size()));
-    mesh.global_cell_id_.push_back(c);
+    mesh.global_cell_id_.push_back(global_ids_.empty() ? c : global_ids_.at(c));
   }
-  mesh.n_owned_cells_ = nc;
+  mesh.n_owned_cells_ = n_owned_ >= 0 ? n_owned_ : nc;
 
   mesh.compute_geometry();
   try {

@@ -111,6 +111,9 @@ class MeshBuilder {
 
   Index n_nodes() const { return static_cast<Index>(nodes_.size()); }
   Index n_cells() const { return static_cast<Index>(cells_.size()); }
+  // Marks cells [0, n_owned) as owned by this rank and the rest as ghosts, with their global
+  // numbers (default: all owned, global = local).
+  void set_ownership(Index n_owned, std::vector<Index> global_ids);
   // Reverses the node order of every cell: a 2D mesh drawn clockwise becomes counterclockwise.
   void reverse_all_cells();
   // Signed area (2D) or volume (3D) of cell c from its node order.
@@ -121,6 +124,8 @@ class MeshBuilder {
   std::vector<Vec3> nodes_;
   std::vector<std::pair<CellShape, std::vector<Index>>> cells_;
   std::vector<std::pair<std::vector<Index>, std::string>> tagged_faces_;
+  Index n_owned_ = -1;
+  std::vector<Index> global_ids_;
 };
 
 // The faces of a cell as node lists, each ordered so its normal points out of the cell
