@@ -5,9 +5,14 @@
 //
 // Reference: beam theory with shear deformation (Timoshenko beam),
 //   w(L) = P L^3 / (3 E I) + P L / (k G A),  k = 5/6,
-// which the 3D solution matches up to the clamp's local (Saint-Venant, Poisson) effects:
-// about a per cent at L/h = 10. The measured deflection is the mean u_y over the loaded end
-// face, each face's value reconstructed at its centroid from its owner cell.
+// which the 3D solution matches up to the clamp's local (Saint-Venant, Poisson) effects: a
+// mesh study (quadratic reconstruction, 60 x 6 x 6 to 120 x 12 x 12) extrapolates to 0.3 %
+// below it. The measured deflection is the mean u_y over the loaded end face, each face's
+// value reconstructed at its centroid from its owner cell.
+//
+// Discretisation: the 3D default (quadratic reconstruction). Its remaining error is the
+// bending error of low-order cell-centred FV, ~ (dx/h)^2 (measured: -2.4 % at 80 x 8 x 8,
+// -0.36 % at 160 x 8 x 8), hence the cells elongated along the beam.
 //
 // Asserted: one Newton step (linear problem); the tip deflection on the finer mesh within 2 %
 // of the reference; refinement moving the coarse answer towards the fine one (the 2 % is not
@@ -35,7 +40,7 @@ const double w_reference = w_bending + w_shear;
 
 struct Result {
   double tip;            // mean u_y over the loaded face [m]
-  double root_sigma_xx;  // bending stress at the top of the clamp section, from the cells
+  double root_sigma_xx;  // mean sigma_xx over the upper half of the first cell layer [Pa]
   long newton;
   double seconds;
 };
@@ -63,7 +68,11 @@ Result solve(int nx, int ny, int nz) {
   }
   const LinearElastic material{E, nu, 7800, Hypothesis::ThreeD};
   ElasticityOperator op(mesh, material, bcs);
-  StaticSolution s = solve_static(op, 0.0);
+  // Linear problem: one Newton step. The cap only makes a wrong Jacobian fail in seconds
+  // instead of after KINSOL's default 50 factorisations.
+  KinsolOptions options;
+  options.max_iterations = 3;
+  StaticSolution s = solve_static(op, 0.0, options);
   const std::vector<Mat3> grad = op.cell_gradients(0.0, s.y);
 
   const Patch& right = mesh.patches().at(mesh.find_patch("right"));
@@ -90,7 +99,7 @@ Result solve(int nx, int ny, int nz) {
 }  // namespace
 
 TEST(CantileverBox3D, TipDeflectionMatchesBeamTheoryWithShear) {
-  const int sizes[2][3] = {{40, 4, 4}, {80, 8, 8}};
+  const int sizes[2][3] = {{80, 8, 8}, {160, 8, 8}};
   Result r[2];
   std::printf("reference w(L) = %.6e m (bending %.6e, shear %.6e)\n", -w_reference, -w_bending, -w_shear);
   for (int i = 0; i < 2; ++i) {
@@ -99,6 +108,7 @@ TEST(CantileverBox3D, TipDeflectionMatchesBeamTheoryWithShear) {
                 "Newton, %.2f s\n",
                 sizes[i][0], sizes[i][1], sizes[i][2], r[i].tip, 100 * (-r[i].tip / w_reference - 1),
                 r[i].root_sigma_xx, r[i].newton, r[i].seconds);
+    std::fflush(stdout);
     EXPECT_EQ(r[i].newton, 1) << "a linear static problem needs one Newton step";
   }
   EXPECT_NEAR(-r[1].tip / w_reference, 1.0, 0.02);

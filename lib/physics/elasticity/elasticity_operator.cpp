@@ -38,7 +38,7 @@ ElasticityOperator::ElasticityOperator(const Mesh& mesh, const LinearElastic& ma
           default: return BoundaryPoint::None;
         }
       },
-      reconstruction_degree);
+      reconstruction_degree > 0 ? reconstruction_degree : default_reconstruction_degree(dim_));
 
   // Geometry of each face and the evaluation weights of the reconstructions at it.
   const Index nf = mesh_.n_faces();
