@@ -19,7 +19,9 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 #include "io/case_file.hpp"
+#include "io/interrupt_cleanup.hpp"
 #include "io/json_summary.hpp"
 #include "io/probes.hpp"
 #include "io/progress.hpp"
@@ -67,7 +69,8 @@ int run(const Options& options) {
 
   const std::string output = options.output.empty() ? "out/" + name + ".h5" : options.output;
   ElasticityResults results(output, scene, std::move(probes));
-  ProgressReporter progress(options.quiet, settings.end_time);
+  remove_on_interrupt(temp_path_for(output));  // exceptions clean up; signals need this
+  ProgressReporter progress(options.quiet || type == AnalysisType::Static, settings.end_time);
   const AnalysisStats stats = run_analysis(scene, settings, results, progress);
   progress.finish();
   results.finish(case_file, name, stats, elapsed());
@@ -76,9 +79,12 @@ int run(const Options& options) {
   if (options.json) {
     std::cout << json_text(summary) << std::flush;
   } else if (!options.quiet) {
-    for (const auto& [probe, value] : summary["probes"].items())
-      std::printf("probe %s: ux = %.6e m, uy = %.6e m\n", probe.c_str(),
-                  value["ux"].get<double>(), value["uy"].get<double>());
+    for (const auto& [probe, value] : summary["probes"].items()) {
+      std::printf("probe %s: ux = %.6e m, uy = %.6e m", probe.c_str(), value["ux"].get<double>(),
+                  value["uy"].get<double>());
+      if (scene.mesh->dim() == 3) std::printf(", uz = %.6e m", value["uz"].get<double>());
+      std::printf("\n");
+    }
     std::printf("wrote %s and %s (%.1f s)\n", results.path().c_str(),
                 results.xdmf_path().c_str(), elapsed());
   }
