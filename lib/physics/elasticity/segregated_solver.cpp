@@ -9,9 +9,13 @@
 namespace rfmems {
 
 namespace {
+// Infinity norm that propagates NaN (std::max would silently drop it).
 Real max_abs(const std::vector<Real>& v) {
   Real m = 0;
-  for (Real x : v) m = std::max(m, std::abs(x));
+  for (Real x : v) {
+    if (std::isnan(x)) return x;
+    m = std::max(m, std::abs(x));
+  }
   return m;
 }
 }  // namespace
