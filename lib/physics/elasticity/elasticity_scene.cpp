@@ -215,10 +215,17 @@ ElasticityScene build_elasticity_scene(const CaseNode& root, const std::string& 
     scene.segregated = read_segregated(root);
   }
 
+  // Face-gradient reconstruction: linear (the thesis's scheme), quadratic or cubic; the
+  // default depends on the dimension (see ElasticityOperator).
+  const std::map<std::string, int> degrees{
+      {"default", 0}, {"linear", 1}, {"quadratic", 2}, {"cubic", 3}};
+  const int degree = degrees.at(model.get_choice(
+      "reconstruction", {"default", "linear", "quadratic", "cubic"}, "default"));
+
   std::vector<ElasticityBoundary> bcs = read_boundaries(root, *scene.mesh, scene.load_time);
   VectorField body_force = read_body_force(root, dim);
   scene.op = std::make_unique<ElasticityOperator>(*scene.mesh, scene.material, std::move(bcs),
-                                                  std::move(body_force));
+                                                  std::move(body_force), degree);
   return scene;
 }
 
