@@ -1,0 +1,600 @@
+#include "physics/plate/plate_operator.hpp"
+
+#include <fmt/format.h>
+
+#include <map>
+#include <set>
+#include <stdexcept>
+
+#include "core/error.hpp"
+#include <cstdlib>
+static const double kMid = std::getenv("PLATE_MID") ? std::atof(std::getenv("PLATE_MID")) : 4.0;
+static const int kSym = std::getenv("PLATE_SYM") ? std::atoi(std::getenv("PLATE_SYM")) : 0;
+static const int kEBend = std::getenv("PLATE_EBEND") ? std::atoi(std::getenv("PLATE_EBEND")) : 0;
+static const int kCompact = std::getenv("PLATE_COMPACT") ? std::atoi(std::getenv("PLATE_COMPACT")) : 0;
+
+namespace rfmems {
+
+using Kind = PlateBoundary::Kind;
+
+namespace {
+
+// Maps a cell's unknowns (w, beta_x, beta_y) to its rotation vector (beta_x, beta_y, 0); the
+// transpose sends a rotation-space vector to the two moment rows.
+Mat3 rotation_selector() {
+  Mat3 s = Mat3::Zero();
+  s(0, 1) = 1;
+  s(1, 2) = 1;
+  return s;
+}
+
+Vec3 tangent(const Vec3& S) {
+  const Vec3 n = S.normalized();
+  return Vec3(-n.y(), n.x(), 0);
+}
+
+}  // namespace
+
+PlateOperator::PlateOperator(const Mesh& mesh, const PlateSection& section,
+                             std::vector<PlateBoundary> boundaries, ScalarField pressure,
+                             int reconstruction_degree)
+    : mesh_(mesh),
+      section_(section),
+      boundaries_(std::move(boundaries)),
+      pressure_(std::move(pressure)) {
+  if (mesh_.dim() != 2) throw InputError("plate: the mid-surface mesh must be 2D");
+  if (boundaries_.size() != mesh_.patches().size())
+    throw InputError(fmt::format("plate: {} boundary conditions for {} patches",
+                                 boundaries_.size(), mesh_.patches().size()));
+  if (!(section_.E > 0) || !(section_.thickness > 0) || !(section_.nu > -1 && section_.nu < 0.5) ||
+      !(section_.shear_factor > 0) || section_.rho < 0)
+    throw InputError(fmt::format("plate: bad section (E = {}, nu = {}, h = {}, k = {}, rho = {})",
+                                 section_.E, section_.nu, section_.thickness,
+                                 section_.shear_factor, section_.rho));
+  const Real D = section_.bending_stiffness();
+  mu_ = 0.5 * D * (1 - section_.nu);
+  lambda_ = D * section_.nu;
+  kgh_ = section_.shear_stiffness();
+
+  auto patch_bc = [this](Index f) -> const PlateBoundary& { return boundaries_[mesh_.face_patch(f)]; };
+  beta_rec_ = std::make_unique<PolynomialReconstruction>(
+      mesh_,
+      [&](Index f) {
+        return patch_bc(f).prescribes_rotation() ? BoundaryPoint::Value : BoundaryPoint::None;
+      },
+      reconstruction_degree);
+  w_rec_ = std::make_unique<PolynomialReconstruction>(
+      mesh_,
+      [&](Index f) {
+        return patch_bc(f).prescribes_deflection() ? BoundaryPoint::Value : BoundaryPoint::None;
+      },
+      reconstruction_degree);
+
+  // Face geometry: d = x_N - x_P (x_f - x_P on a boundary), S = alpha e + k (over-relaxed).
+  const Index nf = mesh_.n_faces();
+  face_e_.resize(nf);
+  face_k_.resize(nf);
+  face_d_.resize(nf);
+  face_alpha_.resize(nf);
+  face_eval_.resize(2 * nf);
+  mid_eval_.resize(2 * nf);
+  for (Index f = 0; f < nf; ++f) {
+    const Index p = mesh_.face_owner(f), n = mesh_.face_neighbour(f);
+    const Vec3& S = mesh_.face_area(f);
+    const Vec3 d = (n >= 0 ? mesh_.cell_centroid(n) : mesh_.face_centroid(f)) - mesh_.cell_centroid(p);
+    face_d_[f] = d.norm();
+    face_e_[f] = d / face_d_[f];
+    const Real eS = face_e_[f].dot(S);
+    if (!(eS > 0))
+      throw MeshError(fmt::format("plate: face {} is crossed backwards by its centroid line", f));
+    face_alpha_[f] = S.squaredNorm() / eS;
+    face_k_[f] = S - face_alpha_[f] * face_e_[f];
+    const Vec3 mid = mesh_.cell_centroid(p) + 0.5 * d;
+    face_eval_[2 * f] = make_eval(p, mesh_.face_centroid(f));
+    mid_eval_[2 * f] = make_eval(p, mid);
+    if (n >= 0) {
+      face_eval_[2 * f + 1] = make_eval(n, mesh_.face_centroid(f));
+      mid_eval_[2 * f + 1] = make_eval(n, mid);
+    }
+  }
+  std::vector<Real> value;
+  std::vector<Vec3> gradient;
+  point_offset_.push_back(0);
+  for (Index c = 0; c < mesh_.n_cells(); ++c) {
+    beta_rec_->weights_at(c, mesh_.cell_centroid(c), value, gradient);
+    centroid_gradient_.insert(centroid_gradient_.end(), gradient.begin(), gradient.end());
+    point_offset_.push_back(static_cast<Index>(centroid_gradient_.size()));
+  }
+  point_delta_.resize(centroid_gradient_.size());
+
+  // Cell shear strain: least-squares fit of gamma.a_f = g_f over the cell's faces, weighted by
+  // face length; a_f = e_f where the face strain exists, the outward normal on load/free faces.
+  for (Index c = 0; c < mesh_.n_cells(); ++c) {
+    Mat3 M = Mat3::Zero();
+    auto faces = mesh_.cell_faces(c);
+    std::vector<Vec3> a(faces.size());
+    for (std::size_t i = 0; i < faces.size(); ++i) {
+      const Index f = faces[i];
+      const bool strain = !mesh_.is_boundary(f) || patch_bc(f).prescribes_deflection();
+      a[i] = strain ? face_e_[f] : mesh_.face_area(f).normalized();
+      M += mesh_.face_area(f).norm() * a[i] * a[i].transpose();
+    }
+    M(2, 2) = 1;
+    if (M.topLeftCorner<2, 2>().determinant() <= 1e-12 * M.topLeftCorner<2, 2>().squaredNorm())
+      throw MeshError(fmt::format("plate: cell {} cannot fit a shear strain from its faces", c));
+    const Mat3 Minv = M.inverse();
+    for (std::size_t i = 0; i < faces.size(); ++i)
+      strain_weights_.push_back({faces[i], Minv * a[i] * mesh_.face_area(faces[i]).norm()});
+    strain_offset_.push_back(static_cast<Index>(strain_weights_.size()));
+  }
+
+  assemble_stiffness();
+}
+
+PlateOperator::Eval PlateOperator::make_eval(Index c, const Vec3& x) {
+  std::vector<Real> value;
+  std::vector<Vec3> gradient;
+  beta_rec_->weights_at(c, x, value, gradient);
+  Eval s;
+  s.cell = c;
+  s.begin = static_cast<Index>(eval_value_.size());
+  eval_value_.insert(eval_value_.end(), value.begin(), value.end());
+  eval_gradient_.insert(eval_gradient_.end(), gradient.begin(), gradient.end());
+  s.end = static_cast<Index>(eval_value_.size());
+  return s;
+}
+
+Vec3 PlateOperator::bc_value(const PlateBoundary& bc, const Vec3& x, Real t) const {
+  return bc.kind == Kind::Clamped || bc.kind == Kind::Free ? Vec3::Zero() : bc.at(x, t);
+}
+
+void PlateOperator::compute_point_deltas(Real t, std::span<const Real> y) const {
+  for (Index c = 0; c < mesh_.n_cells(); ++c) {
+    const Vec3 bc_ = beta(y, c);
+    auto points = beta_rec_->points(c);
+    Vec3* delta = point_delta_.data() + point_offset_[c];
+    for (std::size_t j = 0; j < points.size(); ++j) {
+      const StencilPoint& p = points[j];
+      if (p.kind == StencilPoint::Kind::Cell) {
+        delta[j] = beta(y, p.cell) - bc_;
+      } else if (p.kind == StencilPoint::Kind::BoundaryValue) {
+        const Vec3 v = bc_value(boundaries_[mesh_.face_patch(p.face)], mesh_.face_centroid(p.face), t);
+        delta[j] = Vec3(v[1], v[2], 0) - bc_;
+      } else {
+        throw std::logic_error("plate: mirror stencil points are not supported");
+      }
+    }
+  }
+}
+
+Vec3 PlateOperator::eval_value(const Eval& s, std::span<const Real> y) const {
+  Vec3 v = beta(y, s.cell);
+  const Vec3* delta = point_delta_.data() + point_offset_[s.cell];
+  for (Index j = 0; j < s.end - s.begin; ++j) v += eval_value_[s.begin + j] * delta[j];
+  return v;
+}
+
+Mat3 PlateOperator::eval_gradient(const Eval& s) const {
+  Mat3 g = Mat3::Zero();
+  const Vec3* delta = point_delta_.data() + point_offset_[s.cell];
+  for (Index j = 0; j < s.end - s.begin; ++j) g += delta[j] * eval_gradient_[s.begin + j].transpose();
+  return g;
+}
+
+Vec3 PlateOperator::face_moment(const Mat3& G, const Vec3& S) const {
+  return mu_ * (G * S + G.transpose() * S) + lambda_ * G.trace() * S;
+}
+
+Mat3 PlateOperator::moment(const Mat3& G) const {
+  Mat3 M = mu_ * (G + G.transpose()) + lambda_ * G.trace() * Mat3::Identity();
+  M(2, 2) = 0;
+  return M;
+}
+
+void PlateOperator::compute_strains(Real t, std::span<const Real> y, std::vector<Real>& gamma_e,
+                                    std::vector<Vec3>& gamma_c) const {
+  const Index nf = mesh_.n_faces();
+  gamma_e.assign(nf, 0.0);
+  for (Index f = 0; f < nf; ++f) {
+    const Index p = mesh_.face_owner(f), n = mesh_.face_neighbour(f);
+    const Vec3& e = face_e_[f];
+    const Real d = face_d_[f];
+    if (n >= 0) {
+      const Vec3 mid = 0.5 * (eval_value(mid_eval_[2 * f], y) + eval_value(mid_eval_[2 * f + 1], y));
+      const Vec3 mean = (beta(y, p) + kMid * mid + beta(y, n)) / (2 + kMid);
+      gamma_e[f] = (y[3 * n] - y[3 * p]) / d + mean.dot(e);
+      continue;
+    }
+    const PlateBoundary& bc = boundaries_[mesh_.face_patch(f)];
+    if (!bc.prescribes_deflection()) continue;
+    const Vec3 v = bc_value(bc, mesh_.face_centroid(f), t);
+    Vec3 beta_b(v[1], v[2], 0);
+    if (!bc.prescribes_rotation()) {
+      const Vec3 extrapolated = eval_value(face_eval_[2 * f], y);
+      if (bc.kind == Kind::SimplySupportedHard) {
+        const Vec3 tt = tangent(mesh_.face_area(f));
+        beta_b = tt * tt.dot(beta_b) + (extrapolated - tt * tt.dot(extrapolated));
+      } else {
+        beta_b = extrapolated;
+      }
+    }
+    const Vec3 mean = (beta(y, p) + kMid * eval_value(mid_eval_[2 * f], y) + beta_b) / (2 + kMid);
+    gamma_e[f] = (v[0] - y[3 * p]) / d + mean.dot(e);
+  }
+  gamma_c.assign(mesh_.n_cells(), Vec3::Zero());
+  for (Index c = 0; c < mesh_.n_cells(); ++c)
+    for (Index k = strain_offset_[c]; k < strain_offset_[c + 1]; ++k) {
+      const Index f = strain_weights_[k].face;
+      Real g = gamma_e[f];
+      if (mesh_.is_boundary(f)) {
+        const PlateBoundary& bc = boundaries_[mesh_.face_patch(f)];
+        if (!bc.prescribes_deflection()) g = bc_value(bc, mesh_.face_centroid(f), t)[0] / kgh_;
+      }
+      gamma_c[c] += g * strain_weights_[k].weight;
+    }
+}
+
+void PlateOperator::internal_residual(Real t, std::span<const Real> y, std::span<Real> r) {
+  std::fill(r.begin(), r.end(), 0.0);
+  auto add_moment = [&](Index c, const Vec3& m) {
+    r[3 * c + kBetaX] += m[0];
+    r[3 * c + kBetaY] += m[1];
+  };
+  compute_point_deltas(t, y);
+  std::vector<Real> gamma_e;
+  std::vector<Vec3> gamma_c;
+  compute_strains(t, y, gamma_e, gamma_c);
+
+  for (Index f = 0; f < mesh_.n_faces(); ++f) {
+    const Index p = mesh_.face_owner(f), n = mesh_.face_neighbour(f);
+    const Vec3& S = mesh_.face_area(f);
+    const Vec3& xf = mesh_.face_centroid(f);
+    const Vec3& e = face_e_[f];
+    const Real inv_d = 1.0 / face_d_[f];
+
+    // Bending: face moment M_f S_f.
+    const PlateBoundary* bc = n >= 0 ? nullptr : &boundaries_[mesh_.face_patch(f)];
+    if (kEBend) {
+      std::vector<GradientTerm> gt;
+      Mat3 out;
+      bending_terms(f, gt, out);
+      Mat3 G = Mat3::Zero();
+      for (const GradientTerm& g : gt) {
+        Vec3 yc(y[3 * g.cell], y[3 * g.cell + 1], y[3 * g.cell + 2]);
+        G += (g.T * yc) * g.h.transpose();
+      }
+      if (bc && (bc->prescribes_rotation() || bc->kind == Kind::SimplySupportedHard)) {
+        const Vec3 v = bc_value(*bc, xf, t);
+        Vec3 b(v[1], v[2], 0);
+        if (bc->kind == Kind::SimplySupportedHard) { const Vec3 tt = tangent(S); b = tt * tt.dot(b); }
+        G += b * inv_d * e.transpose();
+      }
+      const Mat3 M = moment(G);
+      const Real Af = 0.5 * S.norm() * face_d_[f] * e.dot(S.normalized());
+      for (const GradientTerm& g : gt) {
+        Vec3 c = Af * g.T.transpose() * (M * g.h);
+        for (int k = 0; k < 3; ++k) r[3 * g.cell + k] += c[k];
+      }
+      if (bc && bc->kind == Kind::Load) {
+        const Vec3 v = bc_value(*bc, xf, t);
+        std::vector<VectorTerm> vt;
+        value_terms(face_eval_[2 * f], 1.0, Mat3::Identity(), vt);
+        for (const VectorTerm& tv : vt) { Vec3 c = tv.T.transpose() * Vec3(v[1], v[2], 0) * S.norm(); for (int k = 0; k < 3; ++k) r[3 * tv.cell + k] -= c[k]; }
+      }
+    } else if (n >= 0) {
+      const Eval& sp = face_eval_[2 * f];
+      const Eval& sn = face_eval_[2 * f + 1];
+      const Vec3 vp = eval_value(sp, y), vn = eval_value(sn, y);
+      Mat3 G = 0.5 * (eval_gradient(sp) + eval_gradient(sn)) + (vn - vp) * inv_d * e.transpose();
+      if (kCompact) G = 0.5 * (eval_gradient(sp) + eval_gradient(sn)) * (Mat3::Identity() - e * e.transpose()) + (beta(y, n) - beta(y, p)) * inv_d * e.transpose();
+      const Vec3 F = face_moment(G, S);
+      add_moment(p, -F);
+      add_moment(n, F);
+    } else if (bc->prescribes_rotation() || bc->kind == Kind::SimplySupportedHard) {
+      const Eval& sp = face_eval_[2 * f];
+      const Vec3 v = bc_value(*bc, xf, t), vp = eval_value(sp, y);
+      const Vec3 jump = Vec3(v[1], v[2], 0) - vp;
+      if (bc->kind == Kind::SimplySupportedHard) {
+        // Only the tangential rotation is held; only the twisting moment is a reaction.
+        const Vec3 tt = tangent(S);
+        const Mat3 T = tt * tt.transpose();
+        add_moment(p, -(T * face_moment(eval_gradient(sp) + (T * jump) * inv_d * e.transpose(), S)));
+      } else {
+        add_moment(p, -face_moment(eval_gradient(sp) + jump * inv_d * e.transpose(), S));
+      }
+    } else if (bc->kind == Kind::Load) {
+      const Vec3 v = bc_value(*bc, xf, t);
+      add_moment(p, -Vec3(v[1], v[2], 0) * S.norm());
+    }
+
+    // Transverse shear: face force Q_f.S_f, its moment about each centroid.
+    Real FQ;
+    if (n >= 0 || bc->prescribes_deflection()) {
+      const Vec3 gamma_f = n >= 0 ? Vec3(0.5 * (gamma_c[p] + gamma_c[n])) : gamma_c[p];
+      FQ = kgh_ * (face_alpha_[f] * gamma_e[f] + gamma_f.dot(face_k_[f]));
+    } else {
+      FQ = bc_value(*bc, xf, t)[0] * S.norm();
+    }
+    if (kSym && (n >= 0 || bc->prescribes_deflection())) {
+      std::vector<ScalarTerm> st;
+      strain_terms(f, st);
+      for (const ScalarTerm& s : st)
+        for (int k = 0; k < 3; ++k) r[3 * s.cell + k] += FQ * face_d_[f] * s.a[k];
+      continue;
+    }
+    r[3 * p + kW] -= FQ;
+    add_moment(p, (xf - mesh_.cell_centroid(p)) * FQ);
+    if (n >= 0) {
+      r[3 * n + kW] += FQ;
+      add_moment(n, -(xf - mesh_.cell_centroid(n)) * FQ);
+    }
+  }
+  if (pressure_)
+    for (Index c = 0; c < mesh_.n_cells(); ++c)
+      r[3 * c + kW] -= pressure_(mesh_.cell_centroid(c), t) * mesh_.cell_volume(c);
+}
+
+// ---- Jacobian ------------------------------------------------------------------------------
+
+void PlateOperator::value_terms(const Eval& s, Real factor, const Mat3& map,
+                                std::vector<VectorTerm>& out) const {
+  // p_c(x) = beta_c + sum_j v_j (beta_j - beta_c); boundary values are constants.
+  const Mat3 sel = map * rotation_selector();
+  auto points = beta_rec_->points(s.cell);
+  Real sum = 0;
+  for (Index j = 0; j < s.end - s.begin; ++j) {
+    const Real v = eval_value_[s.begin + j];
+    sum += v;
+    if (points[j].kind == StencilPoint::Kind::Cell) out.push_back({points[j].cell, factor * v * sel});
+  }
+  out.push_back({s.cell, factor * (1 - sum) * sel});
+}
+
+void PlateOperator::gradient_terms(const Eval& s, Real grad_factor, Real value_factor,
+                                   const Mat3& value_map, const Vec3& e,
+                                   std::vector<GradientTerm>& out) const {
+  // grad_factor grad p(x) + value_factor (value_map p(x)) e^T.
+  const Mat3 sel = rotation_selector();
+  auto points = beta_rec_->points(s.cell);
+  Vec3 grad_sum = Vec3::Zero();
+  for (Index j = 0; j < s.end - s.begin; ++j) {
+    const Vec3& g = eval_gradient_[s.begin + j];
+    grad_sum += g;
+    if (points[j].kind == StencilPoint::Kind::Cell) out.push_back({points[j].cell, sel, grad_factor * g});
+  }
+  out.push_back({s.cell, sel, -grad_factor * grad_sum});
+  std::vector<VectorTerm> values;
+  value_terms(s, value_factor, value_map, values);
+  for (const VectorTerm& v : values) out.push_back({v.cell, v.T, e});
+}
+
+void PlateOperator::strain_terms(Index f, std::vector<ScalarTerm>& out) const {
+  const Index p = mesh_.face_owner(f), n = mesh_.face_neighbour(f);
+  const Vec3& e = face_e_[f];
+  const Real inv_d = 1.0 / face_d_[f];
+  const Mat3 sel = rotation_selector();
+  std::vector<VectorTerm> mean;  // Simpson's mean of beta along the segment
+  out.push_back({p, Vec3(-inv_d, 0, 0)});
+  const double W = 2 + kMid;
+  mean.push_back({p, sel / W});
+  if (n >= 0) {
+    out.push_back({n, Vec3(inv_d, 0, 0)});
+    mean.push_back({n, sel / W});
+    value_terms(mid_eval_[2 * f], kMid / 2 / W, Mat3::Identity(), mean);
+    value_terms(mid_eval_[2 * f + 1], kMid / 2 / W, Mat3::Identity(), mean);
+  } else {
+    const PlateBoundary& bc = boundaries_[mesh_.face_patch(f)];
+    value_terms(mid_eval_[2 * f], kMid / W, Mat3::Identity(), mean);
+    if (bc.kind == Kind::SimplySupportedHard) {
+      const Vec3 tt = tangent(mesh_.face_area(f));
+      value_terms(face_eval_[2 * f], 1.0 / W, Mat3(Mat3::Identity() - tt * tt.transpose()), mean);
+    } else if (bc.kind == Kind::SimplySupportedSoft) {
+      value_terms(face_eval_[2 * f], 1.0 / W, Mat3::Identity(), mean);
+    }
+  }
+  for (const VectorTerm& m : mean) out.push_back({m.cell, m.T.transpose() * e});
+}
+
+void PlateOperator::bending_terms(Index f, std::vector<GradientTerm>& gterms, Mat3& out) const {
+  const Index n = mesh_.face_neighbour(f);
+  const Vec3& e = face_e_[f];
+  const Real inv_d = 1.0 / face_d_[f];
+  const Mat3 I = Mat3::Identity();
+  out = I;
+  if (n >= 0) {
+    gradient_terms(face_eval_[2 * f], 0.5, -inv_d, I, e, gterms);
+    gradient_terms(face_eval_[2 * f + 1], 0.5, inv_d, I, e, gterms);
+    return;
+  }
+  const PlateBoundary& bc = boundaries_[mesh_.face_patch(f)];
+  if (bc.prescribes_rotation()) {
+    gradient_terms(face_eval_[2 * f], 1.0, -inv_d, I, e, gterms);
+  } else if (bc.kind == Kind::SimplySupportedHard) {
+    const Vec3 tt = tangent(mesh_.face_area(f));
+    out = tt * tt.transpose();
+    gradient_terms(face_eval_[2 * f], 1.0, -inv_d, out, e, gterms);
+  } else if (kEBend) {
+    gradient_terms(face_eval_[2 * f], 1.0, 0.0, I, e, gterms);
+  }
+}
+
+void PlateOperator::assemble_stiffness() {
+  const Index nc = mesh_.n_cells();
+  std::map<std::pair<Index, Index>, Mat3> blocks;
+  auto add = [&](Index row, Index col, const Mat3& b) {
+    auto [it, inserted] = blocks.try_emplace({row, col}, b);
+    if (!inserted) it->second += b;
+  };
+  for (Index c = 0; c < nc; ++c) add(c, c, Mat3::Zero());
+  const Mat3 I = Mat3::Identity(), sel_t = rotation_selector().transpose();
+  auto has_strain = [&](Index f) {
+    return !mesh_.is_boundary(f) || boundaries_[mesh_.face_patch(f)].prescribes_deflection();
+  };
+
+  std::vector<GradientTerm> gterms;
+  std::vector<ScalarTerm> sterms, tmp;
+  for (Index f = 0; f < mesh_.n_faces(); ++f) {
+    const Index p = mesh_.face_owner(f), n = mesh_.face_neighbour(f);
+    const Vec3& S = mesh_.face_area(f);
+    const Vec3& e = face_e_[f];
+    const Real inv_d = 1.0 / face_d_[f];
+
+    // Bending.
+    gterms.clear();
+    Mat3 out = I;
+    if (kEBend) {
+      bending_terms(f, gterms, out);
+      const Real Af = 0.5 * S.norm() * face_d_[f] * e.dot(S.normalized());
+      for (const GradientTerm& g1 : gterms)
+        for (const GradientTerm& g2 : gterms) {
+          const Mat3 X = mu_ * g1.h.dot(g2.h) * I + mu_ * g2.h * g1.h.transpose() + lambda_ * g1.h * g2.h.transpose();
+          add(g1.cell, g2.cell, Af * g1.T.transpose() * X * g2.T);
+        }
+      gterms.clear();
+    } else
+    if (n >= 0 && kCompact) {
+      const Mat3 sel = rotation_selector(), Pt = I - e * e.transpose();
+      for (int which = 0; which < 2; ++which) {
+        const Eval& s = face_eval_[2 * f + which];
+        auto points = beta_rec_->points(s.cell);
+        Vec3 grad_sum = Vec3::Zero();
+        for (Index j = 0; j < s.end - s.begin; ++j) {
+          const Vec3 g = Pt * eval_gradient_[s.begin + j];
+          grad_sum += g;
+          if (points[j].kind == StencilPoint::Kind::Cell) gterms.push_back({points[j].cell, sel, 0.5 * g});
+        }
+        gterms.push_back({s.cell, sel, -0.5 * grad_sum});
+      }
+      gterms.push_back({n, sel, inv_d * e});
+      gterms.push_back({p, sel, -inv_d * e});
+    } else if (n >= 0) {
+      gradient_terms(face_eval_[2 * f], 0.5, -inv_d, I, e, gterms);
+      gradient_terms(face_eval_[2 * f + 1], 0.5, inv_d, I, e, gterms);
+    } else {
+      const PlateBoundary& bc = boundaries_[mesh_.face_patch(f)];
+      if (bc.prescribes_rotation()) {
+        gradient_terms(face_eval_[2 * f], 1.0, -inv_d, I, e, gterms);
+      } else if (bc.kind == Kind::SimplySupportedHard) {
+        const Vec3 tt = tangent(S);
+        out = tt * tt.transpose();
+        gradient_terms(face_eval_[2 * f], 1.0, -inv_d, out, e, gterms);
+      }
+    }
+    // F = mu (G S + G^T S) + lambda tr(G) S with G = a h^T: dF/da = mu (h.S) I + mu h S^T + lambda S h^T.
+    for (const GradientTerm& g : gterms) {
+      const Mat3 dF = mu_ * g.h.dot(S) * I + mu_ * g.h * S.transpose() + lambda_ * S * g.h.transpose();
+      const Mat3 block = sel_t * out * dF * g.T;
+      add(p, g.cell, -block);
+      if (n >= 0) add(n, g.cell, block);
+    }
+
+    // Shear force Q_f.S_f = kGh (alpha gamma_e + gamma_f.k).
+    if (!has_strain(f)) continue;
+    sterms.clear();
+    strain_terms(f, tmp);
+    for (const ScalarTerm& s : tmp) sterms.push_back({s.cell, kgh_ * face_alpha_[f] * s.a});
+    tmp.clear();
+    if (face_k_[f].norm() > 1e-12 * S.norm()) {
+      const Real share = n >= 0 ? 0.5 : 1.0;
+      for (Index c : {p, n}) {
+        if (c < 0) continue;
+        for (Index k = strain_offset_[c]; k < strain_offset_[c + 1]; ++k) {
+          const Index g = strain_weights_[k].face;
+          if (!has_strain(g)) continue;  // prescribed shear: a constant
+          const Real w = kgh_ * share * strain_weights_[k].weight.dot(face_k_[f]);
+          strain_terms(g, tmp);
+          for (const ScalarTerm& s : tmp) sterms.push_back({s.cell, w * s.a});
+          tmp.clear();
+        }
+      }
+    }
+    const Vec3 lever_p = mesh_.face_centroid(f) - mesh_.cell_centroid(p);
+    const Vec3 up(-1, lever_p.x(), lever_p.y());
+    Vec3 un = Vec3::Zero();
+    if (n >= 0) {
+      const Vec3 lever_n = mesh_.face_centroid(f) - mesh_.cell_centroid(n);
+      un = Vec3(1, -lever_n.x(), -lever_n.y());
+    }
+    if (kSym) {
+      std::vector<ScalarTerm> lev;
+      strain_terms(f, lev);
+      for (const ScalarTerm& l : lev)
+        for (const ScalarTerm& s : sterms) add(l.cell, s.cell, face_d_[f] * l.a * s.a.transpose());
+      continue;
+    }
+    for (const ScalarTerm& s : sterms) {
+      add(p, s.cell, up * s.a.transpose());
+      if (n >= 0) add(n, s.cell, un * s.a.transpose());
+    }
+  }
+
+  std::vector<std::set<Index>> stencils(nc);
+  for (const auto& [key, block] : blocks) stencils[key.first].insert(key.second);
+  sparsity_ = std::make_unique<BlockSparsity>(stencils, 3);
+  stiffness_values_.assign(sparsity_->pattern().nnz(), 0.0);
+  for (const auto& [key, block] : blocks) sparsity_->add_block(stiffness_values_, key.first, key.second, block);
+}
+
+void PlateOperator::stiffness(Real, std::span<const Real>, std::span<Real> values) {
+  std::copy(stiffness_values_.begin(), stiffness_values_.end(), values.begin());
+}
+
+std::vector<Real> PlateOperator::mass_diagonal() const {
+  std::vector<Real> m(size());
+  for (Index c = 0; c < mesh_.n_cells(); ++c) {
+    const Real A = mesh_.cell_volume(c);
+    m[3 * c + kW] = section_.mass_per_area() * A;
+    m[3 * c + kBetaX] = m[3 * c + kBetaY] = section_.rotary_inertia() * A;
+  }
+  return m;
+}
+
+// ---- post-processing -----------------------------------------------------------------------
+
+std::vector<Mat3> PlateOperator::rotation_gradients(Real t, std::span<const Real> y) const {
+  compute_point_deltas(t, y);
+  std::vector<Mat3> grad(mesh_.n_cells(), Mat3::Zero());
+  for (Index c = 0; c < mesh_.n_cells(); ++c)
+    for (Index k = point_offset_[c]; k < point_offset_[c + 1]; ++k)
+      grad[c] += point_delta_[k] * centroid_gradient_[k].transpose();
+  return grad;
+}
+
+Mat3 PlateOperator::rotation_gradient_at(Index c, const Vec3& x, Real t, std::span<const Real> y) const {
+  compute_point_deltas(t, y);
+  std::vector<Real> value;
+  std::vector<Vec3> gradient;
+  beta_rec_->weights_at(c, x, value, gradient);
+  Mat3 G = Mat3::Zero();
+  const Vec3* delta = point_delta_.data() + point_offset_[c];
+  for (std::size_t j = 0; j < gradient.size(); ++j) G += delta[j] * gradient[j].transpose();
+  return G;
+}
+
+std::vector<Vec3> PlateOperator::shear_forces(Real t, std::span<const Real> y) const {
+  compute_point_deltas(t, y);
+  std::vector<Real> gamma_e;
+  std::vector<Vec3> gamma_c;
+  compute_strains(t, y, gamma_e, gamma_c);
+  for (Vec3& g : gamma_c) g *= kgh_;
+  return gamma_c;
+}
+
+Real PlateOperator::deflection_at(Index c, const Vec3& x, Real t, std::span<const Real> y) const {
+  std::vector<Real> value;
+  std::vector<Vec3> gradient;
+  w_rec_->weights_at(c, x, value, gradient);
+  auto points = w_rec_->points(c);
+  const Real wc = y[3 * c + kW];
+  Real w = wc;
+  for (std::size_t j = 0; j < points.size(); ++j) {
+    const StencilPoint& p = points[j];
+    const Real wj = p.kind == StencilPoint::Kind::Cell
+                        ? y[3 * p.cell + kW]
+                        : bc_value(boundaries_[mesh_.face_patch(p.face)], mesh_.face_centroid(p.face), t)[0];
+    w += value[j] * (wj - wc);
+  }
+  return w;
+}
+
+}  // namespace rfmems

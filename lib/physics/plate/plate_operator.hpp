@@ -1,0 +1,168 @@
+// Cell-centred finite-volume Mindlin-Reissner plate (thesis ch. 3) on a 2D mesh of the
+// mid-surface, thickness h implied:
+//
+//   rho h w''           = div Q + q                     (force along z)
+//   rho h^3/12 beta''   = div M - Q                     (moments about the mid-surface)
+//   M = D [ (1-nu)/2 (grad beta + grad beta^T) + nu div(beta) I ],   D = E h^3/(12(1-nu^2))
+//   Q = k G h gamma,  gamma = grad w + beta                          (k = 5/6 by default)
+//
+// Kinematics u = z beta_x, v = z beta_y, so the Kirchhoff (thin) limit is beta = -grad w and
+// M_xx = -D (w_xx + nu w_yy) is positive for a sagging plate (Timoshenko's sign).
+//
+// Unknowns per cell, interleaved: y[3c] = w, y[3c+1] = beta_x, y[3c+2] = beta_y.
+// Cell balances M y'' + R(t, y) = 0, mass rho h A (w) and rho h^3/12 A (beta):
+//   R_w    = -sum_f Q_f.S_f - q A
+//   R_beta = -sum_f M_f S_f + sum_f (x_f - x_c) (Q_f.S_f)     (the second sum is  Q_c A)
+//
+// Bending: the face gradient of beta from the polynomial reconstructions p_P, p_N (cubic by
+// default; fv/polynomial_reconstruction.hpp), exactly as in the elasticity operator:
+//   interior: G_f = (grad p_P + grad p_N)(x_f)/2 + (p_N(x_f) - p_P(x_f)) e^T/|d|
+//   beta prescribed: G_f = grad p_P(x_f) + (beta_b - p_P(x_f)) e^T/|d|
+//
+// Transverse shear, built so that it cannot lock. The discrete shear strain of a face is the
+// mean of gamma.e along the segment P -> N (P -> x_f on a boundary), which for any field is
+//   gamma_e = (w_N - w_P)/|d| + mean(beta).e          (the w part is exact: no gradient)
+// with mean(beta) by Simpson's rule from beta_P, beta_N and the reconstructed beta at the
+// segment midpoint (exact for cubic beta). A field with gamma_e = 0 on every face is a discrete
+// Kirchhoff field; the constraint count (one per face, ~2 per cell against 3 unknowns) leaves
+// those fields as rich as the deflections themselves, which is what removes locking. The face
+// shear force Q_f.S_f = k G h (alpha gamma_e + gamma_f.k_f) splits S_f = alpha e + k_f
+// (over-relaxed; k_f = 0 on orthogonal faces), and the tangential part uses the cell shear
+// strain gamma_c, a least-squares fit of the face values gamma_e of its faces (and of the
+// prescribed Q.n of its load/free faces). The moment source Q_c A is the divergence-consistent
+// sum_f (x_f - x_c)(Q_f.S_f), exact for constant Q. So every shear term in every equation is
+// a linear combination of the face strains gamma_e: a discrete Kirchhoff field carries no
+// shear, and as h -> 0 the face shear forces become the Lagrange multipliers of the
+// constraints instead of amplifying their error by (L/h)^2.
+//
+// Boundary faces (see plate_boundary.hpp): where w is prescribed, gamma_e uses w_b and the
+// face rotation beta_b (prescribed, or extrapolated p_P(x_f) for the free components of a
+// simple support); where the shear force is prescribed, Q.S = Q_n |S|. Moments: prescribed
+// rotations enter the gradient formula above; a hard simple support keeps only the tangential
+// component t t^T (M S) (reaction) with M_nn = 0; soft supports, free and loaded edges apply
+// the prescribed M n |S|.
+//
+// Jacobian: the operator is linear, and dR/dy is assembled analytically (every reconstruction
+// stencil, the Simpson midpoints, the least-squares shear strain and the non-orthogonal
+// correction) once, in the constructor; a linear static plate converges in one Newton step.
+#pragma once
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "core/system_operator.hpp"
+#include "fv/block_sparsity.hpp"
+#include "fv/polynomial_reconstruction.hpp"
+#include "materials/plate_section.hpp"
+#include "mesh/mesh.hpp"
+#include "physics/plate/plate_boundary.hpp"
+
+namespace rfmems {
+
+using ScalarField = std::function<Real(const Vec3& x, Real t)>;
+
+class PlateOperator : public SecondOrderOperator {
+ public:
+  static constexpr int kW = 0, kBetaX = 1, kBetaY = 2;
+
+  // boundaries[p] applies to mesh patch p; pressure q(x, t) per unit area along +z (may be
+  // empty). reconstruction_degree: 1 (linear, the thesis's scheme) to 3 (cubic, default).
+  PlateOperator(const Mesh& mesh, const PlateSection& section,
+                std::vector<PlateBoundary> boundaries, ScalarField pressure = {},
+                int reconstruction_degree = 3);
+
+  Index size() const override { return 3 * mesh_.n_cells(); }
+  const Mesh& mesh() const { return mesh_; }
+  const PlateSection& section() const { return section_; }
+
+  void internal_residual(Real t, std::span<const Real> y, std::span<Real> r) override;
+  const CsrPattern& stiffness_pattern() const override { return sparsity_->pattern(); }
+  void stiffness(Real t, std::span<const Real> y, std::span<Real> values) override;
+  std::vector<Real> mass_diagonal() const override;
+
+  // Post-processing.
+  // Least-squares gradient of beta at each centroid (row i = d beta_i / dx_j, 2x2 used).
+  std::vector<Mat3> rotation_gradients(Real t, std::span<const Real> y) const;
+  // Gradient of cell c's reconstruction of beta at x (cubic by default: accurate off-centroid).
+  Mat3 rotation_gradient_at(Index c, const Vec3& x, Real t, std::span<const Real> y) const;
+  // Moment tensor M(G) of a rotation gradient (2x2 used): M_xx, M_yy, M_xy.
+  Mat3 moment(const Mat3& G) const;
+  // Transverse shear force Q_c = k G h gamma_c per cell (least-squares fit of the face strains).
+  std::vector<Vec3> shear_forces(Real t, std::span<const Real> y) const;
+  // Deflection at x from cell c's reconstruction of w (same degree; prescribed w on the
+  // supported edges enters it as data).
+  Real deflection_at(Index c, const Vec3& x, Real t, std::span<const Real> y) const;
+
+ private:
+  // Evaluation weights of one cell's beta reconstruction at one point.
+  struct Eval {
+    Index cell = -1;
+    Index begin = 0, end = 0;  // into eval_value_ / eval_gradient_, parallel to the points
+  };
+  // gamma_c = sum over the cell's faces of weight * g_f (g_f = gamma_e, or Q_n/(kGh)).
+  struct StrainWeight {
+    Index face;
+    Vec3 weight;
+  };
+  // Linear pieces of the Jacobian: a scalar a.y_cell, or a vector T y_cell.
+  struct ScalarTerm {
+    Index cell;
+    Vec3 a;
+  };
+  struct VectorTerm {
+    Index cell;
+    Mat3 T;
+  };
+  // G_f += (T y_cell) h^T
+  struct GradientTerm {
+    Index cell;
+    Mat3 T;
+    Vec3 h;
+  };
+
+  Vec3 bc_value(const PlateBoundary& bc, const Vec3& x, Real t) const;
+  Vec3 beta(std::span<const Real> y, Index c) const {
+    return Vec3(y[3 * c + kBetaX], y[3 * c + kBetaY], 0.0);
+  }
+  Eval make_eval(Index c, const Vec3& x);
+  void compute_point_deltas(Real t, std::span<const Real> y) const;
+  Vec3 eval_value(const Eval& s, std::span<const Real> y) const;
+  Mat3 eval_gradient(const Eval& s) const;
+  Vec3 face_moment(const Mat3& G, const Vec3& S) const;
+  // Face strains gamma_e (NaN-free zero on load/free faces) and cell strains gamma_c.
+  void compute_strains(Real t, std::span<const Real> y, std::vector<Real>& gamma_e,
+                       std::vector<Vec3>& gamma_c) const;
+
+  // Jacobian helpers (linear terms in the unknowns).
+  void value_terms(const Eval& s, Real factor, const Mat3& map, std::vector<VectorTerm>& out) const;
+  void gradient_terms(const Eval& s, Real grad_factor, Real value_factor, const Mat3& value_map,
+                      const Vec3& e, std::vector<GradientTerm>& out) const;
+  void strain_terms(Index f, std::vector<ScalarTerm>& out) const;
+  void bending_terms(Index f, std::vector<GradientTerm>& gterms, Mat3& out) const;
+  void assemble_stiffness();
+
+  const Mesh& mesh_;
+  PlateSection section_;
+  std::vector<PlateBoundary> boundaries_;
+  ScalarField pressure_;
+  Real mu_, lambda_, kgh_;  // D (1-nu)/2, D nu, k G h
+  std::unique_ptr<PolynomialReconstruction> beta_rec_, w_rec_;
+
+  std::vector<Real> eval_value_;
+  std::vector<Vec3> eval_gradient_;
+  std::vector<Eval> face_eval_;   // two per face at x_f (second unused on boundaries)
+  std::vector<Eval> mid_eval_;    // two per face at the segment midpoint
+  std::vector<Index> point_offset_;
+  mutable std::vector<Vec3> point_delta_;  // beta_j - beta_c per stencil point
+  std::vector<Vec3> centroid_gradient_;    // parallel to the stencil points
+
+  std::vector<Vec3> face_e_, face_k_;
+  std::vector<Real> face_d_, face_alpha_;
+  std::vector<Index> strain_offset_{0};
+  std::vector<StrainWeight> strain_weights_;
+
+  std::unique_ptr<BlockSparsity> sparsity_;
+  std::vector<Real> stiffness_values_;
+};
+
+}  // namespace rfmems
