@@ -15,7 +15,9 @@ struct PlateSection {
   Real shear_factor = 5.0 / 6.0;
 
   Real G() const { return E / (2 * (1 + nu)); }
-  Real bending_stiffness() const { return E * thickness * thickness * thickness / (12 * (1 - nu * nu)); }
+  Real bending_stiffness() const {
+    return E * thickness * thickness * thickness / (12 * (1 - nu * nu));
+  }
   Real shear_stiffness() const { return shear_factor * G() * thickness; }
   Real mass_per_area() const { return rho * thickness; }
   Real rotary_inertia() const { return rho * thickness * thickness * thickness / 12; }

@@ -7,11 +7,6 @@
 #include <stdexcept>
 
 #include "core/error.hpp"
-#include <cstdlib>
-static const double kMid = std::getenv("PLATE_MID") ? std::atof(std::getenv("PLATE_MID")) : 4.0;
-static const int kSym = std::getenv("PLATE_SYM") ? std::atoi(std::getenv("PLATE_SYM")) : 0;
-static const int kEBend = std::getenv("PLATE_EBEND") ? std::atoi(std::getenv("PLATE_EBEND")) : 0;
-static const int kCompact = std::getenv("PLATE_COMPACT") ? std::atoi(std::getenv("PLATE_COMPACT")) : 0;
 
 namespace rfmems {
 
@@ -44,19 +39,21 @@ PlateOperator::PlateOperator(const Mesh& mesh, const PlateSection& section,
       pressure_(std::move(pressure)) {
   if (mesh_.dim() != 2) throw InputError("plate: the mid-surface mesh must be 2D");
   if (boundaries_.size() != mesh_.patches().size())
-    throw InputError(fmt::format("plate: {} boundary conditions for {} patches",
-                                 boundaries_.size(), mesh_.patches().size()));
+    throw InputError(fmt::format("plate: {} boundary conditions for {} patches", boundaries_.size(),
+                                 mesh_.patches().size()));
   if (!(section_.E > 0) || !(section_.thickness > 0) || !(section_.nu > -1 && section_.nu < 0.5) ||
       !(section_.shear_factor > 0) || section_.rho < 0)
     throw InputError(fmt::format("plate: bad section (E = {}, nu = {}, h = {}, k = {}, rho = {})",
-                                 section_.E, section_.nu, section_.thickness,
-                                 section_.shear_factor, section_.rho));
+                                 section_.E, section_.nu, section_.thickness, section_.shear_factor,
+                                 section_.rho));
   const Real D = section_.bending_stiffness();
   mu_ = 0.5 * D * (1 - section_.nu);
   lambda_ = D * section_.nu;
   kgh_ = section_.shear_stiffness();
 
-  auto patch_bc = [this](Index f) -> const PlateBoundary& { return boundaries_[mesh_.face_patch(f)]; };
+  auto patch_bc = [this](Index f) -> const PlateBoundary& {
+    return boundaries_[mesh_.face_patch(f)];
+  };
   beta_rec_ = std::make_unique<PolynomialReconstruction>(
       mesh_,
       [&](Index f) {
@@ -81,7 +78,8 @@ PlateOperator::PlateOperator(const Mesh& mesh, const PlateSection& section,
   for (Index f = 0; f < nf; ++f) {
     const Index p = mesh_.face_owner(f), n = mesh_.face_neighbour(f);
     const Vec3& S = mesh_.face_area(f);
-    const Vec3 d = (n >= 0 ? mesh_.cell_centroid(n) : mesh_.face_centroid(f)) - mesh_.cell_centroid(p);
+    const Vec3 d =
+        (n >= 0 ? mesh_.cell_centroid(n) : mesh_.face_centroid(f)) - mesh_.cell_centroid(p);
     face_d_[f] = d.norm();
     face_e_[f] = d / face_d_[f];
     const Real eS = face_e_[f].dot(S);
@@ -148,23 +146,26 @@ Vec3 PlateOperator::bc_value(const PlateBoundary& bc, const Vec3& x, Real t) con
   return bc.kind == Kind::Clamped || bc.kind == Kind::Free ? Vec3::Zero() : bc.at(x, t);
 }
 
-void PlateOperator::compute_point_deltas(Real t, std::span<const Real> y) const {
-  for (Index c = 0; c < mesh_.n_cells(); ++c) {
-    const Vec3 bc_ = beta(y, c);
-    auto points = beta_rec_->points(c);
-    Vec3* delta = point_delta_.data() + point_offset_[c];
-    for (std::size_t j = 0; j < points.size(); ++j) {
-      const StencilPoint& p = points[j];
-      if (p.kind == StencilPoint::Kind::Cell) {
-        delta[j] = beta(y, p.cell) - bc_;
-      } else if (p.kind == StencilPoint::Kind::BoundaryValue) {
-        const Vec3 v = bc_value(boundaries_[mesh_.face_patch(p.face)], mesh_.face_centroid(p.face), t);
-        delta[j] = Vec3(v[1], v[2], 0) - bc_;
-      } else {
-        throw std::logic_error("plate: mirror stencil points are not supported");
-      }
+void PlateOperator::cell_point_deltas(Index c, Real t, std::span<const Real> y) const {
+  const Vec3 beta_c = beta(y, c);
+  auto points = beta_rec_->points(c);
+  Vec3* delta = point_delta_.data() + point_offset_[c];
+  for (std::size_t j = 0; j < points.size(); ++j) {
+    const StencilPoint& p = points[j];
+    if (p.kind == StencilPoint::Kind::Cell) {
+      delta[j] = beta(y, p.cell) - beta_c;
+    } else if (p.kind == StencilPoint::Kind::BoundaryValue) {
+      const Vec3 v =
+          bc_value(boundaries_[mesh_.face_patch(p.face)], mesh_.face_centroid(p.face), t);
+      delta[j] = Vec3(v[1], v[2], 0) - beta_c;
+    } else {
+      throw std::logic_error("plate: mirror stencil points are not supported");
     }
   }
+}
+
+void PlateOperator::compute_point_deltas(Real t, std::span<const Real> y) const {
+  for (Index c = 0; c < mesh_.n_cells(); ++c) cell_point_deltas(c, t, y);
 }
 
 Vec3 PlateOperator::eval_value(const Eval& s, std::span<const Real> y) const {
@@ -177,7 +178,8 @@ Vec3 PlateOperator::eval_value(const Eval& s, std::span<const Real> y) const {
 Mat3 PlateOperator::eval_gradient(const Eval& s) const {
   Mat3 g = Mat3::Zero();
   const Vec3* delta = point_delta_.data() + point_offset_[s.cell];
-  for (Index j = 0; j < s.end - s.begin; ++j) g += delta[j] * eval_gradient_[s.begin + j].transpose();
+  for (Index j = 0; j < s.end - s.begin; ++j)
+    g += delta[j] * eval_gradient_[s.begin + j].transpose();
   return g;
 }
 
@@ -200,8 +202,9 @@ void PlateOperator::compute_strains(Real t, std::span<const Real> y, std::vector
     const Vec3& e = face_e_[f];
     const Real d = face_d_[f];
     if (n >= 0) {
-      const Vec3 mid = 0.5 * (eval_value(mid_eval_[2 * f], y) + eval_value(mid_eval_[2 * f + 1], y));
-      const Vec3 mean = (beta(y, p) + kMid * mid + beta(y, n)) / (2 + kMid);
+      const Vec3 mid =
+          0.5 * (eval_value(mid_eval_[2 * f], y) + eval_value(mid_eval_[2 * f + 1], y));
+      const Vec3 mean = (beta(y, p) + 4 * mid + beta(y, n)) / 6;
       gamma_e[f] = (y[3 * n] - y[3 * p]) / d + mean.dot(e);
       continue;
     }
@@ -218,7 +221,7 @@ void PlateOperator::compute_strains(Real t, std::span<const Real> y, std::vector
         beta_b = extrapolated;
       }
     }
-    const Vec3 mean = (beta(y, p) + kMid * eval_value(mid_eval_[2 * f], y) + beta_b) / (2 + kMid);
+    const Vec3 mean = (beta(y, p) + 4 * eval_value(mid_eval_[2 * f], y) + beta_b) / 6;
     gamma_e[f] = (v[0] - y[3 * p]) / d + mean.dot(e);
   }
   gamma_c.assign(mesh_.n_cells(), Vec3::Zero());
@@ -241,9 +244,9 @@ void PlateOperator::internal_residual(Real t, std::span<const Real> y, std::span
     r[3 * c + kBetaY] += m[1];
   };
   compute_point_deltas(t, y);
-  std::vector<Real> gamma_e;
-  std::vector<Vec3> gamma_c;
-  compute_strains(t, y, gamma_e, gamma_c);
+  compute_strains(t, y, gamma_e_, gamma_c_);
+  const std::vector<Real>& gamma_e = gamma_e_;
+  const std::vector<Vec3>& gamma_c = gamma_c_;
 
   for (Index f = 0; f < mesh_.n_faces(); ++f) {
     const Index p = mesh_.face_owner(f), n = mesh_.face_neighbour(f);
@@ -254,39 +257,12 @@ void PlateOperator::internal_residual(Real t, std::span<const Real> y, std::span
 
     // Bending: face moment M_f S_f.
     const PlateBoundary* bc = n >= 0 ? nullptr : &boundaries_[mesh_.face_patch(f)];
-    if (kEBend) {
-      std::vector<GradientTerm> gt;
-      Mat3 out;
-      bending_terms(f, gt, out);
-      Mat3 G = Mat3::Zero();
-      for (const GradientTerm& g : gt) {
-        Vec3 yc(y[3 * g.cell], y[3 * g.cell + 1], y[3 * g.cell + 2]);
-        G += (g.T * yc) * g.h.transpose();
-      }
-      if (bc && (bc->prescribes_rotation() || bc->kind == Kind::SimplySupportedHard)) {
-        const Vec3 v = bc_value(*bc, xf, t);
-        Vec3 b(v[1], v[2], 0);
-        if (bc->kind == Kind::SimplySupportedHard) { const Vec3 tt = tangent(S); b = tt * tt.dot(b); }
-        G += b * inv_d * e.transpose();
-      }
-      const Mat3 M = moment(G);
-      const Real Af = 0.5 * S.norm() * face_d_[f] * e.dot(S.normalized());
-      for (const GradientTerm& g : gt) {
-        Vec3 c = Af * g.T.transpose() * (M * g.h);
-        for (int k = 0; k < 3; ++k) r[3 * g.cell + k] += c[k];
-      }
-      if (bc && bc->kind == Kind::Load) {
-        const Vec3 v = bc_value(*bc, xf, t);
-        std::vector<VectorTerm> vt;
-        value_terms(face_eval_[2 * f], 1.0, Mat3::Identity(), vt);
-        for (const VectorTerm& tv : vt) { Vec3 c = tv.T.transpose() * Vec3(v[1], v[2], 0) * S.norm(); for (int k = 0; k < 3; ++k) r[3 * tv.cell + k] -= c[k]; }
-      }
-    } else if (n >= 0) {
+    if (n >= 0) {
       const Eval& sp = face_eval_[2 * f];
       const Eval& sn = face_eval_[2 * f + 1];
       const Vec3 vp = eval_value(sp, y), vn = eval_value(sn, y);
-      Mat3 G = 0.5 * (eval_gradient(sp) + eval_gradient(sn)) + (vn - vp) * inv_d * e.transpose();
-      if (kCompact) G = 0.5 * (eval_gradient(sp) + eval_gradient(sn)) * (Mat3::Identity() - e * e.transpose()) + (beta(y, n) - beta(y, p)) * inv_d * e.transpose();
+      const Mat3 G =
+          0.5 * (eval_gradient(sp) + eval_gradient(sn)) + (vn - vp) * inv_d * e.transpose();
       const Vec3 F = face_moment(G, S);
       add_moment(p, -F);
       add_moment(n, F);
@@ -298,7 +274,8 @@ void PlateOperator::internal_residual(Real t, std::span<const Real> y, std::span
         // Only the tangential rotation is held; only the twisting moment is a reaction.
         const Vec3 tt = tangent(S);
         const Mat3 T = tt * tt.transpose();
-        add_moment(p, -(T * face_moment(eval_gradient(sp) + (T * jump) * inv_d * e.transpose(), S)));
+        add_moment(p,
+                   -(T * face_moment(eval_gradient(sp) + (T * jump) * inv_d * e.transpose(), S)));
       } else {
         add_moment(p, -face_moment(eval_gradient(sp) + jump * inv_d * e.transpose(), S));
       }
@@ -314,13 +291,6 @@ void PlateOperator::internal_residual(Real t, std::span<const Real> y, std::span
       FQ = kgh_ * (face_alpha_[f] * gamma_e[f] + gamma_f.dot(face_k_[f]));
     } else {
       FQ = bc_value(*bc, xf, t)[0] * S.norm();
-    }
-    if (kSym && (n >= 0 || bc->prescribes_deflection())) {
-      std::vector<ScalarTerm> st;
-      strain_terms(f, st);
-      for (const ScalarTerm& s : st)
-        for (int k = 0; k < 3; ++k) r[3 * s.cell + k] += FQ * face_d_[f] * s.a[k];
-      continue;
     }
     r[3 * p + kW] -= FQ;
     add_moment(p, (xf - mesh_.cell_centroid(p)) * FQ);
@@ -345,7 +315,8 @@ void PlateOperator::value_terms(const Eval& s, Real factor, const Mat3& map,
   for (Index j = 0; j < s.end - s.begin; ++j) {
     const Real v = eval_value_[s.begin + j];
     sum += v;
-    if (points[j].kind == StencilPoint::Kind::Cell) out.push_back({points[j].cell, factor * v * sel});
+    if (points[j].kind == StencilPoint::Kind::Cell)
+      out.push_back({points[j].cell, factor * v * sel});
   }
   out.push_back({s.cell, factor * (1 - sum) * sel});
 }
@@ -360,7 +331,8 @@ void PlateOperator::gradient_terms(const Eval& s, Real grad_factor, Real value_f
   for (Index j = 0; j < s.end - s.begin; ++j) {
     const Vec3& g = eval_gradient_[s.begin + j];
     grad_sum += g;
-    if (points[j].kind == StencilPoint::Kind::Cell) out.push_back({points[j].cell, sel, grad_factor * g});
+    if (points[j].kind == StencilPoint::Kind::Cell)
+      out.push_back({points[j].cell, sel, grad_factor * g});
   }
   out.push_back({s.cell, sel, -grad_factor * grad_sum});
   std::vector<VectorTerm> values;
@@ -375,47 +347,23 @@ void PlateOperator::strain_terms(Index f, std::vector<ScalarTerm>& out) const {
   const Mat3 sel = rotation_selector();
   std::vector<VectorTerm> mean;  // Simpson's mean of beta along the segment
   out.push_back({p, Vec3(-inv_d, 0, 0)});
-  const double W = 2 + kMid;
-  mean.push_back({p, sel / W});
+  mean.push_back({p, sel / 6});
   if (n >= 0) {
     out.push_back({n, Vec3(inv_d, 0, 0)});
-    mean.push_back({n, sel / W});
-    value_terms(mid_eval_[2 * f], kMid / 2 / W, Mat3::Identity(), mean);
-    value_terms(mid_eval_[2 * f + 1], kMid / 2 / W, Mat3::Identity(), mean);
+    mean.push_back({n, sel / 6});
+    value_terms(mid_eval_[2 * f], 1.0 / 3, Mat3::Identity(), mean);
+    value_terms(mid_eval_[2 * f + 1], 1.0 / 3, Mat3::Identity(), mean);
   } else {
     const PlateBoundary& bc = boundaries_[mesh_.face_patch(f)];
-    value_terms(mid_eval_[2 * f], kMid / W, Mat3::Identity(), mean);
+    value_terms(mid_eval_[2 * f], 4.0 / 6, Mat3::Identity(), mean);
     if (bc.kind == Kind::SimplySupportedHard) {
       const Vec3 tt = tangent(mesh_.face_area(f));
-      value_terms(face_eval_[2 * f], 1.0 / W, Mat3(Mat3::Identity() - tt * tt.transpose()), mean);
+      value_terms(face_eval_[2 * f], 1.0 / 6, Mat3(Mat3::Identity() - tt * tt.transpose()), mean);
     } else if (bc.kind == Kind::SimplySupportedSoft) {
-      value_terms(face_eval_[2 * f], 1.0 / W, Mat3::Identity(), mean);
+      value_terms(face_eval_[2 * f], 1.0 / 6, Mat3::Identity(), mean);
     }
   }
   for (const VectorTerm& m : mean) out.push_back({m.cell, m.T.transpose() * e});
-}
-
-void PlateOperator::bending_terms(Index f, std::vector<GradientTerm>& gterms, Mat3& out) const {
-  const Index n = mesh_.face_neighbour(f);
-  const Vec3& e = face_e_[f];
-  const Real inv_d = 1.0 / face_d_[f];
-  const Mat3 I = Mat3::Identity();
-  out = I;
-  if (n >= 0) {
-    gradient_terms(face_eval_[2 * f], 0.5, -inv_d, I, e, gterms);
-    gradient_terms(face_eval_[2 * f + 1], 0.5, inv_d, I, e, gterms);
-    return;
-  }
-  const PlateBoundary& bc = boundaries_[mesh_.face_patch(f)];
-  if (bc.prescribes_rotation()) {
-    gradient_terms(face_eval_[2 * f], 1.0, -inv_d, I, e, gterms);
-  } else if (bc.kind == Kind::SimplySupportedHard) {
-    const Vec3 tt = tangent(mesh_.face_area(f));
-    out = tt * tt.transpose();
-    gradient_terms(face_eval_[2 * f], 1.0, -inv_d, out, e, gterms);
-  } else if (kEBend) {
-    gradient_terms(face_eval_[2 * f], 1.0, 0.0, I, e, gterms);
-  }
 }
 
 void PlateOperator::assemble_stiffness() {
@@ -442,32 +390,7 @@ void PlateOperator::assemble_stiffness() {
     // Bending.
     gterms.clear();
     Mat3 out = I;
-    if (kEBend) {
-      bending_terms(f, gterms, out);
-      const Real Af = 0.5 * S.norm() * face_d_[f] * e.dot(S.normalized());
-      for (const GradientTerm& g1 : gterms)
-        for (const GradientTerm& g2 : gterms) {
-          const Mat3 X = mu_ * g1.h.dot(g2.h) * I + mu_ * g2.h * g1.h.transpose() + lambda_ * g1.h * g2.h.transpose();
-          add(g1.cell, g2.cell, Af * g1.T.transpose() * X * g2.T);
-        }
-      gterms.clear();
-    } else
-    if (n >= 0 && kCompact) {
-      const Mat3 sel = rotation_selector(), Pt = I - e * e.transpose();
-      for (int which = 0; which < 2; ++which) {
-        const Eval& s = face_eval_[2 * f + which];
-        auto points = beta_rec_->points(s.cell);
-        Vec3 grad_sum = Vec3::Zero();
-        for (Index j = 0; j < s.end - s.begin; ++j) {
-          const Vec3 g = Pt * eval_gradient_[s.begin + j];
-          grad_sum += g;
-          if (points[j].kind == StencilPoint::Kind::Cell) gterms.push_back({points[j].cell, sel, 0.5 * g});
-        }
-        gterms.push_back({s.cell, sel, -0.5 * grad_sum});
-      }
-      gterms.push_back({n, sel, inv_d * e});
-      gterms.push_back({p, sel, -inv_d * e});
-    } else if (n >= 0) {
+    if (n >= 0) {
       gradient_terms(face_eval_[2 * f], 0.5, -inv_d, I, e, gterms);
       gradient_terms(face_eval_[2 * f + 1], 0.5, inv_d, I, e, gterms);
     } else {
@@ -480,9 +403,11 @@ void PlateOperator::assemble_stiffness() {
         gradient_terms(face_eval_[2 * f], 1.0, -inv_d, out, e, gterms);
       }
     }
-    // F = mu (G S + G^T S) + lambda tr(G) S with G = a h^T: dF/da = mu (h.S) I + mu h S^T + lambda S h^T.
+    // F = mu (G S + G^T S) + lambda tr(G) S with G = a h^T:
+    // dF/da = mu (h.S) I + mu h S^T + lambda S h^T.
     for (const GradientTerm& g : gterms) {
-      const Mat3 dF = mu_ * g.h.dot(S) * I + mu_ * g.h * S.transpose() + lambda_ * S * g.h.transpose();
+      const Mat3 dF =
+          mu_ * g.h.dot(S) * I + mu_ * g.h * S.transpose() + lambda_ * S * g.h.transpose();
       const Mat3 block = sel_t * out * dF * g.T;
       add(p, g.cell, -block);
       if (n >= 0) add(n, g.cell, block);
@@ -515,13 +440,6 @@ void PlateOperator::assemble_stiffness() {
       const Vec3 lever_n = mesh_.face_centroid(f) - mesh_.cell_centroid(n);
       un = Vec3(1, -lever_n.x(), -lever_n.y());
     }
-    if (kSym) {
-      std::vector<ScalarTerm> lev;
-      strain_terms(f, lev);
-      for (const ScalarTerm& l : lev)
-        for (const ScalarTerm& s : sterms) add(l.cell, s.cell, face_d_[f] * l.a * s.a.transpose());
-      continue;
-    }
     for (const ScalarTerm& s : sterms) {
       add(p, s.cell, up * s.a.transpose());
       if (n >= 0) add(n, s.cell, un * s.a.transpose());
@@ -532,7 +450,8 @@ void PlateOperator::assemble_stiffness() {
   for (const auto& [key, block] : blocks) stencils[key.first].insert(key.second);
   sparsity_ = std::make_unique<BlockSparsity>(stencils, 3);
   stiffness_values_.assign(sparsity_->pattern().nnz(), 0.0);
-  for (const auto& [key, block] : blocks) sparsity_->add_block(stiffness_values_, key.first, key.second, block);
+  for (const auto& [key, block] : blocks)
+    sparsity_->add_block(stiffness_values_, key.first, key.second, block);
 }
 
 void PlateOperator::stiffness(Real, std::span<const Real>, std::span<Real> values) {
@@ -549,6 +468,12 @@ std::vector<Real> PlateOperator::mass_diagonal() const {
   return m;
 }
 
+std::vector<bool> PlateOperator::rotation_components() const {
+  std::vector<bool> mask(size(), true);
+  for (Index c = 0; c < mesh_.n_cells(); ++c) mask[3 * c + kW] = false;
+  return mask;
+}
+
 // ---- post-processing -----------------------------------------------------------------------
 
 std::vector<Mat3> PlateOperator::rotation_gradients(Real t, std::span<const Real> y) const {
@@ -560,8 +485,9 @@ std::vector<Mat3> PlateOperator::rotation_gradients(Real t, std::span<const Real
   return grad;
 }
 
-Mat3 PlateOperator::rotation_gradient_at(Index c, const Vec3& x, Real t, std::span<const Real> y) const {
-  compute_point_deltas(t, y);
+Mat3 PlateOperator::rotation_gradient_at(Index c, const Vec3& x, Real t,
+                                         std::span<const Real> y) const {
+  cell_point_deltas(c, t, y);
   std::vector<Real> value;
   std::vector<Vec3> gradient;
   beta_rec_->weights_at(c, x, value, gradient);
@@ -589,9 +515,10 @@ Real PlateOperator::deflection_at(Index c, const Vec3& x, Real t, std::span<cons
   Real w = wc;
   for (std::size_t j = 0; j < points.size(); ++j) {
     const StencilPoint& p = points[j];
-    const Real wj = p.kind == StencilPoint::Kind::Cell
-                        ? y[3 * p.cell + kW]
-                        : bc_value(boundaries_[mesh_.face_patch(p.face)], mesh_.face_centroid(p.face), t)[0];
+    const Real wj =
+        p.kind == StencilPoint::Kind::Cell
+            ? y[3 * p.cell + kW]
+            : bc_value(boundaries_[mesh_.face_patch(p.face)], mesh_.face_centroid(p.face), t)[0];
     w += value[j] * (wj - wc);
   }
   return w;

@@ -42,6 +42,24 @@
 // component t t^T (M S) (reaction) with M_nn = 0; soft supports, free and loaded edges apply
 // the prescribed M n |S|.
 //
+// Why Simpson: with the trapezoid mean (beta_P + beta_N)/2 the constraint integrates beta with
+// an O(d^2) error that shows up as a (d/L)^2/4 error in a cantilever's tip deflection (1 % on
+// 5 x 5 cells); Simpson's is exact for the beam-with-shear solution, which the cubic scheme
+// then reproduces to round-off. Why the geometric lever x_f - x_c rather than the transpose
+// of the constraint (which would make the shear part of K symmetric): measured on the clamped
+// square, the transpose is 2-3 times less accurate (1.2636 against 1.2660 on 40 x 40, exact
+// 1.2653) and no longer exact for the cantilever; its only gain was dynamic (below).
+//
+// Dynamics. The rotary inertia gives ~2N thickness-shear modes near sqrt(12 k G/rho)/h
+// (5.5e9 rad/s for h = 2 um), undamped: with a step load an adaptive integrator resolves them
+// (IDA steps of 1e-11 s); use ReducedInertiaSystem (rotations quasi-static, error O((h/L)^2))
+// for adaptive runs, FirstOrderSystem with the full mass for fixed steps. K is not symmetric
+// near boundaries (one-sided reconstructions), and with the cubic reconstruction the
+// asymmetry splits that thickness-shear cluster into complex pairs growing at ~1e7 /s;
+// BDF1/2 damp them for steps above ~1 ns (z = h lambda far outside their instability
+// regions), and the quasi-static form has none for clamped and free edges
+// (test/study/test_plate_spectrum.cpp). The linear reconstruction has a real spectrum.
+//
 // Jacobian: the operator is linear, and dR/dy is assembled analytically (every reconstruction
 // stencil, the Simpson midpoints, the least-squares shear strain and the non-orthogonal
 // correction) once, in the constructor; a linear static plate converges in one Newton step.
@@ -79,6 +97,9 @@ class PlateOperator : public SecondOrderOperator {
   const CsrPattern& stiffness_pattern() const override { return sparsity_->pattern(); }
   void stiffness(Real t, std::span<const Real> y, std::span<Real> values) override;
   std::vector<Real> mass_diagonal() const override;
+  // true for the rotation unknowns: the components whose (rotary) inertia
+  // ReducedInertiaSystem may neglect (see reduced_inertia_system.hpp).
+  std::vector<bool> rotation_components() const;
 
   // Post-processing.
   // Least-squares gradient of beta at each centroid (row i = d beta_i / dx_j, 2x2 used).
@@ -125,11 +146,13 @@ class PlateOperator : public SecondOrderOperator {
     return Vec3(y[3 * c + kBetaX], y[3 * c + kBetaY], 0.0);
   }
   Eval make_eval(Index c, const Vec3& x);
+  // Fills point_delta_ (beta_j - beta_c) for one cell's stencil points, or for all cells.
+  void cell_point_deltas(Index c, Real t, std::span<const Real> y) const;
   void compute_point_deltas(Real t, std::span<const Real> y) const;
   Vec3 eval_value(const Eval& s, std::span<const Real> y) const;
   Mat3 eval_gradient(const Eval& s) const;
   Vec3 face_moment(const Mat3& G, const Vec3& S) const;
-  // Face strains gamma_e (NaN-free zero on load/free faces) and cell strains gamma_c.
+  // Face strains gamma_e (zero, unused, on load and free faces) and cell strains gamma_c.
   void compute_strains(Real t, std::span<const Real> y, std::vector<Real>& gamma_e,
                        std::vector<Vec3>& gamma_c) const;
 
@@ -138,7 +161,6 @@ class PlateOperator : public SecondOrderOperator {
   void gradient_terms(const Eval& s, Real grad_factor, Real value_factor, const Mat3& value_map,
                       const Vec3& e, std::vector<GradientTerm>& out) const;
   void strain_terms(Index f, std::vector<ScalarTerm>& out) const;
-  void bending_terms(Index f, std::vector<GradientTerm>& gterms, Mat3& out) const;
   void assemble_stiffness();
 
   const Mesh& mesh_;
@@ -150,8 +172,8 @@ class PlateOperator : public SecondOrderOperator {
 
   std::vector<Real> eval_value_;
   std::vector<Vec3> eval_gradient_;
-  std::vector<Eval> face_eval_;   // two per face at x_f (second unused on boundaries)
-  std::vector<Eval> mid_eval_;    // two per face at the segment midpoint
+  std::vector<Eval> face_eval_;  // two per face at x_f (second unused on boundaries)
+  std::vector<Eval> mid_eval_;   // two per face at the segment midpoint
   std::vector<Index> point_offset_;
   mutable std::vector<Vec3> point_delta_;  // beta_j - beta_c per stencil point
   std::vector<Vec3> centroid_gradient_;    // parallel to the stencil points
@@ -160,6 +182,8 @@ class PlateOperator : public SecondOrderOperator {
   std::vector<Real> face_d_, face_alpha_;
   std::vector<Index> strain_offset_{0};
   std::vector<StrainWeight> strain_weights_;
+  mutable std::vector<Real> gamma_e_;  // scratch of internal_residual
+  mutable std::vector<Vec3> gamma_c_;
 
   std::unique_ptr<BlockSparsity> sparsity_;
   std::vector<Real> stiffness_values_;

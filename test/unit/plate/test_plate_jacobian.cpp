@@ -14,6 +14,7 @@
 #include "core/structural_systems.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/plate/plate_operator.hpp"
+#include "physics/plate/reduced_inertia_system.hpp"
 
 using namespace rfmems;
 using Kind = PlateBoundary::Kind;
@@ -32,18 +33,23 @@ NodeMap distortion(double amplitude, unsigned seed) {
 }
 
 // left, right, bottom, top get the four kinds named; values depend on x and t.
-std::vector<PlateBoundary> boundaries(const Mesh& mesh, Kind left, Kind right, Kind bottom, Kind top) {
+std::vector<PlateBoundary> boundaries(const Mesh& mesh, Kind left, Kind right, Kind bottom,
+                                      Kind top) {
   auto value = [](const Vec3& x, double t) {
     return Vec3(1e-4 * (1 + x.y()) * (1 + t), 2e-4 * x.x() - 1e-4, 3e-4 * (1 - t) * x.y());
   };
-  auto load = [](const Vec3& x, double t) { return Vec3(-50.0 * (1 + x.x() * t), 3.0 * x.y(), -2.0); };
+  auto load = [](const Vec3& x, double t) {
+    return Vec3(-50.0 * (1 + x.x() * t), 3.0 * x.y(), -2.0);
+  };
   std::vector<PlateBoundary> bcs(mesh.patches().size());
   for (std::size_t p = 0; p < bcs.size(); ++p) {
     const std::string& name = mesh.patches()[p].name;
     Kind kind = name == "left" ? left : name == "right" ? right : name == "bottom" ? bottom : top;
     bcs[p].kind = kind;
-    if (kind == Kind::Load) bcs[p].value = load;
-    else if (kind != Kind::Clamped && kind != Kind::Free) bcs[p].value = value;
+    if (kind == Kind::Load)
+      bcs[p].value = load;
+    else if (kind != Kind::Clamped && kind != Kind::Free)
+      bcs[p].value = value;
   }
   return bcs;
 }
@@ -69,8 +75,9 @@ Mesh distorted_mesh(int nx, int ny, unsigned seed) {
 // (w, beta_x, beta_y): the shear entries are (L/h)^2 larger than the bending ones, so a check
 // against the largest entry alone would let a wrong bending block through. Returns the worst
 // of max |J_fd - J| / max |J| over the nine classes (entries outside the pattern included).
-double worst_class_difference(SystemOperator& op, double t, double c_j, const std::vector<double>& y,
-                              const std::vector<double>& yp, double step) {
+double worst_class_difference(SystemOperator& op, double t, double c_j,
+                              const std::vector<double>& y, const std::vector<double>& yp,
+                              double step) {
   const Index n = op.size();
   const CsrPattern& pattern = op.jacobian_pattern();
   std::vector<double> values(pattern.nnz(), 0.0);
@@ -127,31 +134,59 @@ TEST_P(PlateJacobian, StaticMatchesFiniteDifferences) {
   const JacobianCase c = GetParam();
   Mesh mesh = distorted_mesh(6, 5, 3);
   PlateSection section{200e9, 0.3, 7854, c.thickness};
-  PlateOperator op(mesh, section, boundaries(mesh, c.left, c.right, c.bottom, c.top), pressure, c.degree);
+  PlateOperator op(mesh, section, boundaries(mesh, c.left, c.right, c.bottom, c.top), pressure,
+                   c.degree);
   StaticSystem system(op);
   auto y = random_state(system.size(), 1, 1e-3);
   std::vector<double> yp(system.size(), 0.0);
   auto check = test_support::check_jacobian(system, 0.4, 0.0, y, yp, 1e-6);
-  EXPECT_LT(check.relative(), 1e-6) << "max |J_fd - J| = " << check.max_abs_difference
-                                    << " of max |J| = " << check.max_abs_entry;
+  EXPECT_LT(check.relative(), 1e-6)
+      << "max |J_fd - J| = " << check.max_abs_difference << " of max |J| = " << check.max_abs_entry;
   EXPECT_LT(worst_class_difference(system, 0.4, 0.0, y, yp, 1e-6), 1e-6);
+}
+
+std::string kind_name(Kind k) {
+  switch (k) {
+    case Kind::Clamped:
+      return "Clamped";
+    case Kind::Displacement:
+      return "Displacement";
+    case Kind::SimplySupportedHard:
+      return "SSHard";
+    case Kind::SimplySupportedSoft:
+      return "SSSoft";
+    case Kind::Free:
+      return "Free";
+    case Kind::Load:
+      return "Load";
+  }
+  return "?";
 }
 
 INSTANTIATE_TEST_SUITE_P(
     EveryBoundaryKind, PlateJacobian,
     ::testing::Values(
         JacobianCase{Kind::Clamped, Kind::Load, Kind::SimplySupportedHard, Kind::Free, 0.1, 3},
-        JacobianCase{Kind::Displacement, Kind::SimplySupportedSoft, Kind::Load, Kind::SimplySupportedHard, 0.1, 3},
-        JacobianCase{Kind::SimplySupportedSoft, Kind::Free, Kind::Clamped, Kind::Displacement, 0.01, 3},
+        JacobianCase{Kind::Displacement, Kind::SimplySupportedSoft, Kind::Load,
+                     Kind::SimplySupportedHard, 0.1, 3},
+        JacobianCase{Kind::SimplySupportedSoft, Kind::Free, Kind::Clamped, Kind::Displacement, 0.01,
+                     3},
         JacobianCase{Kind::Clamped, Kind::Load, Kind::SimplySupportedHard, Kind::Free, 0.1, 1},
-        JacobianCase{Kind::SimplySupportedHard, Kind::Displacement, Kind::Free, Kind::SimplySupportedSoft, 0.05, 2}));
+        JacobianCase{Kind::SimplySupportedHard, Kind::Displacement, Kind::Free,
+                     Kind::SimplySupportedSoft, 0.05, 2}),
+    [](const ::testing::TestParamInfo<JacobianCase>& info) {
+      const JacobianCase& c = info.param;
+      return kind_name(c.left) + "_" + kind_name(c.right) + "_" + kind_name(c.bottom) + "_" +
+             kind_name(c.top) + "_h" + std::to_string(static_cast<int>(1000 * c.thickness)) +
+             "mm_degree" + std::to_string(c.degree);
+    });
 
 TEST(PlateJacobianTransient, FirstOrderFormMatchesFiniteDifferences) {
   Mesh mesh = distorted_mesh(5, 5, 9);
   PlateSection section{200e9, 0.25, 7854, 0.05};
-  PlateOperator op(mesh, section,
-                   boundaries(mesh, Kind::Clamped, Kind::Load, Kind::SimplySupportedHard, Kind::Free),
-                   pressure);
+  PlateOperator op(
+      mesh, section,
+      boundaries(mesh, Kind::Clamped, Kind::Load, Kind::SimplySupportedHard, Kind::Free), pressure);
   FirstOrderSystem system(op);
   auto y = random_state(system.size(), 2, 1e-3);
   auto yp = random_state(system.size(), 3, 1e-3);
@@ -160,12 +195,44 @@ TEST(PlateJacobianTransient, FirstOrderFormMatchesFiniteDifferences) {
   EXPECT_LT(worst_class_difference(system, 0.2, 3.7e4, y, yp, 1e-6), 1e-6);
 }
 
+TEST(PlateJacobianTransient, ReducedInertiaFormMatchesFiniteDifferences) {
+  Mesh mesh = distorted_mesh(5, 4, 13);
+  PlateSection section{200e9, 0.3, 7854, 0.05};
+  PlateOperator op(
+      mesh, section,
+      boundaries(mesh, Kind::SimplySupportedSoft, Kind::Clamped, Kind::Load, Kind::Free), pressure);
+  ReducedInertiaSystem system(op, op.rotation_components());
+  ASSERT_EQ(system.size(), op.size() + mesh.n_cells());
+  auto id = system.differential_components();
+  for (Index c = 0; c < mesh.n_cells(); ++c) {
+    EXPECT_EQ(id[3 * c], 1.0);
+    EXPECT_EQ(id[3 * c + 1], 0.0);
+    EXPECT_EQ(system.velocity_index(3 * c + 2), -1);
+  }
+  auto y = random_state(system.size(), 6, 1e-3);
+  auto yp = random_state(system.size(), 7, 1e-3);
+  auto check = test_support::check_jacobian(system, 0.2, 3.7e4, y, yp, 1e-6);
+  EXPECT_LT(check.relative(), 1e-6) << "max |J_fd - J| = " << check.max_abs_difference;
+  EXPECT_LT(worst_class_difference(system, 0.2, 3.7e4, y, yp, 1e-6), 1e-6);
+  // The consistent derivative makes the residual vanish at a state whose rotations are in
+  // quasi-static equilibrium; check its inertial rows on any state.
+  auto yp0 = system.consistent_derivative(0.2, y);
+  std::vector<double> r(system.size());
+  system.residual(0.2, y, yp0, r);
+  for (Index c = 0; c < mesh.n_cells(); ++c) {
+    EXPECT_NEAR(r[3 * c], 0.0, 1e-15);
+    EXPECT_NEAR(r[system.velocity_index(3 * c)], 0.0,
+                1e-9 * std::abs(yp0[system.velocity_index(3 * c)]) + 1e-12);
+  }
+}
+
 // The residual is affine in y, so the FD check at one state could miss a Jacobian that is
 // right only there; this checks R(y) - R(0) = K y at a second, large random state.
 TEST(PlateJacobianTransient, ResidualIsAffineWithTheAssembledStiffness) {
   Mesh mesh = distorted_mesh(5, 4, 5);
   PlateOperator op(mesh, {70e9, 0.33, 2700, 0.02},
-                   boundaries(mesh, Kind::SimplySupportedSoft, Kind::Clamped, Kind::Load, Kind::SimplySupportedHard),
+                   boundaries(mesh, Kind::SimplySupportedSoft, Kind::Clamped, Kind::Load,
+                              Kind::SimplySupportedHard),
                    pressure);
   const Index n = op.size();
   auto y = random_state(n, 4, 1.0);
