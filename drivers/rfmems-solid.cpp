@@ -1,11 +1,13 @@
-// rfmems-solid: linear elastodynamics and elastostatics of a solid (beams, plates, 3D bodies)
-// with the cell-centred FV elasticity operator. Reads a case file, builds the scene, runs a
-// static (KINSOL or segregated) or transient (IDA) analysis, writes an HDF5 + XDMF result.
+// rfmems-solid: linear elastodynamics and elastostatics of a structure: a plane or 3D
+// continuum (FV elasticity operator) or a Mindlin-Reissner plate (FV plate operator), as the
+// case's model.structure says. Reads a case file, builds the model, runs a static (KINSOL or
+// segregated) or transient (IDA) analysis, writes an HDF5 + XDMF result.
 //
 // Sample runs:
 //   rfmems-solid cases/cantilever_vibration/case.yaml          # -> out/cantilever_vibration.h5
 //   rfmems-solid cases/cantilever_static/case.yaml --json --quiet
 //   rfmems-solid cases/cantilever_static/case.yaml --set mesh.cells=[320,32] -o out/fine.h5
+//   rfmems-solid cases/clamped_plate/case.yaml                 # plate: deflection, moments
 //
 // Exit codes: 0 success; 2 bad input (case file, option, mesh file): one line
 // "rfmems-solid: <message>" on stderr and no result file; 1 any other failure.
@@ -25,9 +27,9 @@
 #include "io/json_summary.hpp"
 #include "io/probes.hpp"
 #include "io/progress.hpp"
-#include "physics/elasticity/elasticity_analysis.hpp"
-#include "physics/elasticity/elasticity_results.hpp"
-#include "physics/elasticity/elasticity_scene.hpp"
+#include "physics/structure/structural_analysis.hpp"
+#include "physics/structure/structural_results.hpp"
+#include "physics/structure/structure_from_case.hpp"
 
 namespace {
 
@@ -62,27 +64,31 @@ int run(const Options& options) {
   const std::string name = root.get_string("name", case_dir.filename().string());
 
   const AnalysisType type = read_analysis_type(root);
-  ElasticityScene scene = build_elasticity_scene(root, case_dir.string(), type);
-  const AnalysisSettings settings = read_analysis_settings(root, scene);
-  std::vector<Probe> probes = read_probes(root.child_or_empty("probes"), *scene.mesh);
+  std::unique_ptr<StructuralModel> model = build_structure(root, case_dir.string(), type);
+  const AnalysisSettings settings = read_analysis_settings(root, *model);
+  std::vector<Probe> probes = read_probes(root.child_or_empty("probes"), model->structure_mesh());
   case_file.check_all_used();  // a typo stops the run here, before any solving
 
   const std::string output = options.output.empty() ? "out/" + name + ".h5" : options.output;
-  ElasticityResults results(output, scene, std::move(probes));
+  StructuralResults results(output, *model, std::move(probes));
   remove_on_interrupt(temp_path_for(output));  // exceptions clean up; signals need this
   ProgressReporter progress(options.quiet || type == AnalysisType::Static, settings.end_time);
-  const AnalysisStats stats = run_analysis(scene, settings, results, progress);
+  const AnalysisStats stats = run_analysis(*model, settings, results, progress);
   progress.finish();
   results.finish(case_file, name, stats, elapsed());
 
-  const Json summary = elasticity_summary(name, scene, results, stats, elapsed());
+  const Json summary = structural_summary(name, *model, results, stats, elapsed());
   if (options.json) {
     std::cout << json_text(summary) << std::flush;
   } else if (!options.quiet) {
+    const auto components = model->probe_components();
+    const bool plate = model->kind() == "plate";
+    const int shown = plate || model->structure_mesh().dim() == 3 ? 3 : 2;
     for (const auto& [probe, value] : summary["probes"].items()) {
-      std::printf("probe %s: ux = %.6e m, uy = %.6e m", probe.c_str(), value["ux"].get<double>(),
-                  value["uy"].get<double>());
-      if (scene.mesh->dim() == 3) std::printf(", uz = %.6e m", value["uz"].get<double>());
+      std::printf("probe %s:", probe.c_str());
+      for (int k = 0; k < shown; ++k)
+        std::printf("%s %s = %.6e%s", k ? "," : "", components[k].c_str(),
+                    value[components[k]].get<double>(), plate && k > 0 ? " rad" : " m");
       std::printf("\n");
     }
     std::printf("wrote %s and %s (%.1f s)\n", results.path().c_str(),
@@ -95,7 +101,7 @@ int run(const Options& options) {
 
 int main(int argc, char** argv) {
   Options options;
-  CLI::App app{"rfmems-solid: static and transient linear elasticity of a solid (FV)"};
+  CLI::App app{"rfmems-solid: static and transient linear elasticity of a continuum or a plate (FV)"};
   app.add_option("case", options.case_path, "case file (YAML)")->required();
   app.add_option("--set", options.overrides,
                  "override a case key, e.g. --set mesh.cells=[320,32] (repeatable)")

@@ -47,7 +47,9 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("result", help="result file (.h5)")
     parser.add_argument("--probe", default="tip", help="probe name (default: tip)")
-    parser.add_argument("--component", default="uy", choices=sorted(COMPONENTS), help="default: uy")
+    parser.add_argument("--component", default="uy",
+                        help="component name as stored with the probe (ux, uy, uz; w, beta_x, "
+                             "beta_y for a plate; default: uy)")
     parser.add_argument("--skip", type=float, default=0.0,
                         help="ignore samples before this time [s], e.g. a load ramp (default 0)")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
@@ -59,7 +61,13 @@ def main():
                 have = sorted(f["probes"].keys()) if "probes" in f else []
                 sys.exit(f"probe_frequency.py: {args.result}: no probe '{args.probe}' (probes: {', '.join(have) or 'none'})")
             t = f["probes"][args.probe]["time"][()]
-            x = f["probes"][args.probe]["values"][()].reshape(len(t), -1)[:, COMPONENTS[args.component]]
+            values = f["probes"][args.probe]["values"]
+            names = [c.decode() if isinstance(c, bytes) else str(c) for c in values.attrs["components"]] \
+                if "components" in values.attrs else list(COMPONENTS)
+            if args.component not in names:
+                sys.exit(f"probe_frequency.py: {args.result}: probe '{args.probe}' has no component "
+                         f"'{args.component}' (components: {', '.join(names)})")
+            x = values[()].reshape(len(t), -1)[:, names.index(args.component)]
     except OSError as e:
         sys.exit(f"probe_frequency.py: {args.result}: {e}")
 

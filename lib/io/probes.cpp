@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <tuple>
 #include <set>
 #include <stdexcept>
 
@@ -12,23 +14,42 @@
 
 namespace rfmems {
 
+CasePointFinder::CasePointFinder(const Mesh& mesh) : mesh_(mesh) {
+  lo_ = Vec3::Constant(std::numeric_limits<Real>::infinity());
+  hi_ = -lo_;
+  for (const Vec3& x : mesh.nodes()) {
+    lo_ = lo_.cwiseMin(x);
+    hi_ = hi_.cwiseMax(x);
+  }
+  std::vector<Vec3> centroids(mesh.n_cells());
+  for (Index c = 0; c < mesh.n_cells(); ++c) centroids[c] = mesh.cell_centroid(c);
+  locator_ = std::make_unique<PointLocator>(std::move(centroids), mesh.dim());
+}
+
+CasePointFinder::~CasePointFinder() = default;
+
+std::pair<Vec3, Index> CasePointFinder::find(const CaseNode& item, const std::string& key,
+                                             const std::string& what) const {
+  const Real tolerance = 1e-6 * (hi_ - lo_).maxCoeff();
+  const int dim = mesh_.dim();
+  const Vec3 at = item.get_vec3_quantity(key, Dimension::Length);
+  item.require(static_cast<int>(item.child(key).size()) == dim, key,
+               fmt::format("{}: expected {} coordinates (the mesh is {}D)", what, dim, dim));
+  for (int d = 0; d < dim; ++d)
+    item.require(at[d] >= lo_[d] - tolerance && at[d] <= hi_[d] + tolerance, key,
+                 fmt::format("{} lies outside the mesh (bounding box [{:.6g}, {:.6g}] "
+                             "x [{:.6g}, {:.6g}]{})",
+                             what, lo_.x(), hi_.x(), lo_.y(), hi_.y(),
+                             dim == 3 ? fmt::format(" x [{:.6g}, {:.6g}]", lo_.z(), hi_.z())
+                                      : std::string()));
+  return {at, locator_->nearest(at)};
+}
+
 std::vector<Probe> read_probes(const CaseNode& probes_node, const Mesh& mesh) {
   std::vector<Probe> probes;
   const std::size_t n = probes_node.size();
   if (n == 0) return probes;
-
-  Vec3 lo = Vec3::Constant(std::numeric_limits<Real>::infinity());
-  Vec3 hi = -lo;
-  for (const Vec3& x : mesh.nodes()) {
-    lo = lo.cwiseMin(x);
-    hi = hi.cwiseMax(x);
-  }
-  const Real tolerance = 1e-6 * (hi - lo).maxCoeff();
-
-  std::vector<Vec3> centroids(mesh.n_cells());
-  for (Index c = 0; c < mesh.n_cells(); ++c) centroids[c] = mesh.cell_centroid(c);
-  const PointLocator locator(std::move(centroids), mesh.dim());
-
+  const CasePointFinder finder(mesh);
   std::set<std::string> names;
   for (std::size_t i = 0; i < n; ++i) {
     const CaseNode item = probes_node.item(i);
@@ -37,18 +58,7 @@ std::vector<Probe> read_probes(const CaseNode& probes_node, const Mesh& mesh) {
     item.require(!p.name.empty() && p.name.find('/') == std::string::npos && p.name != ".",
                  "name", "expected a non-empty name without '/'");
     item.require(names.insert(p.name).second, "name", "another probe has this name");
-    p.at = item.get_vec3_quantity("at", Dimension::Length);
-    for (int d = 0; d < mesh.dim(); ++d)
-      item.require(p.at[d] >= lo[d] - tolerance && p.at[d] <= hi[d] + tolerance, "at",
-                   fmt::format("probe '{}' lies outside the mesh (bounding box [{:.6g}, {:.6g}] "
-                               "x [{:.6g}, {:.6g}]{})",
-                               p.name, lo.x(), hi.x(), lo.y(), hi.y(),
-                               mesh.dim() == 3
-                                   ? fmt::format(" x [{:.6g}, {:.6g}]", lo.z(), hi.z())
-                                   : std::string()));
-    if (mesh.dim() == 2)
-      item.require(p.at.z() == 0, "at", fmt::format("probe '{}': a 2D mesh has z = 0", p.name));
-    p.cell = locator.nearest(p.at);
+    std::tie(p.at, p.cell) = finder.find(item, "at", fmt::format("probe '{}'", p.name));
     probes.push_back(std::move(p));
   }
   return probes;

@@ -9,7 +9,9 @@
 // tolerance of 1e-6 of its largest edge) is an InputError naming the probe. A point inside the
 // box but outside the body (in a hole) takes the value extrapolated from the nearest cell.
 #pragma once
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/case_file.hpp"
@@ -21,6 +23,25 @@ struct Probe {
   std::string name;
   Vec3 at = Vec3::Zero();
   Index cell = -1;  // nearest cell (by centroid)
+};
+
+class PointLocator;
+
+// Points given in a case (probes, point loads): `at: [x, y(, z)]` with length units, checked
+// against the mesh's bounding box (tolerance 1e-6 of its largest edge; outside: InputError
+// naming the item), attached to the cell with the nearest centroid.
+class CasePointFinder {
+ public:
+  explicit CasePointFinder(const Mesh& mesh);
+  ~CasePointFinder();
+  // The point item[key] and its cell; `what` names it in messages ("probe 'tip'").
+  std::pair<Vec3, Index> find(const CaseNode& item, const std::string& key,
+                              const std::string& what) const;
+
+ private:
+  const Mesh& mesh_;
+  Vec3 lo_, hi_;
+  std::unique_ptr<PointLocator> locator_;
 };
 
 // Reads the `probes` sequence (an empty node gives no probes). Names must be unique and

@@ -49,6 +49,10 @@ constexpr std::array kUnits = {
     UnitEntry{"uN", {1e-6, D::Force}},
     UnitEntry{"nN", {1e-9, D::Force}},
 
+    UnitEntry{"N*m", {1.0, D::Moment}},
+    UnitEntry{"uN*m", {1e-6, D::Moment}},
+    UnitEntry{"nN*m", {1e-9, D::Moment}},
+
     UnitEntry{"N/m", {1.0, D::ForcePerLength}},
     UnitEntry{"mN/m", {1e-3, D::ForcePerLength}},
 
@@ -146,6 +150,8 @@ std::string dimension_name(Dimension d) {
       return "force";
     case D::ForcePerLength:
       return "force per length";
+    case D::Moment:
+      return "moment";
     case D::Voltage:
       return "voltage";
     case D::Frequency:

@@ -17,6 +17,7 @@ enum class Dimension {
   Density,
   Force,
   ForcePerLength,  // spring constants, line loads
+  Moment,          // torque, point moments (N*m); a moment per unit length is a Force
   Voltage,
   Frequency,
   Mass,

@@ -92,6 +92,12 @@ void IdaIntegrator::initialize(Real t0, std::span<const Real> y0, std::span<cons
   initialized_ = true;
 }
 
+void IdaIntegrator::correct_initial_conditions(Real t_first) {
+  check(IDACalcIC(mem_, IDA_YA_YDP_INIT, t_first), "IDACalcIC");
+  if (pending_) std::rethrow_exception(std::exchange(pending_, nullptr));
+  check(IDAGetConsistentIC(mem_, y_.get(), yp_.get()), "IDAGetConsistentIC");
+}
+
 void IdaIntegrator::set_roots(int n_roots, RootFunction g) {
   n_roots_ = n_roots;
   roots_ = std::move(g);

@@ -54,8 +54,9 @@ NonlinearStats KinsolSolver::solve(Real t, std::span<Real> y) {
   for (Real v : f0) f0_norm = std::max(f0_norm, std::abs(v));
   stats.initial_residual = f0_norm;
   stats.residual_evals = 1;
+  const Real scale = options_.residual_scale > 0 ? options_.residual_scale : f0_norm;
   if (f0_norm == 0) return stats;
-  N_VConst(1.0 / f0_norm, scale_f_.get());
+  N_VConst(1.0 / scale, scale_f_.get());
   N_VConst(1.0, scale_u_.get());
   check(KINSetFuncNormTol(mem_, options_.relative_tolerance), "KINSetFuncNormTol");
   check(KINSetScaledStepTol(mem_, 1e-300), "KINSetScaledStepTol");

@@ -16,6 +16,9 @@ struct KinsolOptions {
   int max_iterations = 50;
   bool line_search = false;
   Real max_newton_step = 0;  // 0: KINSOL's default scaled by the problem (see solve())
+  // > 0: the tolerance is relative to this residual scale instead of ||F(y0)||_inf (for
+  // continuation, where a good predictor makes F(y0) tiny and a reduction of it meaningless).
+  Real residual_scale = 0;
 };
 
 struct NonlinearStats {

@@ -12,7 +12,7 @@
 // Asserts:
 //  - adaptive IDA (BDF, order capped at 2: BDF3-5 are not A-stable and IDA collapses its step
 //    on the imaginary-axis eigenvalues of undamped dynamics) on the reduced-inertia form
-//    (rotations quasi-static, see physics/plate/reduced_inertia_system.hpp: with rotary
+//    (rotations quasi-static, see core/reduced_inertia_system.hpp: with rotary
 //    inertia the undamped 5.5e9 rad/s thickness-shear branch drives adaptive steps to 1e-11 s):
 //    frequency within 0.5 % of 6.497e4 Hz and 0.1 % of Euler-Bernoulli, amplitude kept within
 //    1 % over 10 periods, dynamic amplitude = static deflection (step load);
@@ -33,7 +33,7 @@
 #include "core/structural_systems.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/plate/plate_operator.hpp"
-#include "physics/plate/reduced_inertia_system.hpp"
+#include "core/reduced_inertia_system.hpp"
 #include "solvers/ida_integrator.hpp"
 #include "solvers/static_solve.hpp"
 

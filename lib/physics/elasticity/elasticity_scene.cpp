@@ -7,17 +7,17 @@
 
 #include <algorithm>
 #include <functional>
+#include <limits>
 #include <map>
 #include <vector>
 
+#include "core/error.hpp"
 #include "io/mesh_from_case.hpp"
 #include "io/point_locator.hpp"
+#include "physics/structure/case_conditions.hpp"
+#include "physics/structure/structural_analysis.hpp"
 
 namespace rfmems {
-
-std::string to_string(AnalysisType type) {
-  return type == AnalysisType::Static ? "static" : "transient";
-}
 
 std::string to_string(StressMethod method) {
   return method == StressMethod::Coupled ? "coupled" : "segregated";
@@ -26,9 +26,6 @@ std::string to_string(StressMethod method) {
 namespace {
 
 using Kind = ElasticityBoundary::Kind;
-
-// Linear ramp 0 -> 1 over [0, ramp], then 1 (always 1 without a ramp).
-Real ramp_factor(Real t, Real ramp) { return ramp > 0 ? std::clamp(t / ramp, 0.0, 1.0) : 1.0; }
 
 // What a boundary entry needs to know besides its own node.
 struct PatchContext {
@@ -40,10 +37,6 @@ struct BoundaryEntry {
   ElasticityBoundary bc;
   Real ramp = 0;
 };
-
-Real read_ramp(const CaseNode& entry) {
-  return entry.get_quantity("ramp", Dimension::Time, 0.0, Range::non_negative());
-}
 
 // A `value` vector with one entry per mesh dimension.
 Vec3 read_vector(const CaseNode& entry, Dimension d, int dim) {
@@ -116,12 +109,6 @@ const std::map<std::string, BoundaryReader>& boundary_readers() {
   return readers;
 }
 
-std::vector<std::string> patch_names(const Mesh& mesh) {
-  std::vector<std::string> names;
-  for (const Patch& p : mesh.patches()) names.push_back(p.name);
-  return names;
-}
-
 LinearElastic read_material(const CaseNode& root, AnalysisType analysis, int dim) {
   const CaseNode material = root.child("material");
   LinearElastic m;
@@ -138,39 +125,30 @@ LinearElastic read_material(const CaseNode& root, AnalysisType analysis, int dim
       {"plane_strain", Hypothesis::PlaneStrain},
       {"3d", Hypothesis::ThreeD},
   };
-  const std::string name = model.get_choice("hypothesis", {"plane_stress", "plane_strain", "3d"});
+  // structure plane (2D meshes) or solid3d (3D); the hypothesis defaults from it.
+  const std::string structure =
+      model.get_choice("structure", {"plane", "solid3d"}, dim == 3 ? "solid3d" : "plane");
+  const std::string name = model.get_choice("hypothesis", {"plane_stress", "plane_strain", "3d"},
+                                            structure == "solid3d" ? "3d" : "plane_stress");
   m.hypothesis = hypotheses.at(name);
   const int needed = m.hypothesis == Hypothesis::ThreeD ? 3 : 2;
   model.require(needed == dim, "hypothesis",
                 fmt::format("needs a {}D mesh, but the mesh is {}D", needed, dim));
+  model.require((name == "3d") == (structure == "solid3d"), "hypothesis",
+                fmt::format("'{}' does not fit model.structure '{}'", name, structure));
   return m;
 }
 
 std::vector<ElasticityBoundary> read_boundaries(const CaseNode& root, const Mesh& mesh,
                                                 Real& load_time) {
-  const CaseNode node = root.child("boundaries");
-  const std::vector<std::string> patches = patch_names(mesh);
-  const std::vector<std::string> given = node.keys();
-  for (const std::string& key : given)
-    if (mesh.find_patch(key) < 0)
-      node.fail(key, fmt::format("the mesh has no patch '{}' (mesh patches: {})", key,
-                                 fmt::join(patches, ", ")));
-
   std::vector<std::string> types;
   for (const auto& [name, reader] : boundary_readers()) types.push_back(name);
-
-  std::vector<ElasticityBoundary> bcs(patches.size());
+  const std::vector<CaseNode> entries = patch_entries(root.child("boundaries"), mesh);
+  std::vector<ElasticityBoundary> bcs(entries.size());
   load_time = 0;
-  for (std::size_t p = 0; p < patches.size(); ++p) {
-    if (!node.has(patches[p]))
-      node.fail(patches[p],
-                fmt::format("mesh patch '{}' has no boundary condition (given: {}; mesh "
-                            "patches: {})",
-                            patches[p], given.empty() ? "none" : fmt::format("{}", fmt::join(given, ", ")),
-                            fmt::join(patches, ", ")));
-    const CaseNode entry = node.child(patches[p]);
-    const std::string type = entry.get_choice("type", types);
-    BoundaryEntry b = boundary_readers().at(type)(entry, {mesh, static_cast<int>(p)});
+  for (std::size_t p = 0; p < entries.size(); ++p) {
+    const std::string type = entries[p].get_choice("type", types);
+    BoundaryEntry b = boundary_readers().at(type)(entries[p], {mesh, static_cast<int>(p)});
     bcs[p] = std::move(b.bc);
     load_time = std::max(load_time, b.ramp);
   }
@@ -227,6 +205,95 @@ ElasticityScene build_elasticity_scene(const CaseNode& root, const std::string& 
   scene.op = std::make_unique<ElasticityOperator>(*scene.mesh, scene.material, std::move(bcs),
                                                   std::move(body_force), degree);
   return scene;
+}
+
+// ---- StructuralModel -----------------------------------------------------------------------
+
+std::string ElasticityScene::kind() const {
+  switch (material.hypothesis) {
+    case Hypothesis::PlaneStress: return "plane_stress";
+    case Hypothesis::PlaneStrain: return "plane_strain";
+    case Hypothesis::ThreeD: return "3d";
+  }
+  return "?";
+}
+
+bool ElasticityScene::solve_static_otherwise(Real t, const AnalysisSettings& settings,
+                                             std::vector<Real>& y, AnalysisStats& stats) {
+  if (stress != StressMethod::Segregated) return false;
+  SegregatedOptions options = segregated;
+  options.relative_tolerance = settings.tolerance;
+  options.max_outer_iterations = static_cast<int>(settings.max_iterations);
+  stats.segregated = solve_segregated(*op, t, y, options);
+  if (!stats.segregated.converged)
+    throw SolverError(fmt::format(
+        "segregated solver: no convergence after {} outer iterations (residual {:.3e} -> "
+        "{:.3e}, wanted a reduction to {:g}); raise solver.max_iterations or lower "
+        "solver.segregated.relaxation",
+        stats.segregated.outer_iterations, stats.segregated.initial_residual,
+        stats.segregated.final_residual, settings.tolerance));
+  return true;
+}
+
+namespace {
+
+// n_cells x 3 rows from the interleaved (cell * dim + k) unknowns; z = 0 in 2D.
+std::vector<double> as_vectors(std::span<const Real> u, Index n_cells, int dim) {
+  std::vector<double> out(static_cast<std::size_t>(3 * n_cells), 0.0);
+  for (Index c = 0; c < n_cells; ++c)
+    for (int k = 0; k < dim; ++k) out[3 * c + k] = u[c * dim + k];
+  return out;
+}
+
+}  // namespace
+
+void ElasticityScene::write_fields(ResultWriter& writer, int index, Real t,
+                                   std::span<const Real> u, std::span<const Real> v) const {
+  const Index nc = mesh->n_cells();
+  const int dim = mesh->dim();
+  writer.write_cell_field_at(index, t, "displacement", as_vectors(u, nc, dim), 3,
+                             {"ux", "uy", "uz"});
+  if (!v.empty())
+    writer.write_cell_field_at(index, t, "velocity", as_vectors(v, nc, dim), 3,
+                               {"vx", "vy", "vz"});
+  const std::vector<Mat3> gradients = op->cell_gradients(t, u);
+  std::vector<double> stress(static_cast<std::size_t>(6 * nc));
+  for (Index c = 0; c < nc; ++c) {
+    const Mat3 s = material.stress(gradients[c]);
+    const double voigt[6] = {s(0, 0), s(1, 1), s(2, 2), s(1, 2), s(0, 2), s(0, 1)};
+    std::copy(voigt, voigt + 6, stress.begin() + 6 * c);
+  }
+  writer.write_cell_field_at(index, t, "stress", stress, 6, {"xx", "yy", "zz", "yz", "xz", "xy"});
+}
+
+std::vector<Vec3> ElasticityScene::probe_values(const std::vector<Probe>& probes, Real t,
+                                                std::span<const Real> u) const {
+  std::vector<Vec3> values;
+  if (probes.empty()) return values;
+  const std::vector<Mat3> gradients = op->cell_gradients(t, u);
+  for (const Probe& p : probes) values.push_back(op->displacement_at(p.cell, p.at, u, gradients));
+  return values;
+}
+
+std::vector<GapElement> ElasticityScene::gap_elements(const std::string& patch_name) const {
+  const int p = mesh->find_patch(patch_name);
+  if (p < 0) throw InputError(fmt::format("the mesh has no patch '{}' facing the electrode", patch_name));
+  const Patch& patch = mesh->patches()[p];
+  const int dim = mesh->dim();
+  std::vector<GapElement> elements;
+  for (Index f = patch.first_face; f < patch.first_face + patch.n_faces; ++f) {
+    const Index owner = mesh->face_owner(f);
+    if (owner >= mesh->n_owned_cells()) continue;
+    GapElement e{owner * dim + (dim - 1), mesh->face_area(f).norm(),
+                 Vec3::Constant(std::numeric_limits<Real>::infinity()),
+                 Vec3::Constant(-std::numeric_limits<Real>::infinity())};
+    for (Index node : mesh->face_nodes(f)) {
+      e.lo = e.lo.cwiseMin(mesh->nodes()[node]);
+      e.hi = e.hi.cwiseMax(mesh->nodes()[node]);
+    }
+    elements.push_back(e);
+  }
+  return elements;
 }
 
 }  // namespace rfmems

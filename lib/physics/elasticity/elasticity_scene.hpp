@@ -5,7 +5,8 @@
 //                                                            # density > 0 (required for
 //                                                            # transients, optional if static)
 //   model:
-//     hypothesis: plane_stress      # plane_stress | plane_strain (2D meshes) | 3d (3D meshes)
+//     structure: plane              # plane (2D meshes, default there) | solid3d (3D meshes)
+//     hypothesis: plane_stress      # plane_stress (default) | plane_strain (plane) | 3d (solid3d)
 //     stress: coupled               # coupled (default) | segregated (static analyses only)
 //   boundaries:                     # one entry per mesh patch, no more, no fewer
 //     left:   {type: fixed}                                    # u = value (default 0)
@@ -29,16 +30,18 @@
 #include "mesh/mesh.hpp"
 #include "physics/elasticity/elasticity_operator.hpp"
 #include "physics/elasticity/segregated_solver.hpp"
+#include "physics/structure/structural_model.hpp"
 
 namespace rfmems {
 
-enum class AnalysisType { Static, Transient };
 enum class StressMethod { Coupled, Segregated };
 
-std::string to_string(AnalysisType type);  // "static", "transient"
 std::string to_string(StressMethod method);  // "coupled", "segregated"
 
-struct ElasticityScene {
+// Fields written per output: displacement (n x 3, z = 0 in 2D) [m], velocity [m/s]
+// (transients), stress (n x 6, Voigt xx yy zz yz xz xy) [Pa] from the cell gradients.
+// Probes record the displacement (ux, uy, uz) from the cell's reconstruction.
+struct ElasticityScene : StructuralModel {
   // On the heap because the operator keeps a reference to the mesh: the scene may move.
   std::unique_ptr<Mesh> mesh;
   LinearElastic material;
@@ -46,6 +49,24 @@ struct ElasticityScene {
   StressMethod stress = StressMethod::Coupled;
   SegregatedOptions segregated;  // diffusivity and relaxation from the case when segregated
   Real load_time = 0;            // the longest ramp (0 without ramps)
+
+  // StructuralModel
+  std::string kind() const override;
+  const Mesh& structure_mesh() const override { return *mesh; }
+  SecondOrderOperator& structure() override { return *op; }
+  Real ramp_end_time() const override { return load_time; }
+  std::string static_method() const override {
+    return stress == StressMethod::Coupled ? "newton" : "segregated";
+  }
+  bool solve_static_otherwise(Real t, const AnalysisSettings& settings, std::vector<Real>& y,
+                              AnalysisStats& stats) override;
+  void write_fields(ResultWriter& writer, int index, Real t, std::span<const Real> y,
+                    std::span<const Real> v) const override;
+  std::array<std::string, 3> probe_components() const override { return {"ux", "uy", "uz"}; }
+  std::vector<Vec3> probe_values(const std::vector<Probe>& probes, Real t,
+                                 std::span<const Real> y) const override;
+  int main_probe_component() const override { return 1; }
+  std::vector<GapElement> gap_elements(const std::string& patch) const override;
 };
 
 // Reads mesh, material, model, boundaries, body_force (and solver.segregated) from the case

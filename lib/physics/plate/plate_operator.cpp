@@ -302,6 +302,16 @@ void PlateOperator::internal_residual(Real t, std::span<const Real> y, std::span
   if (pressure_)
     for (Index c = 0; c < mesh_.n_cells(); ++c)
       r[3 * c + kW] -= pressure_(mesh_.cell_centroid(c), t) * mesh_.cell_volume(c);
+  for (const auto& [c, load] : point_loads_) {
+    const Vec3 f = load(t);
+    for (int k = 0; k < 3; ++k) r[3 * c + k] -= f[k];
+  }
+}
+
+void PlateOperator::add_point_load(Index cell, std::function<Vec3(Real t)> value) {
+  if (cell < 0 || cell >= mesh_.n_cells())
+    throw std::out_of_range(fmt::format("plate point load on cell {} of {}", cell, mesh_.n_cells()));
+  point_loads_.emplace_back(cell, std::move(value));
 }
 
 // ---- Jacobian ------------------------------------------------------------------------------

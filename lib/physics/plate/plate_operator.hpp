@@ -89,6 +89,11 @@ class PlateOperator : public SecondOrderOperator {
                 std::vector<PlateBoundary> boundaries, ScalarField pressure = {},
                 int reconstruction_degree = 3);
 
+  // A concentrated load on one cell: value(t) = (F_z [N], and the moments [N m] work-conjugate
+  // to beta_x and beta_y), added to that cell's balances (a point load at a cell centroid;
+  // the scene snaps a load's point to the nearest centroid).
+  void add_point_load(Index cell, std::function<Vec3(Real t)> value);
+
   Index size() const override { return 3 * mesh_.n_cells(); }
   const Mesh& mesh() const { return mesh_; }
   const PlateSection& section() const { return section_; }
@@ -167,6 +172,7 @@ class PlateOperator : public SecondOrderOperator {
   PlateSection section_;
   std::vector<PlateBoundary> boundaries_;
   ScalarField pressure_;
+  std::vector<std::pair<Index, std::function<Vec3(Real)>>> point_loads_;
   Real mu_, lambda_, kgh_;  // D (1-nu)/2, D nu, k G h
   std::unique_ptr<PolynomialReconstruction> beta_rec_, w_rec_;
 

@@ -6,8 +6,8 @@
 #include <functional>
 
 #include "core/error.hpp"
-#include "physics/elasticity/elasticity_analysis.hpp"
 #include "physics/elasticity/elasticity_scene.hpp"
+#include "physics/structure/structural_analysis.hpp"
 
 namespace rfmems {
 namespace {

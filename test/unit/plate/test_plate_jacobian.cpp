@@ -14,7 +14,7 @@
 #include "core/structural_systems.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/plate/plate_operator.hpp"
-#include "physics/plate/reduced_inertia_system.hpp"
+#include "core/reduced_inertia_system.hpp"
 
 using namespace rfmems;
 using Kind = PlateBoundary::Kind;

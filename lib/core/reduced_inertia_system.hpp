@@ -19,9 +19,6 @@
 // L/h = 200), so neglecting rotary inertia is the standard thin-plate choice for transients;
 // with it IDA takes steps set by the bending dynamics. FirstOrderSystem (core) keeps the full
 // mass for fixed-step or reference runs.
-//
-// Belongs next to FirstOrderSystem in core/structural_systems once the lead moves it; it only
-// uses the SecondOrderOperator contract.
 #pragma once
 #include <vector>
 

@@ -1,14 +1,15 @@
-// Static and transient analyses of an ElasticityScene, and their case-file settings.
+// Static and transient analyses of a StructuralModel (continuum or plate), and their case-file
+// settings.
 //
 //   analysis:
 //     type: static                 # static | transient
 //     end_time: 1.25 s             # transient: simulated time, from t = 0
 //     output_interval: 2.5 ms      # transient: fields and probes every this much
-//   solver:                        # static (both stress methods):
+//   solver:                        # static (Newton, or the elasticity's segregated method):
 //     tolerance: 1e-6              #   residual reduction ||R||/||R0|| (default 1e-6: the
 //                                  #   round-off floor of a slender beam is ~5e-7, and a
 //                                  #   linear problem needs one Newton step to reach it)
-//     max_iterations: 50           #   Newton (coupled, default 50) or outer iterations
+//     max_iterations: 50           #   Newton (default 50) or outer iterations
 //                                  #   (segregated, default 100000)
 //   solver:                        # transient (IDA, variable-order variable-step BDF):
 //     rtol: 1e-6                   #   relative tolerance (default 1e-6)
@@ -25,18 +26,21 @@
 //                                  #   mesh's high-frequency modes and IDA then crawls.
 //     fixed_step: 0                #   > 0: fixed step size, no error control (default 0)
 //
-// Static: R(t_load, u) = 0 at the time every ramp has finished (scene.load_time), by Newton
-// with KINSOL (coupled) or by the segregated iteration; one output, index 0, at t_load.
-// Transient: M u'' + R(t, u) = 0 as the first-order system [u' - v; M v' + R] with IDA,
-// starting from rest (u = v = 0) with the consistent initial acceleration
-// v'(0) = -M^-1 R(0, 0) (zero when every load ramps from zero). Outputs at t = k dt for
-// k = 0, 1, ... and at end_time.
+// Static: R(t_load, u) = 0 at the time every ramp has finished (model.ramp_end_time()), by
+// Newton with KINSOL or the model's own method (segregated); one output, index 0, at t_load.
+// Transient: M u'' + R(t, u) = 0 as the first-order system [u' - v; M v' + R] with IDA
+// (core/structural_systems.hpp), or, if the model neglects the inertia of some components
+// (the plate's rotations), as core/reduced_inertia_system.hpp with those components
+// algebraic and made consistent at t = 0 by IDACalcIC. It starts from rest (u = v = 0) with
+// the consistent initial acceleration v'(0) = -M^-1 R(0, 0) (zero when every load ramps from
+// zero). Outputs at t = k dt for k = 0, 1, ... and at end_time.
 #pragma once
 #include <span>
 
 #include "io/case_file.hpp"
 #include "io/progress.hpp"
-#include "physics/elasticity/elasticity_scene.hpp"
+#include "physics/elasticity/segregated_solver.hpp"
+#include "physics/structure/structural_model.hpp"
 #include "solvers/ida_integrator.hpp"
 #include "solvers/kinsol_solver.hpp"
 
@@ -56,9 +60,9 @@ struct AnalysisSettings {
 // analysis.type alone: the scene needs it before the rest can be read.
 AnalysisType read_analysis_type(const CaseNode& root);
 
-// The remaining analysis.* and solver.* keys for this scene (defaults depend on its stress
+// The remaining analysis.* and solver.* keys for this model (defaults depend on its static
 // method and mesh size).
-AnalysisSettings read_analysis_settings(const CaseNode& root, const ElasticityScene& scene);
+AnalysisSettings read_analysis_settings(const CaseNode& root, const StructuralModel& model);
 
 // Receives the state at each output time. v is empty for a static analysis.
 class AnalysisObserver {
@@ -69,10 +73,10 @@ class AnalysisObserver {
 
 struct AnalysisStats {
   AnalysisType type = AnalysisType::Static;
-  StressMethod stress = StressMethod::Coupled;
-  IntegratorStats transient;      // transient
-  NonlinearStats newton;          // static, coupled
-  SegregatedStats segregated;     // static, segregated
+  std::string static_method = "newton";  // static: "newton" or the model's own
+  IntegratorStats transient;             // transient
+  NonlinearStats newton;                 // static, Newton
+  SegregatedStats segregated;            // static, segregated (elasticity)
   int n_outputs = 0;
   Real final_time = 0;
 };
@@ -80,7 +84,7 @@ struct AnalysisStats {
 // Runs the analysis. Progress (transients) goes to `progress`; the caller finishes it.
 // SolverError if the integrator or the nonlinear solver fails (also a segregated iteration
 // that has not converged within its iteration limit).
-AnalysisStats run_analysis(ElasticityScene& scene, const AnalysisSettings& settings,
+AnalysisStats run_analysis(StructuralModel& model, const AnalysisSettings& settings,
                            AnalysisObserver& observer, ProgressReporter& progress);
 
 }  // namespace rfmems

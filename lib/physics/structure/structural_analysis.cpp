@@ -1,13 +1,16 @@
-// The static and transient analyses of an ElasticityScene (see the header for the keys).
-#include "physics/elasticity/elasticity_analysis.hpp"
+// The static and transient analyses of a StructuralModel (see the header for the keys).
+#include "physics/structure/structural_analysis.hpp"
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <limits>
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/reduced_inertia_system.hpp"
 #include "core/structural_systems.hpp"
 #include "solvers/static_solve.hpp"
 
@@ -25,32 +28,20 @@ Real mesh_extent(const Mesh& mesh) {
   return mesh.n_nodes() > 0 ? (hi - lo).maxCoeff() : 1.0;
 }
 
-AnalysisStats run_static(ElasticityScene& scene, const AnalysisSettings& settings,
+AnalysisStats run_static(StructuralModel& model, const AnalysisSettings& settings,
                          AnalysisObserver& observer) {
   AnalysisStats stats;
   stats.type = AnalysisType::Static;
-  stats.stress = scene.stress;
-  const Real t = scene.load_time;
-  std::vector<Real> u(scene.op->size(), 0.0);
-  if (scene.stress == StressMethod::Coupled) {
+  stats.static_method = model.static_method();
+  const Real t = model.ramp_end_time();
+  std::vector<Real> u(model.structure().size(), 0.0);
+  if (!model.solve_static_otherwise(t, settings, u, stats)) {
     KinsolOptions options;
     options.relative_tolerance = settings.tolerance;
     options.max_iterations = static_cast<int>(settings.max_iterations);
-    StaticSolution solution = solve_static(*scene.op, t, options);
+    StaticSolution solution = solve_static(model.structure(), t, options);
     u = std::move(solution.y);
     stats.newton = solution.stats;
-  } else {
-    SegregatedOptions options = scene.segregated;
-    options.relative_tolerance = settings.tolerance;
-    options.max_outer_iterations = static_cast<int>(settings.max_iterations);
-    stats.segregated = solve_segregated(*scene.op, t, u, options);
-    if (!stats.segregated.converged)
-      throw SolverError(fmt::format(
-          "segregated solver: no convergence after {} outer iterations (residual {:.3e} -> "
-          "{:.3e}, wanted a reduction to {:g}); raise solver.max_iterations or lower "
-          "solver.segregated.relaxation",
-          stats.segregated.outer_iterations, stats.segregated.initial_residual,
-          stats.segregated.final_residual, settings.tolerance));
   }
   observer.output(0, t, u, {});
   stats.n_outputs = 1;
@@ -58,31 +49,57 @@ AnalysisStats run_static(ElasticityScene& scene, const AnalysisSettings& setting
   return stats;
 }
 
-AnalysisStats run_transient(ElasticityScene& scene, const AnalysisSettings& settings,
+// The first-order system for IDA: full inertia, or the quasi-static components algebraic.
+std::unique_ptr<SystemOperator> first_order_system(StructuralModel& model) {
+  const std::vector<bool> quasi_static = model.quasi_static_components();
+  const bool reduced = std::find(quasi_static.begin(), quasi_static.end(), true) != quasi_static.end();
+  if (reduced) return std::make_unique<ReducedInertiaSystem>(model.structure(), quasi_static);
+  return std::make_unique<FirstOrderSystem>(model.structure());
+}
+
+AnalysisStats run_transient(StructuralModel& model, const AnalysisSettings& settings,
                             AnalysisObserver& observer, ProgressReporter& progress) {
   AnalysisStats stats;
   stats.type = AnalysisType::Transient;
-  stats.stress = scene.stress;
-  ElasticityOperator& op = *scene.op;
+  SecondOrderOperator& op = model.structure();
   const Index n = op.size();
+  std::unique_ptr<SystemOperator> system = first_order_system(model);
+  auto* reduced = dynamic_cast<ReducedInertiaSystem*>(system.get());
 
   // From rest; the acceleration balances whatever load acts at t = 0.
-  std::vector<Real> y(2 * n, 0.0), yp(2 * n, 0.0), r(n);
-  op.internal_residual(0.0, std::span<const Real>(y).subspan(0, n), r);
-  const std::vector<Real> mass = op.mass_diagonal();
-  for (Index i = 0; i < n; ++i) yp[n + i] = -r[i] / mass[i];
+  std::vector<Real> y(system->size(), 0.0), yp;
+  if (reduced) {
+    yp = reduced->consistent_derivative(0.0, y);
+  } else {
+    std::vector<Real> r(n);
+    yp.assign(system->size(), 0.0);
+    op.internal_residual(0.0, std::span<const Real>(y).subspan(0, n), r);
+    const std::vector<Real> mass = op.mass_diagonal();
+    for (Index i = 0; i < n; ++i) yp[n + i] = -r[i] / mass[i];
+  }
 
-  FirstOrderSystem system(op);
-  IdaIntegrator ida(system, settings.ida);
+  IdaIntegrator ida(*system, settings.ida);
   ida.initialize(0.0, y, yp);
+  const Real dt = settings.output_interval, t_end = settings.end_time;
+  // Quasi-static components must balance the load at t = 0 (zero when loads ramp from 0).
+  if (reduced) ida.correct_initial_conditions(std::min(dt, t_end));
+  // Velocities of the state, per structural component (zero for quasi-static ones).
+  std::vector<Real> v(n, 0.0);
   auto emit = [&](int index, Real t) {
     const auto state = ida.y();
-    observer.output(index, t, state.subspan(0, n), state.subspan(n, n));
+    if (reduced) {
+      for (Index i = 0; i < n; ++i) {
+        const Index k = reduced->velocity_index(i);
+        v[i] = k >= 0 ? state[k] : ida.yp()[i];
+      }
+    } else {
+      std::copy(state.begin() + n, state.begin() + 2 * n, v.begin());
+    }
+    observer.output(index, t, state.subspan(0, n), v);
   };
   emit(0, 0.0);
 
   // k dt up to end_time; a last, shorter interval if end_time is not a multiple of dt.
-  const Real dt = settings.output_interval, t_end = settings.end_time;
   const long n_intervals = std::max(1L, static_cast<long>(std::ceil(t_end / dt - 1e-9)));
   for (long k = 1; k <= n_intervals; ++k) {
     const Real t = k == n_intervals ? t_end : static_cast<Real>(k) * dt;
@@ -105,15 +122,15 @@ AnalysisType read_analysis_type(const CaseNode& root) {
   return type == "static" ? AnalysisType::Static : AnalysisType::Transient;
 }
 
-AnalysisSettings read_analysis_settings(const CaseNode& root, const ElasticityScene& scene) {
+AnalysisSettings read_analysis_settings(const CaseNode& root, const StructuralModel& model) {
   AnalysisSettings s;
   s.type = read_analysis_type(root);
   const CaseNode analysis = root.child("analysis");
   const CaseNode solver = root.child_or_empty("solver");
   if (s.type == AnalysisType::Static) {
-    const bool coupled = scene.stress == StressMethod::Coupled;
+    const bool newton = model.static_method() == "newton";
     s.tolerance = solver.get_real("tolerance", 1e-6, Range::open(0.0, 1.0));
-    s.max_iterations = solver.get_int("max_iterations", coupled ? 50 : 100000,
+    s.max_iterations = solver.get_int("max_iterations", newton ? 50 : 100000,
                                       Range::closed(1, 1e9));
     return s;
   }
@@ -127,7 +144,7 @@ AnalysisSettings read_analysis_settings(const CaseNode& root, const ElasticitySc
   s.ida.rtol = solver.get_real("rtol", 1e-6, Range::open(0.0, 1.0));
   // Small-strain displacements are up to ~1e-4 of the body's size: allow rtol of that.
   s.ida.atol = solver.get_quantity("atol", Dimension::Length,
-                                   s.ida.rtol * 1e-4 * mesh_extent(*scene.mesh), Range::positive());
+                                   s.ida.rtol * 1e-4 * mesh_extent(model.structure_mesh()), Range::positive());
   // BDF3-5 are not A-stable: on undamped elastodynamics (eigenvalues on the imaginary axis)
   // IDA collapses its step at those orders, so structural transients default to 2.
   s.ida.max_order = static_cast<int>(solver.get_int("max_order", 2, Range::closed(1, 5)));
@@ -136,10 +153,14 @@ AnalysisSettings read_analysis_settings(const CaseNode& root, const ElasticitySc
   return s;
 }
 
-AnalysisStats run_analysis(ElasticityScene& scene, const AnalysisSettings& settings,
+std::string to_string(AnalysisType type) {
+  return type == AnalysisType::Static ? "static" : "transient";
+}
+
+AnalysisStats run_analysis(StructuralModel& model, const AnalysisSettings& settings,
                            AnalysisObserver& observer, ProgressReporter& progress) {
-  return settings.type == AnalysisType::Static ? run_static(scene, settings, observer)
-                                               : run_transient(scene, settings, observer, progress);
+  return settings.type == AnalysisType::Static ? run_static(model, settings, observer)
+                                               : run_transient(model, settings, observer, progress);
 }
 
 }  // namespace rfmems

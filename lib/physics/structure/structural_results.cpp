@@ -1,5 +1,5 @@
-// Fields, probe samples, metadata and the JSON summary of an elasticity run.
-#include "physics/elasticity/elasticity_results.hpp"
+// Fields, probe samples, metadata and the JSON summary of a structural run.
+#include "physics/structure/structural_results.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -8,57 +8,25 @@
 
 namespace rfmems {
 
-namespace {
-
-// n_cells x 3 rows from the interleaved (cell * dim + k) unknowns; z = 0 in 2D.
-std::vector<double> as_vectors(std::span<const Real> u, Index n_cells, int dim) {
-  std::vector<double> out(static_cast<std::size_t>(3 * n_cells), 0.0);
-  for (Index c = 0; c < n_cells; ++c)
-    for (int k = 0; k < dim; ++k) out[3 * c + k] = u[c * dim + k];
-  return out;
-}
-
-}  // namespace
-
-ElasticityResults::ElasticityResults(const std::string& path, const ElasticityScene& scene,
+StructuralResults::StructuralResults(const std::string& path, const StructuralModel& model,
                                      std::vector<Probe> probes)
-    : scene_(scene),
-      writer_(path, *scene.mesh),
+    : model_(model),
+      writer_(path, model.structure_mesh()),
       probes_(std::move(probes)),
       history_(probes_.size()) {}
 
-void ElasticityResults::output(int index, Real t, std::span<const Real> u,
+void StructuralResults::output(int index, Real t, std::span<const Real> y,
                                std::span<const Real> v) {
-  const Mesh& mesh = *scene_.mesh;
-  const ElasticityOperator& op = *scene_.op;
-  const Index nc = mesh.n_cells();
-  const int dim = mesh.dim();
-  const std::vector<Mat3> gradients = op.cell_gradients(t, u);
-
-  writer_.write_cell_field_at(index, t, "displacement", as_vectors(u, nc, dim), 3,
-                              {"ux", "uy", "uz"});
-  if (!v.empty())
-    writer_.write_cell_field_at(index, t, "velocity", as_vectors(v, nc, dim), 3,
-                                {"vx", "vy", "vz"});
-  std::vector<double> stress(static_cast<std::size_t>(6 * nc));
-  for (Index c = 0; c < nc; ++c) {
-    const Mat3 s = scene_.material.stress(gradients[c]);
-    const double voigt[6] = {s(0, 0), s(1, 1), s(2, 2), s(1, 2), s(0, 2), s(0, 1)};
-    std::copy(voigt, voigt + 6, stress.begin() + 6 * c);
-  }
-  writer_.write_cell_field_at(index, t, "stress", stress, 6, {"xx", "yy", "zz", "yz", "xz", "xy"});
-
-  std::vector<Vec3> samples;
-  samples.reserve(probes_.size());
-  for (const Probe& p : probes_) samples.push_back(op.displacement_at(p.cell, p.at, u, gradients));
-  history_.add(t, std::move(samples));
+  model_.write_fields(writer_, index, t, y, v);
+  history_.add(t, model_.probe_values(probes_, t, y));
 }
 
-void ElasticityResults::finish(const CaseFile& case_file, const std::string& case_name,
+void StructuralResults::finish(const CaseFile& case_file, const std::string& case_name,
                                const AnalysisStats& stats, Real wall_seconds) {
+  const auto components = model_.probe_components();
   for (std::size_t p = 0; p < probes_.size(); ++p)
     writer_.write_time_series("probes", probes_[p].name, history_.times(), history_.series(p),
-                              {"ux", "uy", "uz"});
+                              {components.begin(), components.end()});
   std::map<std::string, double> numbers;
   const Json solver = solver_stats_json(stats);  // named: items() refers into it
   for (const auto& [key, value] : solver.items())
@@ -70,7 +38,8 @@ void ElasticityResults::finish(const CaseFile& case_file, const std::string& cas
                           {"case_effective", case_file.effective_text()},
                           {"overrides", fmt::format("{}", fmt::join(case_file.overrides(), "\n"))},
                           {"analysis", to_string(stats.type)},
-                          {"stress", to_string(stats.stress)}},
+                          {"model", model_.kind()},
+                          {"static_method", stats.static_method}},
                          numbers);
   writer_.finish();
 }
@@ -88,7 +57,7 @@ Json solver_stats_json(const AnalysisStats& stats) {
     j["newton_fails"] = s.newton_fails;
     j["last_order"] = s.last_order;
     j["last_step"] = s.last_step;
-  } else if (stats.stress == StressMethod::Coupled) {
+  } else if (stats.static_method == "newton") {
     const NonlinearStats& s = stats.newton;
     j["newton_iterations"] = s.newton_iters;
     j["residual_evals"] = s.residual_evals;
@@ -104,29 +73,31 @@ Json solver_stats_json(const AnalysisStats& stats) {
   return j;
 }
 
-Json elasticity_summary(const std::string& case_name, const ElasticityScene& scene,
-                        const ElasticityResults& results, const AnalysisStats& stats,
+Json structural_summary(const std::string& case_name, const StructuralModel& model,
+                        const StructuralResults& results, const AnalysisStats& stats,
                         Real wall_seconds) {
   Json j;
   j["case"] = case_name;
   j["analysis"] = to_string(stats.type);
-  j["stress"] = to_string(stats.stress);
-  j["mesh"] = {{"dim", scene.mesh->dim()}, {"cells", scene.mesh->n_cells()}};
+  j["model"] = model.kind();
+  if (stats.type == AnalysisType::Static) j["static_method"] = stats.static_method;
+  const Mesh& mesh = model.structure_mesh();
+  j["mesh"] = {{"dim", mesh.dim()}, {"cells", mesh.n_cells()}};
   j["output"] = {{"h5", results.path()}, {"xdmf", results.xdmf_path()}};
   j["final_time"] = stats.final_time;
   j["n_outputs"] = stats.n_outputs;
   Json probes = Json::object();
+  const auto components = model.probe_components();
   const ProbeHistory& h = results.history();
   for (std::size_t p = 0; p < results.probes().size(); ++p) {
     Json probe = Json::object();
     if (h.n_samples() > 0) {
       const Vec3& last = h.value(h.n_samples() - 1, p);
-      probe["ux"] = last.x();
-      probe["uy"] = last.y();
-      probe["uz"] = last.z();
+      for (int k = 0; k < 3; ++k) probe[components[k]] = last[k];
     }
     if (stats.type == AnalysisType::Transient) {
-      probe["max_abs_uy"] = h.max_abs(p, 1);
+      const int main = model.main_probe_component();
+      probe["max_abs_" + components[main]] = h.max_abs(p, main);
       probe["samples"] = h.n_samples();
     }
     probes[results.probes()[p].name] = probe;

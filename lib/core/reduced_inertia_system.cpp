@@ -1,4 +1,4 @@
-#include "physics/plate/reduced_inertia_system.hpp"
+#include "core/reduced_inertia_system.hpp"
 
 #include <fmt/format.h>
 
