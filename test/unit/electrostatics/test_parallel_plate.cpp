@@ -4,7 +4,7 @@
 //   sigma = eps V / g  (minus that on the electrode),  t = -eps V^2/(2 g^2) e_y,
 //   total force -eps V^2 L/(2 g^2) e_y per metre of depth.
 // Asserted on an orthogonal mesh and on a strongly skewed one (cells sheared by up to 60
-// degrees), for reconstruction degrees 1 and 2; the uncorrected two-point flux (degree 0)
+// degrees), for reconstruction degrees 1 and 2, and in 3D on sheared hexahedra; the uncorrected two-point flux (degree 0)
 // is asserted to be wrong on the skewed mesh by more than 1 % (the correction matters).
 // Also: a floating plate carrying the charge Q = eps V L/g rises to phi = V; the charges of
 // the two plates are opposite (Gauss); bad boundary input raises InputError.
@@ -78,6 +78,32 @@ TEST(ParallelPlate, ExactOnOrthogonalAndSkewedMeshes) {
       EXPECT_LT(e, 1e-9) << "skewed " << skewed << " degree " << degree;
       EXPECT_LT(ep, 1e-10) << "skewed " << skewed << " degree " << degree;
     }
+}
+
+TEST(ParallelPlate, ExactInThreeDimensionsOnSkewedHexahedra) {
+  BoxSpec spec;
+  spec.dim = 3;
+  spec.lower = Vec3(0, -g, 0);
+  spec.upper = Vec3(4 * g, 0, 3 * g);
+  spec.n[0] = 8;
+  spec.n[1] = 5;
+  spec.n[2] = 6;
+  Mesh mesh = make_structured_mesh(spec, [](const Vec3& p) {
+    const Real eta = (p.y() + g) / g;  // shear x and z with height: non-orthogonal faces
+    return Vec3(p.x() + 0.3 * g * std::sin(M_PI * p.x() / (4 * g)) * eta, p.y(),
+                p.z() + 0.2 * g * std::sin(M_PI * p.z() / (3 * g)) * eta * eta);
+  });
+  auto bcs = plates(PotentialBoundary::potential(V));
+  bcs["back"] = bcs["front"] = PotentialBoundary::zero_flux();
+  ElectrostaticSolver solver(mesh, bcs);
+  solver.solve();
+  const SurfaceLoad top = solver.surface_load("top");
+  Real area = 0;
+  for (Index f : top.faces) area += mesh.face_area(f).norm();
+  const Real pressure = eps * V * V / (2 * g * g);
+  EXPECT_LT((top.force - Vec3(0, -pressure * area, 0)).norm() / (pressure * area), 1e-9);
+  EXPECT_NEAR(top.charge, eps * V / g * area, 1e-9 * eps * V / g * area);
+  EXPECT_LT(potential_error(mesh, solver), 1e-10);
 }
 
 TEST(ParallelPlate, SkewedMeshNeedsTheCorrection) {
