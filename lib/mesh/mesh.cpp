@@ -93,6 +93,16 @@ int Mesh::find_patch(const std::string& name) const {
   return -1;
 }
 
+std::vector<Index> Mesh::patch_nodes(int p) const {
+  const Patch& patch = patches_.at(p);
+  std::vector<Index> nodes;
+  for (Index f = patch.first_face; f < patch.first_face + patch.n_faces; ++f)
+    for (Index n : face_nodes(f)) nodes.push_back(n);
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
 void Mesh::set_node_coordinates(std::vector<Vec3> nodes) {
   if (nodes.size() != nodes_.size()) throw MeshError("set_node_coordinates: wrong node count");
   nodes_ = std::move(nodes);

@@ -60,6 +60,8 @@ class Mesh {
   const std::vector<Patch>& patches() const { return patches_; }
   // Index of the patch with this name, -1 if absent.
   int find_patch(const std::string& name) const;
+  // The nodes of the faces of patch p, sorted and unique.
+  std::vector<Index> patch_nodes(int p) const;
 
   // Moves the nodes and recomputes all geometry; throws MeshError if a cell inverts.
   void set_node_coordinates(std::vector<Vec3> nodes);

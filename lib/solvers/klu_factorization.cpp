@@ -42,6 +42,22 @@ KluFactorization::~KluFactorization() {
   delete impl_;
 }
 
+void KluFactorization::refactor(std::span<const Real> values) {
+  Impl& k = *impl_;
+  if (static_cast<std::size_t>(values.size()) != k.values.size())
+    throw SolverError("KLU refactor: value count differs from the pattern");
+  k.values.assign(values.begin(), values.end());
+  // The threshold: KLU's cheap estimate min|U_ii| / max|U_ii| (klu_rcond).
+  constexpr Real kPoorPivots = 1e-12;
+  bool ok = klu_l_refactor(k.ptr.data(), k.idx.data(), k.values.data(), k.symbolic, k.numeric,
+                           &k.common) &&
+            klu_l_rcond(k.symbolic, k.numeric, &k.common) && k.common.rcond > kPoorPivots;
+  if (ok) return;
+  klu_l_free_numeric(&k.numeric, &k.common);
+  k.numeric = klu_l_factor(k.ptr.data(), k.idx.data(), k.values.data(), k.symbolic, &k.common);
+  if (!k.numeric) throw SolverError("KLU refactorisation failed (singular matrix?)");
+}
+
 void KluFactorization::solve(std::span<Real> b) {
   klu_l_tsolve(impl_->symbolic, impl_->numeric, impl_->n, 1, b.data(), &impl_->common);
 }

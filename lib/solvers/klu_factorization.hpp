@@ -16,6 +16,11 @@ class KluFactorization {
   KluFactorization& operator=(const KluFactorization&) = delete;
   // Solves A x = b in place.
   void solve(std::span<Real> b);
+  // New values on the same pattern (e.g. the geometry moved): keeps the symbolic analysis
+  // (ordering) and the pivot sequence (klu_refactor); if the reused pivots give a poor
+  // reciprocal condition estimate it factorises again with fresh pivoting, still reusing the
+  // symbolic analysis. Throws SolverError if singular.
+  void refactor(std::span<const Real> values);
 
  private:
   struct Impl;
