@@ -37,7 +37,10 @@
 //    S_f = (S_f.e) e + k_f only the part along d is kept (the "minimum correction" split, the
 //    smallest dropped k_f). It is exact on orthogonal meshes (the rectangular plate meshes)
 //    and O(skew) inconsistent otherwise; a correction would need cell gradients, widening
-//    the stencil beyond the face neighbours that the coupled Jacobian is built on. Whatever
+//    the stencil beyond the face neighbours that the coupled Jacobian is built on. Measured
+//    on a 200 x 100 um plate (Blech damping, 0.16 % off on 80 x 40 rectangles) whose interior
+//    nodes are shifted sinusoidally: cells sheared up to 6 degrees converge to ~0.5 % off,
+//    up to 22 degrees to ~2.4 % off. Whatever
 //    the mesh, each interior flux leaves one cell and enters the other, so mass is conserved
 //    to round-off (test/unit/gas/test_reynolds_conservation.cpp).
 //

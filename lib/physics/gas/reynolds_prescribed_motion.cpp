@@ -109,7 +109,8 @@ void ReynoldsPrescribedMotion::jacobian(Real t, Real c_j, std::span<const Real> 
       const Index col = pattern.col_idx[k];
       values[k] *= reference_gap_ / g_[col];
       if (col == row)
-        values[k] += film_.mesh().cell_volume(row) * reference_gap_ * (c_j - g_rate_[row] / g_[row]);
+        values[k] +=
+            film_.mesh().cell_volume(row) * reference_gap_ * (c_j - g_rate_[row] / g_[row]);
     }
   }
 }

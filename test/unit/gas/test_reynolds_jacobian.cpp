@@ -5,7 +5,8 @@
 // Wall edges. Every entry (also those outside the pattern, which must be zero) is compared;
 // c_j = 0 checks the flux part, c_j = 1e7 /s puts the storage part at the same scale.
 // (test/support/jacobian_check.hpp takes one step for y and y'; here the rate step must be
-// much larger than the state step, so the comparison is written out.) The IDA adaptor's Jacobian is checked in both of its unknowns (p, and p g / g_ref).
+// much larger than the state step, so the comparison is written out.) The IDA adaptor's
+// Jacobian is checked in both of its unknowns (p, and p g / g_ref).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -190,7 +191,8 @@ TEST(GasProperties, VeijolaFactorAndKnudsenNumber) {
   EXPECT_NEAR(air.knudsen(101325.0, 2e-6), 0.034, 1e-15);
   EXPECT_NEAR(air.knudsen(1000.0, 2e-6), 0.034 * 101.325, 1e-12);
   // Q = 1 + 9.638 Kn^1.159: 1.19134 at Kn = 0.034 (hand value, log form).
-  EXPECT_NEAR(air.rarefaction_factor(0.034), 1.0 + 9.638 * std::exp(1.159 * std::log(0.034)), 1e-14);
+  EXPECT_NEAR(air.rarefaction_factor(0.034), 1.0 + 9.638 * std::exp(1.159 * std::log(0.034)),
+              1e-14);
   EXPECT_NEAR(air.rarefaction_factor(0.034), 1.1914, 5e-4);
   // dQ/dKn by central differences.
   const double kn = 0.7, h = 1e-6;
