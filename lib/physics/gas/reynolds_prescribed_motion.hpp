@@ -16,8 +16,10 @@
 // Jacobian: Pressure: the film's pressure_jacobian; GapPressure, with p = g_ref y / g and
 // p' = (g_ref y' - p g') / g:  J = (dF/dp) diag(g_ref / g) + diag(A g_ref (c_j - g'/g)).
 //
-// The residual is left in its natural units, Pa m^3/s per cell (unit depth): with the KLU
-// direct solver IDA's Newton test acts on the correction in y, so row scaling is immaterial.
+// The residual is left in its natural units, Pa m^3/s per cell (unit depth, rows
+// ~ p g A / t): IDA's Newton test acts on the correction in y (tolerances in Pa), so with the
+// KLU direct solver row scaling is immaterial, and with SPGMR the left preconditioner (an LU
+// of this Jacobian) brings the Krylov residual back to y units too.
 #pragma once
 #include <functional>
 #include <vector>
