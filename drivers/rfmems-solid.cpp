@@ -11,8 +11,6 @@
 //
 // Exit codes: 0 success; 2 bad input (case file, option, mesh file): one line
 // "rfmems-solid: <message>" on stderr and no result file; 1 any other failure.
-#include <CLI/CLI.hpp>
-
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -20,9 +18,9 @@
 #include <string>
 #include <vector>
 
-#include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/case_file.hpp"
+#include "io/driver_main.hpp"
 #include "io/interrupt_cleanup.hpp"
 #include "io/json_summary.hpp"
 #include "io/probes.hpp"
@@ -36,23 +34,7 @@ namespace {
 namespace fs = std::filesystem;
 using namespace rfmems;
 
-struct Options {
-  std::string case_path;
-  std::vector<std::string> overrides;
-  std::string output;
-  bool json = false;
-  bool quiet = false;
-};
-
-// Messages go out on one line, whatever the text inside them holds.
-void print_error(const std::string& message) {
-  std::string line = message;
-  for (char& c : line)
-    if (c == '\n' || c == '\r') c = ' ';
-  std::fprintf(stderr, "rfmems-solid: %s\n", line.c_str());
-}
-
-int run(const Options& options) {
+int run(const DriverOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -100,31 +82,8 @@ int run(const Options& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  Options options;
-  CLI::App app{"rfmems-solid: static and transient linear elasticity of a continuum or a plate (FV)"};
-  app.add_option("case", options.case_path, "case file (YAML)")->required();
-  app.add_option("--set", options.overrides,
-                 "override a case key, e.g. --set mesh.cells=[320,32] (repeatable)")
-      ->allow_extra_args(false);
-  app.add_option("-o,--output", options.output,
-                 "result file (default out/<case name>.h5; an .xdmf is written beside it)");
-  app.add_flag("--json", options.json, "print a JSON summary on stdout");
-  app.add_flag("--quiet", options.quiet, "no progress or summary lines");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);  // --help
-    print_error(std::string(e.what()) + " (see --help)");
-    return 2;
-  }
-
-  try {
-    return run(options);
-  } catch (const InputError& e) {  // also MeshError
-    print_error(e.what());
-    return 2;
-  } catch (const std::exception& e) {
-    print_error(std::string("error: ") + e.what());
-    return 1;
-  }
+  return driver_main("rfmems-solid",
+                     "rfmems-solid: static and transient linear elasticity of a continuum or a "
+                     "plate (FV)",
+                     argc, argv, run);
 }

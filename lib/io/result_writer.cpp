@@ -200,7 +200,8 @@ void ResultWriter::write_cell_field_at(int step_index, double time, const std::s
 void ResultWriter::write_time_series(const std::string& group, const std::string& name,
                                      const std::vector<double>& t,
                                      const std::vector<std::vector<double>>& values,
-                                     const std::vector<std::string>& component_names) {
+                                     const std::vector<std::string>& component_names,
+                                     const std::string& abscissa) {
   Impl& w = *impl_;
   if (w.finished) w.misuse("write_time_series after finish()");
   std::string g = group;
@@ -229,7 +230,10 @@ void ResultWriter::write_time_series(const std::string& group, const std::string
     w.misuse(fmt::format("time series '{}': {} component names for {} components", base,
                          component_names.size(), n_comp));
 
-  write_dataset(w.file.get(), base + "/time", H5T_NATIVE_DOUBLE, t.data(), {t.size()}, w.path);
+  if (!plain_name(abscissa) || abscissa == "values")
+    w.misuse(fmt::format("invalid abscissa name '{}'", abscissa));
+  write_dataset(w.file.get(), base + "/" + abscissa, H5T_NATIVE_DOUBLE, t.data(), {t.size()},
+                w.path);
   const H5Handle set = write_dataset(w.file.get(), base + "/values", H5T_NATIVE_DOUBLE, flat.data(),
                                      {t.size(), n_comp}, w.path);
   if (!component_names.empty()) write_attribute(set.get(), "components", component_names, w.path);

@@ -48,10 +48,13 @@ class ResultWriter {
 
   // Writes /<group>/<name>/time (n_t) and /<group>/<name>/values (n_t × n_comp; values[i]
   // is the sample at t[i], all of the same length). group may be nested ("stats/solver").
+  // abscissa names the first dataset instead of "time" (a curve in another variable, e.g.
+  // the voltage-deflection curve of a pull-in study).
   void write_time_series(const std::string& group, const std::string& name,
                          const std::vector<double>& t,
                          const std::vector<std::vector<double>>& values,
-                         const std::vector<std::string>& component_names = {});
+                         const std::vector<std::string>& component_names = {},
+                         const std::string& abscissa = "time");
 
   // Attributes of /metadata; a name written twice keeps the last value. "git_hash" is
   // already set from the build.

@@ -13,12 +13,25 @@ namespace rfmems::test_support {
 struct JacobianCheck {
   double max_abs_difference = 0;  // max |J_fd - J_analytic|
   double max_abs_entry = 0;       // max |J_analytic|
+  // max over rows of max_j |J_fd - J_analytic| / max_j |J_analytic| (for systems whose rows
+  // have different units, e.g. forces and film mass fluxes).
+  double max_row_relative = 0;
+  // max over entries of |J_fd - J_analytic| / (|J_analytic| + 1e-6 max_j |J_analytic| of the
+  // row): every entry checked on its own scale (small coupling entries next to large ones).
+  double max_entry_relative = 0;
+  Index worst_row = -1;                          // where max_row_relative occurs
+  Index worst_entry_row = -1, worst_entry_col = -1;  // where max_entry_relative occurs
   double relative() const { return max_abs_difference / max_abs_entry; }
 };
 
+// steps[j]: the difference step of unknown j (and of its derivative); one step for all
+// unknowns with the overload below.
+// scales[j]: the typical size of unknown j, for max_entry_relative (default: the steps).
 inline JacobianCheck check_jacobian(SystemOperator& op, double t, double c_j,
                                     const std::vector<double>& y, const std::vector<double>& yp,
-                                    double step) {
+                                    const std::vector<double>& steps,
+                                    const std::vector<double>& scales = {}) {
+  const std::vector<double>& unit = scales.empty() ? steps : scales;
   const Index n = op.size();
   const CsrPattern& pattern = op.jacobian_pattern();
   std::vector<double> values(pattern.nnz(), 0.0);
@@ -27,7 +40,14 @@ inline JacobianCheck check_jacobian(SystemOperator& op, double t, double c_j,
   for (double v : values) result.max_abs_entry = std::max(result.max_abs_entry, std::abs(v));
 
   std::vector<double> yy = y, yyp = yp, rp(n), rm(n), column(n);
+  std::vector<double> row_difference(n, 0.0), row_entry(n, 0.0), row_scaled(n, 0.0);
+  for (Index i = 0; i < n; ++i)
+    for (Index p = pattern.row_ptr[i]; p < pattern.row_ptr[i + 1]; ++p) {
+      row_entry[i] = std::max(row_entry[i], std::abs(values[p]));
+      row_scaled[i] = std::max(row_scaled[i], std::abs(values[p]) * unit[pattern.col_idx[p]]);
+    }
   for (Index j = 0; j < n; ++j) {
+    const double step = steps[j];
     // dF/dy_j + c_j dF/dy'_j by central differences.
     yy[j] = y[j] + step;
     op.residual(t, yy, yp, rp);
@@ -47,9 +67,28 @@ inline JacobianCheck check_jacobian(SystemOperator& op, double t, double c_j,
       Index pos = pattern.find(i, j);
       double analytic = pos >= 0 ? values[pos] : 0.0;
       result.max_abs_difference = std::max(result.max_abs_difference, std::abs(column[i] - analytic));
+      row_difference[i] = std::max(row_difference[i], std::abs(column[i] - analytic));
+      const double entry_relative = std::abs(column[i] - analytic) * unit[j] /
+                                    (std::abs(analytic) * unit[j] + 1e-6 * row_scaled[i] + 1e-300);
+      if (entry_relative > result.max_entry_relative) {
+        result.max_entry_relative = entry_relative;
+        result.worst_entry_row = i;
+        result.worst_entry_col = j;
+      }
     }
   }
+  for (Index i = 0; i < n; ++i)
+    if (row_entry[i] > 0 && row_difference[i] / row_entry[i] > result.max_row_relative) {
+      result.max_row_relative = row_difference[i] / row_entry[i];
+      result.worst_row = i;
+    }
   return result;
+}
+
+inline JacobianCheck check_jacobian(SystemOperator& op, double t, double c_j,
+                                    const std::vector<double>& y, const std::vector<double>& yp,
+                                    double step) {
+  return check_jacobian(op, t, c_j, y, yp, std::vector<double>(y.size(), step));
 }
 
 }  // namespace rfmems::test_support

@@ -7,10 +7,9 @@
 #include <functional>
 
 #include "core/types.hpp"
+#include "physics/electrostatics/permittivity.hpp"
 
 namespace rfmems {
-
-constexpr Real kVacuumPermittivity = 8.8541878128e-12;  // F/m (CODATA 2018)
 
 struct PotentialBoundary {
   enum class Kind { Potential, ZeroFlux, Floating };

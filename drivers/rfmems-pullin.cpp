@@ -1,0 +1,102 @@
+// rfmems-pullin: the pull-in of an electrostatically actuated switch. The case states the
+// structure (a Mindlin-Reissner plate or a plane beam), the gap, the electrode and the
+// electrostatics (parallel-plate law, or the Laplace field in a moving gap mesh), and asks for
+//   quasi_static: the deflection-voltage curve through its fold (displacement control with
+//                 KINSOL, stable and unstable branches): the static pull-in voltage;
+//   dynamic:      a step voltage from rest under IDA with contact and turning-point roots;
+//                 the dynamic pull-in voltage by bisection, the pull-in time, and the
+//                 histories at voltages around it.
+//
+// Sample runs:
+//   rfmems-pullin cases/switch_plate/case.yaml                  # dynamic, prints V_PI and t_PI
+//   rfmems-pullin cases/switch_plane_laplace/case.yaml --json   # quasi-static, Laplace
+//   rfmems-pullin cases/switch_plate/case.yaml --set pull_in.mode=quasi_static
+//
+// Output: out/<name>.h5 (+ .xdmf): the structure's fields at the fold (step 0),
+// /pull_in/curve, /dynamic/V<k> (see coupling/pull_in_study.hpp). Exit codes as rfmems-solid:
+// 0 success; 2 bad input (one line on stderr, no result file); 1 other failures.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <string>
+
+#include "coupling/pull_in_study.hpp"
+#include "coupling/switch_scene.hpp"
+#include "io/atomic_file.hpp"
+#include "io/case_file.hpp"
+#include "io/driver_main.hpp"
+#include "io/interrupt_cleanup.hpp"
+#include "io/json_summary.hpp"
+#include "io/result_writer.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace rfmems;
+
+int run(const DriverOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  auto elapsed = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+
+  const CaseFile case_file = CaseFile::load(options.case_path, options.overrides);
+  const CaseNode root = case_file.root();
+  const fs::path case_dir = fs::absolute(options.case_path).parent_path();
+  const std::string name = root.get_string("name", case_dir.filename().string());
+  const bool dynamic = root.child("pull_in").get_choice("mode", {"quasi_static", "dynamic"}) == "dynamic";
+  SwitchScene scene = build_switch_scene(root, case_dir.string(),
+                                         dynamic ? AnalysisType::Transient : AnalysisType::Static);
+  const PullInSettings settings = read_pull_in_settings(root, scene);
+  case_file.check_all_used();  // a typo stops the run here, before any solving
+
+  const std::string output = options.output.empty() ? "out/" + name + ".h5" : options.output;
+  ResultWriter writer(output, scene.structure->structure_mesh());
+  remove_on_interrupt(temp_path_for(output));
+  const PullInReport report = run_pull_in_study(scene, settings, writer);
+
+  Json summary;
+  summary["case"] = name;
+  summary["model"] = scene.structure->kind();
+  summary["mesh"] = {{"cells", scene.structure->structure_mesh().n_cells()}};
+  summary["output"] = {{"h5", writer.path()}, {"xdmf", writer.xdmf_path()}};
+  summary["pull_in"] = pull_in_summary(scene, report);
+  summary["wall_time_s"] = elapsed();
+  writer.write_metadata({{"case_file", case_file.path()},
+                         {"case_name", name},
+                         {"case_text", case_file.text()},
+                         {"case_effective", case_file.effective_text()},
+                         {"model", scene.structure->kind()},
+                         {"summary", json_text(summary)}},
+                        {{"wall_time_s", elapsed()}});
+  writer.finish();
+
+  if (options.json) {
+    std::cout << json_text(summary) << std::flush;
+  } else if (!options.quiet) {
+    const QuasiStaticPullIn& qs = report.quasi_static;
+    std::printf("%s (%s, %s): quasi-static pull-in at %.2f V, control deflection %.3f um "
+                "(%.1f %% of the gap)\n",
+                name.c_str(), scene.structure->kind().c_str(),
+                summary["pull_in"]["electrostatics"].get<std::string>().c_str(),
+                qs.pull_in_voltage, qs.pull_in_displacement * 1e6,
+                -100 * qs.pull_in_displacement / scene.gap);
+    if (report.has_dynamic)
+      std::printf("  dynamic pull-in (step voltage) at %.2f V (%.3f of quasi-static; %.2f V does "
+                  "not), pull-in time %.3f us; %d runs\n",
+                  report.dynamic.voltage, report.dynamic.voltage / qs.pull_in_voltage,
+                  report.dynamic.lower, report.dynamic.pull_in_time * 1e6, report.dynamic.runs);
+    std::printf("wrote %s (%.1f s)\n", writer.path().c_str(), elapsed());
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return driver_main("rfmems-pullin",
+                     "rfmems-pullin: quasi-static and dynamic pull-in of an electrostatic switch",
+                     argc, argv, run);
+}

@@ -1,0 +1,109 @@
+#include "coupling/dynamic_pull_in.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "core/error.hpp"
+
+namespace rfmems {
+
+DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(Real)> voltage,
+                       const DynamicOptions& options) {
+  system.actuation().set_voltage_squared([voltage](Real t) {
+    const Real v = voltage(t);
+    return v * v;
+  });
+  std::vector<Real> y, yp;
+  system.initial_state(0.0, y, yp);
+  IdaIntegrator ida(system, options.ida);
+  ida.initialize(0.0, y, yp);
+  const Real first_output =
+      options.output_interval > 0 ? std::min(options.output_interval, options.end_time)
+                                  : options.end_time;
+  ida.correct_initial_conditions(first_output);
+  ida.set_roots(2, [&](Real, std::span<const Real> yy, std::span<const Real> yyp,
+                       std::span<Real> g) {
+    g[0] = system.min_gap(yy) - options.contact_gap;
+    g[1] = system.velocity(yy, yyp, control);
+  });
+
+  DynamicRun run;
+  auto sample = [&](Real t) {
+    const auto state = ida.y();
+    run.history.push_back({t, system.displacement(state, control), system.min_gap(state),
+                           system.electrostatic_force(t, state), system.gas_force(state)});
+  };
+  sample(0.0);
+  Real next_output = first_output;
+  bool moved_down = false;
+  while (true) {
+    const IdaIntegrator::Status status = ida.advance(next_output);
+    const Real t = ida.time();
+    const auto state = ida.y();
+    run.extreme_control = std::min(run.extreme_control, system.displacement(state, control));
+    if (system.displacement(state, control) < 0) moved_down = true;
+    if (status == IdaIntegrator::Status::Root) {
+      const std::vector<int> found = ida.roots_found();
+      if (found[0] != 0) {
+        sample(t);
+        run.pulled_in = true;
+        run.pull_in_time = t;
+        break;
+      }
+      if (found[1] > 0 && moved_down && run.turning_time == 0) {
+        run.turning_time = t;
+        if (options.stop_at_turning) {
+          sample(t);
+          break;
+        }
+      }
+      continue;  // resume towards the same output time
+    }
+    if (options.output_interval > 0) sample(t);
+    if (t >= options.end_time * (1 - 1e-12)) break;
+    next_output = std::min(options.end_time, t + (options.output_interval > 0
+                                                      ? options.output_interval
+                                                      : options.end_time));
+  }
+  run.final_time = ida.time();
+  run.stats = ida.stats();
+  return run;
+}
+
+DynamicPullIn find_dynamic_pull_in(SwitchSystem& system, Index control, Real low, Real high,
+                                   Real tolerance, const DynamicOptions& options) {
+  DynamicPullIn result;
+  DynamicOptions quiet = options;
+  quiet.output_interval = 0;
+  auto run_at = [&](Real v) {
+    const DynamicRun run = run_dynamic(system, control, [v](Real) { return v; }, quiet);
+    ++result.runs;
+    result.steps += run.stats.steps;
+    result.residual_evals += run.stats.residual_evals;
+    return run;
+  };
+  if (run_at(low).pulled_in)
+    throw SolverError(fmt::format("dynamic pull-in: {:.4g} V already pulls in (lower the bracket)", low));
+  DynamicRun at_high = run_at(high);
+  if (!at_high.pulled_in)
+    throw SolverError(fmt::format("dynamic pull-in: {:.4g} V does not pull in within {:g} s "
+                                  "(raise the bracket or the end time)",
+                                  high, options.end_time));
+  while (high - low > tolerance) {
+    const Real mid = 0.5 * (low + high);
+    DynamicRun run = run_at(mid);
+    if (run.pulled_in) {
+      high = mid;
+      at_high = std::move(run);
+    } else {
+      low = mid;
+    }
+  }
+  result.pull_in_time = at_high.pull_in_time;
+  result.voltage = high;
+  result.lower = low;
+  return result;
+}
+
+}  // namespace rfmems

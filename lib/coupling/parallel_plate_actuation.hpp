@@ -1,0 +1,78 @@
+// A structure pulled towards an electrode by the parallel-plate law
+// (physics/electrostatics/parallel_plate.hpp), as one SecondOrderOperator:
+//
+//   M y'' + R(t, y) + V(t)^2 sum_e A_e p1(g_e) n_e = 0,    g_e = g0 + y[dof_e]
+//
+// where each element e of the surface facing the electrode (StructuralModel::gap_elements,
+// with its area A_e already multiplied by the fraction of it over the electrode) moves with the
+// unknown y[dof_e] along the gap axis (positive: opening), p1 is the pressure per V^2 and
+// n_e = the unit vector of dof_e: the force -A p1 V^2 closes the gap. Its Jacobian adds
+// V^2 A_e p1'(g_e) (negative: the electrostatic spring softening) on the diagonal of the
+// structure's stiffness. The coupling is monolithic and local: one Newton step of a static
+// solve or an IDA step sees the exact tangent.
+//
+// A gap that closes to g_e <= 0 (electrical gap) raises RecoverableError: IDA retries with a
+// smaller step, KINSOL backtracks; a run that really touches down is stopped before by the
+// contact root (see pull_in.hpp).
+#pragma once
+#include <functional>
+#include <vector>
+
+#include "core/system_operator.hpp"
+#include "physics/electrostatics/parallel_plate.hpp"
+#include "physics/structure/structural_model.hpp"
+
+namespace rfmems {
+
+// The electrode: the region of the substrate (x, and y for a plate) under the structure.
+struct ElectrodeExtent {
+  Real x_min = -1e300, x_max = 1e300;
+  Real y_min = -1e300, y_max = 1e300;  // plates only (across the width)
+};
+
+// The gap elements' areas scaled by the fraction of their bounding box over the electrode
+// (exact for rectangular cells and faces); elements entirely off the electrode are dropped.
+// Along y only for plates (the gap axis is z); a continuum's faces are lines in x.
+std::vector<GapElement> elements_over_electrode(const std::vector<GapElement>& elements,
+                                                const ElectrodeExtent& electrode, bool use_y);
+
+class ParallelPlateActuation : public SecondOrderOperator {
+ public:
+  ParallelPlateActuation(SecondOrderOperator& structure, std::vector<GapElement> elements,
+                         Real initial_gap, ParallelPlateLaw law);
+
+  // V(t)^2 [V^2]; zero until set.
+  void set_voltage_squared(std::function<Real(Real t)> v2) { voltage_squared_ = std::move(v2); }
+  Real voltage_squared(Real t) const { return voltage_squared_ ? voltage_squared_(t) : 0.0; }
+
+  Index size() const override { return structure_.size(); }
+  void internal_residual(Real t, std::span<const Real> y, std::span<Real> r) override;
+  const CsrPattern& stiffness_pattern() const override { return structure_.stiffness_pattern(); }
+  void stiffness(Real t, std::span<const Real> y, std::span<Real> values) override;
+  std::vector<Real> mass_diagonal() const override { return structure_.mass_diagonal(); }
+
+  // d(residual)/d(V^2) = sum_e A_e p1(g_e) n_e (the force per V^2, with the residual's sign).
+  void residual_per_volt2(std::span<const Real> y, std::span<Real> out) const;
+  // Air gap of element e, the smallest over the elements, and the electrostatic force along
+  // the gap axis summed over the elements (negative: closing) at V^2.
+  Real gap(std::span<const Real> y, std::size_t e) const { return gap0_ + y[elements_[e].dof]; }
+  Real min_gap(std::span<const Real> y) const;
+  Real total_force(Real voltage_squared, std::span<const Real> y) const;
+
+  const std::vector<GapElement>& elements() const { return elements_; }
+  Real initial_gap() const { return gap0_; }
+  const ParallelPlateLaw& law() const { return law_; }
+  SecondOrderOperator& structure() { return structure_; }
+
+ private:
+  void check_gap(Real g, std::size_t e) const;
+
+  SecondOrderOperator& structure_;
+  std::vector<GapElement> elements_;
+  Real gap0_;
+  ParallelPlateLaw law_;
+  std::function<Real(Real)> voltage_squared_;
+  std::vector<Index> diagonal_position_;  // per element: value index of (dof, dof)
+};
+
+}  // namespace rfmems

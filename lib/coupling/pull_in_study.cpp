@@ -1,0 +1,153 @@
+#include "coupling/pull_in_study.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "coupling/laplace_pull_in.hpp"
+#include "physics/elasticity/elasticity_scene.hpp"
+
+namespace rfmems {
+
+PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& scene) {
+  PullInSettings s;
+  const CaseNode node = root.child("pull_in");
+  s.dynamic = node.get_choice("mode", {"quasi_static", "dynamic"}) == "dynamic";
+  const CaseNode qs = node.child_or_empty("quasi_static");
+  s.quasi_static.n_points = static_cast<int>(qs.get_int("points", 40, Range::closed(4, 100000)));
+  s.quasi_static.max_fraction = qs.get_real("max_fraction", 0.9, Range{0.0, 1.0, true, true});
+  s.quasi_static.voltage_tolerance =
+      qs.get_quantity("voltage_tolerance", Dimension::Voltage, 0.01, Range::positive());
+  // The dynamic settings are checked even when the mode does not use them (a case switched
+  // between modes with --set keeps both sections valid).
+  if (!s.dynamic && !node.has("dynamic")) return s;
+  const CaseNode dyn = node.child("dynamic");
+  s.run.end_time = dyn.get_quantity("end_time", Dimension::Time, Range::positive());
+  s.run.contact_gap = dyn.get_quantity("contact_gap", Dimension::Length, 0.02 * scene.gap,
+                                       Range{0.0, scene.gap, false, true});
+  s.run.output_interval = dyn.get_quantity("output_interval", Dimension::Time,
+                                           s.run.end_time / 500, Range::positive());
+  if (dyn.has("bracket")) {
+    const std::vector<Real> b = dyn.get_quantities("bracket", Dimension::Voltage);
+    dyn.require(b.size() == 2 && 0 <= b[0] && b[0] < b[1], "bracket",
+                "expected [low, high] with 0 <= low < high");
+    s.bracket_low = b[0];
+    s.bracket_high = b[1];
+  }
+  s.tolerance = dyn.get_quantity("tolerance", Dimension::Voltage, 0.5, Range::positive());
+  if (dyn.has("voltages")) s.voltages = dyn.get_quantities("voltages", Dimension::Voltage);
+
+  const CaseNode solver = root.child_or_empty("solver");
+  s.run.ida.rtol = solver.get_real("rtol", 1e-3, Range::open(0.0, 1.0));
+  s.run.ida.atol = solver.get_quantity("atol", Dimension::Length, 1e-4 * scene.gap, Range::positive());
+  s.run.ida.max_order = static_cast<int>(solver.get_int("max_order", 2, Range::closed(1, 5)));
+  s.run.ida.max_steps = 10000000;
+  return s;
+}
+
+namespace {
+
+QuasiStaticPullIn quasi_static(SwitchScene& scene, const PullInSettings& settings,
+                               long& laplace_solves) {
+  if (scene.electrostatics == ElectrostaticsModel::ParallelPlate)
+    return trace_pull_in(*scene.actuation, scene.control, settings.quasi_static);
+  auto* beam = dynamic_cast<ElasticityScene*>(scene.structure.get());
+  if (!beam) throw InputError("laplace electrostatics need a plane beam");
+  LaplacePullInOptions options;
+  options.sampling = settings.quasi_static;
+  options.gap_cells = scene.laplace_gap_cells;
+  const LaplacePullIn r = trace_pull_in_laplace(*beam, scene.facing_patch, scene.gap,
+                                                scene.electrode, scene.control, options);
+  laplace_solves = r.coupling_iterations;
+  return r.result;
+}
+
+}  // namespace
+
+PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& settings,
+                               ResultWriter& writer) {
+  PullInReport report;
+  StructuralModel& model = *scene.structure;
+  const Index n = model.structure().size();
+
+  report.quasi_static = quasi_static(scene, settings, report.laplace_solves);
+  const QuasiStaticPullIn& qs = report.quasi_static;
+  std::vector<Real> fold(qs.fold_state.begin(), qs.fold_state.begin() + n);
+  model.write_fields(writer, 0, 0.0, fold, {});
+  std::vector<Real> delta;
+  std::vector<std::vector<double>> rows;
+  for (const PullInPoint& p : qs.curve) {
+    delta.push_back(p.displacement);
+    rows.push_back({p.voltage, p.min_gap, p.stable ? 1.0 : 0.0});
+  }
+  writer.write_time_series("pull_in", "curve", delta, rows, {"voltage", "min_gap", "stable"},
+                           "control_displacement");
+  if (!settings.dynamic) return report;
+
+  const std::unique_ptr<SwitchSystem> transient = scene.make_transient_system();
+  SwitchSystem& system = *transient;
+  const Real low = settings.bracket_high > 0 ? settings.bracket_low : 0.8 * qs.pull_in_voltage;
+  const Real high = settings.bracket_high > 0 ? settings.bracket_high : 1.02 * qs.pull_in_voltage;
+  report.dynamic = find_dynamic_pull_in(system, scene.control, low, high, settings.tolerance,
+                                        settings.run);
+  report.has_dynamic = true;
+  std::vector<Real> voltages = settings.voltages;
+  if (voltages.empty()) voltages = {0.97 * report.dynamic.voltage, 1.03 * report.dynamic.voltage};
+  for (std::size_t k = 0; k < voltages.size(); ++k) {
+    const Real v = voltages[k];
+    DynamicRun run = run_dynamic(system, scene.control, [v](Real) { return v; }, [&] {
+      DynamicOptions o = settings.run;
+      o.stop_at_turning = false;  // the whole history up to end_time (or touch-down)
+      return o;
+    }());
+    std::vector<Real> t;
+    std::vector<std::vector<double>> values;
+    for (const DynamicSample& s : run.history) {
+      t.push_back(s.t);
+      values.push_back({s.control, s.min_gap, s.electrostatic_force, s.gas_force});
+    }
+    writer.write_time_series("dynamic", fmt::format("V{}", k), t, values,
+                             {"control", "min_gap", "electrostatic_force", "gas_force"});
+    report.histories.emplace_back(v, std::move(run));
+  }
+  return report;
+}
+
+Json pull_in_summary(const SwitchScene& scene, const PullInReport& report) {
+  Json j;
+  const QuasiStaticPullIn& qs = report.quasi_static;
+  j["electrostatics"] = scene.electrostatics == ElectrostaticsModel::Laplace ? "laplace" : "parallel_plate";
+  j["gap"] = scene.gap;
+  j["quasi_static"] = {{"pull_in_voltage", qs.pull_in_voltage},
+                       {"pull_in_displacement", qs.pull_in_displacement},
+                       {"pull_in_fraction_of_gap", -qs.pull_in_displacement / scene.gap},
+                       {"curve_points", qs.curve.size()},
+                       {"solves", qs.solves},
+                       {"newton_iterations", qs.newton_iterations}};
+  if (report.laplace_solves > 0) j["quasi_static"]["laplace_solves"] = report.laplace_solves;
+  if (report.has_dynamic) {
+    const DynamicPullIn& d = report.dynamic;
+    j["dynamic"] = {{"pull_in_voltage", d.voltage},
+                    {"not_pulling_in", d.lower},
+                    {"pull_in_time", d.pull_in_time},
+                    {"ratio_to_quasi_static", d.voltage / qs.pull_in_voltage},
+                    {"runs", d.runs},
+                    {"steps", d.steps},
+                    {"residual_evals", d.residual_evals},
+                    {"electrostatics", "parallel_plate"},
+                    {"gas", scene.film ? "reynolds" : "none"}};
+    Json histories = Json::array();
+    for (const auto& [v, run] : report.histories)
+      histories.push_back({{"voltage", v},
+                           {"pulled_in", run.pulled_in},
+                           {"pull_in_time", run.pull_in_time},
+                           {"extreme_control", run.extreme_control},
+                           {"steps", run.stats.steps}});
+    j["dynamic"]["histories"] = histories;
+  }
+  return j;
+}
+
+}  // namespace rfmems

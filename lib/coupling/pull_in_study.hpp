@@ -1,0 +1,65 @@
+// A pull-in study of a switch scene (switch_scene.hpp), as the case file asks:
+//
+//   pull_in:
+//     mode: quasi_static              # quasi_static | dynamic
+//     quasi_static:
+//       points: 40                    # samples of the control deflection in (0, max_fraction g0]
+//       max_fraction: 0.9
+//       voltage_tolerance: 0.01 V     # on the fold voltage
+//     dynamic:                        # step voltage from rest, IDA with contact/turning roots
+//       end_time: 50 us               # a run that has not touched down by then did not pull in
+//       contact_gap: 0.1 um           # touch-down at this gap (default 2 % of the gap)
+//       bracket: [150 V, 190 V]       # bisection bracket (default [0.8, 1.02] x the
+//                                     # quasi-static V_PI, computed first)
+//       tolerance: 0.5 V              # on the dynamic pull-in voltage
+//       voltages: [170 V, 180 V]      # step voltages whose histories are recorded (default:
+//                                     # 0.97 and 1.03 x the dynamic V_PI)
+//       output_interval: 0.1 us       # sampling of the recorded histories
+//   solver:                           # dynamic runs (IDA): rtol (default 1e-3), atol (default
+//     rtol: 1e-3                      # 1e-4 x the gap) and max_order (default 2)
+//
+// Quasi-static: parallel_plate scenes by KINSOL under displacement control
+// (quasi_static_pull_in.hpp), laplace scenes by the strongly coupled iteration
+// (laplace_pull_in.hpp). Dynamic: parallel_plate only (a laplace scene's dynamic study uses its
+// parallel-plate actuation and says so in the summary).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "coupling/dynamic_pull_in.hpp"
+#include "coupling/quasi_static_pull_in.hpp"
+#include "coupling/switch_scene.hpp"
+#include "io/json_summary.hpp"
+#include "io/result_writer.hpp"
+
+namespace rfmems {
+
+struct PullInSettings {
+  bool dynamic = false;
+  QuasiStaticOptions quasi_static;
+  DynamicOptions run;                 // end_time, contact_gap, output_interval, ida
+  Real bracket_low = 0, bracket_high = 0;  // 0: from the quasi-static V_PI
+  Real tolerance = 0.5;
+  std::vector<Real> voltages;         // empty: around the dynamic V_PI
+};
+
+PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& scene);
+
+struct PullInReport {
+  QuasiStaticPullIn quasi_static;
+  bool has_dynamic = false;
+  DynamicPullIn dynamic;
+  std::vector<std::pair<Real, DynamicRun>> histories;  // (voltage, run)
+  long laplace_solves = 0;
+};
+
+// Runs the study; writes the fold's fields (index 0), the curve (/pull_in/curve: abscissa
+// control_displacement, values voltage, min_gap, stable) and the histories
+// (/dynamic/V<k>: time; control, min_gap, electrostatic_force, gas_force) into `writer`.
+PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& settings,
+                               ResultWriter& writer);
+
+// The --json object's pull-in part.
+Json pull_in_summary(const SwitchScene& scene, const PullInReport& report);
+
+}  // namespace rfmems

@@ -1,0 +1,68 @@
+// Quasi-static pull-in by displacement control (the static deflection-voltage curve through
+// its fold, both branches).
+//
+// The voltage is an unknown and the deflection of one control unknown y_c (the centre of a
+// membrane, the tip of a cantilever) is prescribed, so the bordered system
+//
+//   R(y) + lambda q(y) = 0,            lambda = V^2, q = d(residual)/d(V^2)
+//   k_ref (y_c - delta) = 0            (k_ref: the structure's stiffness scale, for conditioning)
+//
+// is regular at the fold, where dV/d(delta) = 0 and the voltage-controlled Jacobian
+// K + lambda dq/dy is singular (Riks/Crisfield's displacement control; see also Pamidighantam
+// et al. 2002 for MEMS pull-in). KINSOL solves it (exact Newton + KLU) from the previous
+// point's solution, for delta = -k/N f g0, k = 1 .. N. The pull-in voltage is the curve's
+// largest V; it is located by golden-section search on delta between the neighbours of the
+// largest sampled point until the bracket's voltages agree within voltage_tolerance.
+// Points with |delta| below the fold's are the stable branch, beyond it the unstable one.
+#pragma once
+#include <functional>
+#include <vector>
+
+#include "coupling/parallel_plate_actuation.hpp"
+#include "solvers/kinsol_solver.hpp"
+
+namespace rfmems {
+
+struct QuasiStaticOptions {
+  int n_points = 40;                // samples of delta over (0, max_fraction g0]
+  Real max_fraction = 0.9;          // deepest prescribed deflection, as a fraction of the gap
+  Real voltage_tolerance = 1e-3;    // [V] on the fold voltage
+  Real newton_tolerance = 1e-10;    // KINSOL: ||F||_inf <= this x k_ref g0
+  int max_newton_iterations = 30;
+};
+
+struct PullInPoint {
+  Real displacement;   // y_c [m] (negative: towards the electrode)
+  Real voltage;        // [V]
+  Real min_gap;        // [m]
+  bool stable;         // before the fold
+  long newton_iterations;
+};
+
+struct QuasiStaticPullIn {
+  std::vector<PullInPoint> curve;   // in order of increasing |delta|, fold included
+  Real pull_in_voltage = 0;
+  Real pull_in_displacement = 0;
+  long newton_iterations = 0;       // all solves
+  long solves = 0;
+  NonlinearStats last;              // of the fold's solve
+  std::vector<Real> fold_state;     // the solver's state at the fold (structure unknowns first)
+};
+
+// control: the index of y_c. The actuation's voltage function is overwritten.
+QuasiStaticPullIn trace_pull_in(ParallelPlateActuation& actuation, Index control,
+                                const QuasiStaticOptions& options = {});
+
+// The sampling and fold search on their own, for any equilibrium solver under displacement
+// control (the Laplace-coupled one in laplace_pull_in.hpp): `solve(delta, from)` returns the
+// equilibrium at control deflection delta, starting from the solved sample `from` (delta 0:
+// the state at rest). Counts are summed into the result by the caller's solve.
+struct FoldSample {
+  PullInPoint point;
+  std::vector<Real> state;
+};
+using DeltaSolve = std::function<FoldSample(Real delta, const FoldSample& from)>;
+QuasiStaticPullIn trace_fold(const DeltaSolve& solve, const FoldSample& rest, Real gap,
+                             const QuasiStaticOptions& options);
+
+}  // namespace rfmems

@@ -1,0 +1,123 @@
+#include "coupling/switch_scene.hpp"
+
+#include <fmt/format.h>
+
+#include "coupling/squeeze_film_switch_system.hpp"
+#include "io/probes.hpp"
+#include "physics/structure/structure_from_case.hpp"
+
+namespace rfmems {
+
+namespace {
+
+// [a, b] of an electrode extent key, with a < b.
+void read_interval(const CaseNode& node, const std::string& key, Real& lo, Real& hi) {
+  if (!node.has(key)) return;
+  const std::vector<Real> v = node.get_quantities(key, Dimension::Length);
+  node.require(v.size() == 2 && v[0] < v[1], key, "expected [begin, end] with begin < end");
+  lo = v[0];
+  hi = v[1];
+}
+
+// The squeeze film under a plate (see the header); null without one.
+std::unique_ptr<ReynoldsFilm> read_gas(const CaseNode& root, const SwitchScene& s) {
+  if (!root.has("gas")) return nullptr;
+  const CaseNode gas = root.child("gas");
+  if (gas.get_choice("model", {"none", "reynolds"}) == "none") return nullptr;
+  gas.require(s.structure->kind() == "plate", "model",
+              "the Reynolds film needs a plate (model.structure: plate)");
+  GasProperties g;
+  g.ambient_pressure = gas.get_quantity("pressure", Dimension::Pressure, Range::positive());
+  g.viscosity = gas.get_quantity("viscosity", Dimension::Viscosity, g.viscosity, Range::positive());
+  g.mean_free_path =
+      gas.get_quantity("mean_free_path", Dimension::Length, g.mean_free_path, Range::positive());
+  g.rarefaction = gas.get_choice("rarefaction", {"veijola", "none"}, "veijola") == "veijola"
+                      ? Rarefaction::Veijola
+                      : Rarefaction::None;
+  const Mesh& mesh = s.structure->structure_mesh();
+  const CaseNode bcs = root.child("boundaries");
+  const CaseNode given = gas.child_or_empty("boundaries");
+  for (const std::string& key : given.keys())
+    if (mesh.find_patch(key) < 0) given.fail(key, "the mesh has no such patch");
+  std::vector<FilmBoundary> film_bcs;
+  for (const Patch& p : mesh.patches()) {
+    const std::string structural = bcs.child(p.name).get_string("type");
+    const std::string fallback = structural == "free" || structural == "load" ? "open" : "wall";
+    const std::string kind = given.get_choice(p.name, {"open", "wall"}, fallback);
+    film_bcs.push_back({kind == "open" ? FilmBoundary::Kind::Open : FilmBoundary::Kind::Wall});
+  }
+  return std::make_unique<ReynoldsFilm>(mesh, g, std::move(film_bcs));
+}
+
+}  // namespace
+
+std::unique_ptr<SwitchSystem> SwitchScene::make_transient_system() const {
+  if (!film) return std::make_unique<ActuatedStructureSystem>(*actuation, structure->quasi_static_components());
+  std::vector<Index> w_dof;
+  for (Index c = 0; c < film->size(); ++c) w_dof.push_back(3 * c);  // the plate's w
+  return std::make_unique<SqueezeFilmSwitchSystem>(*actuation, structure->quasi_static_components(),
+                                                   *film, std::move(w_dof));
+}
+
+SwitchScene build_switch_scene(const CaseNode& root, const std::string& case_dir,
+                               AnalysisType analysis) {
+  SwitchScene s;
+  s.structure = build_structure(root, case_dir, analysis);
+  const bool plate = s.structure->kind() == "plate";
+  const Mesh& mesh = s.structure->structure_mesh();
+  const CaseNode act = root.child("actuation");
+  root.child("model").require(plate || mesh.dim() == 2, "structure",
+                              "a switch is a plate or a plane (2D) beam");
+  s.gap = act.get_quantity("gap", Dimension::Length, Range::positive());
+  s.electrostatics = act.get_choice("electrostatics", {"parallel_plate", "laplace"},
+                                    "parallel_plate") == "laplace"
+                         ? ElectrostaticsModel::Laplace
+                         : ElectrostaticsModel::ParallelPlate;
+  act.require(!(plate && s.electrostatics == ElectrostaticsModel::Laplace), "electrostatics",
+              "laplace needs a plane beam (model.structure: plane); a plate uses parallel_plate");
+  if (act.has("electrode")) {
+    const CaseNode e = act.child("electrode");
+    read_interval(e, "x", s.electrode.x_min, s.electrode.x_max);
+    read_interval(e, "y", s.electrode.y_min, s.electrode.y_max);
+    e.require(plate || !e.has("y"), "y", "only a plate has an electrode extent in y");
+  }
+  if (!plate) {
+    s.facing_patch = act.get_string("facing_patch", "bottom");
+    act.require(mesh.find_patch(s.facing_patch) >= 0, "facing_patch", "the mesh has no such patch");
+  }
+  if (s.electrostatics == ElectrostaticsModel::Laplace)
+    s.laplace_gap_cells = static_cast<int>(
+        act.child_or_empty("laplace").get_int("gap_cells", 16, Range::closed(2, 10000)));
+
+  ParallelPlateLaw law;
+  if (act.has("dielectric")) {
+    const CaseNode d = act.child("dielectric");
+    law.dielectric_thickness = d.get_quantity("thickness", Dimension::Length, Range::non_negative());
+    law.dielectric_permittivity = d.get_real("permittivity", Range{1.0, 1e4, false, false});
+  }
+  law.fringing_factor = act.get_real("fringing", 0.0, Range::closed(0.0, 10.0));
+  if (law.fringing_factor > 0) {
+    act.require(plate, "fringing", "the width of a plane beam is not modelled; use laplace");
+    Real lo = 1e300, hi = -1e300;
+    for (const Vec3& x : mesh.nodes()) {
+      lo = std::min(lo, x.y());
+      hi = std::max(hi, x.y());
+    }
+    law.width = hi - lo;
+  }
+
+  const CasePointFinder finder(mesh);
+  const auto [point, cell] = finder.find(act, "control", "the control point");
+  s.control_point = point;
+  s.control = plate ? 3 * cell : 2 * cell + 1;  // w, or u_y
+
+  std::vector<GapElement> elements = elements_over_electrode(
+      s.structure->gap_elements(s.facing_patch), s.electrode, plate);
+  act.require(!elements.empty(), "electrode", "no part of the structure lies over the electrode");
+  s.actuation = std::make_unique<ParallelPlateActuation>(s.structure->structure(),
+                                                         std::move(elements), s.gap, law);
+  s.film = read_gas(root, s);
+  return s;
+}
+
+}  // namespace rfmems

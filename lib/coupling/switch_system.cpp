@@ -1,0 +1,20 @@
+#include "coupling/switch_system.hpp"
+
+namespace rfmems {
+
+ActuatedStructureSystem::ActuatedStructureSystem(ParallelPlateActuation& actuation,
+                                                 std::vector<bool> quasi_static)
+    : actuation_(actuation), system_(actuation, std::move(quasi_static)) {}
+
+void ActuatedStructureSystem::initial_state(Real t0, std::vector<Real>& y, std::vector<Real>& yp) {
+  y.assign(size(), 0.0);
+  yp = system_.consistent_derivative(t0, y);
+}
+
+Real ActuatedStructureSystem::velocity(std::span<const Real> y, std::span<const Real> yp,
+                                       Index i) const {
+  const Index v = system_.velocity_index(i);
+  return v >= 0 ? y[v] : yp[i];
+}
+
+}  // namespace rfmems

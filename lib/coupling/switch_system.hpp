@@ -1,0 +1,64 @@
+// The transient system of an electrostatically actuated switch, as IDA integrates it, and
+// what a pull-in run needs to read from its state. One implementation per gas model:
+//
+//   ActuatedStructureSystem (this file): no gas; the structure (inertia of chosen components
+//     neglected: core/reduced_inertia_system.hpp) under the parallel-plate force, monolithic;
+//   SqueezeFilmSwitchSystem (squeeze_film_switch_system.hpp): plus the Reynolds film
+//     pressure under the structure, monolithic on the plate's mesh.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "core/reduced_inertia_system.hpp"
+#include "coupling/parallel_plate_actuation.hpp"
+
+namespace rfmems {
+
+class SwitchSystem : public SystemOperator {
+ public:
+  // The state at rest (zero displacement, ambient gas) and a derivative consistent with it
+  // at t0 except for the algebraic components (IDACalcIC completes them).
+  virtual void initial_state(Real t0, std::vector<Real>& y, std::vector<Real>& yp) = 0;
+  // Structural displacement and velocity of unknown i of the structure.
+  virtual Real displacement(std::span<const Real> y, Index i) const = 0;
+  virtual Real velocity(std::span<const Real> y, std::span<const Real> yp, Index i) const = 0;
+  virtual Real min_gap(std::span<const Real> y) const = 0;
+  // Forces along the gap axis on the structure [N] (negative: closing).
+  virtual Real electrostatic_force(Real t, std::span<const Real> y) const = 0;
+  virtual Real gas_force(std::span<const Real> /*y*/) const { return 0.0; }
+  virtual ParallelPlateActuation& actuation() = 0;
+};
+
+class ActuatedStructureSystem : public SwitchSystem {
+ public:
+  ActuatedStructureSystem(ParallelPlateActuation& actuation, std::vector<bool> quasi_static);
+
+  Index size() const override { return system_.size(); }
+  std::vector<Real> differential_components() const override {
+    return system_.differential_components();
+  }
+  void residual(Real t, std::span<const Real> y, std::span<const Real> yp,
+                std::span<Real> r) override {
+    system_.residual(t, y, yp, r);
+  }
+  const CsrPattern& jacobian_pattern() const override { return system_.jacobian_pattern(); }
+  void jacobian(Real t, Real c_j, std::span<const Real> y, std::span<const Real> yp,
+                std::span<Real> values) override {
+    system_.jacobian(t, c_j, y, yp, values);
+  }
+
+  void initial_state(Real t0, std::vector<Real>& y, std::vector<Real>& yp) override;
+  Real displacement(std::span<const Real> y, Index i) const override { return y[i]; }
+  Real velocity(std::span<const Real> y, std::span<const Real> yp, Index i) const override;
+  Real min_gap(std::span<const Real> y) const override { return actuation_.min_gap(y); }
+  Real electrostatic_force(Real t, std::span<const Real> y) const override {
+    return actuation_.total_force(actuation_.voltage_squared(t), y);
+  }
+  ParallelPlateActuation& actuation() override { return actuation_; }
+
+ private:
+  ParallelPlateActuation& actuation_;
+  ReducedInertiaSystem system_;
+};
+
+}  // namespace rfmems

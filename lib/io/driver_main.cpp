@@ -1,0 +1,48 @@
+#include "io/driver_main.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+
+#include "core/error.hpp"
+
+namespace rfmems {
+
+void print_driver_error(const std::string& program, const std::string& message) {
+  std::string line = message;
+  for (char& c : line)
+    if (c == '\n' || c == '\r') c = ' ';
+  std::fprintf(stderr, "%s: %s\n", program.c_str(), line.c_str());
+}
+
+int driver_main(const std::string& program, const std::string& description, int argc,
+                char** argv, const std::function<int(const DriverOptions&)>& run) {
+  DriverOptions options;
+  CLI::App app{description};
+  app.add_option("case", options.case_path, "case file (YAML)")->required();
+  app.add_option("--set", options.overrides,
+                 "override a case key, e.g. --set mesh.cells=[320,32] (repeatable)")
+      ->allow_extra_args(false);
+  app.add_option("-o,--output", options.output,
+                 "result file (default out/<case name>.h5; an .xdmf is written beside it)");
+  app.add_flag("--json", options.json, "print a JSON summary on stdout");
+  app.add_flag("--quiet", options.quiet, "no progress or summary lines");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help
+    print_driver_error(program, std::string(e.what()) + " (see --help)");
+    return 2;
+  }
+  try {
+    return run(options);
+  } catch (const InputError& e) {  // also MeshError
+    print_driver_error(program, e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    print_driver_error(program, std::string("error: ") + e.what());
+    return 1;
+  }
+}
+
+}  // namespace rfmems

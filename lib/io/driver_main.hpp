@@ -1,0 +1,29 @@
+// The command line every rfmems driver shares:
+//
+//   <program> CASE.yaml [--set KEY=VALUE]... [-o RESULT.h5] [--json] [--quiet]
+//
+// and its error contract: bad input (InputError, MeshError, a bad option) prints one line
+// "<program>: <message>" on stderr and exits 2; any other failure exits 1; --help exits 0.
+#pragma once
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace rfmems {
+
+struct DriverOptions {
+  std::string case_path;
+  std::vector<std::string> overrides;
+  std::string output;  // empty: out/<case name>.h5
+  bool json = false;
+  bool quiet = false;
+};
+
+// Parses the command line and calls run(options), mapping exceptions to exit codes.
+int driver_main(const std::string& program, const std::string& description, int argc,
+                char** argv, const std::function<int(const DriverOptions&)>& run);
+
+// "<program>: <message>" on one line on stderr (newlines in the message become spaces).
+void print_driver_error(const std::string& program, const std::string& message);
+
+}  // namespace rfmems
