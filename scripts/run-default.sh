@@ -1,43 +1,41 @@
 #!/usr/bin/env bash
-# The default run: installs the dependencies, builds rfmems-solid (Release, in build/), runs
-# the cantilever vibration case (cases/cantilever_vibration: thesis sec. 2.7.4), plots it and
-# prints the tip response with the first natural frequency measured from it.
+# The default run: installs the dependencies, builds the drivers (Release, in build/), and runs
+# the main job on the default case: dynamic pull-in of the fixed-fixed RF MEMS switch
+# (cases/switch_plate: Mindlin-Reissner plate, parallel-plate electrostatics, Reynolds squeeze
+# film at 1 atm), then plots it and prints the pull-in voltages and time.
 #
 # Outputs (in out/):
-#   cantilever_vibration.h5 / .xdmf      fields at every output time (open the .xdmf in ParaView)
-#   cantilever_vibration.json            the run's --json summary
-#   cantilever_vibration_probes.png      tip displacement vs time
-#   cantilever_vibration_deformed.png    deformed shape at the last time, von Mises stress
+#   switch_plate.h5 / .xdmf       deflection at the quasi-static fold, the voltage-deflection
+#                                 curve, and the dynamic histories (open the .xdmf in ParaView)
+#   switch_plate.json             the run's --json summary
+#   switch_plate_curve.png        deflection vs voltage, stable and unstable branches, the fold
+#   switch_plate_dynamic.png      centre deflection vs time around the dynamic pull-in voltage
+#   switch_plate_forces.png       electrostatic and gas forces vs time
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 bash scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3
-cmake --build build -j"$(nproc)" --target rfmems-solid
+cmake --build build -j"$(nproc)" --target rfmems-pullin rfmems-solid
 
 mkdir -p out
-build/drivers/rfmems-solid cases/cantilever_vibration/case.yaml -o out/cantilever_vibration.h5 \
-  --json >out/cantilever_vibration.json
-/usr/bin/python3 python/plot_solid.py out/cantilever_vibration.h5
-# The load ramps up over the first 0.02 s; the free vibration is what follows.
-frequency=$(/usr/bin/python3 python/probe_frequency.py out/cantilever_vibration.h5 --probe tip \
-  --skip 0.02 --json)
+build/drivers/rfmems-pullin cases/switch_plate/case.yaml -o out/switch_plate.h5 --json \
+  >out/switch_plate.json
+/usr/bin/python3 python/plot_pullin.py out/switch_plate.h5 >/dev/null
 
-/usr/bin/python3 - out/cantilever_vibration.json "$frequency" <<'PY'
-import json, math, sys
+/usr/bin/python3 - out/switch_plate.json <<'PY'
+import json, sys
 d = json.load(open(sys.argv[1]))
-f = json.loads(sys.argv[2])
-tip, s = d["probes"]["tip"], d["solver"]
-# Euler-Bernoulli first frequency of the case's beam (see its header).
-E, rho, L, h = 200e9, 7854.0, 2.0, 0.04
-f_eb = 3.516 / (2 * math.pi * L**2) * math.sqrt(E * h**3 / 12 / (rho * h))
+q, dyn = d["pull_in"]["quasi_static"], d["pull_in"]["dynamic"]
 print()
-print(f"cantilever_vibration: {d['mesh']['cells']} cells, t = 0 .. {d['final_time']:g} s, "
-      f"{s['steps']} IDA steps, wall time {d['wall_time_s']:.1f} s")
-print(f"  tip u_y at t = {d['final_time']:g} s: {tip['uy']:.4e} m;  max |u_y|: {tip['max_abs_uy']:.4e} m "
-      f"(static deflection P L^3/(3EI) = 1.0e-4 m)")
-if "frequency_hz" in f:
-    print(f"  first frequency from the tip's {f['periods']} periods: {f['frequency_hz']:.4f} Hz "
-          f"(Euler-Bernoulli {f_eb:.4f} Hz, {100 * (f['frequency_hz'] / f_eb - 1):+.2f} %)")
+print(f"switch_plate ({d['model']}, {d['mesh']['cells']} cells, parallel-plate electrostatics, "
+      f"Reynolds gas at 1 atm), wall time {d['wall_time_s']:.1f} s")
+print(f"  quasi-static pull-in voltage: {q['pull_in_voltage']:.2f} V at a centre deflection of "
+      f"{100 * q['pull_in_fraction_of_gap']:.1f} % of the gap (thesis, plate, vacuum: 187 V)")
+print(f"  dynamic pull-in voltage (step): {dyn['pull_in_voltage']:.2f} V "
+      f"({dyn['ratio_to_quasi_static']:.3f} of quasi-static; thesis, vacuum: 171 V)")
+print(f"  pull-in time just above it: {1e6 * dyn['pull_in_time']:.2f} us; "
+      + ", ".join(f"{h['voltage']:.1f} V: " + (f"{1e6 * h['pull_in_time']:.2f} us" if h["pulled_in"] else "no pull-in")
+                  for h in dyn["histories"]))
 PY
-echo "  files: out/cantilever_vibration.{h5,xdmf,json}, out/cantilever_vibration_{probes,deformed}.png"
+echo "  files: out/switch_plate.{h5,xdmf,json}, out/switch_plate_{curve,dynamic,forces}.png"

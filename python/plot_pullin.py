@@ -1,0 +1,91 @@
+#!/usr/bin/python3
+"""Plots of an rfmems-pullin result file (coupling/pull_in_study.hpp).
+
+  <PREFIX>_curve.png     control deflection vs voltage: stable branch, unstable branch, fold
+  <PREFIX>_dynamic.png   control deflection vs time for the recorded step voltages (dynamic)
+  <PREFIX>_forces.png    electrostatic and gas force vs time for the same runs (dynamic)
+
+Usage: plot_pullin.py RESULT.h5 [-o PREFIX]     (PREFIX defaults to RESULT without .h5)
+"""
+import argparse
+import json
+import os
+import sys
+
+import h5py
+import matplotlib
+
+matplotlib.use("Agg")  # files only, no display needed
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("result", help="result file (.h5)")
+    parser.add_argument("-o", "--prefix", help="output prefix (default: RESULT without .h5)")
+    args = parser.parse_args()
+    prefix = args.prefix or os.path.splitext(args.result)[0]
+    try:
+        f = h5py.File(args.result, "r")
+    except OSError as e:
+        sys.exit(f"plot_pullin.py: {args.result}: {e}")
+    written = []
+    with f:
+        if "pull_in/curve" not in f:
+            sys.exit(f"plot_pullin.py: {args.result}: no /pull_in/curve (not an rfmems-pullin result?)")
+        summary = json.loads(f["metadata"].attrs["summary"])["pull_in"]
+        curve = f["pull_in/curve"]
+        delta = curve["control_displacement"][()] * 1e6
+        values = curve["values"][()]
+        voltage, stable = values[:, 0], values[:, 2] > 0.5
+        fig, ax = plt.subplots(figsize=(7, 4.5))
+        ax.plot(voltage[stable], -delta[stable], "-", color="C0", label="stable branch")
+        ax.plot(voltage[~stable], -delta[~stable], "--", color="C1", label="unstable branch")
+        v_pi = summary["quasi_static"]["pull_in_voltage"]
+        w_pi = -summary["quasi_static"]["pull_in_displacement"] * 1e6
+        ax.plot([v_pi], [w_pi], "o", color="k", label=f"fold: V_PI = {v_pi:.2f} V")
+        if "dynamic" in summary:
+            ax.axvline(summary["dynamic"]["pull_in_voltage"], color="C3", lw=0.8,
+                       label=f"dynamic V_PI = {summary['dynamic']['pull_in_voltage']:.2f} V")
+        ax.set_xlabel("voltage [V]")
+        ax.set_ylabel("control deflection towards the electrode [µm]")
+        ax.grid(True, alpha=0.3)
+        ax.legend()
+        fig.tight_layout()
+        fig.savefig(prefix + "_curve.png", dpi=150)
+        plt.close(fig)
+        written.append(prefix + "_curve.png")
+
+        if "dynamic" in f:
+            runs = sorted(f["dynamic"].keys(), key=lambda k: int(k[1:]))
+            histories = summary["dynamic"]["histories"]
+            fig, ax = plt.subplots(figsize=(7, 4.5))
+            fig2, ax2 = plt.subplots(figsize=(7, 4.5))
+            for k, name in enumerate(runs):
+                t = f["dynamic"][name]["time"][()] * 1e6
+                v = f["dynamic"][name]["values"][()]
+                label = f"{histories[k]['voltage']:.1f} V" + (" (pulls in)" if histories[k]["pulled_in"] else "")
+                ax.plot(t, -v[:, 0] * 1e6, label=label)
+                ax2.plot(t, -v[:, 2] * 1e6, color=f"C{k}", label=f"electrostatic, {label}")
+                ax2.plot(t, v[:, 3] * 1e6, "--", color=f"C{k}", label=f"gas, {label}")
+            ax.set_xlabel("time [µs]")
+            ax.set_ylabel("control deflection towards the electrode [µm]")
+            ax.grid(True, alpha=0.3)
+            ax.legend()
+            fig.tight_layout()
+            fig.savefig(prefix + "_dynamic.png", dpi=150)
+            ax2.set_xlabel("time [µs]")
+            ax2.set_ylabel("force [µN]: electrostatic pull, gas push")
+            ax2.grid(True, alpha=0.3)
+            ax2.legend(fontsize="small")
+            fig2.tight_layout()
+            fig2.savefig(prefix + "_forces.png", dpi=150)
+            plt.close(fig)
+            plt.close(fig2)
+            written += [prefix + "_dynamic.png", prefix + "_forces.png"]
+    print("wrote " + ", ".join(written))
+
+
+if __name__ == "__main__":
+    main()

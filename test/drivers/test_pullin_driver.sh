@@ -1,0 +1,91 @@
+#!/usr/bin/env bash
+# rfmems-pullin end to end: the default switch case (plate, parallel-plate law, Reynolds gas)
+# at 1 atm and 1 kPa: quasi-static V_PI near the thesis's 187 V, dynamic V_PI below it, higher
+# with more gas (damping), pull-in slower at 1 atm at the same voltage; the Laplace plane case
+# near the thesis's 181 V; the plots; and the bad-input contract for actuation and gas keys.
+#
+# Usage: bash test_pullin_driver.sh <directory of rfmems-pullin> <source directory>
+set -uo pipefail
+
+DRIVER="$1/rfmems-pullin"
+SRC="$2"
+PY=/usr/bin/python3
+PLATE="$SRC/cases/switch_plate/case.yaml"
+PLANE="$SRC/cases/switch_plane_laplace/case.yaml"
+
+WORK=$(mktemp -d)
+trap 'rm -rf "$WORK"' EXIT
+failures=0
+pass() { echo "PASS: $1"; }
+fail() { echo "FAIL: $1"; failures=$((failures + 1)); }
+
+for p in atm kPa; do
+  pressure=$([ $p = atm ] && echo "1 atm" || echo "1 kPa")
+  if "$DRIVER" "$PLATE" --set "gas.pressure=$pressure" --set "pull_in.dynamic.voltages=[178 V]" \
+      -o "$WORK/$p.h5" --json --quiet >"$WORK/$p.json" 2>"$WORK/err"; then
+    pass "switch_plate at $pressure exits 0"
+  else
+    fail "switch_plate at $pressure: $(cat "$WORK/err")"
+  fi
+done
+if $PY - "$WORK/atm.json" "$WORK/kPa.json" <<'PY'
+import json, sys
+atm, kpa = (json.load(open(f))["pull_in"] for f in sys.argv[1:3])
+for d in (atm, kpa):
+    assert abs(d["quasi_static"]["pull_in_voltage"] / 187 - 1) < 0.04, d["quasi_static"]
+    assert 0.85 < d["dynamic"]["ratio_to_quasi_static"] < 1.0, d["dynamic"]
+    assert d["dynamic"]["pull_in_voltage"] - d["dynamic"]["not_pulling_in"] <= 0.5
+# 1 kPa: the film hardly damps (Kn ~ 2), the ratio is the vacuum one (thesis 171/187).
+assert abs(kpa["dynamic"]["ratio_to_quasi_static"] - 0.91) < 0.02, kpa["dynamic"]
+# More gas, more damping: the dynamic pull-in voltage rises and pull-in at 178 V is slower.
+assert atm["dynamic"]["pull_in_voltage"] > kpa["dynamic"]["pull_in_voltage"]
+t_atm, t_kpa = (d["dynamic"]["histories"][0] for d in (atm, kpa))
+assert t_atm["pulled_in"] and t_kpa["pulled_in"] and t_atm["pull_in_time"] > t_kpa["pull_in_time"], (t_atm, t_kpa)
+print(f"V_dyn 1 atm {atm['dynamic']['pull_in_voltage']:.2f} V, 1 kPa {kpa['dynamic']['pull_in_voltage']:.2f} V; "
+      f"t_PI(178 V) {1e6 * t_atm['pull_in_time']:.3f} / {1e6 * t_kpa['pull_in_time']:.3f} us")
+PY
+then
+  pass "pull-in voltages and times at 1 atm and 1 kPa"
+else
+  fail "pull-in figures"
+fi
+if $PY "$SRC/python/plot_pullin.py" "$WORK/atm.h5" >/dev/null && [ -s "$WORK/atm_curve.png" ] &&
+   [ -s "$WORK/atm_dynamic.png" ] && [ -s "$WORK/atm_forces.png" ]; then
+  pass "plot_pullin.py draws the curve, the histories and the forces"
+else
+  fail "plot_pullin.py"
+fi
+
+if "$DRIVER" "$PLANE" -o "$WORK/plane.h5" --json --quiet >"$WORK/plane.json" 2>"$WORK/err" &&
+   $PY -c '
+import json, sys
+d = json.load(open(sys.argv[1]))["pull_in"]
+v = d["quasi_static"]["pull_in_voltage"]
+assert d["electrostatics"] == "laplace" and abs(v / 181 - 1) < 0.04, d
+' "$WORK/plane.json"; then
+  pass "plane beam + Laplace: quasi-static V_PI within 4 % of 181 V"
+else
+  fail "plane + Laplace: $(cat "$WORK/err") $(cat "$WORK/plane.json")"
+fi
+
+expect_input_error() {  # name, expected text, args...
+  local name="$1" text="$2"
+  shift 2
+  "$DRIVER" "$@" -o "$WORK/$name.h5" --quiet >/dev/null 2>"$WORK/$name.err"
+  local code=$?
+  if [ "$code" -eq 2 ] && [ "$(wc -l <"$WORK/$name.err")" -eq 1 ] &&
+     grep -q -- "$text" "$WORK/$name.err" && [ ! -e "$WORK/$name.h5" ]; then
+    pass "$name -> exit 2: $(cat "$WORK/$name.err")"
+  else
+    fail "$name: exit $code, stderr: $(cat "$WORK/$name.err")"
+  fi
+}
+expect_input_error negative_gap "actuation.gap" "$PLATE" --set "actuation.gap=-1 um"
+expect_input_error laplace_plate "actuation.electrostatics" "$PLATE" --set actuation.electrostatics=laplace
+expect_input_error electrode_off "actuation.electrode" "$PLATE" --set "actuation.electrode={x: [500 um, 600 um]}"
+expect_input_error gas_plane "gas.model" "$PLANE" --set "gas={model: reynolds, pressure: 1 atm}"
+expect_input_error bad_mode "pull_in.mode" "$PLATE" --set pull_in.mode=static
+expect_input_error control_outside "actuation.control" "$PLATE" --set "actuation.control=[1 m, 0 m]"
+
+echo "$failures failure(s)"
+[ "$failures" -eq 0 ]
