@@ -23,11 +23,13 @@ void read_interval(const CaseNode& node, const std::string& key, Real& lo, Real&
 std::unique_ptr<ReynoldsFilm> read_gas(const CaseNode& root, const SwitchScene& s) {
   if (!root.has("gas")) return nullptr;
   const CaseNode gas = root.child("gas");
-  if (gas.get_choice("model", {"none", "reynolds"}) == "none") return nullptr;
-  gas.require(s.structure->kind() == "plate", "model",
+  // model: none switches the film off but still checks its keys (a case toggled by --set).
+  const bool none = gas.get_choice("model", {"none", "reynolds"}) == "none";
+  gas.require(none || s.structure->kind() == "plate", "model",
               "the Reynolds film needs a plate (model.structure: plate)");
   GasProperties g;
-  g.ambient_pressure = gas.get_quantity("pressure", Dimension::Pressure, Range::positive());
+  g.ambient_pressure = none ? gas.get_quantity("pressure", Dimension::Pressure, 1.0, Range::positive())
+                            : gas.get_quantity("pressure", Dimension::Pressure, Range::positive());
   g.viscosity = gas.get_quantity("viscosity", Dimension::Viscosity, g.viscosity, Range::positive());
   g.mean_free_path =
       gas.get_quantity("mean_free_path", Dimension::Length, g.mean_free_path, Range::positive());
@@ -46,6 +48,7 @@ std::unique_ptr<ReynoldsFilm> read_gas(const CaseNode& root, const SwitchScene& 
     const std::string kind = given.get_choice(p.name, {"open", "wall"}, fallback);
     film_bcs.push_back({kind == "open" ? FilmBoundary::Kind::Open : FilmBoundary::Kind::Wall});
   }
+  if (none) return nullptr;
   return std::make_unique<ReynoldsFilm>(mesh, g, std::move(film_bcs));
 }
 
