@@ -58,7 +58,8 @@ def main():
         written.append(prefix + "_curve.png")
 
         if "dynamic" in f:
-            runs = sorted(f["dynamic"].keys(), key=lambda k: int(k[1:]))
+            runs = sorted((k for k in f["dynamic"].keys() if k[0] == "V" and k[1:].isdigit()),
+                          key=lambda k: int(k[1:]))
             histories = summary["dynamic"]["histories"]
             fig, ax = plt.subplots(figsize=(7, 4.5))
             fig2, ax2 = plt.subplots(figsize=(7, 4.5))

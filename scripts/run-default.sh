@@ -37,5 +37,9 @@ print(f"  dynamic pull-in voltage (step): {dyn['pull_in_voltage']:.2f} V "
 print(f"  pull-in time just above it: {1e6 * dyn['pull_in_time']:.2f} us; "
       + ", ".join(f"{h['voltage']:.1f} V: " + (f"{1e6 * h['pull_in_time']:.2f} us" if h["pulled_in"] else "no pull-in")
                   for h in dyn["histories"]))
+s = dyn.get("small_signal")
+if s:
+    print(f"  small-signal response (step to {s['voltage']:.1f} V): damping ratio {s['damping_ratio']:.4f}, "
+          f"damped frequency {s['frequency'] / 1e3:.1f} kHz")
 PY
 echo "  files: out/switch_plate.{h5,xdmf,json}, out/switch_plate_{curve,dynamic,forces}.png"

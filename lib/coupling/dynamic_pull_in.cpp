@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/error.hpp"
 
@@ -69,6 +70,41 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
   run.final_time = ida.time();
   run.stats = ida.stats();
   return run;
+}
+
+FreeResponse free_response(const std::vector<DynamicSample>& h) {
+  // Extrema (time, value) by a parabola through each local extreme sample and its neighbours.
+  std::vector<std::pair<Real, Real>> extrema;
+  for (std::size_t i = 1; i + 1 < h.size(); ++i) {
+    const Real a = h[i - 1].control, b = h[i].control, c = h[i + 1].control;
+    if (!((b > a && b >= c) || (b < a && b <= c))) continue;
+    const Real curvature = a - 2 * b + c;
+    const Real dt = h[i + 1].t - h[i].t;
+    const Real shift = curvature != 0 ? 0.5 * (a - c) / curvature : 0.0;  // in samples
+    extrema.emplace_back(h[i].t + shift * dt, b - 0.25 * (a - c) * shift);
+  }
+  FreeResponse r;
+  if (extrema.size() < 3) return r;
+  // ln s_k = ln s_0 - k delta / 2: least-squares slope.
+  std::vector<Real> k, ln_s;
+  for (std::size_t i = 0; i + 1 < extrema.size(); ++i) {
+    k.push_back(static_cast<Real>(i));
+    ln_s.push_back(std::log(std::abs(extrema[i + 1].second - extrema[i].second)));
+  }
+  const Real n = static_cast<Real>(k.size());
+  Real sk = 0, sl = 0, skk = 0, skl = 0;
+  for (std::size_t i = 0; i < k.size(); ++i) {
+    sk += k[i];
+    sl += ln_s[i];
+    skk += k[i] * k[i];
+    skl += k[i] * ln_s[i];
+  }
+  const Real slope = (n * skl - sk * sl) / (n * skk - sk * sk);
+  const Real delta = -2 * slope;
+  r.damping_ratio = delta / std::sqrt(4 * M_PI * M_PI + delta * delta);
+  r.frequency = 0.5 * (extrema.size() - 1) / (extrema.back().first - extrema.front().first);
+  r.swings = static_cast<int>(k.size());
+  return r;
 }
 
 DynamicPullIn find_dynamic_pull_in(SwitchSystem& system, Index control, Real low, Real high,

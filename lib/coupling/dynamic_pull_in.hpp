@@ -44,6 +44,19 @@ struct DynamicRun {
   std::vector<DynamicSample> history;
 };
 
+// The damped free response in a recorded history (a step below pull-in): from the extrema
+// e_k of the control deflection, the half-swings s_k = |e_{k+1} - e_k| decay as
+// exp(-delta/2) per half period for x_eq + a exp(-zeta omega t) cos(omega_d t), so the
+// logarithmic decrement delta = 2 ln(s_k / s_{k+1}) (averaged over the swings by a
+// least-squares fit of ln s_k) gives zeta = delta / sqrt(4 pi^2 + delta^2), and the spacing
+// of the extrema the damped frequency. Extrema are located by parabolas through the samples.
+struct FreeResponse {
+  Real damping_ratio = 0;
+  Real frequency = 0;  // damped [Hz]
+  int swings = 0;      // half-swings used (0: fewer than 2, nothing measured)
+};
+FreeResponse free_response(const std::vector<DynamicSample>& history);
+
 // `voltage(t)` [V] is installed into the system's actuation; control indexes the structure.
 DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(Real)> voltage,
                        const DynamicOptions& options);

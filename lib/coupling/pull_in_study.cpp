@@ -38,6 +38,7 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
   }
   s.tolerance = dyn.get_quantity("tolerance", Dimension::Voltage, 0.5, Range::positive());
   if (dyn.has("voltages")) s.voltages = dyn.get_quantities("voltages", Dimension::Voltage);
+  s.small_signal = dyn.get_real("small_signal", 0.3, Range{0.0, 0.9, false, false});
 
   const CaseNode solver = root.child_or_empty("solver");
   s.run.ida.rtol = solver.get_real("rtol", 1e-3, Range::open(0.0, 1.0));
@@ -62,6 +63,17 @@ QuasiStaticPullIn quasi_static(SwitchScene& scene, const PullInSettings& setting
                                                 scene.electrode, scene.control, options);
   laplace_solves = r.coupling_iterations;
   return r.result;
+}
+
+void write_history(ResultWriter& writer, const std::string& name, const DynamicRun& run) {
+  std::vector<Real> t;
+  std::vector<std::vector<double>> values;
+  for (const DynamicSample& s : run.history) {
+    t.push_back(s.t);
+    values.push_back({s.control, s.min_gap, s.electrostatic_force, s.gas_force});
+  }
+  writer.write_time_series("dynamic", name, t, values,
+                           {"control", "min_gap", "electrostatic_force", "gas_force"});
 }
 
 }  // namespace
@@ -102,15 +114,17 @@ PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& setting
       o.stop_at_turning = false;  // the whole history up to end_time (or touch-down)
       return o;
     }());
-    std::vector<Real> t;
-    std::vector<std::vector<double>> values;
-    for (const DynamicSample& s : run.history) {
-      t.push_back(s.t);
-      values.push_back({s.control, s.min_gap, s.electrostatic_force, s.gas_force});
-    }
-    writer.write_time_series("dynamic", fmt::format("V{}", k), t, values,
-                             {"control", "min_gap", "electrostatic_force", "gas_force"});
+    write_history(writer, fmt::format("V{}", k), run);
     report.histories.emplace_back(v, std::move(run));
+  }
+  if (settings.small_signal > 0) {
+    const Real v = settings.small_signal * qs.pull_in_voltage;
+    DynamicOptions o = settings.run;
+    o.stop_at_turning = false;
+    const DynamicRun run = run_dynamic(system, scene.control, [v](Real) { return v; }, o);
+    write_history(writer, "small_signal", run);
+    report.small_signal_voltage = v;
+    report.small_signal = free_response(run.history);
   }
   return report;
 }
@@ -146,6 +160,11 @@ Json pull_in_summary(const SwitchScene& scene, const PullInReport& report) {
                            {"extreme_control", run.extreme_control},
                            {"steps", run.stats.steps}});
     j["dynamic"]["histories"] = histories;
+    if (report.small_signal_voltage > 0)
+      j["dynamic"]["small_signal"] = {{"voltage", report.small_signal_voltage},
+                                      {"damping_ratio", report.small_signal.damping_ratio},
+                                      {"frequency", report.small_signal.frequency},
+                                      {"swings", report.small_signal.swings}};
   }
   return j;
 }

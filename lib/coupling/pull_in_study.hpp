@@ -15,6 +15,9 @@
 //       voltages: [170 V, 180 V]      # step voltages whose histories are recorded (default:
 //                                     # 0.97 and 1.03 x the dynamic V_PI)
 //       output_interval: 0.1 us       # sampling of the recorded histories
+//       small_signal: 0.3             # a step to this fraction of the quasi-static V_PI,
+//                                     # recorded to end_time: damping ratio and frequency of
+//                                     # the free response (0: none; default 0.3)
 //   solver:                           # dynamic runs (IDA): rtol (default 1e-3), atol (default
 //     rtol: 1e-3                      # 1e-4 x the gap) and max_order (default 2)
 //
@@ -41,6 +44,7 @@ struct PullInSettings {
   Real bracket_low = 0, bracket_high = 0;  // 0: from the quasi-static V_PI
   Real tolerance = 0.5;
   std::vector<Real> voltages;         // empty: around the dynamic V_PI
+  Real small_signal = 0.3;            // fraction of the quasi-static V_PI (0: none)
 };
 
 PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& scene);
@@ -50,12 +54,15 @@ struct PullInReport {
   bool has_dynamic = false;
   DynamicPullIn dynamic;
   std::vector<std::pair<Real, DynamicRun>> histories;  // (voltage, run)
+  Real small_signal_voltage = 0;
+  FreeResponse small_signal;
   long laplace_solves = 0;
 };
 
 // Runs the study; writes the fold's fields (index 0), the curve (/pull_in/curve: abscissa
 // control_displacement, values voltage, min_gap, stable) and the histories
-// (/dynamic/V<k>: time; control, min_gap, electrostatic_force, gas_force) into `writer`.
+// (/dynamic/V<k>: time; control, min_gap, electrostatic_force, gas_force; the small-signal
+// run is /dynamic/small_signal) into `writer`.
 PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& settings,
                                ResultWriter& writer);
 
