@@ -54,6 +54,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -636,6 +637,7 @@ int main(int argc, char** argv) {
       auto rtols = k == 0 ? plate_rtols : plane_rtols;
       std::sort(rtols.rbegin(), rtols.rend());  // loosest first: predictions need them
       std::map<std::pair<std::size_t, double>, double> seconds;  // (mesh, rtol) -> wall
+      std::set<std::pair<std::size_t, double>> skipped;
       for (std::size_t r = 0; r < rtols.size(); ++r)
         for (std::size_t i = 0; i < nxs.size(); ++i) {
           const double rtol = rtols[r];
@@ -643,13 +645,17 @@ int main(int argc, char** argv) {
           // Predicted from the same mesh at the previous rtol, times the growth measured on
           // the coarser mesh between the two rtols (or from the coarser mesh at this rtol,
           // times the growth between the two meshes at the previous rtol).
+          // A run whose coarser mesh was skipped at this rtol is skipped too.
           double predicted = 0;
-          if (r > 0 && i > 0 && seconds.count({i, rtols[r - 1]}) && seconds.count({i - 1, rtol}))
+          if (i > 0 && skipped.count({i - 1, rtol}))
+            predicted = std::numeric_limits<double>::infinity();
+          else if (r > 0 && i > 0 && seconds.count({i, rtols[r - 1]}) && seconds.count({i - 1, rtol}))
             predicted = seconds[{i, rtols[r - 1]}] * seconds[{i - 1, rtol}] /
                         seconds[{i - 1, rtols[r - 1]}];
           else if (i > 1 && seconds.count({i - 1, rtol}) && seconds.count({i - 2, rtol}))
             predicted = seconds[{i - 1, rtol}] * seconds[{i - 1, rtol}] / seconds[{i - 2, rtol}];
           if (predicted > cap) {
+            skipped.insert({i, rtol});
             Json j = common;
             j["variant"] = "skipped";
             j["analysis"] = "transient";
