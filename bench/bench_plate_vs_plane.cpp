@@ -21,7 +21,8 @@
 //
 // Accuracy is each model's discretisation error: |Q(mesh) - Q_ref| / |Q_ref| with Q_ref the
 // Richardson extrapolation of that model's three finest meshes (both directions doubled each
-// time; the observed order is reported), because the two models converge to values that differ
+// time; the observed order is reported; --static-reference finest uses the finest mesh's
+// value instead, for when the finest meshes are not asymptotic), because the two models converge to values that differ
 // by the model difference above (reported too, against the analytic value).
 //   static     Q = w(L/2) on the strip's centre line (plate: mean of the cubic reconstructions
 //              of the four cells touching (L/2, b/2)); plane: the section mean of u_y at L/2
@@ -392,6 +393,7 @@ int main(int argc, char** argv) {
   double width = kLength / 10;
   int repeats = 3;
   bool quick = false, width_study = true, do_static = true, do_transient = true;
+  std::string static_reference = "richardson";
   double long_run = 2.0;  // static runs longer than this are timed once
   std::vector<double> targets{5e-3, 1e-3};
   // Static scans: full grids; the reference uses the finest diagonal (nx, ny doubled together).
@@ -418,6 +420,10 @@ int main(int argc, char** argv) {
   app.add_option("--plate-rtols", plate_rtols, "IDA relative tolerances, plate (transient)");
   app.add_option("--plane-rtols", plane_rtols, "IDA relative tolerances, plane (transient)");
   app.add_option("--cap", cap, "skip transient runs predicted to take longer [s]");
+  app.add_option("--static-reference", static_reference,
+                 "static reference of each model: richardson (three finest diagonal meshes) or "
+                 "finest (the finest mesh's value)")
+      ->check(CLI::IsMember({"richardson", "finest"}));
   app.add_option("--width-study", width_study, "plate deflection against b (model difference)");
   app.add_option("--static", do_static, "run the static comparison");
   app.add_option("--transient", do_transient, "run the transient comparison");
@@ -497,6 +503,7 @@ int main(int argc, char** argv) {
       j["analysis"] = analysis;
       j["model"] = model;
       j["value"] = ref.value;
+      j["kind"] = analysis == "static" ? static_reference : "richardson";
       j["richardson_order"] = ref.order;
       j["order_assumed"] = ref.order_assumed;
       j["finest_vs_reference"] = std::abs(ref.finest / ref.value - 1);
@@ -588,6 +595,9 @@ int main(int argc, char** argv) {
       const std::size_t a = nxs.size(), b = nys.size();
       refs[k] = richardson(value_at(nxs[a - 3], nys[b - 3]), value_at(nxs[a - 2], nys[b - 2]),
                            value_at(nxs[a - 1], nys[b - 1]), 2.0);
+      // Where the finest meshes are not in the asymptotic range (the plane model's, measured:
+      // observed order ~1, growing increments in nx at ny = 64), the finest value instead.
+      if (static_reference == "finest") refs[k].value = refs[k].finest;
     }
     compare("static", by_model[0], by_model[1], refs[0], refs[1]);
     w_scale = std::abs(refs[1].value);
