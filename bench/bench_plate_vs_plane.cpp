@@ -64,7 +64,7 @@
 #include "mesh/structured_mesh.hpp"
 #include "physics/elasticity/elasticity_operator.hpp"
 #include "physics/plate/plate_operator.hpp"
-#include "physics/plate/reduced_inertia_system.hpp"
+#include "core/reduced_inertia_system.hpp"
 #include "solvers/ida_integrator.hpp"
 #include "solvers/static_solve.hpp"
 

@@ -5,7 +5,7 @@
 // rest at t = 0 and then a uniform pressure q = -1 Pa (step load).
 //
 // Every integrator solves the same semi-discrete system, ReducedInertiaSystem (rotations
-// quasi-static; physics/plate/reduced_inertia_system.hpp): with rotary inertia the undamped
+// quasi-static; core/reduced_inertia_system.hpp): with rotary inertia the undamped
 // thickness-shear branch near 5.5e9 rad/s makes adaptive steps collapse to ~1e-11 s.
 //
 // The quantity: the centre deflection w(t*) (mean of the cubic reconstructions of the four
@@ -57,7 +57,7 @@
 
 #include "mesh/structured_mesh.hpp"
 #include "physics/plate/plate_operator.hpp"
-#include "physics/plate/reduced_inertia_system.hpp"
+#include "core/reduced_inertia_system.hpp"
 #include "solvers/ida_integrator.hpp"
 #include "solvers/static_solve.hpp"
 
