@@ -534,4 +534,20 @@ Real PlateOperator::deflection_at(Index c, const Vec3& x, Real t, std::span<cons
   return w;
 }
 
+// ---- for operators built on the plate ------------------------------------------------------
+
+std::vector<PlateOperator::CellWeight> PlateOperator::centroid_gradient_weights(Index c) const {
+  // G_c = sum_j (beta_j - beta_c) g_j^T over the stencil points (boundary values constant).
+  std::vector<CellWeight> out;
+  auto points = beta_rec_->points(c);
+  Vec3 sum = Vec3::Zero();
+  for (std::size_t j = 0; j < points.size(); ++j) {
+    const Vec3& g = centroid_gradient_[point_offset_[c] + j];
+    sum += g;
+    if (points[j].kind == StencilPoint::Kind::Cell) out.push_back({points[j].cell, g});
+  }
+  out.push_back({c, -sum});
+  return out;
+}
+
 }  // namespace rfmems

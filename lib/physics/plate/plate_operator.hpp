@@ -119,6 +119,17 @@ class PlateOperator : public SecondOrderOperator {
   // supported edges enters it as data).
   Real deflection_at(Index c, const Vec3& x, Real t, std::span<const Real> y) const;
 
+  // ---- For operators built on the plate (physics/creep) ------------------------------------
+  const std::vector<PlateBoundary>& boundaries() const { return boundaries_; }
+  // The centroid rotation gradient of rotation_gradients() as a linear map of the unknowns:
+  // G_c = G_b + sum_k beta_{cell_k} weight_k^T, where G_b (from prescribed boundary rotations)
+  // does not depend on y. For analytic Jacobians of terms that use the curvature.
+  struct CellWeight {
+    Index cell;
+    Vec3 weight;
+  };
+  std::vector<CellWeight> centroid_gradient_weights(Index c) const;
+
  private:
   // Evaluation weights of one cell's beta reconstruction at one point.
   struct Eval {

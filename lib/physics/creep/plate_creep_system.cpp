@@ -1,0 +1,289 @@
+#include "physics/creep/plate_creep_system.hpp"
+
+#include <algorithm>
+#include <map>
+
+namespace rfmems {
+
+using Kind = PlateBoundary::Kind;
+
+PlateCreepSystem::PlateCreepSystem(PlateOperator& plate, const CreepLaw& law,
+                                   int thickness_intervals)
+    : plate_(plate),
+      law_(law),
+      quadrature_(ThicknessQuadrature::simpson(plate.section().thickness, thickness_intervals)),
+      n_cells_(plate.mesh().n_cells()) {
+  law_.validate();
+  const Real E = plate.section().E, nu = plate.section().nu, c = E / (1 - nu * nu);
+  C_ << c, c * nu, 0, c * nu, c, 0, 0, 0, E / (1 + nu);
+  moment_rec_ = std::make_unique<PolynomialReconstruction>(
+      plate.mesh(), [](Index) { return BoundaryPoint::None; }, 2);
+
+  curvature_weights_.resize(n_cells_);
+  for (Index cell = 0; cell < n_cells_; ++cell) {
+    std::map<Index, Vec3> merged;
+    for (const auto& w : plate.centroid_gradient_weights(cell)) {
+      auto [it, inserted] = merged.try_emplace(w.cell, w.weight);
+      if (!inserted) it->second += w.weight;
+    }
+    for (const auto& [k, w] : merged) curvature_weights_[cell].push_back({k, w});
+  }
+  build_plastic_source();
+  build_pattern();
+
+  const std::vector<Real> zero(plate.size(), 0.0);
+  plate_stiffness_.resize(plate.stiffness_pattern().nnz());
+  plate.stiffness(0, zero, plate_stiffness_);
+  plate_lu_ = std::make_unique<KluFactorization>(plate.stiffness_pattern(), plate_stiffness_);
+}
+
+void PlateCreepSystem::build_plastic_source() {
+  const Mesh& mesh = plate_.mesh();
+  std::map<std::pair<Index, Index>, Mat23> blocks;
+  std::vector<Real> value;
+  std::vector<Vec3> gradient;
+  std::vector<std::pair<Index, Real>> weights;
+  // M_p at x from cell's reconstruction: M_p,cell + sum_j v_j (M_p,j - M_p,cell).
+  auto add_weights = [&](Index cell, const Vec3& x, Real factor) {
+    moment_rec_->weights_at(cell, x, value, gradient);
+    auto points = moment_rec_->points(cell);
+    Real sum = 0;
+    for (std::size_t j = 0; j < points.size(); ++j) {
+      sum += value[j];
+      weights.push_back({points[j].cell, factor * value[j]});
+    }
+    weights.push_back({cell, factor * (1 - sum)});
+  };
+  for (Index f = 0; f < mesh.n_faces(); ++f) {
+    const Index p = mesh.face_owner(f), n = mesh.face_neighbour(f);
+    const Vec3& S = mesh.face_area(f);
+    Eigen::Matrix2d projection = Eigen::Matrix2d::Identity();
+    if (n < 0) {
+      const Kind kind = plate_.boundaries()[mesh.face_patch(f)].kind;
+      if (kind == Kind::SimplySupportedHard) {
+        const Vec3 u = S.normalized();
+        const Eigen::Vector2d t(-u.y(), u.x());
+        projection = t * t.transpose();  // only the twisting moment is a reaction
+      } else if (kind != Kind::Clamped && kind != Kind::Displacement) {
+        continue;  // the total moment is prescribed
+      }
+    }
+    weights.clear();
+    if (n >= 0) {
+      add_weights(p, mesh.face_centroid(f), 0.5);
+      add_weights(n, mesh.face_centroid(f), 0.5);
+    } else {
+      add_weights(p, mesh.face_centroid(f), 1.0);
+    }
+    Mat23 traction;  // M S for M in Voigt (xx, yy, xy)
+    traction << S.x(), 0, S.y(), 0, S.y(), S.x();
+    const Mat23 base = projection * traction;
+    for (const auto& [k, w] : weights) {
+      auto add = [&](Index row, Real sign) {
+        auto [it, inserted] = blocks.try_emplace({row, k}, sign * w * base);
+        if (!inserted) it->second += sign * w * base;
+      };
+      add(p, 1.0);
+      if (n >= 0) add(n, -1.0);
+    }
+  }
+  source_.clear();
+  for (const auto& [key, B] : blocks) source_.push_back({key.first, key.second, B});
+}
+
+void PlateCreepSystem::build_pattern() {
+  const CsrPattern& plate_pattern = plate_.stiffness_pattern();
+  const Index np = n_points();
+  std::vector<std::vector<Index>> source_cols(n_cells_);
+  for (const SourceBlock& b : source_) source_cols[b.row].push_back(b.col);
+
+  pattern_ = CsrPattern{};
+  std::vector<Index> cols;
+  for (Index row = 0; row < 3 * n_cells_; ++row) {
+    cols.assign(plate_pattern.col_idx.begin() + plate_pattern.row_ptr[row],
+                plate_pattern.col_idx.begin() + plate_pattern.row_ptr[row + 1]);
+    if (row % 3 != PlateOperator::kW)
+      for (Index k : source_cols[row / 3])
+        for (Index i = 0; i < np; ++i)
+          for (int j = 0; j < 3; ++j) cols.push_back(creep_index(k, i, j));
+    std::sort(cols.begin(), cols.end());
+    cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
+    pattern_.col_idx.insert(pattern_.col_idx.end(), cols.begin(), cols.end());
+    pattern_.row_ptr.push_back(pattern_.nnz());
+  }
+  structural_nnz_ = pattern_.nnz();
+  for (Index c = 0; c < n_cells_; ++c)
+    for (Index i = 0; i < np; ++i)
+      for (int j = 0; j < kPerPoint; ++j) {
+        for (const auto& w : curvature_weights_[c]) {
+          pattern_.col_idx.push_back(3 * w.cell + PlateOperator::kBetaX);
+          pattern_.col_idx.push_back(3 * w.cell + PlateOperator::kBetaY);
+        }
+        for (int l = 0; l < kPerPoint; ++l) pattern_.col_idx.push_back(creep_index(c, i, l));
+        pattern_.row_ptr.push_back(pattern_.nnz());
+      }
+
+  // The constant y rows: plate stiffness and dR_beta/dq = B (w_i z_i C).
+  structural_values_.assign(structural_nnz_, 0.0);
+  const std::vector<Real> zero(plate_.size(), 0.0);
+  std::vector<Real> k(plate_pattern.nnz());
+  plate_.stiffness(0, zero, k);
+  for (Index row = 0; row < 3 * n_cells_; ++row)
+    for (Index p = plate_pattern.row_ptr[row]; p < plate_pattern.row_ptr[row + 1]; ++p)
+      structural_values_[pattern_.find(row, plate_pattern.col_idx[p])] += k[p];
+  for (const SourceBlock& b : source_)
+    for (Index i = 0; i < np; ++i) {
+      const Mat23 d = b.B * (quadrature_.weight[i] * quadrature_.z[i]) * C_;
+      for (int a = 0; a < 2; ++a)
+        for (int j = 0; j < 3; ++j)
+          structural_values_[pattern_.find(3 * b.row + 1 + a, creep_index(b.col, i, j))] +=
+              d(a, j);
+    }
+}
+
+std::vector<Real> PlateCreepSystem::differential_components() const {
+  std::vector<Real> id(size(), 1.0);
+  std::fill(id.begin(), id.begin() + structural_size(), 0.0);
+  return id;
+}
+
+Mat3 PlateCreepSystem::stress_tensor(const Vec3& s) {
+  Mat3 m = Mat3::Zero();
+  m(0, 0) = s[0];
+  m(1, 1) = s[1];
+  m(0, 1) = m(1, 0) = s[2];
+  return m;
+}
+
+Vec3 PlateCreepSystem::curvature(const Mat3& G) {
+  return Vec3(G(0, 0), G(1, 1), 0.5 * (G(0, 1) + G(1, 0)));
+}
+
+Vec3 PlateCreepSystem::cell_plastic_moment(std::span<const Real> state, Index c) const {
+  Vec3 integral = Vec3::Zero();
+  for (Index i = 0; i < n_points(); ++i) {
+    const Index q = creep_index(c, i, 0);
+    integral += (quadrature_.weight[i] * quadrature_.z[i]) *
+                Vec3(state[q + kXX], state[q + kYY], state[q + kXY]);
+  }
+  return C_ * integral;
+}
+
+std::vector<Vec3> PlateCreepSystem::plastic_moments(std::span<const Real> state) const {
+  std::vector<Vec3> m(n_cells_);
+  for (Index c = 0; c < n_cells_; ++c) m[c] = cell_plastic_moment(state, c);
+  return m;
+}
+
+Vec3 PlateCreepSystem::point_stress(std::span<const Real> state, Index c, Index i,
+                                    const Vec3& kappa) const {
+  const Index q = creep_index(c, i, 0);
+  const Vec3 eps_p(state[q + kXX], state[q + kYY], state[q + kXY]);
+  return C_ * (quadrature_.z[i] * kappa - eps_p);
+}
+
+std::vector<Vec3> PlateCreepSystem::fibre_stress(Real t, std::span<const Real> state,
+                                                 Index i) const {
+  const std::vector<Mat3> G = plate_.rotation_gradients(t, state.first(structural_size()));
+  std::vector<Vec3> s(n_cells_);
+  for (Index c = 0; c < n_cells_; ++c) s[c] = point_stress(state, c, i, curvature(G[c]));
+  return s;
+}
+
+void PlateCreepSystem::add_plastic_source(std::span<const Real> state, std::span<Real> r) const {
+  const std::vector<Vec3> m = plastic_moments(state);
+  for (const SourceBlock& b : source_) {
+    const Eigen::Vector2d s = b.B * m[b.col];
+    r[3 * b.row + PlateOperator::kBetaX] += s[0];
+    r[3 * b.row + PlateOperator::kBetaY] += s[1];
+  }
+}
+
+void PlateCreepSystem::creep_rates(Real t, std::span<const Real> state, std::span<Real> rates) {
+  const std::vector<Mat3> G = plate_.rotation_gradients(t, state.first(structural_size()));
+  for (Index c = 0; c < n_cells_; ++c) {
+    const Vec3 kappa = curvature(G[c]);
+    for (Index i = 0; i < n_points(); ++i) {
+      const Index q = creep_index(c, i, 0);
+      const CreepRate rate = law_.rate(stress_tensor(point_stress(state, c, i, kappa)),
+                                       state[q + kEff]);
+      Real* out = rates.data() + (q - structural_size());
+      out[kXX] = rate.strain_rate(0, 0);
+      out[kYY] = rate.strain_rate(1, 1);
+      out[kXY] = rate.strain_rate(0, 1);
+      out[kEff] = rate.effective_rate;
+    }
+  }
+}
+
+void PlateCreepSystem::residual(Real t, std::span<const Real> y, std::span<const Real> yp,
+                                std::span<Real> r) {
+  const Index ns = structural_size();
+  plate_.internal_residual(t, y.first(ns), r.first(ns));
+  add_plastic_source(y, r);
+  std::span<Real> rq = r.subspan(ns);
+  creep_rates(t, y, rq);
+  for (Index k = 0; k < size() - ns; ++k) rq[k] = yp[ns + k] - rq[k];
+}
+
+void PlateCreepSystem::jacobian(Real t, Real c_j, std::span<const Real> y, std::span<const Real>,
+                                std::span<Real> values) {
+  std::copy(structural_values_.begin(), structural_values_.end(), values.begin());
+  const std::vector<Mat3> G = plate_.rotation_gradients(t, y.first(structural_size()));
+  const Mat3 unit[3] = {stress_tensor(Vec3(1, 0, 0)), stress_tensor(Vec3(0, 1, 0)),
+                        stress_tensor(Vec3(0, 0, 1))};
+  auto as_vector = [](const CreepRate& r) {
+    return Eigen::Vector4d(r.strain_rate(0, 0), r.strain_rate(1, 1), r.strain_rate(0, 1),
+                           r.effective_rate);
+  };
+  for (Index c = 0; c < n_cells_; ++c) {
+    const Vec3 kappa = curvature(G[c]);
+    const auto& stencil = curvature_weights_[c];
+    for (Index i = 0; i < n_points(); ++i) {
+      const Index q = creep_index(c, i, 0);
+      const Mat3 sigma = stress_tensor(point_stress(y, c, i, kappa));
+      const Real eps = y[q + kEff];
+      Mat43 d_sigma;  // d g / d sigma (Voigt)
+      for (int d = 0; d < 3; ++d)
+        d_sigma.col(d) = as_vector(law_.rate_stress_derivative(sigma, eps, unit[d]));
+      const Eigen::Vector4d d_eps_eff = as_vector(law_.rate_hardening_derivative(sigma, eps));
+      const Mat43 d_eps_p = -d_sigma * C_;
+      const Mat43 d_kappa = quadrature_.z[i] * d_sigma * C_;
+      for (int j = 0; j < kPerPoint; ++j) {
+        Real* row = values.data() + pattern_.row_ptr[q + j];
+        for (const auto& w : stencil) {
+          // kappa = (G_xx, G_yy, (G_xy + G_yx)/2), G = sum_k beta_k w_k^T.
+          *row++ = -d_kappa.row(j).dot(Vec3(w.weight.x(), 0, 0.5 * w.weight.y()));
+          *row++ = -d_kappa.row(j).dot(Vec3(0, w.weight.y(), 0.5 * w.weight.x()));
+        }
+        for (int l = 0; l < 3; ++l) *row++ = (j == l ? c_j : 0.0) - d_eps_p(j, l);
+        *row++ = (j == kEff ? c_j : 0.0) - d_eps_eff[j];
+      }
+    }
+  }
+}
+
+void PlateCreepSystem::equilibrate(Real t, std::span<Real> state) {
+  const Index ns = structural_size();
+  scratch_.assign(ns, 0.0);
+  plate_.internal_residual(t, state.first(ns), scratch_);
+  add_plastic_source(state, scratch_);
+  plate_lu_->solve(scratch_);  // the plate is linear: one Newton step is exact
+  for (Index k = 0; k < ns; ++k) state[k] -= scratch_[k];
+}
+
+void PlateCreepSystem::initial_state(Real t, std::vector<Real>& state,
+                                     std::vector<Real>& state_dot) {
+  const Index ns = structural_size();
+  if (static_cast<Index>(state.size()) != size()) state.assign(size(), 0.0);
+  equilibrate(t, state);
+  state_dot.assign(size(), 0.0);
+  creep_rates(t, state, std::span<Real>(state_dot).subspan(ns));
+  // K y' + (dR/dq) q' = 0: the source is linear in q, so apply it to q'.
+  scratch_.assign(ns, 0.0);
+  add_plastic_source(state_dot, scratch_);
+  plate_lu_->solve(scratch_);
+  for (Index k = 0; k < ns; ++k) state_dot[k] = -scratch_[k];
+}
+
+}  // namespace rfmems

@@ -1,0 +1,118 @@
+// Creep of a Mindlin-Reissner plate (thesis sec. 4.2.2, 4.3.2, eqs. 4.7-4.14 and 4.17-4.25;
+// re-derived, the extracted text lost them). Only bending creeps: the in-plane bending strain
+// at height z splits into elastic and plastic parts, the transverse shear stays elastic.
+//
+//   total strain       eps(z) = z kappa,   kappa = sym(grad beta)    (u = z beta_x, v = z beta_y)
+//   plane stress       sigma(z) = C (z kappa - eps_p(z)),
+//                      C: sigma_xx = E/(1-nu^2) (e_xx + nu e_yy), sigma_xy = E/(1+nu) e_xy
+//                      (tensor shear strain e_xy = gamma_xy / 2)
+//   moments            M = int z sigma dz = M_el(grad beta) - M_p,   M_p = int z C eps_p dz
+//   creep law          eps_p' = CreepLaw rate of sigma(z) (von Mises of the in-plane stress,
+//                      sigma_zz = 0), eps_eff' = its effective rate   (materials/creep_law.hpp)
+//
+// The plate's moment balances become -sum_f (M_el - M_p)_f S_f + Q_c A = 0: the plastic
+// moments enter as the sources sum_f M_p,f S_f (thesis S1, S2 of eqs. 4.21-4.22), on the
+// faces where the moment is transmitted: interior faces and edges whose rotation is held
+// (clamped, prescribed displacement; the tangential part on a hard simple support). Edges
+// whose moment is prescribed (free, loaded, soft support) prescribe the total moment, so M_p
+// does not enter there. Face values M_p,f: the mean of the two cells' least-squares
+// reconstructions of M_p at the face centroid (degree 2, no boundary data), the owner's
+// reconstruction extrapolated on a boundary edge (where M_p is largest for a clamped plate).
+//
+// Through the thickness each cell holds N + 1 Simpson points (ThicknessQuadrature, N = 20 by
+// default): M_p by Simpson's rule, sigma(z) and the creep rates at every point.
+//
+// State (CreepSystem layout): [y | q],
+//   y[3c + k]                 plate unknowns (w, beta_x, beta_y) of cell c
+//   q[4 (c (N+1) + i) + j]    point i of cell c: eps_p,xx, eps_p,yy, eps_p,xy (tensor), eps_eff
+// Residual F_y = R_plate(t, y) + sum_f M_p,f(q) S_f (algebraic), F_q = q' - g(y, q).
+//
+// Jacobian (analytic): the y rows are constant (the plate is linear, M_p linear in q) and are
+// assembled once; a q row of point (c, i) depends on its own four states and, through kappa_c
+// (the centroid gradient of the plate's beta reconstruction), on the rotations of c's stencil.
+#pragma once
+#include <Eigen/Dense>
+#include <memory>
+#include <vector>
+
+#include "fv/polynomial_reconstruction.hpp"
+#include "materials/creep_law.hpp"
+#include "physics/creep/creep_system.hpp"
+#include "physics/creep/thickness_quadrature.hpp"
+#include "physics/plate/plate_operator.hpp"
+#include "solvers/klu_factorization.hpp"
+
+namespace rfmems {
+
+class PlateCreepSystem : public CreepSystem {
+ public:
+  static constexpr int kXX = 0, kYY = 1, kXY = 2, kEff = 3, kPerPoint = 4;
+
+  PlateCreepSystem(PlateOperator& plate, const CreepLaw& law, int thickness_intervals = 20);
+
+  // Layout.
+  Index n_cells() const { return n_cells_; }
+  Index n_points() const { return quadrature_.size(); }  // per cell
+  Index structural_size() const override { return 3 * n_cells_; }
+  Index creep_index(Index c, Index i, int component) const {
+    return 3 * n_cells_ + kPerPoint * (c * n_points() + i) + component;
+  }
+  Index size() const override { return 3 * n_cells_ + kPerPoint * n_cells_ * n_points(); }
+
+  std::vector<Real> differential_components() const override;
+  void residual(Real t, std::span<const Real> y, std::span<const Real> yp,
+                std::span<Real> r) override;
+  const CsrPattern& jacobian_pattern() const override { return pattern_; }
+  void jacobian(Real t, Real c_j, std::span<const Real> y, std::span<const Real> yp,
+                std::span<Real> values) override;
+
+  void creep_rates(Real t, std::span<const Real> state, std::span<Real> rates) override;
+  void equilibrate(Real t, std::span<Real> state) override;
+  void initial_state(Real t, std::vector<Real>& state, std::vector<Real>& state_dot) override;
+
+  // Post-processing.
+  // Plastic moments (M_p,xx, M_p,yy, M_p,xy) per cell [N m/m].
+  std::vector<Vec3> plastic_moments(std::span<const Real> state) const;
+  // In-plane stress (xx, yy, xy) at point i of every cell [Pa].
+  std::vector<Vec3> fibre_stress(Real t, std::span<const Real> state, Index i) const;
+
+  const PlateOperator& plate() const { return plate_; }
+  const CreepLaw& law() const { return law_; }
+  const ThicknessQuadrature& quadrature() const { return quadrature_; }
+
+ private:
+  using Mat23 = Eigen::Matrix<Real, 2, 3>;
+  using Mat43 = Eigen::Matrix<Real, 4, 3>;
+  struct SourceBlock {  // moment rows of cell `row` += B M_p(col)
+    Index row, col;
+    Mat23 B;
+  };
+
+  void build_plastic_source();
+  void build_pattern();
+  // Plastic moments of one cell from its points (Voigt xx, yy, xy).
+  Vec3 cell_plastic_moment(std::span<const Real> state, Index c) const;
+  // sigma = C (z kappa - eps_p) of point (c, i), Voigt.
+  Vec3 point_stress(std::span<const Real> state, Index c, Index i, const Vec3& kappa) const;
+  static Mat3 stress_tensor(const Vec3& s);
+  static Vec3 curvature(const Mat3& G);
+  void add_plastic_source(std::span<const Real> state, std::span<Real> r) const;
+
+  PlateOperator& plate_;
+  CreepLaw law_;
+  ThicknessQuadrature quadrature_;
+  Index n_cells_;
+  Eigen::Matrix3d C_;  // plane-stress stiffness, Voigt (xx, yy, xy tensor)
+  std::unique_ptr<PolynomialReconstruction> moment_rec_;
+  std::vector<SourceBlock> source_;
+  // Per cell: the cells of its curvature stencil (sorted) and their gradient weights.
+  std::vector<std::vector<PlateOperator::CellWeight>> curvature_weights_;
+  CsrPattern pattern_;
+  std::vector<Real> structural_values_;  // the constant y rows, in pattern order
+  Index structural_nnz_ = 0;             // y rows occupy values [0, structural_nnz_)
+  std::vector<Real> plate_stiffness_;
+  std::unique_ptr<KluFactorization> plate_lu_;  // dR_plate/dy, factorised once (linear)
+  std::vector<Real> scratch_;
+};
+
+}  // namespace rfmems
