@@ -15,9 +15,7 @@
 // Output: out/<name>.h5 (+ .xdmf): the structure's fields at the fold (step 0),
 // /pull_in/curve, /dynamic/V<k> (see coupling/pull_in_study.hpp). Exit codes as rfmems-solid:
 // 0 success; 2 bad input (one line on stderr, no result file); 1 other failures.
-#include <chrono>
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <map>
 #include <string>
@@ -33,26 +31,21 @@
 
 namespace {
 
-namespace fs = std::filesystem;
 using namespace rfmems;
 
 int run(const DriverOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  auto elapsed = [&] {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  };
-
-  const CaseFile case_file = CaseFile::load(options.case_path, options.overrides);
-  const CaseNode root = case_file.root();
-  const fs::path case_dir = fs::absolute(options.case_path).parent_path();
-  const std::string name = root.get_string("name", case_dir.filename().string());
+  const DriverCase run_case(options);
+  const CaseFile& case_file = run_case.file;
+  const CaseNode& root = run_case.root;
+  const std::string& name = run_case.name;
+  const std::string& output = run_case.output;
+  auto elapsed = [&] { return run_case.elapsed(); };
   const bool dynamic = root.child("pull_in").get_choice("mode", {"quasi_static", "dynamic"}) == "dynamic";
-  SwitchScene scene = build_switch_scene(root, case_dir.string(),
+  SwitchScene scene = build_switch_scene(root, run_case.dir,
                                          dynamic ? AnalysisType::Transient : AnalysisType::Static);
   const PullInSettings settings = read_pull_in_settings(root, scene);
   case_file.check_all_used();  // a typo stops the run here, before any solving
 
-  const std::string output = options.output.empty() ? "out/" + name + ".h5" : options.output;
   ResultWriter writer(output, scene.structure->structure_mesh());
   remove_on_interrupt(temp_path_for(output));
   const PullInReport report = run_pull_in_study(scene, settings, writer);

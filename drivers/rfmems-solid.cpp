@@ -11,9 +11,7 @@
 //
 // Exit codes: 0 success; 2 bad input (case file, option, mesh file): one line
 // "rfmems-solid: <message>" on stderr and no result file; 1 any other failure.
-#include <chrono>
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -31,27 +29,22 @@
 
 namespace {
 
-namespace fs = std::filesystem;
 using namespace rfmems;
 
 int run(const DriverOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  auto elapsed = [&] {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  };
-
-  const CaseFile case_file = CaseFile::load(options.case_path, options.overrides);
-  const CaseNode root = case_file.root();
-  const fs::path case_dir = fs::absolute(options.case_path).parent_path();
-  const std::string name = root.get_string("name", case_dir.filename().string());
+  const DriverCase run_case(options);
+  const CaseFile& case_file = run_case.file;
+  const CaseNode& root = run_case.root;
+  const std::string& name = run_case.name;
+  const std::string& output = run_case.output;
+  auto elapsed = [&] { return run_case.elapsed(); };
 
   const AnalysisType type = read_analysis_type(root);
-  std::unique_ptr<StructuralModel> model = build_structure(root, case_dir.string(), type);
+  std::unique_ptr<StructuralModel> model = build_structure(root, run_case.dir, type);
   const AnalysisSettings settings = read_analysis_settings(root, *model);
   std::vector<Probe> probes = read_probes(root.child_or_empty("probes"), model->structure_mesh());
   case_file.check_all_used();  // a typo stops the run here, before any solving
 
-  const std::string output = options.output.empty() ? "out/" + name + ".h5" : options.output;
   StructuralResults results(output, *model, std::move(probes));
   remove_on_interrupt(temp_path_for(output));  // exceptions clean up; signals need this
   ProgressReporter progress(options.quiet || type == AnalysisType::Static, settings.end_time);

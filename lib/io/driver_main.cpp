@@ -3,10 +3,25 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <filesystem>
 
 #include "core/error.hpp"
 
 namespace rfmems {
+
+DriverCase::DriverCase(const DriverOptions& options)
+    : file(CaseFile::load(options.case_path, options.overrides)),
+      root(file.root()),
+      start_(std::chrono::steady_clock::now()) {
+  const std::filesystem::path path = std::filesystem::absolute(options.case_path).parent_path();
+  dir = path.string();
+  name = root.get_string("name", path.filename().string());
+  output = options.output.empty() ? "out/" + name + ".h5" : options.output;
+}
+
+double DriverCase::elapsed() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
 
 void print_driver_error(const std::string& program, const std::string& message) {
   std::string line = message;

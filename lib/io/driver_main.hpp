@@ -5,9 +5,12 @@
 // and its error contract: bad input (InputError, MeshError, a bad option) prints one line
 // "<program>: <message>" on stderr and exits 2; any other failure exits 1; --help exits 0.
 #pragma once
+#include <chrono>
 #include <functional>
 #include <string>
 #include <vector>
+
+#include "io/case_file.hpp"
 
 namespace rfmems {
 
@@ -17,6 +20,20 @@ struct DriverOptions {
   std::string output;  // empty: out/<case name>.h5
   bool json = false;
   bool quiet = false;
+};
+
+// The case a driver runs: loaded with the overrides, its directory (for relative mesh files),
+// its name (`name:`, else the directory's name), the result path (-o, else
+// out/<name>.h5), and the wall clock since loading began.
+struct DriverCase {
+  explicit DriverCase(const DriverOptions& options);
+  CaseFile file;
+  CaseNode root;
+  std::string dir, name, output;
+  double elapsed() const;
+
+ private:
+  std::chrono::steady_clock::time_point start_;
 };
 
 // Parses the command line and calls run(options), mapping exceptions to exit codes.

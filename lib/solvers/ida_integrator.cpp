@@ -92,6 +92,17 @@ void IdaIntegrator::initialize(Real t0, std::span<const Real> y0, std::span<cons
   initialized_ = true;
 }
 
+void IdaIntegrator::reinitialize(Real t0, std::span<const Real> y0, std::span<const Real> yp0) {
+  if (!initialized_) {
+    initialize(t0, y0, yp0);
+    return;
+  }
+  std::copy(y0.begin(), y0.end(), sundials::as_span(y_.get()).begin());
+  std::copy(yp0.begin(), yp0.end(), sundials::as_span(yp_.get()).begin());
+  t_ = t0;
+  check(IDAReInit(mem_, t0, y_.get(), yp_.get()), "IDAReInit");
+}
+
 void IdaIntegrator::correct_initial_conditions(Real t_first) {
   check(IDACalcIC(mem_, IDA_YA_YDP_INIT, t_first), "IDACalcIC");
   if (pending_) std::rethrow_exception(std::exchange(pending_, nullptr));

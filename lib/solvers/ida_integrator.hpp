@@ -49,6 +49,9 @@ class IdaIntegrator {
 
   // Sets the initial state (y' consistent with F(t0, y0, y0') = 0 is the caller's job).
   void initialize(Real t0, std::span<const Real> y0, std::span<const Real> yp0);
+  // Restarts from a new state (IDAReInit: order 1, history dropped; the linear solver, the
+  // options and the roots are kept). For partitioned schemes that redo or restart a step.
+  void reinitialize(Real t0, std::span<const Real> y0, std::span<const Real> yp0);
   // Makes the algebraic components of y and all of y' consistent (F(t0, y, y') = 0) with
   // the differential components of y held, by IDACalcIC (IDA_YA_YDP_INIT), aiming at the
   // first output time t_first (> t0). For DAEs whose algebraic part (quasi-static rotations,

@@ -15,9 +15,7 @@ VIBRATION="$SRC/cases/plate_vibration/case.yaml"
 
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
-failures=0
-pass() { echo "PASS: $1"; }
-fail() { echo "FAIL: $1"; failures=$((failures + 1)); }
+source "$SRC/test/drivers/common.sh"
 
 # ---- clamped square plate, a/h = 100: w = 1.269e-3 q a^4 / D, M_xx = 0.0229 q a^2 ----------
 if "$DRIVER" "$CLAMPED" -o "$WORK/clamped.h5" --json --quiet >"$WORK/clamped.json" 2>"$WORK/err"; then
@@ -73,19 +71,7 @@ else
   fail "plate vibration: $(cat "$WORK/err")"
 fi
 
-# ---- bad plate input: exit 2, one line naming file and key, no result file --------------------
-expect_input_error() {  # name, expected text, extra args...
-  local name="$1" text="$2"
-  shift 2
-  "$DRIVER" "$@" -o "$WORK/$name.h5" --quiet >/dev/null 2>"$WORK/$name.err"
-  local code=$?
-  if [ "$code" -eq 2 ] && [ "$(wc -l <"$WORK/$name.err")" -eq 1 ] &&
-     grep -q -- "$text" "$WORK/$name.err" && [ ! -e "$WORK/$name.h5" ]; then
-    pass "$name -> exit 2: $(cat "$WORK/$name.err")"
-  else
-    fail "$name: exit $code, stderr: $(cat "$WORK/$name.err")"
-  fi
-}
+# ---- bad plate input: exit 2, one line naming file and key, no result file (common.sh) ------
 expect_input_error zero_thickness "model.thickness" "$CLAMPED" --set model.thickness=0
 expect_input_error bad_plate_bc "boundaries.left.type" "$CLAMPED" --set boundaries.left.type=fixed
 expect_input_error displacement_without_w "boundaries.left.w" "$CLAMPED" \

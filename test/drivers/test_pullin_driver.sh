@@ -15,9 +15,7 @@ PLANE="$SRC/cases/switch_plane_laplace/case.yaml"
 
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
-failures=0
-pass() { echo "PASS: $1"; }
-fail() { echo "FAIL: $1"; failures=$((failures + 1)); }
+source "$SRC/test/drivers/common.sh"
 
 for p in atm kPa; do
   pressure=$([ $p = atm ] && echo "1 atm" || echo "1 kPa")
@@ -75,18 +73,6 @@ else
   fail "plane + Laplace: $(cat "$WORK/err") $(cat "$WORK/plane.json")"
 fi
 
-expect_input_error() {  # name, expected text, args...
-  local name="$1" text="$2"
-  shift 2
-  "$DRIVER" "$@" -o "$WORK/$name.h5" --quiet >/dev/null 2>"$WORK/$name.err"
-  local code=$?
-  if [ "$code" -eq 2 ] && [ "$(wc -l <"$WORK/$name.err")" -eq 1 ] &&
-     grep -q -- "$text" "$WORK/$name.err" && [ ! -e "$WORK/$name.h5" ]; then
-    pass "$name -> exit 2: $(cat "$WORK/$name.err")"
-  else
-    fail "$name: exit $code, stderr: $(cat "$WORK/$name.err")"
-  fi
-}
 expect_input_error negative_gap "actuation.gap" "$PLATE" --set "actuation.gap=-1 um"
 expect_input_error laplace_plate "actuation.electrostatics" "$PLATE" --set actuation.electrostatics=laplace
 expect_input_error electrode_off "actuation.electrode" "$PLATE" --set "actuation.electrode={x: [500 um, 600 um]}"

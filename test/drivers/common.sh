@@ -1,0 +1,20 @@
+# Shared by the driver tests (sourced, not run): PASS/FAIL counting and the bad-input contract.
+# The sourcing script sets DRIVER (the program) and WORK (a scratch directory).
+failures=0
+pass() { echo "PASS: $1"; }
+fail() { echo "FAIL: $1"; failures=$((failures + 1)); }
+
+# expect_input_error NAME TEXT ARGS...: the driver run with ARGS exits 2 with exactly one line
+# on stderr, "<program>: ..." containing TEXT, and leaves no result file.
+expect_input_error() {
+  local name="$1" text="$2"
+  shift 2
+  "$DRIVER" "$@" -o "$WORK/$name.h5" --quiet >/dev/null 2>"$WORK/$name.err"
+  local code=$?
+  if [ "$code" -eq 2 ] && [ "$(wc -l <"$WORK/$name.err")" -eq 1 ] &&
+     grep -q -- "^$(basename "$DRIVER"): .*$text" "$WORK/$name.err" && [ ! -e "$WORK/$name.h5" ]; then
+    pass "$name -> exit 2: $(cat "$WORK/$name.err")"
+  else
+    fail "$name: exit $code, stderr: $(cat "$WORK/$name.err")"
+  fi
+}
