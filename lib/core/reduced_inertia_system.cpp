@@ -8,6 +8,7 @@ namespace rfmems {
 
 ReducedInertiaSystem::ReducedInertiaSystem(SecondOrderOperator& op, std::vector<bool> quasi_static)
     : op_(op), n_(op.size()), mass_(op.mass_diagonal()), velocity_(op.size(), -1) {
+  if (quasi_static.empty()) quasi_static.assign(n_, false);  // no quasi-static component
   if (static_cast<Index>(quasi_static.size()) != n_)
     throw InputError(
         fmt::format("reduced inertia: {} flags for {} unknowns", quasi_static.size(), n_));

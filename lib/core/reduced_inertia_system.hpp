@@ -28,7 +28,8 @@ namespace rfmems {
 
 class ReducedInertiaSystem : public SystemOperator {
  public:
-  // quasi_static[i]: neglect the inertia of component i (its mass entry is ignored).
+  // quasi_static[i]: neglect the inertia of component i (its mass entry is ignored); empty:
+  // none (the full first-order form).
   ReducedInertiaSystem(SecondOrderOperator& op, std::vector<bool> quasi_static);
 
   Index size() const override { return n_ + static_cast<Index>(inertial_.size()); }

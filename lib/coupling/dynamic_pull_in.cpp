@@ -107,13 +107,23 @@ FreeResponse free_response(const std::vector<DynamicSample>& h) {
   return r;
 }
 
+std::function<Real(Real)> VoltageWaveform::at(Real amplitude) const {
+  const VoltageWaveform w = *this;
+  return [w, amplitude](Real t) {
+    const Real rise = w.rise_time > 0 ? std::clamp(t / w.rise_time, 0.0, 1.0) : 1.0;
+    const bool held = w.kind == Kind::Pulse && t >= w.release_time;
+    return amplitude * (held ? w.hold_fraction : (w.kind == Kind::Step ? 1.0 : rise));
+  };
+}
+
 DynamicPullIn find_dynamic_pull_in(SwitchSystem& system, Index control, Real low, Real high,
-                                   Real tolerance, const DynamicOptions& options) {
+                                   Real tolerance, const DynamicOptions& options,
+                                   const VoltageWaveform& waveform) {
   DynamicPullIn result;
   DynamicOptions quiet = options;
   quiet.output_interval = 0;
   auto run_at = [&](Real v) {
-    const DynamicRun run = run_dynamic(system, control, [v](Real) { return v; }, quiet);
+    const DynamicRun run = run_dynamic(system, control, waveform.at(v), quiet);
     ++result.runs;
     result.steps += run.stats.steps;
     result.residual_evals += run.stats.residual_evals;

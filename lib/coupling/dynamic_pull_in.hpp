@@ -69,9 +69,24 @@ struct DynamicPullIn {
   long steps = 0, residual_evals = 0;  // summed over the runs
 };
 
-// Bisection on a step voltage in [low, high] (low must not pull in, high must) until
-// high - low <= tolerance. SolverError if the bracket is wrong.
+// The shape of the applied voltage, scaled by its amplitude V:
+//   step   V for t >= 0
+//   ramp   V t / rise_time up to rise_time, then V
+//   pulse  a step (or ramp) held until release_time, then hold_fraction V (a hold voltage;
+//          0: switched off) - for release and hold studies
+struct VoltageWaveform {
+  enum class Kind { Step, Ramp, Pulse };
+  Kind kind = Kind::Step;
+  Real rise_time = 0;       // ramp (and the rise of a pulse); 0: a step
+  Real release_time = 0;    // pulse
+  Real hold_fraction = 0;   // pulse
+  std::function<Real(Real)> at(Real amplitude) const;
+};
+
+// Bisection on the amplitude of the waveform (a step by default) in [low, high] (low must
+// not pull in, high must) until high - low <= tolerance. SolverError if the bracket is wrong.
 DynamicPullIn find_dynamic_pull_in(SwitchSystem& system, Index control, Real low, Real high,
-                                   Real tolerance, const DynamicOptions& options);
+                                   Real tolerance, const DynamicOptions& options,
+                                   const VoltageWaveform& waveform = {});
 
 }  // namespace rfmems

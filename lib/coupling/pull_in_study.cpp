@@ -39,6 +39,20 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
   s.tolerance = dyn.get_quantity("tolerance", Dimension::Voltage, 0.5, Range::positive());
   if (dyn.has("voltages")) s.voltages = dyn.get_quantities("voltages", Dimension::Voltage);
   s.small_signal = dyn.get_real("small_signal", 0.3, Range{0.0, 0.9, false, false});
+  if (dyn.has("waveform")) {
+    const CaseNode w = dyn.child("waveform");
+    const std::string type = w.get_choice("type", {"step", "ramp", "pulse"});
+    s.waveform.kind = type == "step"   ? VoltageWaveform::Kind::Step
+                      : type == "ramp" ? VoltageWaveform::Kind::Ramp
+                                       : VoltageWaveform::Kind::Pulse;
+    s.waveform.rise_time = w.get_quantity("rise_time", Dimension::Time,
+                                          type == "ramp" ? -1.0 : 0.0, Range::non_negative());
+    w.require(type != "ramp" || s.waveform.rise_time > 0, "rise_time", "a ramp needs rise_time > 0");
+    if (type == "pulse") {
+      s.waveform.release_time = w.get_quantity("release_time", Dimension::Time, Range::positive());
+      s.waveform.hold_fraction = w.get_real("hold", 0.0, Range::closed(0.0, 1.0));
+    }
+  }
 
   const CaseNode solver = root.child_or_empty("solver");
   s.run.ida.rtol = solver.get_real("rtol", 1e-3, Range::open(0.0, 1.0));
@@ -103,13 +117,13 @@ PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& setting
   const Real low = settings.bracket_high > 0 ? settings.bracket_low : 0.8 * qs.pull_in_voltage;
   const Real high = settings.bracket_high > 0 ? settings.bracket_high : 1.02 * qs.pull_in_voltage;
   report.dynamic = find_dynamic_pull_in(system, scene.control, low, high, settings.tolerance,
-                                        settings.run);
+                                        settings.run, settings.waveform);
   report.has_dynamic = true;
   std::vector<Real> voltages = settings.voltages;
   if (voltages.empty()) voltages = {0.97 * report.dynamic.voltage, 1.03 * report.dynamic.voltage};
   for (std::size_t k = 0; k < voltages.size(); ++k) {
     const Real v = voltages[k];
-    DynamicRun run = run_dynamic(system, scene.control, [v](Real) { return v; }, [&] {
+    DynamicRun run = run_dynamic(system, scene.control, settings.waveform.at(v), [&] {
       DynamicOptions o = settings.run;
       o.stop_at_turning = false;  // the whole history up to end_time (or touch-down)
       return o;

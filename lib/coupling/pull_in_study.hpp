@@ -6,7 +6,9 @@
 //       points: 40                    # samples of the control deflection in (0, max_fraction g0]
 //       max_fraction: 0.9
 //       voltage_tolerance: 0.01 V     # on the fold voltage
-//     dynamic:                        # step voltage from rest, IDA with contact/turning roots
+//     dynamic:                        # a voltage waveform from rest, IDA with contact/turning roots
+//       waveform: {type: step}        # step (default) | ramp {rise_time} | pulse {rise_time,
+//                                     # release_time, hold: fraction of the amplitude}
 //       end_time: 50 us               # a run that has not touched down by then did not pull in
 //       contact_gap: 0.1 um           # touch-down at this gap (default 2 % of the gap)
 //       bracket: [150 V, 190 V]       # bisection bracket (default [0.8, 1.02] x the
@@ -45,6 +47,7 @@ struct PullInSettings {
   Real tolerance = 0.5;
   std::vector<Real> voltages;         // empty: around the dynamic V_PI
   Real small_signal = 0.3;            // fraction of the quasi-static V_PI (0: none)
+  VoltageWaveform waveform;
 };
 
 PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& scene);
