@@ -64,7 +64,7 @@ def main():
             axes[0][col].text(0.02, 0.02, "failed at touch-down: " + ", ".join(
                 f"{r['method']} dt {r['dt']:.0e}" for r in failed if "dt" in r),
                 transform=axes[0][col].transAxes, fontsize=6)
-    axes[0][0].legend(fontsize=7)
+    axes[0][0].legend(fontsize=7, loc="upper right")
     fig.tight_layout()
     fig.savefig(args.output, dpi=120)
 
