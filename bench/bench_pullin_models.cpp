@@ -18,8 +18,10 @@
 //    own quasi-static V_PI, no gas, IDA rtol 1e-3, atol 1e-4 g0, BDF orders <= 2, contact at
 //    2 % of g0, end 40 us): a plane beam + Laplace dynamic model is not implemented, so the
 //    plane beam here is the same case with electrostatics: parallel_plate (the pull_in_study
-//    does the same for a laplace scene's dynamic study). Plate vs plane + parallel-plate on
-//    the same mesh sequences, bisection to --dyn-tolerance.
+//    does the same for a laplace scene's dynamic study). Plate (20, 40, 80 cells long) vs
+//    plane + parallel-plate (25, 50, 100), bisection to --dyn-tolerance (0.1 V). The
+//    three-mesh Richardson value is reported as computed; with a pre-asymptotic coarsest mesh
+//    (the 25 x 2 beam) it is meaningless (docs/BENCHMARKS.md sec. 5c).
 // 3. The default case (cases/switch_plate/case.yaml as the driver runs it: plate 40 x 4 +
 //    parallel-plate + Reynolds gas at 1 atm; quasi-static curve, then bisection to 0.5 V
 //    between 0.8 and 1.02 x the quasi-static V_PI): wall and CPU time of the scene build, the
