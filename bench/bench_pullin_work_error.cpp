@@ -1,0 +1,446 @@
+// bench_pullin_work_error: work against error for the dynamic pull-in TIME of the fixed-fixed
+// plate switch of cases/switch_plate (Mindlin-Reissner plate 40 x 4 cells, L = 400 um,
+// h = 4 um, gap 3.75 um, parallel-plate electrostatics over the whole length), under a step
+// voltage above the dynamic pull-in voltage, without gas and with the Reynolds squeeze film at
+// 1 atm (the monolithic plate + film system, coupling/squeeze_film_switch_system.hpp).
+//
+// The quantity: t_PI, the time at which the smallest gap falls to the contact gap (2 % of
+// g0), found by IDA's root finding on min_gap - contact_gap (coupling/dynamic_pull_in.hpp:
+// run_dynamic ends there and reports DynamicRun::pull_in_time). Near the dynamic pull-in
+// voltage the membrane lingers by the unstable equilibrium, so t_PI is a sensitive measure of
+// the whole trajectory, not only of its end.
+//
+// The integrators, each timed from building the IDA instance to touch-down:
+//   ida_o2, ida_o5   IDA adaptive, BDF orders <= 2 and <= 5, rtol 1e-2 ... 1e-7,
+//                    atol = 1e-4 x rtol x g0 on every component (the case default at
+//                    rtol 1e-3 is 1e-4 g0: the same scaling).
+//   be, bdf2         fixed step dt (IdaOptions::fixed_step, max_order 1 and 2): IDA with
+//                    hmin = hmax = dt and an error test that never rejects. The contact root
+//                    is still located by IDA's interpolant within the last step.
+// The reference: IDA at --ref-rtol (default 1e-9) with max_order 5 and with max_order 2; their
+// difference is reported as the reference's uncertainty, and a Richardson extrapolation of
+// the two finest BDF2 runs as an independent check. Error = |t - t_ref| / t_ref.
+//
+// Work: residual evaluations (with KLU and an exact Jacobian this is the Newton iteration
+// count plus IDACalcIC's), Jacobian evaluations, steps and wall time. The summary line gives,
+// for each gas setting and for 1 % and 0.1 % error, the cheapest run of each family (adaptive:
+// IDA orders <= 2 and <= 5; fixed: BE and BDF2) that meets it, and the cheapest from which
+// every finer run of its method meets it too (see choose()), with the ratios fixed / adaptive.
+// No interpolation between runs: the errors are not monotone in the tolerance, and a fixed
+// step between two good ones may fail at touch-down.
+//
+// Output: one JSON object per line on stdout; progress on stderr.
+//   bench_pullin_work_error [--quick] [--voltage 180] [--gas none reynolds] [--cap 60]
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "coupling/dynamic_pull_in.hpp"
+#include "core/error.hpp"
+#include "coupling/switch_scene.hpp"
+#include "io/case_file.hpp"
+#include "solvers/ida_integrator.hpp"
+
+using namespace rfmems;
+using Json = nlohmann::ordered_json;
+namespace fs = std::filesystem;
+
+namespace {
+
+double now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+void emit(const Json& j) { std::cout << j.dump() << std::endl; }
+
+// The repository's cases/ directory, found from this source file's path (CMake compiles it by
+// absolute path); --cases overrides it.
+std::string default_cases_dir() {
+  return (fs::path(__FILE__).parent_path().parent_path() / "cases").string();
+}
+
+struct Run {
+  std::string failure;  // the solver's message if the run failed
+  bool pulled_in = false;
+  double t_pi = 0, seconds = 0;
+  IntegratorStats stats;
+};
+
+// One step-voltage run from rest to touch-down (or end_time).
+Run pull_in_run(SwitchSystem& system, Index control, double voltage, double gap,
+                const IdaOptions& ida) {
+  DynamicOptions o;
+  o.end_time = 40e-6;
+  o.contact_gap = 0.02 * gap;
+  o.stop_at_turning = false;  // above V_dyn it must touch down; a turn would be reported as such
+  o.output_interval = 0;
+  o.ida = ida;
+  o.ida.max_steps = 100000000;
+  const double t0 = now();
+  Run run;
+  try {
+    const DynamicRun r = run_dynamic(system, control, [voltage](Real) { return voltage; }, o);
+    run.pulled_in = r.pulled_in;
+    run.t_pi = r.pull_in_time;
+    run.stats = r.stats;
+  } catch (const SolverError& e) {
+    // A fixed step cannot be retried smaller: IDA gives up when Newton fails at h = hmin.
+    run.failure = e.what();
+  }
+  run.seconds = now() - t0;
+  return run;
+}
+
+// Where an adaptive run spends its steps: the same run as run_dynamic (rest, IDACalcIC, contact
+// root) with IDA stopped every `window` to read its step count and current step size.
+Json step_profile(SwitchSystem& system, double voltage, double gap, const IdaOptions& options,
+                  double window) {
+  system.actuation().set_voltage_squared([voltage](Real) { return voltage * voltage; });
+  std::vector<Real> y, yp;
+  system.initial_state(0.0, y, yp);
+  IdaOptions o = options;
+  o.max_steps = 100000000;
+  IdaIntegrator ida(system, o);
+  ida.initialize(0.0, y, yp);
+  ida.correct_initial_conditions(window);
+  const double contact = 0.02 * gap;
+  ida.set_roots(1, [&](Real, std::span<const Real> yy, std::span<const Real>, std::span<Real> g) {
+    g[0] = system.min_gap(yy) - contact;
+  });
+  Json rows = Json::array();
+  long before = 0;
+  for (double t_out = window;; t_out += window) {
+    const IdaIntegrator::Status status = ida.advance(t_out);
+    const IntegratorStats st = ida.stats();
+    rows.push_back({{"t_end_s", ida.time()},
+                    {"steps", st.steps - before},
+                    {"mean_step_s", window / std::max(1L, st.steps - before)},
+                    {"last_step_s", st.last_step},
+                    {"order", st.last_order},
+                    {"min_gap_over_g0", system.min_gap(ida.y()) / gap}});
+    before = st.steps;
+    if (status == IdaIntegrator::Status::Root || t_out > 40e-6) break;
+  }
+  return rows;
+}
+
+Json stats_json(const Run& run) {
+  if (!run.failure.empty()) return Json{{"failed", run.failure}, {"wall_s", run.seconds}};
+  return Json{{"pulled_in", run.pulled_in},       {"t_pi_s", run.t_pi},
+              {"wall_s", run.seconds},            {"steps", run.stats.steps},
+              {"residual_evals", run.stats.residual_evals},
+              {"jacobian_evals", run.stats.jacobian_evals},
+              {"newton_iters", run.stats.newton_iters},
+              {"error_test_fails", run.stats.error_test_fails},
+              {"newton_fails", run.stats.newton_fails},
+              {"last_order", run.stats.last_order}};
+}
+
+// A finished run as the summary sees it (failed runs have infinite error), in the order the
+// runs were made: from the loosest tolerance / largest step to the finest.
+struct Point {
+  std::string param;
+  double evals, wall, error;
+};
+
+// Per method and target error: the cheapest run that meets the target, and the cheapest from
+// which every finer run of the method meets it too ("reliable": a user who picks that setting
+// or any finer one gets the accuracy; a fixed step that happens to land its last step well
+// while the next smaller ones fail at touch-down is cheapest but not reliable).
+struct Choice {
+  const Point* cheapest = nullptr;
+  const Point* reliable = nullptr;
+};
+
+Choice choose(const std::vector<Point>& runs, double target) {
+  Choice c;
+  for (const Point& p : runs)
+    if (p.error <= target && (!c.cheapest || p.evals < c.cheapest->evals)) c.cheapest = &p;
+  for (std::size_t k = runs.size(); k-- > 0;) {
+    if (!(runs[k].error <= target)) break;
+    c.reliable = &runs[k];
+  }
+  return c;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Work against error of IDA and fixed-step BDF for the dynamic pull-in time of the "
+               "plate switch (JSON lines)"};
+  std::string cases = default_cases_dir();
+  double voltage = 180.0, cap = 40.0, ref_rtol = 1e-9, ref_o2_rtol = 0;
+  std::vector<std::string> gases{"none", "reynolds"};
+  std::vector<double> rtols{1e-1, 3e-2, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6};
+  std::vector<double> o5_rtols{1e-2, 1e-4, 1e-6}, profile_rtols{1e-2, 1e-4};
+  std::vector<double> dts{1e-7, 5e-8, 2e-8, 1e-8, 5e-9, 2e-9, 1e-9, 5e-10, 2e-10};
+  bool quick = false;
+  app.add_option("--cases", cases, "the repository's cases/ directory");
+  app.add_option("--voltage", voltage, "step voltage [V] (dynamic V_PI: ~171 V vacuum, ~174 V at 1 atm)");
+  app.add_option("--gas", gases, "gas models to run: none, reynolds");
+  app.add_option("--rtols", rtols, "IDA relative tolerances, max_order 2");
+  app.add_option("--o5-rtols", o5_rtols, "IDA relative tolerances, max_order 5");
+  app.add_option("--profile-rtols", profile_rtols, "step profiles of max_order 2 at these rtols");
+  app.add_option("--dts", dts, "fixed steps [s]");
+  app.add_option("--ref-rtol", ref_rtol, "tolerance of the reference (max_order 5)");
+  app.add_option("--ref-o2-rtol", ref_o2_rtol, "also check the reference with max_order 2 at this rtol");
+  app.add_option("--cap", cap, "skip runs predicted to take longer than this [s]");
+  app.add_flag("--quick", quick, "smoke run: few tolerances and steps, reference at 1e-7");
+  CLI11_PARSE(app, argc, argv);
+  if (quick) {
+    rtols = {1e-2, 1e-3};
+    o5_rtols = {1e-2};
+    profile_rtols = {1e-2};
+    dts = {5e-9, 2e-9};
+    ref_rtol = 1e-6;
+    cap = 10;
+  }
+
+  Json summary_all = Json::array();
+  for (const std::string& gas : gases) {
+    const std::string case_path = cases + "/switch_plate/case.yaml";
+    const CaseFile cf = CaseFile::load(case_path, {"gas.model=" + gas});
+    SwitchScene scene =
+        build_switch_scene(cf.root(), fs::path(case_path).parent_path().string(), AnalysisType::Transient);
+    const std::unique_ptr<SwitchSystem> system = scene.make_transient_system();
+    const double gap = scene.gap;
+    Json common{{"bench", "pullin_work_error"},
+                {"case", "switch_plate"},
+                {"gas", gas},
+                {"voltage", voltage},
+                {"cells", scene.structure->structure_mesh().n_cells()},
+                {"unknowns", system->size()},
+                {"contact_gap", 0.02 * gap}};
+    std::fprintf(stderr, "gas %s: %lld unknowns, step %.1f V\n", gas.c_str(),
+                 static_cast<long long>(system->size()), voltage);
+
+    // Unit costs (best of 20 / 5) at a deflected state, to read the work counts.
+    {
+      std::vector<Real> y, yp;
+      system->initial_state(0.0, y, yp);
+      for (Index i = 0; i < scene.structure->structure().size(); i += 3) y[i] = -0.3 * gap;
+      system->actuation().set_voltage_squared([voltage](Real) { return voltage * voltage; });
+      std::vector<Real> r(y.size()), jac(system->jacobian_pattern().nnz());
+      double t_res = 1e300, t_jac = 1e300;
+      for (int i = 0; i < 20; ++i) {
+        const double t1 = now();
+        system->residual(0.0, y, yp, r);
+        t_res = std::min(t_res, now() - t1);
+      }
+      for (int i = 0; i < 5; ++i) {
+        std::fill(jac.begin(), jac.end(), 0.0);
+        const double t1 = now();
+        system->jacobian(0.0, 1e7, y, yp, jac);
+        t_jac = std::min(t_jac, now() - t1);
+      }
+      Json j = common;
+      j["variant"] = "costs";
+      j["jacobian_nnz"] = jac.size();
+      j["t_residual_eval_s"] = t_res;
+      j["t_jacobian_eval_s"] = t_jac;
+      emit(j);
+    }
+
+    // ---- reference ---------------------------------------------------------------------
+    auto adaptive = [&](double rtol, int order) {
+      IdaOptions o;
+      o.rtol = rtol;
+      o.atol = 1e-4 * rtol * gap;
+      o.max_order = order;
+      return o;
+    };
+    // The reference (order <= 5 at ref_rtol) and two checks of it: order <= 5 at 10 x
+    // ref_rtol, and optionally order <= 2 at --ref-o2-rtol (order 2 needs ~6x the steps of
+    // order 5 at the same tolerance here).
+    struct RefSpec {
+      const char* name;
+      double rtol;
+      int order;
+    };
+    std::vector<RefSpec> specs{{"reference", ref_rtol, 5}, {"reference_loose", 10 * ref_rtol, 5}};
+    if (ref_o2_rtol > 0) specs.push_back({"reference_o2", ref_o2_rtol, 2});
+    std::vector<Run> refs;
+    for (const RefSpec& spec : specs) {
+      std::fprintf(stderr, "  %s: order <= %d, rtol %.0e ...\n", spec.name, spec.order, spec.rtol);
+      refs.push_back(pull_in_run(*system, scene.control, voltage, gap, adaptive(spec.rtol, spec.order)));
+      Json j = common;
+      j["variant"] = spec.name;
+      j["method"] = spec.order == 5 ? "ida_o5" : "ida_o2";
+      j["rtol"] = spec.rtol;
+      j.update(stats_json(refs.back()));
+      emit(j);
+      std::fprintf(stderr, "    t_PI = %.12e s, %ld steps, %.2f s\n", refs.back().t_pi,
+                   refs.back().stats.steps, refs.back().seconds);
+    }
+    const double t_ref = refs[0].t_pi;
+    if (!refs[0].pulled_in) {
+      std::fprintf(stderr, "  %.1f V does not pull in within 40 us: raise --voltage\n", voltage);
+      return 1;
+    }
+    {
+      Json j = common;
+      j["variant"] = "reference_check";
+      j["t_ref_s"] = t_ref;
+      for (std::size_t k = 1; k < specs.size(); ++k)
+        j[std::string(specs[k].name) + "_vs_ref_rel"] = std::abs(refs[k].t_pi - t_ref) / t_ref;
+      emit(j);
+    }
+
+    // ---- the runs ------------------------------------------------------------------------
+    std::map<std::string, std::vector<Point>> points;
+    auto record = [&](const std::string& method, Json params, const Run& run) {
+      Json j = common;
+      j["variant"] = "run";
+      j["method"] = method;
+      j.update(params);
+      j.update(stats_json(run));
+      const double err = std::abs(run.t_pi - t_ref) / t_ref;
+      if (run.pulled_in) j["error"] = err;
+      const std::string param = params.contains("rtol") ? "rtol " + params["rtol"].dump()
+                                                        : "dt " + params["dt"].dump();
+      points[method].push_back({param, static_cast<double>(run.stats.residual_evals), run.seconds,
+                                run.pulled_in ? err : std::numeric_limits<double>::infinity()});
+      emit(j);
+      std::fprintf(stderr, "  %-6s %s: t_PI %.9e s, error %.2e, %ld res, %ld jac, %ld steps, %.3f s\n",
+                   method.c_str(), params.dump().c_str(), run.t_pi, err,
+                   run.stats.residual_evals, run.stats.jacobian_evals, run.stats.steps, run.seconds);
+    };
+    for (int order : {2, 5}) {
+      const std::string method = order == 2 ? "ida_o2" : "ida_o5";
+      double last_time = 0, last_steps = 0, before_steps = 0;
+      for (double rtol : order == 2 ? rtols : o5_rtols) {
+        Json params{{"rtol", rtol}, {"atol", 1e-4 * rtol * gap}, {"max_order", order}};
+        const double predicted = before_steps > 0 ? last_time * last_steps / before_steps : last_time;
+        if (predicted > cap) {
+          Json j = common;
+          j["variant"] = "skipped";
+          j["method"] = method;
+          j.update(params);
+          j["predicted_wall_s"] = predicted;
+          emit(j);
+          continue;
+        }
+        const Run run = pull_in_run(*system, scene.control, voltage, gap, adaptive(rtol, order));
+        record(method, params, run);
+        before_steps = last_steps;
+        last_steps = static_cast<double>(run.stats.steps);
+        last_time = run.seconds;
+      }
+    }
+    std::map<int, std::map<double, double>> fixed_t;  // order -> dt -> t_PI
+    for (int order : {1, 2}) {
+      const std::string method = order == 1 ? "be" : "bdf2";
+      double last_time = 0, last_dt = 0;
+      for (double dt : dts) {
+        Json params{{"dt", dt}, {"max_order", order}};
+        const double predicted = last_dt > 0 ? last_time * last_dt / dt : 0;  // cost ~ 1/dt
+        if (predicted > cap) {
+          Json j = common;
+          j["variant"] = "skipped";
+          j["method"] = method;
+          j.update(params);
+          j["predicted_wall_s"] = predicted;
+          emit(j);
+          continue;
+        }
+        IdaOptions o;
+        o.fixed_step = dt;
+        o.max_order = order;
+        const Run run = pull_in_run(*system, scene.control, voltage, gap, o);
+        record(method, params, run);
+        last_time = run.seconds;
+        last_dt = dt;
+        if (run.pulled_in) fixed_t[order][dt] = run.t_pi;
+      }
+    }
+    // Richardson check of the reference from the two finest runs of each fixed-step family,
+    // and the observed order from the three finest.
+    for (auto& [order, runs] : fixed_t) {
+      if (runs.size() < 2) continue;
+      auto fine = runs.begin(), coarse = std::next(fine);
+      const double r = coarse->first / fine->first, rp = std::pow(r, order);
+      const double t_rich = (rp * fine->second - coarse->second) / (rp - 1);
+      Json j = common;
+      j["variant"] = "richardson_check";
+      j["method"] = order == 1 ? "be" : "bdf2";
+      j["dt_fine"] = fine->first;
+      j["dt_coarse"] = coarse->first;
+      j["t_richardson_s"] = t_rich;
+      j["richardson_vs_ref_rel"] = std::abs(t_rich - t_ref) / t_ref;
+      if (runs.size() >= 3) {
+        auto third = std::next(coarse);
+        const double e1 = coarse->second - fine->second, e2 = third->second - coarse->second;
+        j["observed_order"] = std::log(std::abs(e2 / e1)) / std::log(third->first / coarse->first);
+      }
+      emit(j);
+    }
+
+    // ---- where the adaptive steps go ------------------------------------------------------
+    for (double rtol : profile_rtols) {
+      Json j = common;
+      j["variant"] = "step_profile";
+      j["method"] = "ida_o2";
+      j["rtol"] = rtol;
+      j["window_s"] = 0.5e-6;
+      j["windows"] = step_profile(*system, voltage, gap, adaptive(rtol, 2), 0.5e-6);
+      emit(j);
+    }
+
+    // ---- work at 1 % and 0.1 % -----------------------------------------------------------
+    Json s = common;
+    s["variant"] = "summary";
+    s["t_ref_s"] = t_ref;
+    for (double target : {1e-2, 1e-3}) {
+      Json t;
+      auto describe = [](const Point* p) {
+        return p ? Json{{"param", p->param}, {"residual_evals", p->evals}, {"wall_s", p->wall},
+                        {"error", p->error}}
+                 : Json(nullptr);
+      };
+      Json per = Json::object();
+      for (const char* m : {"ida_o2", "ida_o5", "be", "bdf2"}) {
+        const Choice c = choose(points[m], target);
+        per[m] = {{"cheapest", describe(c.cheapest)}, {"reliable", describe(c.reliable)}};
+      }
+      t["per_method"] = per;
+      for (const bool reliable : {false, true}) {
+        auto family = [&](std::initializer_list<const char*> members) {
+          const Point* best = nullptr;
+          for (const char* m : members) {
+            const Choice c = choose(points[m], target);
+            const Point* p = reliable ? c.reliable : c.cheapest;
+            if (p && (!best || p->evals < best->evals)) best = p;
+          }
+          return best;
+        };
+        const Point* a = family({"ida_o2", "ida_o5"});
+        const Point* f = family({"be", "bdf2"});
+        Json r{{"adaptive", describe(a)}, {"fixed", describe(f)}};
+        if (a && f) {
+          r["ratio_fixed_over_adaptive_evals"] = f->evals / a->evals;
+          r["ratio_fixed_over_adaptive_wall"] = f->wall / a->wall;
+          std::fprintf(stderr, "  error %g (%s): adaptive %s %.0f evals / %.3f s, fixed %s %.0f evals / %.3f s: "
+                       "fixed/adaptive %.2f (evals), %.2f (wall)\n",
+                       target, reliable ? "reliable" : "cheapest", a->param.c_str(), a->evals, a->wall,
+                       f->param.c_str(), f->evals, f->wall, f->evals / a->evals, f->wall / a->wall);
+        }
+        t[reliable ? "reliable" : "cheapest"] = r;
+      }
+      char key[16];
+      std::snprintf(key, sizeof key, "at_%g", target);
+      s[key] = t;
+    }
+    emit(s);
+  }
+  return 0;
+}
