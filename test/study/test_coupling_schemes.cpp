@@ -1,6 +1,6 @@
 // Coupling schemes on the same scene: the plate switch of cases/switch_plate (plate +
 // parallel-plate + Reynolds film at 1 atm) pulled in by a 180 V step. The pull-in time from the
-// monolithic system (one IDA system, exact coupled Jacobian; reference at rtol 1e-8) against the
+// monolithic system (one IDA system, exact coupled Jacobian; reference at rtol 1e-6) against the
 // partitioned schemes (coupling/partitioned_switch.hpp) at several macro steps H:
 //  - strongly coupled (Aitken): converges to the monolithic answer, error O(H^2);
 //  - staggered (one pass): first order in H (the lagged interface).
@@ -90,7 +90,7 @@ TEST(CouplingSchemes, PartitionedConvergesToMonolithic) {
               ref.time * 1e6, ref.residual_evals, ref.seconds,
               std::abs(mono.time / ref.time - 1), mono.residual_evals, mono.seconds);
   double error_prev[2] = {0, 0};
-  for (const double H : {0.4e-6, 0.2e-6}) {
+  for (const double H : {0.2e-6, 0.1e-6}) {
     int k = 0;
     for (const CouplingScheme scheme : {CouplingScheme::Staggered, CouplingScheme::StronglyCoupled}) {
       const Result r = partitioned(scheme, H);
@@ -101,10 +101,10 @@ TEST(CouplingSchemes, PartitionedConvergesToMonolithic) {
                   r.time * 1e6, error, r.iterations, r.residual_evals, r.seconds);
       if (error_prev[k] > 0)
         std::printf("  observed order %.2f\n", std::log(error_prev[k] / error) / std::log(2.0));
-      if (H < 0.3e-6 && scheme == CouplingScheme::StronglyCoupled) {
+      if (H < 0.15e-6 && scheme == CouplingScheme::StronglyCoupled) {
         EXPECT_LT(error, 2e-3);
       }
-      if (H < 0.3e-6 && scheme == CouplingScheme::Staggered) {
+      if (H < 0.15e-6 && scheme == CouplingScheme::Staggered) {
         EXPECT_GT(std::log(error_prev[k] / error) / std::log(2.0), 0.7);
       }
       error_prev[k++] = error;
