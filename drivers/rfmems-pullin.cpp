@@ -77,9 +77,9 @@ int run(const DriverOptions& options) {
                 qs.pull_in_voltage, qs.pull_in_displacement * 1e6,
                 -100 * qs.pull_in_displacement / scene.gap);
     if (report.has_dynamic)
-      std::printf("  dynamic pull-in (step voltage) at %.2f V (%.3f of quasi-static; %.2f V does "
+      std::printf("  dynamic pull-in (%s voltage) at %.2f V (%.3f of quasi-static; %.2f V does "
                   "not), pull-in time %.3f us; %d runs\n",
-                  report.dynamic.voltage, report.dynamic.voltage / qs.pull_in_voltage,
+                  report.waveform.c_str(), report.dynamic.voltage, report.dynamic.voltage / qs.pull_in_voltage,
                   report.dynamic.lower, report.dynamic.pull_in_time * 1e6, report.dynamic.runs);
     std::printf("wrote %s (%.1f s)\n", writer.path().c_str(), elapsed());
   }

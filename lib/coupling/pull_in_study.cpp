@@ -119,6 +119,8 @@ PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& setting
   report.dynamic = find_dynamic_pull_in(system, scene.control, low, high, settings.tolerance,
                                         settings.run, settings.waveform);
   report.has_dynamic = true;
+  static const char* names[] = {"step", "ramp", "pulse"};
+  report.waveform = names[static_cast<int>(settings.waveform.kind)];
   std::vector<Real> voltages = settings.voltages;
   if (voltages.empty()) voltages = {0.97 * report.dynamic.voltage, 1.03 * report.dynamic.voltage};
   for (std::size_t k = 0; k < voltages.size(); ++k) {
@@ -165,7 +167,8 @@ Json pull_in_summary(const SwitchScene& scene, const PullInReport& report) {
                     {"steps", d.steps},
                     {"residual_evals", d.residual_evals},
                     {"electrostatics", "parallel_plate"},
-                    {"gas", scene.film ? "reynolds" : "none"}};
+                    {"gas", scene.film ? "reynolds" : "none"},
+                    {"waveform", report.waveform}};
     Json histories = Json::array();
     for (const auto& [v, run] : report.histories)
       histories.push_back({{"voltage", v},

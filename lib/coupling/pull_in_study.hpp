@@ -55,6 +55,7 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
 struct PullInReport {
   QuasiStaticPullIn quasi_static;
   bool has_dynamic = false;
+  std::string waveform;               // step, ramp or pulse
   DynamicPullIn dynamic;
   std::vector<std::pair<Real, DynamicRun>> histories;  // (voltage, run)
   Real small_signal_voltage = 0;

@@ -73,11 +73,28 @@ else
   fail "plane + Laplace: $(cat "$WORK/err") $(cat "$WORK/plane.json")"
 fi
 
+# A slow ramp (60 us, ~8 periods) pulls in at nearly the quasi-static voltage: the dynamic
+# overshoot of a step is what lowers the dynamic pull-in voltage.
+if "$DRIVER" "$PLATE" --set gas.model=none --set "pull_in.dynamic.waveform={type: ramp, rise_time: 60 us}" \
+    --set "pull_in.dynamic.end_time=80 us" --set "pull_in.dynamic.bracket=[170 V, 200 V]" \
+    --set pull_in.dynamic.small_signal=0 --set "pull_in.dynamic.voltages=[185 V]" \
+    -o "$WORK/ramp.h5" --json --quiet >"$WORK/ramp.json" 2>"$WORK/err" &&
+   $PY -c '
+import json, sys
+d = json.load(open(sys.argv[1]))["pull_in"]["dynamic"]
+assert d["waveform"] == "ramp" and 0.98 < d["ratio_to_quasi_static"] < 1.0, d
+' "$WORK/ramp.json"; then
+  pass "a slow voltage ramp pulls in within 2 % below the quasi-static voltage"
+else
+  fail "ramp: $(cat "$WORK/err") $(cat "$WORK/ramp.json")"
+fi
+
 expect_input_error negative_gap "actuation.gap" "$PLATE" --set "actuation.gap=-1 um"
 expect_input_error laplace_plate "actuation.electrostatics" "$PLATE" --set actuation.electrostatics=laplace
 expect_input_error electrode_off "actuation.electrode" "$PLATE" --set "actuation.electrode={x: [500 um, 600 um]}"
 expect_input_error gas_plane "gas.model" "$PLANE" --set "gas={model: reynolds, pressure: 1 atm}"
 expect_input_error bad_mode "pull_in.mode" "$PLATE" --set pull_in.mode=static
+expect_input_error ramp_without_rise "rise_time" "$PLATE" --set "pull_in.dynamic.waveform={type: ramp}"
 expect_input_error control_outside "actuation.control" "$PLATE" --set "actuation.control=[1 m, 0 m]"
 
 echo "$failures failure(s)"
