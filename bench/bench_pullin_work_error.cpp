@@ -76,7 +76,10 @@ struct Run {
   IntegratorStats stats;
 };
 
-// One step-voltage run from rest to touch-down (or end_time).
+// The voltage's rise time (--rise-time; 0: a step).
+double g_rise_time = 0;
+
+// One step-voltage (or ramped, with --rise-time) run from rest to touch-down (or end_time).
 Run pull_in_run(SwitchSystem& system, Index control, double voltage, double gap,
                 const IdaOptions& ida) {
   DynamicOptions o;
@@ -89,7 +92,12 @@ Run pull_in_run(SwitchSystem& system, Index control, double voltage, double gap,
   const double t0 = now();
   Run run;
   try {
-    const DynamicRun r = run_dynamic(system, control, [voltage](Real) { return voltage; }, o);
+    VoltageWaveform waveform;
+    if (g_rise_time > 0) {
+      waveform.kind = VoltageWaveform::Kind::Ramp;
+      waveform.rise_time = g_rise_time;
+    }
+    const DynamicRun r = run_dynamic(system, control, waveform.at(voltage), o);
     run.pulled_in = r.pulled_in;
     run.t_pi = r.pull_in_time;
     run.stats = r.stats;
@@ -186,6 +194,8 @@ int main(int argc, char** argv) {
   std::vector<double> dts{1e-7, 5e-8, 2e-8, 1e-8, 5e-9, 2e-9, 1e-9, 5e-10, 2e-10};
   bool quick = false;
   app.add_option("--cases", cases, "the repository's cases/ directory");
+  app.add_option("--rise-time", g_rise_time,
+                 "linear voltage ramp over this time [s] instead of a step (default 0: step)");
   app.add_option("--voltage", voltage, "step voltage [V] (dynamic V_PI: ~171 V vacuum, ~174 V at 1 atm)");
   app.add_option("--gas", gases, "gas models to run: none, reynolds");
   app.add_option("--rtols", rtols, "IDA relative tolerances, max_order 2");
