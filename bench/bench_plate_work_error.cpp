@@ -60,20 +60,22 @@
 #include "core/reduced_inertia_system.hpp"
 #include "solvers/ida_integrator.hpp"
 #include "solvers/static_solve.hpp"
+#include "bench_support.hpp"
 
 using namespace rfmems;
 using Json = nlohmann::ordered_json;
 
 namespace {
 
+using rfmems::bench::cpu_now;
+using rfmems::bench::default_cases_dir;
+using rfmems::bench::emit;
+using rfmems::bench::now;
+
 constexpr double kLength = 400e-6, kThickness = 2e-6, kE = 200e9, kNu = 0.0, kRho = 7854,
                  kPressure = -1.0;
 
-double now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
-void emit(const Json& j) { std::cout << j.dump() << std::endl; }
 
 // Built in place: the operator keeps a reference to the mesh.
 struct Strip {

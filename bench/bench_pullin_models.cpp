@@ -56,6 +56,7 @@
 #include "coupling/switch_scene.hpp"
 #include "io/case_file.hpp"
 #include "physics/elasticity/elasticity_scene.hpp"
+#include "bench_support.hpp"
 
 using namespace rfmems;
 using OJson = nlohmann::ordered_json;  // rfmems::Json is unordered
@@ -63,14 +64,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-double now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-double cpu_now() {
-  timespec ts;
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
+using rfmems::bench::cpu_now;
+using rfmems::bench::default_cases_dir;
+using rfmems::bench::emit;
+using rfmems::bench::now;
+
 
 struct Timer {
   double wall0 = now(), cpu0 = cpu_now();
@@ -78,11 +76,7 @@ struct Timer {
   double cpu() const { return cpu_now() - cpu0; }
 };
 
-void emit(const OJson& j) { std::cout << j.dump() << std::endl; }
 
-std::string default_cases_dir() {
-  return (fs::path(__FILE__).parent_path().parent_path() / "cases").string();
-}
 
 std::string cells(int nx, int ny) { return "mesh.cells=[" + std::to_string(nx) + "," + std::to_string(ny) + "]"; }
 

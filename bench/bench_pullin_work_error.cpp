@@ -50,6 +50,7 @@
 #include "coupling/switch_scene.hpp"
 #include "io/case_file.hpp"
 #include "solvers/ida_integrator.hpp"
+#include "bench_support.hpp"
 
 using namespace rfmems;
 using Json = nlohmann::ordered_json;
@@ -57,17 +58,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-double now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
+using rfmems::bench::cpu_now;
+using rfmems::bench::default_cases_dir;
+using rfmems::bench::emit;
+using rfmems::bench::now;
 
-void emit(const Json& j) { std::cout << j.dump() << std::endl; }
 
-// The repository's cases/ directory, found from this source file's path (CMake compiles it by
-// absolute path); --cases overrides it.
-std::string default_cases_dir() {
-  return (fs::path(__FILE__).parent_path().parent_path() / "cases").string();
-}
+
 
 struct Run {
   std::string failure;  // the solver's message if the run failed

@@ -54,17 +54,20 @@
 #include "solvers/kinsol_solver.hpp"
 #include "solvers/klu_factorization.hpp"
 #include "solvers/static_solve.hpp"
+#include "bench_support.hpp"
 
 using namespace rfmems;
 using Json = nlohmann::ordered_json;
 
 namespace {
 
+using rfmems::bench::cpu_now;
+using rfmems::bench::default_cases_dir;
+using rfmems::bench::emit;
+using rfmems::bench::now;
+
 constexpr double kLength = 400e-6, kLoad = 1e3, kE = 200e9, kNu = 0.31, kTolerance = 1e-8;
 
-double now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
 // Best wall time of `repeats` calls of f (the minimum is the least noise-affected estimate
 // on a shared machine).
@@ -78,7 +81,6 @@ double best_time(int repeats, const std::function<void()>& f) {
   return best;
 }
 
-void emit(const Json& j) { std::cout << j.dump() << std::endl; }
 
 // Infinity norm that propagates NaN as +inf (std::max silently drops NaN operands).
 double max_abs(const std::vector<double>& v) {

@@ -72,20 +72,22 @@
 #include "solvers/ida_integrator.hpp"
 #include "solvers/klu_factorization.hpp"
 #include "solvers/static_solve.hpp"
+#include "bench_support.hpp"
 
 using namespace rfmems;
 using Json = nlohmann::ordered_json;
 
 namespace {
 
+using rfmems::bench::cpu_now;
+using rfmems::bench::default_cases_dir;
+using rfmems::bench::emit;
+using rfmems::bench::now;
+
 constexpr double kLength = 2.0, kHeight = 0.04, kE = 200e9, kNu = 0.31, kRho = 7854,
                  kTraction = -1000.0, kRamp = 0.02;
 
-double now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
-void emit(const Json& j) { std::cout << j.dump() << std::endl; }
 
 std::string fmt_cutoff(double c) {
   char buf[32];
