@@ -119,11 +119,18 @@ std::function<Real(Real)> VoltageWaveform::at(Real amplitude) const {
 DynamicPullIn find_dynamic_pull_in(SwitchSystem& system, Index control, Real low, Real high,
                                    Real tolerance, const DynamicOptions& options,
                                    const VoltageWaveform& waveform) {
-  DynamicPullIn result;
   DynamicOptions quiet = options;
   quiet.output_interval = 0;
+  return find_dynamic_pull_in(
+      [&](Real v) { return run_dynamic(system, control, waveform.at(v), quiet); }, low, high,
+      tolerance, options.end_time);
+}
+
+DynamicPullIn find_dynamic_pull_in(const PullInRunner& runner, Real low, Real high,
+                                   Real tolerance, Real end_time) {
+  DynamicPullIn result;
   auto run_at = [&](Real v) {
-    const DynamicRun run = run_dynamic(system, control, waveform.at(v), quiet);
+    DynamicRun run = runner(v);
     ++result.runs;
     result.steps += run.stats.steps;
     result.residual_evals += run.stats.residual_evals;
@@ -135,7 +142,7 @@ DynamicPullIn find_dynamic_pull_in(SwitchSystem& system, Index control, Real low
   if (!at_high.pulled_in)
     throw SolverError(fmt::format("dynamic pull-in: {:.4g} V does not pull in within {:g} s "
                                   "(raise the bracket or the end time)",
-                                  high, options.end_time));
+                                  high, end_time));
   while (high - low > tolerance) {
     const Real mid = 0.5 * (low + high);
     DynamicRun run = run_at(mid);

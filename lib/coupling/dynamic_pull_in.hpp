@@ -89,4 +89,10 @@ DynamicPullIn find_dynamic_pull_in(SwitchSystem& system, Index control, Real low
                                    Real tolerance, const DynamicOptions& options,
                                    const VoltageWaveform& waveform = {});
 
+// The same bisection with any run: runner(amplitude) integrates from rest (e.g. a partitioned
+// scheme, coupling/partitioned_switch.hpp); end_time only for the message.
+using PullInRunner = std::function<DynamicRun(Real amplitude)>;
+DynamicPullIn find_dynamic_pull_in(const PullInRunner& runner, Real low, Real high,
+                                   Real tolerance, Real end_time);
+
 }  // namespace rfmems
