@@ -41,6 +41,7 @@ IdaIntegrator::IdaIntegrator(SystemOperator& op, const IdaOptions& options)
   if (options_.linear_solver == IdaOptions::LinearSolver::Klu) {
     jac_ = sundials::make_csr_matrix(op_.jacobian_pattern(), ctx_.get());
     solver_ = sundials::LinearSolver(SUNLinSol_KLU(y_.get(), jac_.get(), ctx_.get()));
+    if (solver_) SUNLinSol_KLUSetOrdering(solver_.get(), 0);  // AMD: see kinsol_solver.cpp
   } else {
     solver_ = sundials::LinearSolver(
         SUNLinSol_SPGMR(y_.get(), SUN_PREC_LEFT, options_.krylov_dimension, ctx_.get()));
