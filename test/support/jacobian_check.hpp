@@ -24,31 +24,28 @@ struct JacobianCheck {
   double relative() const { return max_abs_difference / max_abs_entry; }
 };
 
-// steps[j]: the difference step of unknown j (and of its derivative); one step for all
-// unknowns with the overload below.
-// scales[j]: the typical size of unknown j, for max_entry_relative (default: the steps).
-inline JacobianCheck check_jacobian(SystemOperator& op, double t, double c_j,
-                                    const std::vector<double>& y, const std::vector<double>& yp,
-                                    const std::vector<double>& steps,
-                                    const std::vector<double>& scales = {}) {
-  const std::vector<double>& unit = scales.empty() ? steps : scales;
+// The analytic J = dF/dy + c_j dF/dy' in the operator's CSR pattern.
+inline std::vector<double> analytic_jacobian(SystemOperator& op, double t, double c_j,
+                                             const std::vector<double>& y,
+                                             const std::vector<double>& yp) {
+  std::vector<double> values(op.jacobian_pattern().nnz(), 0.0);
+  op.jacobian(t, c_j, y, yp, values);
+  return values;
+}
+
+// Calls visit(i, j, fd, analytic) for every entry of the n x n matrix, in column order: fd the
+// central difference of dF_i/dy_j + c_j dF_i/dy'_j with step steps[j] (for y_j and y'_j),
+// analytic the CSR value (0 outside the pattern).
+template <class Visit>
+void for_each_jacobian_entry(SystemOperator& op, double t, double c_j,
+                             const std::vector<double>& y, const std::vector<double>& yp,
+                             const std::vector<double>& steps, const std::vector<double>& values,
+                             Visit&& visit) {
   const Index n = op.size();
   const CsrPattern& pattern = op.jacobian_pattern();
-  std::vector<double> values(pattern.nnz(), 0.0);
-  op.jacobian(t, c_j, y, yp, values);
-  JacobianCheck result;
-  for (double v : values) result.max_abs_entry = std::max(result.max_abs_entry, std::abs(v));
-
   std::vector<double> yy = y, yyp = yp, rp(n), rm(n), column(n);
-  std::vector<double> row_difference(n, 0.0), row_entry(n, 0.0), row_scaled(n, 0.0);
-  for (Index i = 0; i < n; ++i)
-    for (Index p = pattern.row_ptr[i]; p < pattern.row_ptr[i + 1]; ++p) {
-      row_entry[i] = std::max(row_entry[i], std::abs(values[p]));
-      row_scaled[i] = std::max(row_scaled[i], std::abs(values[p]) * unit[pattern.col_idx[p]]);
-    }
   for (Index j = 0; j < n; ++j) {
     const double step = steps[j];
-    // dF/dy_j + c_j dF/dy'_j by central differences.
     yy[j] = y[j] + step;
     op.residual(t, yy, yp, rp);
     yy[j] = y[j] - step;
@@ -64,19 +61,45 @@ inline JacobianCheck check_jacobian(SystemOperator& op, double t, double c_j,
       for (Index i = 0; i < n; ++i) column[i] += c_j * (rp[i] - rm[i]) / (2 * step);
     }
     for (Index i = 0; i < n; ++i) {
-      Index pos = pattern.find(i, j);
-      double analytic = pos >= 0 ? values[pos] : 0.0;
-      result.max_abs_difference = std::max(result.max_abs_difference, std::abs(column[i] - analytic));
-      row_difference[i] = std::max(row_difference[i], std::abs(column[i] - analytic));
-      const double entry_relative = std::abs(column[i] - analytic) * unit[j] /
-                                    (std::abs(analytic) * unit[j] + 1e-6 * row_scaled[i] + 1e-300);
-      if (entry_relative > result.max_entry_relative) {
-        result.max_entry_relative = entry_relative;
-        result.worst_entry_row = i;
-        result.worst_entry_col = j;
-      }
+      const Index pos = pattern.find(i, j);
+      visit(i, j, column[i], pos >= 0 ? values[pos] : 0.0);
     }
   }
+}
+
+// steps[j]: the difference step of unknown j (and of its derivative); one step for all
+// unknowns with the overload below.
+// scales[j]: the typical size of unknown j, for max_entry_relative (default: the steps).
+inline JacobianCheck check_jacobian(SystemOperator& op, double t, double c_j,
+                                    const std::vector<double>& y, const std::vector<double>& yp,
+                                    const std::vector<double>& steps,
+                                    const std::vector<double>& scales = {}) {
+  const std::vector<double>& unit = scales.empty() ? steps : scales;
+  const Index n = op.size();
+  const CsrPattern& pattern = op.jacobian_pattern();
+  const std::vector<double> values = analytic_jacobian(op, t, c_j, y, yp);
+  JacobianCheck result;
+  for (double v : values) result.max_abs_entry = std::max(result.max_abs_entry, std::abs(v));
+
+  std::vector<double> row_difference(n, 0.0), row_entry(n, 0.0), row_scaled(n, 0.0);
+  for (Index i = 0; i < n; ++i)
+    for (Index p = pattern.row_ptr[i]; p < pattern.row_ptr[i + 1]; ++p) {
+      row_entry[i] = std::max(row_entry[i], std::abs(values[p]));
+      row_scaled[i] = std::max(row_scaled[i], std::abs(values[p]) * unit[pattern.col_idx[p]]);
+    }
+  for_each_jacobian_entry(op, t, c_j, y, yp, steps, values,
+                          [&](Index i, Index j, double fd, double analytic) {
+    const double difference = std::abs(fd - analytic);
+    result.max_abs_difference = std::max(result.max_abs_difference, difference);
+    row_difference[i] = std::max(row_difference[i], difference);
+    const double entry_relative =
+        difference * unit[j] / (std::abs(analytic) * unit[j] + 1e-6 * row_scaled[i] + 1e-300);
+    if (entry_relative > result.max_entry_relative) {
+      result.max_entry_relative = entry_relative;
+      result.worst_entry_row = i;
+      result.worst_entry_col = j;
+    }
+  });
   for (Index i = 0; i < n; ++i)
     if (row_entry[i] > 0 && row_difference[i] / row_entry[i] > result.max_row_relative) {
       result.max_row_relative = row_difference[i] / row_entry[i];

@@ -11,10 +11,10 @@
 #include <random>
 
 #include "../../support/jacobian_check.hpp"
+#include "core/reduced_inertia_system.hpp"
 #include "core/structural_systems.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/plate/plate_operator.hpp"
-#include "core/reduced_inertia_system.hpp"
 
 using namespace rfmems;
 using Kind = PlateBoundary::Kind;
@@ -78,37 +78,16 @@ Mesh distorted_mesh(int nx, int ny, unsigned seed) {
 double worst_class_difference(SystemOperator& op, double t, double c_j,
                               const std::vector<double>& y, const std::vector<double>& yp,
                               double step) {
-  const Index n = op.size();
-  const CsrPattern& pattern = op.jacobian_pattern();
-  std::vector<double> values(pattern.nnz(), 0.0);
-  op.jacobian(t, c_j, y, yp, values);
   double diff[3][3] = {}, scale[3][3] = {};
-  std::vector<double> yy = y, yyp = yp, rp(n), rm(n);
-  for (Index j = 0; j < n; ++j) {
-    std::vector<double> column(n, 0.0);
-    yy[j] = y[j] + step;
-    op.residual(t, yy, yp, rp);
-    yy[j] = y[j] - step;
-    op.residual(t, yy, yp, rm);
-    yy[j] = y[j];
-    for (Index i = 0; i < n; ++i) column[i] = (rp[i] - rm[i]) / (2 * step);
-    if (c_j != 0) {
-      yyp[j] = yp[j] + step;
-      op.residual(t, y, yyp, rp);
-      yyp[j] = yp[j] - step;
-      op.residual(t, y, yyp, rm);
-      yyp[j] = yp[j];
-      for (Index i = 0; i < n; ++i) column[i] += c_j * (rp[i] - rm[i]) / (2 * step);
-    }
-    for (Index i = 0; i < n; ++i) {
-      const Index pos = pattern.find(i, j);
-      const double analytic = pos >= 0 ? values[pos] : 0.0;
-      double& d = diff[i % 3][j % 3];
-      double& s = scale[i % 3][j % 3];
-      d = std::max(d, std::abs(column[i] - analytic));
-      s = std::max(s, std::abs(analytic));
-    }
-  }
+  const std::vector<double> values = test_support::analytic_jacobian(op, t, c_j, y, yp);
+  test_support::for_each_jacobian_entry(
+      op, t, c_j, y, yp, std::vector<double>(y.size(), step), values,
+      [&](Index i, Index j, double fd, double analytic) {
+        double& d = diff[i % 3][j % 3];
+        double& s = scale[i % 3][j % 3];
+        d = std::max(d, std::abs(fd - analytic));
+        s = std::max(s, std::abs(analytic));
+      });
   double worst = 0;
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 3; ++b) {
