@@ -67,7 +67,10 @@ using Json = nlohmann::ordered_json;
 
 namespace {
 
+using rfmems::bench::add_integrator_stats;
 using rfmems::bench::cpu_now;
+using rfmems::bench::dense_stiffness;
+using rfmems::bench::max_relative_error;
 using rfmems::bench::default_cases_dir;
 using rfmems::bench::emit;
 using rfmems::bench::now;
@@ -133,13 +136,8 @@ ModalReference modal_reference(Strip& s) {
   const double t0 = now();
   PlateOperator& op = *s.op;
   const Index n = op.size(), nc = s.mesh.n_cells();
-  const CsrPattern& pattern = op.stiffness_pattern();
-  std::vector<double> zero(n, 0.0), values(pattern.nnz(), 0.0), r(n);
-  op.stiffness(0, zero, values);
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
-  for (Index i = 0; i < n; ++i)
-    for (Index k = pattern.row_ptr[i]; k < pattern.row_ptr[i + 1]; ++k)
-      K(i, pattern.col_idx[k]) = values[k];
+  std::vector<double> zero(n, 0.0), r(n);
+  const Eigen::MatrixXd K = dense_stiffness(op);
   op.internal_residual(1.0, zero, r);  // R(t, y) = K y - f
   // Split into deflections (w) and rotations (b).
   std::vector<Index> iw, ib;
@@ -243,21 +241,10 @@ Json describe(const Run& run, const ModalReference& ref, double w_ref) {
   j["w_m"] = run.w;
   if (run.completed) {
     j["error"] = std::abs(run.w - w_ref) / std::abs(w_ref);
-    double e = 0, scale = 0;
-    for (auto [t, w] : run.samples) {
-      const double wr = ref.at(t);
-      e = std::max(e, std::abs(w - wr));
-      scale = std::max(scale, std::abs(wr));
-    }
-    j["error_max_over_outputs"] = e / scale;
+    j["error_max_over_outputs"] = max_relative_error(run.samples, ref);
   }
   j["wall_s"] = run.seconds;
-  j["steps"] = run.stats.steps;
-  j["residual_evals"] = run.stats.residual_evals;
-  j["jacobian_evals"] = run.stats.jacobian_evals;
-  j["newton_iters"] = run.stats.newton_iters;
-  j["error_test_fails"] = run.stats.error_test_fails;
-  j["newton_fails"] = run.stats.newton_fails;
+  add_integrator_stats(j, run.stats);
   j["mean_step_s"] = run.t_reached / std::max(1L, run.stats.steps);
   Json orders = Json::object();
   for (auto [order, count] : run.orders) orders[std::to_string(order)] = count;

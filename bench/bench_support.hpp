@@ -1,11 +1,19 @@
 // Small pieces every benchmark program uses: clocks, one JSON object per stdout line, the
 // repository's cases/ directory.
 #pragma once
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <ctime>
 #include <filesystem>
 #include <iostream>
 #include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "core/system_operator.hpp"
+#include "solvers/ida_integrator.hpp"
 
 namespace rfmems::bench {
 
@@ -30,6 +38,44 @@ void emit(const J& j) {
 // The repository's cases/ directory, from this header's path (CMake compiles by absolute path).
 inline std::string default_cases_dir() {
   return (std::filesystem::path(__FILE__).parent_path().parent_path() / "cases").string();
+}
+
+// The integrator's work counts into a benchmark's JSON object (the keys the recorded
+// docs/figures/*.jsonl use).
+template <class J>
+void add_integrator_stats(J& j, const IntegratorStats& s) {
+  j["steps"] = s.steps;
+  j["residual_evals"] = s.residual_evals;
+  j["jacobian_evals"] = s.jacobian_evals;
+  j["newton_iters"] = s.newton_iters;
+  j["error_test_fails"] = s.error_test_fails;
+  j["newton_fails"] = s.newton_fails;
+}
+
+// The stiffness dR/dy of a linear operator at y = 0, as a dense matrix (modal references).
+inline Eigen::MatrixXd dense_stiffness(SecondOrderOperator& op) {
+  const Index n = op.size();
+  const CsrPattern& pattern = op.stiffness_pattern();
+  std::vector<double> zero(n, 0.0), values(pattern.nnz(), 0.0);
+  op.stiffness(0, zero, values);
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
+  for (Index i = 0; i < n; ++i)
+    for (Index k = pattern.row_ptr[i]; k < pattern.row_ptr[i + 1]; ++k)
+      K(i, pattern.col_idx[k]) = values[k];
+  return K;
+}
+
+// max_k |w_k - reference(t_k)| / max_k |reference(t_k)| over a run's (t, w) samples.
+template <class Reference>
+double max_relative_error(const std::vector<std::pair<double, double>>& samples,
+                          const Reference& reference) {
+  double e = 0, scale = 0;
+  for (auto [t, w] : samples) {
+    const double wr = reference.at(t);
+    e = std::max(e, std::abs(w - wr));
+    scale = std::max(scale, std::abs(wr));
+  }
+  return e / scale;
 }
 
 }  // namespace rfmems::bench

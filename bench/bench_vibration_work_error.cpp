@@ -79,7 +79,10 @@ using Json = nlohmann::ordered_json;
 
 namespace {
 
+using rfmems::bench::add_integrator_stats;
 using rfmems::bench::cpu_now;
+using rfmems::bench::dense_stiffness;
+using rfmems::bench::max_relative_error;
 using rfmems::bench::default_cases_dir;
 using rfmems::bench::emit;
 using rfmems::bench::now;
@@ -185,13 +188,8 @@ ModalReference modal_reference(Cantilever& cl, double t_star) {
   double t0 = now();
   ElasticityOperator& op = *cl.op;
   const Index n = op.size();
-  const CsrPattern& pattern = op.stiffness_pattern();
-  std::vector<double> zero(n, 0.0), values(pattern.nnz(), 0.0), mass = op.mass_diagonal();
-  op.stiffness(0, zero, values);
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
-  for (Index i = 0; i < n; ++i)
-    for (Index k = pattern.row_ptr[i]; k < pattern.row_ptr[i + 1]; ++k)
-      K(i, pattern.col_idx[k]) = values[k];
+  std::vector<double> zero(n, 0.0), mass = op.mass_diagonal();
+  const Eigen::MatrixXd K = dense_stiffness(op);
   // R(t, u) = K u - s(t) f: f = -R(T, 0) (s(T) = 1).
   std::vector<double> r0(n), r1(n);
   op.internal_residual(kRamp, zero, r0);
@@ -371,21 +369,10 @@ Json describe(const Run& run, const ModalReference& ref, double w_static) {
   if (run.completed) {
     j["error"] = std::abs(run.w - ref.w) / std::abs(ref.w);
     j["error_over_static"] = std::abs(run.w - ref.w) / std::abs(w_static);
-    double e = 0, scale = 0;
-    for (auto [t, w] : run.samples) {
-      const double wr = ref.at(t);
-      e = std::max(e, std::abs(w - wr));
-      scale = std::max(scale, std::abs(wr));
-    }
-    j["error_max_over_outputs"] = e / scale;
+    j["error_max_over_outputs"] = max_relative_error(run.samples, ref);
   }
   j["wall_s"] = run.seconds;
-  j["steps"] = run.stats.steps;
-  j["residual_evals"] = run.stats.residual_evals;
-  j["jacobian_evals"] = run.stats.jacobian_evals;
-  j["newton_iters"] = run.stats.newton_iters;
-  j["error_test_fails"] = run.stats.error_test_fails;
-  j["newton_fails"] = run.stats.newton_fails;
+  add_integrator_stats(j, run.stats);
   j["mean_step_s"] = run.t_reached / std::max(1L, run.stats.steps);
   j["last_step_s"] = run.stats.last_step;
   Json orders = Json::object();
