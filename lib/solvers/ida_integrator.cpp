@@ -4,7 +4,6 @@
 #include <utility>
 #include <fmt/format.h>
 #include <ida/ida.h>
-#include <sunlinsol/sunlinsol_klu.h>
 #include <sunlinsol/sunlinsol_spgmr.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 
@@ -40,8 +39,7 @@ IdaIntegrator::IdaIntegrator(SystemOperator& op, const IdaOptions& options)
   yp_ = sundials::make_serial_vector(n, ctx_.get());
   if (options_.linear_solver == IdaOptions::LinearSolver::Klu) {
     jac_ = sundials::make_csr_matrix(op_.jacobian_pattern(), ctx_.get());
-    solver_ = sundials::LinearSolver(SUNLinSol_KLU(y_.get(), jac_.get(), ctx_.get()));
-    if (solver_) SUNLinSol_KLUSetOrdering(solver_.get(), 0);  // AMD: see kinsol_solver.cpp
+    solver_ = sundials::make_klu_solver(y_.get(), jac_.get(), ctx_.get());
   } else {
     solver_ = sundials::LinearSolver(
         SUNLinSol_SPGMR(y_.get(), SUN_PREC_LEFT, options_.krylov_dimension, ctx_.get()));

@@ -1,6 +1,7 @@
 #include "solvers/sundials_handles.hpp"
 
 #include <algorithm>
+#include <sunlinsol/sunlinsol_klu.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 
 #include "core/error.hpp"
@@ -32,6 +33,13 @@ void load_pattern(const CsrPattern& pattern, SUNMatrix m) {
   if (SUNSparseMatrix_NNZ(m) < pattern.nnz()) SUNSparseMatrix_Reallocate(m, pattern.nnz());
   std::copy(pattern.row_ptr.begin(), pattern.row_ptr.end(), SUNSparseMatrix_IndexPointers(m));
   std::copy(pattern.col_idx.begin(), pattern.col_idx.end(), SUNSparseMatrix_IndexValues(m));
+}
+
+LinearSolver make_klu_solver(N_Vector y, SUNMatrix a, SUNContext ctx) {
+  LinearSolver solver(SUNLinSol_KLU(y, a, ctx));
+  if (!solver) throw SolverError("SUNLinSol_KLU failed");
+  SUNLinSol_KLUSetOrdering(solver.get(), 0);
+  return solver;
 }
 
 }  // namespace rfmems::sundials
