@@ -118,3 +118,25 @@ TEST(DistributedMesh, DistributedResidualEqualsTheSerialOne) {
   for (Real x : r_serial) serial_sq += x * x;
   EXPECT_NEAR(comm.sum(local_sq), serial_sq, 1e-12 * serial_sq);
 }
+
+TEST(DistributedMesh, MoreRanksThanCellsLeavesRanksEmptyButWorking) {
+  const Communicator comm = Communicator::world();
+  BoxSpec spec;
+  spec.n[0] = 2;
+  const Mesh global = make_structured_mesh(spec);  // 2 cells
+  DistributedMesh d = distribute_mesh(global, comm, 1);
+  const Index n_owned = d.local.mesh.n_owned_cells();
+  EXPECT_EQ(comm.sum(n_owned), 2);
+  if (comm.rank() >= 2) {
+    EXPECT_EQ(n_owned, 0);
+  }
+  std::vector<Real> values(d.local.mesh.n_cells(), 0.0);
+  for (Index c = 0; c < n_owned; ++c) values[c] = 10.0 + static_cast<Real>(d.local.global_cell[c]);
+  d.exchange.exchange(values, 1);
+  for (Index c = n_owned; c < d.local.mesh.n_cells(); ++c)
+    EXPECT_EQ(values[c], 10.0 + static_cast<Real>(d.local.global_cell[c]));
+  std::vector<Real> all = gather_to_root(comm, d.local, values, 1, 2);
+  if (comm.is_root()) {
+    EXPECT_EQ(all, (std::vector<Real>{10.0, 11.0}));
+  }
+}
