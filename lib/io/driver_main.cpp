@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "core/error.hpp"
+#include "parallel/communicator.hpp"
 
 namespace rfmems {
 
@@ -30,8 +31,10 @@ void print_driver_error(const std::string& program, const std::string& message) 
   std::fprintf(stderr, "%s: %s\n", program.c_str(), line.c_str());
 }
 
-int driver_main(const std::string& program, const std::string& description, int argc,
-                char** argv, const std::function<int(const DriverOptions&)>& run) {
+namespace {
+
+int parse_and_run(const std::string& program, const std::string& description, int argc,
+                  char** argv, const std::function<int(const DriverOptions&)>& run) {
   DriverOptions options;
   CLI::App app{description};
   app.add_option("case", options.case_path, "case file (YAML)")->required();
@@ -58,6 +61,20 @@ int driver_main(const std::string& program, const std::string& description, int 
     print_driver_error(program, std::string("error: ") + e.what());
     return 1;
   }
+}
+
+}  // namespace
+
+int driver_main(const std::string& program, const std::string& description, int argc,
+                char** argv, const std::function<int(const DriverOptions&)>& run,
+                RankUse ranks) {
+  MpiSession session(&argc, &argv);
+  const Communicator world = Communicator::world();
+  Index code = 0;
+  if (ranks == RankUse::AllRanks || world.is_root())
+    code = parse_and_run(program, description, argc, argv, run);
+  // One verdict for every rank: the worst (the root's, when only the root runs).
+  return static_cast<int>(world.max(code));
 }
 
 }  // namespace rfmems
