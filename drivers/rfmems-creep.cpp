@@ -37,6 +37,7 @@
 #include "io/driver_main.hpp"
 #include "io/interrupt_cleanup.hpp"
 #include "io/json_summary.hpp"
+#include "io/progress.hpp"
 #include "io/result_writer.hpp"
 #include "io/units.hpp"
 #include "physics/creep/creep_case.hpp"
@@ -125,10 +126,13 @@ int run(const DriverOptions& options) {
   Checkpoint restart;
   if (!creep_options.restart.empty()) restart = read_checkpoint(creep_options.restart);
 
-  const CreepRunModel model = make_plate_creep_model(creep);
+  CreepRunModel model = make_plate_creep_model(creep);
+  ProgressReporter progress(options.quiet, settings.end_time());
+  model.on_segment = [&](Real t, Real h, long steps) { progress.update(t, h, steps); };
   const CreepRunResult result = run_creep(model, settings,
                                           creep_options.restart.empty() ? nullptr : &restart,
                                           creep_options.restart);
+  progress.finish();
 
   // The result file is written only now: a run killed before leaves no partial result.
   const std::string& output = run_case.output;

@@ -326,6 +326,7 @@ CreepRunResult run_creep(const CreepRunModel& model, const CreepRunSettings& s,
                                : explicit_segment(model, s, *system, t_next, r);
     ++r.segments;
     record(model, *system, r.final_time, r.state, r);
+    if (model.on_segment) model.on_segment(r.final_time, r.last_step, r.steps);
     if (end.event) {
       r.end = end.kind;
       r.lifetime = r.final_time;

@@ -84,6 +84,8 @@ struct CreepRunModel {
   std::function<std::map<std::string, std::vector<double>>(CreepSystem&, Real t,
                                                              std::span<const Real> state)>
       output_fields;
+  // Called after every segment (progress reports): time reached, last step, steps so far.
+  std::function<void(Real t, Real last_step, long steps)> on_segment;
 };
 
 struct CreepOutput {
