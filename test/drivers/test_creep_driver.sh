@@ -6,6 +6,8 @@
 #     once a checkpoint exists, and restarted from it: the final states of the two result
 #     files agree to a relative 1e-8 (by construction bit for bit), and the restarted file is
 #     complete (every output time, the whole history);
+#   - the held switch restarted from its last checkpoint before the collapse: same life and
+#     state bit for bit;
 #   - the held switch's creep life: reached by the collapse root, the same (0.1 %) with the
 #     explicit integrator at dt = 0.5 h; a gap threshold crossed by the IDA root and by
 #     interpolation between explicit steps (first order in dt);
@@ -116,7 +118,27 @@ else
 fi
 
 # --- the held switch's life ----------------------------------------------------------------
-"$DRIVER" "$HOLD" --set creep.outputs=20 -o "$WORK/hold.h5" --json --quiet >"$WORK/hold.json" 2>"$WORK/err" || fail "hold: $(cat "$WORK/err")"
+"$DRIVER" "$HOLD" --set creep.outputs=20 -o "$WORK/hold.h5" --checkpoint-every-steps 1 --json --quiet \
+  >"$WORK/hold.json" 2>"$WORK/err" || fail "hold: $(cat "$WORK/err")"
+# Restarted from its last checkpoint (the output before the collapse), the held switch (Newton
+# equilibrium, hold-voltage tangent, collapse root) ends at the same life and state, bit for bit.
+if "$DRIVER" "$HOLD" --set creep.outputs=20 -o "$WORK/hold_r.h5" --restart "$WORK/hold.checkpoint.h5" \
+    --json --quiet >"$WORK/hold_r.json" 2>"$WORK/err" &&
+   $PY - "$WORK/hold.h5" "$WORK/hold_r.h5" "$WORK/hold.json" "$WORK/hold_r.json" <<'PY'
+import json, sys
+import h5py, numpy as np
+a, b = (h5py.File(p, "r")["creep/final_state/values"][0] for p in sys.argv[1:3])
+s, r = (json.load(open(p)) for p in sys.argv[3:5])
+assert r["restarted"] and r["restart_time_s"] < r["lifetime_s"], r
+assert r["end"] == s["end"] == "collapse" and r["lifetime_s"] == s["lifetime_s"], (s, r)
+assert np.array_equal(a, b), np.max(np.abs(a - b))
+print(f"hold restart at {r['restart_time_s'] / 3600:.0f} h: life {r['lifetime_h']:.3f} h, state bit for bit")
+PY
+then
+  pass "held switch restarted before its collapse: same life, same state"
+else
+  fail "held switch restart: $(cat "$WORK/err")"
+fi
 "$DRIVER" "$HOLD" --set creep.outputs=20 --set creep.integration=explicit --set "creep.dt=0.5 h" -o "$WORK/hold_e.h5" \
   --json --quiet >"$WORK/hold_e.json" 2>"$WORK/err" || fail "hold explicit: $(cat "$WORK/err")"
 for dt in implicit "1 h" "4 h"; do
