@@ -127,6 +127,17 @@ int run(const DriverOptions& options) {
   if (!creep_options.restart.empty()) restart = read_checkpoint(creep_options.restart);
 
   CreepRunModel model = make_plate_creep_model(creep);
+  if (creep.hold && creep_options.restart.empty()) {
+    // A hold voltage above pull-in has no elastic equilibrium: bad input, not a solver failure.
+    try {
+      std::vector<Real> y, yp;
+      model.make_system()->initial_state(0, y, yp);
+    } catch (const std::exception&) {
+      run_case.root.child("actuation").fail(
+          "voltage", "no elastic equilibrium at this hold voltage (above the pull-in voltage?)");
+    }
+  }
+
   ProgressReporter progress(options.quiet, settings.end_time());
   model.on_segment = [&](Real t, Real h, long steps) { progress.update(t, h, steps); };
   const CreepRunResult result = run_creep(model, settings,

@@ -188,6 +188,7 @@ expect_input_error even_points "creep.thickness_points" "$FIXED" --set creep.thi
 expect_input_error lifetime_without_gap "creep.lifetime" "$FIXED" --set "creep.lifetime={gap_threshold: 0 um}"
 expect_input_error threshold_above_gap "creep.lifetime.gap_threshold" "$HOLD" --set "creep.lifetime.gap_threshold=4 um"
 expect_input_error negative_voltage "actuation.voltage" "$HOLD" --set "actuation.voltage=-5 V"
+expect_input_error above_pull_in "actuation.voltage.*above the pull-in" "$HOLD" --set "actuation.voltage=195 V"
 expect_input_error gas_refused "gas" "$HOLD" --set "actuation.gap=3.75 um" --set "gas={model: reynolds, pressure: 1 atm}"
 expect_input_error typo "creep.rtoll" "$FIXED" --set creep.rtoll=1e-6
 expect_input_error bad_steps_flag "checkpoint-every-steps" "$FIXED" --checkpoint-every-steps 1.5
