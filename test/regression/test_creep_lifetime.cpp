@@ -12,6 +12,14 @@
 // converges at first order in dt; a run restarted from its checkpoint ends bit for bit where
 // the uninterrupted run ends (implicit and explicit); a checkpoint of other settings is
 // refused.
+//
+// The collapse event on a lumped held switch with a closed-form creep-induced pull-in: a
+// spring k whose rest position p creeps at a constant rate c towards an electrode at g0, held
+// by a parallel-plate force at voltage V:
+//   F_x = k (x - p) - eps0 S V^2 / (2 (g0 - x)^2) = 0,   F_p = p' - c
+// The equilibrium exists while the gap from the rest position g0 - p exceeds the pull-in gap
+// of the voltage, (27 eps0 S V^2 / (8 k))^(1/3) (V_PI^2 = 8 k (g0 - p)^3 / (27 eps0 S)), so
+// the life is t_f = (g0 - (27 eps0 S V^2 / (8 k))^(1/3)) / c, where x' ~ 1/sqrt(t_f - t).
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -169,6 +177,98 @@ TEST(CreepLifetime, RestartFromACheckpointIsBitForBit) {
     CreepRunSettings other = s;
     other.settings_hash = "another bar";
     EXPECT_THROW(run_creep(bar_model(), other, &cp, "bar.checkpoint.h5"), InputError);
+  }
+}
+
+constexpr Real kEps0 = 8.8541878128e-12, kSpring = 10, kArea = 1e-8, kGapHeld = 3e-6;
+constexpr Real kRestRate = 1e-6 / (1000 * kHours);  // c: 1 um per 1000 h
+
+class HeldSpringCreep : public CreepSystem {
+ public:
+  explicit HeldSpringCreep(Real voltage) : v2_(voltage * voltage) {
+    pattern_.row_ptr = {0, 2, 3};
+    pattern_.col_idx = {0, 1, 1};
+  }
+  Index size() const override { return 2; }
+  Index structural_size() const override { return 1; }
+  std::vector<Real> differential_components() const override { return {0, 1}; }
+  Real force(Real x) const { return kEps0 * kArea * v2_ / (2 * (kGapHeld - x) * (kGapHeld - x)); }
+  Real force_derivative(Real x) const { return 2 * force(x) / (kGapHeld - x); }
+  void residual(Real, std::span<const Real> y, std::span<const Real> yp,
+                std::span<Real> r) override {
+    if (y[0] >= kGapHeld) throw RecoverableError("held spring: gap closed");
+    r[0] = kSpring * (y[0] - y[1]) - force(y[0]);
+    r[1] = yp[1] - kRestRate;
+  }
+  const CsrPattern& jacobian_pattern() const override { return pattern_; }
+  void jacobian(Real, Real c_j, std::span<const Real> y, std::span<const Real>,
+                std::span<Real> v) override {
+    v[0] = kSpring - force_derivative(y[0]);
+    v[1] = -kSpring;
+    v[2] = c_j;
+  }
+  void creep_rates(Real, std::span<const Real>, std::span<Real> rates) override {
+    rates[0] = kRestRate;
+  }
+  void equilibrate(Real, std::span<Real> y) override {  // Newton from the rest position
+    Real x = y[1];
+    for (int it = 0; it < 100; ++it) {
+      const Real r = kSpring * (x - y[1]) - force(x), d = kSpring - force_derivative(x);
+      if (!(d > 0)) throw SolverError("held spring: no equilibrium (past the fold)");
+      x -= r / d;
+      if (!(x < kGapHeld)) throw SolverError("held spring: no equilibrium (gap closed)");
+      if (std::abs(r) < 1e-15 * kSpring * kGapHeld) break;
+    }
+    y[0] = x;
+  }
+  void initial_state(Real t, std::vector<Real>& y, std::vector<Real>& yp) override {
+    y.assign(2, 0.0);
+    equilibrate(t, y);
+    yp = {kSpring * kRestRate / (kSpring - force_derivative(y[0])), kRestRate};
+  }
+
+ private:
+  Real v2_;
+  CsrPattern pattern_;
+};
+
+Real held_pull_in_voltage() {
+  return std::sqrt(8 * kSpring * std::pow(kGapHeld, 3) / (27 * kEps0 * kArea));
+}
+Real held_life(Real voltage) {
+  const Real gap_pi = std::cbrt(27 * kEps0 * kArea * voltage * voltage / (8 * kSpring));
+  return (kGapHeld - gap_pi) / kRestRate;
+}
+
+CreepRunModel held_model(Real voltage) {
+  CreepRunModel m;
+  m.make_system = [voltage] { return std::make_unique<HeldSpringCreep>(voltage); };
+  m.min_gap = [](std::span<const Real> y) { return kGapHeld - y[0]; };
+  m.min_gap_rate = [](std::span<const Real>, std::span<const Real> yp) { return -yp[0]; };
+  m.series_columns = {"x"};
+  m.sample = [](CreepSystem&, Real, std::span<const Real> y) { return std::vector<double>{y[0]}; };
+  return m;
+}
+
+TEST(CreepLifetime, CollapseRootFindsTheClosedFormCreepInducedPullIn) {
+  for (Real ratio : {0.5, 0.8, 0.95}) {
+    const Real voltage = ratio * held_pull_in_voltage(), life = held_life(voltage);
+    for (Real fraction : {1e-3, 1e-4}) {
+      CreepRunSettings s;
+      for (int k = 1; k <= 10; ++k) s.output_times.push_back(1.5 * life * k / 10);
+      s.rtol = 1e-8;
+      s.atol = 1e-16;
+      s.krylov = false;
+      s.collapse_event = true;
+      s.collapse_fraction = fraction;
+      const CreepRunResult r = run_creep(held_model(voltage), s);
+      std::printf("V = %.2f V_PI, eps %.0e: life %.6f h (closed form %.6f h), %s, %ld steps\n",
+                  ratio, fraction, r.lifetime / kHours, life / kHours, to_string(r.end).c_str(),
+                  r.steps);
+      EXPECT_EQ(r.end, CreepRunResult::End::Collapse);
+      EXPECT_LE(r.lifetime, life);  // the root fires before the fold
+      EXPECT_NEAR(r.lifetime, life, 10 * fraction * fraction * life + 1e-6 * life);
+    }
   }
 }
 
