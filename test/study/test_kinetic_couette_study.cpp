@@ -23,8 +23,8 @@ TEST(KineticCouetteStudy, Knudsen001At80Cells) {
     EXPECT_TRUE(r.solve.converged);
   }
   EXPECT_LE(runs.back().rms_error, 0.02);
-  const Real order =
-      std::log2(coarse_fine_difference(runs[0], runs[1]) / coarse_fine_difference(runs[1], runs[2]));
+  const Real order = std::log2(coarse_fine_difference(runs[0], runs[1]) /
+                               coarse_fine_difference(runs[1], runs[2]));
   std::printf("observed order %.3f\n", order);
   EXPECT_NEAR(order, 1.0, 0.25);
 }

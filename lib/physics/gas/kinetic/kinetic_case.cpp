@@ -37,7 +37,8 @@ KineticSolverSettings read_kinetic_solver_settings(const CaseNode& node) {
   for (const auto& [name, fn] : kinetic_solvers()) names.push_back(name);
   s.type = node.get_choice("type", names, "sequential");
   s.tolerance = node.get_real("tolerance", 1e-6, Range::open(0, 1));
-  s.max_iterations = static_cast<int>(node.get_int("max_iterations", 200000, Range::closed(1, 1e9)));
+  s.max_iterations =
+      static_cast<int>(node.get_int("max_iterations", 200000, Range::closed(1, 1e9)));
   s.node = node;
   return s;
 }
@@ -76,9 +77,11 @@ KineticScene build_kinetic_scene(const CaseNode& root, const std::string& case_d
     n[d] = static_cast<int>(points[d]);
   }
   const Real extent = vg.get_real("extent", 3.5, Range::positive());
-  VelocityGrid grid = VelocityGrid::uniform(n[0], n[1], n[2], extent * gas.thermal_speed(scene.initial.T));
+  VelocityGrid grid =
+      VelocityGrid::uniform(n[0], n[1], n[2], extent * gas.thermal_speed(scene.initial.T));
 
-  std::vector<KineticBoundary> bcs = kinetic_boundaries_from_case(root.child("boundaries"), *scene.graph);
+  std::vector<KineticBoundary> bcs =
+      kinetic_boundaries_from_case(root.child("boundaries"), *scene.graph);
   scene.solver = read_kinetic_solver_settings(root.child_or_empty("solver"));
 
   const CaseNode output = root.child_or_empty("output");
@@ -94,7 +97,8 @@ KineticScene build_kinetic_scene(const CaseNode& root, const std::string& case_d
           bcs[p].kind == KineticBoundaryKind::SpecularWall)
         scene.force_patches.push_back(static_cast<int>(p));
   }
-  scene.op = std::make_unique<KineticOperator>(*scene.graph, std::move(grid), gas, std::move(bcs));
+  scene.op =
+      std::make_unique<KineticOperator>(*scene.graph, std::move(grid), gas, std::move(bcs));
   return scene;
 }
 
