@@ -8,7 +8,8 @@
 // ESBGK, argon, walls 273.15 K / 327.78 K, a quasi-1D mesh (1 x 4 cells, specular sides).
 // The half-range quadrature of the midpoint grid converges at second order in dc (the
 // integrand has a kink at c_y = 0): the error against q falls ~4x from 12 to 24 points in c_y
-// (3.6 % -> 0.76 %); at 24 points it is below 1 %. The wall heat flows balance (energy conservation) to 1e-5.
+// (3.6 % -> 0.76 %); at 24 points it is below 1 %. The wall heat flows balance (energy
+// conservation) to 1e-5.
 #include <gtest/gtest.h>
 
 #include <cmath>
