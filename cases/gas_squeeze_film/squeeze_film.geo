@@ -73,5 +73,5 @@ Physical Curve("substrate") = {100, 101};
 Physical Curve("top") = {106, 107};
 Physical Curve("right") = {202, 205, 208};
 Physical Curve("symmetry") = {200, 206};
-Physical Curve("beam") = {102, 201, 104};
+Physical Curve("beam") = {102, 204, 104};
 Physical Surface("gas") = {blocks[]};
