@@ -22,6 +22,7 @@
 // /creep/final_state (the full state at the final time, one row), metadata with the summary.
 // Exit codes as the other drivers: 0 success; 2 bad input (one line on stderr, no result
 // file); 1 other failures.
+#include <CLI/CLI.hpp>
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
@@ -56,43 +57,6 @@ struct CreepOptions {
   double every_seconds = -1;
 };
 CreepOptions creep_options;
-
-// Takes the creep options out of argv (both "--flag value" and "--flag=value").
-std::vector<char*> split_arguments(int argc, char** argv) {
-  std::vector<char*> rest{argv[0]};
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    bool matched = false;
-    for (const char* flag :
-         {"--restart", "--checkpoint-every-steps", "--checkpoint-every-seconds"}) {
-      std::string value;
-      const std::string f = flag;
-      if (arg == f) {
-        if (i + 1 >= argc) throw InputError(f + " needs a value (see --help)");
-        value = argv[++i];
-      } else if (arg.starts_with(f + "=")) {
-        value = arg.substr(f.size() + 1);
-      } else {
-        continue;
-      }
-      matched = true;
-      double x = 0;
-      if (f == "--restart") {
-        creep_options.restart = value;
-      } else if (!parse_real(value, x) || x < 0 ||
-                 (f == "--checkpoint-every-steps" && x != std::floor(x))) {
-        throw InputError(f + " = '" + value + "': expected a number >= 0" +
-                         (f == "--checkpoint-every-steps" ? " (an integer)" : ""));
-      } else if (f == "--checkpoint-every-steps") {
-        creep_options.every_steps = static_cast<long>(x);
-      } else {
-        creep_options.every_seconds = x;
-      }
-    }
-    if (!matched) rest.push_back(argv[i]);
-  }
-  return rest;
-}
 
 // The settings a checkpoint is tied to: the case after overrides, without its checkpoint
 // triggers (changing how often to checkpoint must not invalidate a checkpoint).
@@ -218,16 +182,18 @@ int run(const DriverOptions& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<char*> args;
-  try {
-    args = split_arguments(argc, argv);
-  } catch (const InputError& e) {
-    print_driver_error(kProgram, e.what());
-    return 2;
-  }
+  auto creep_flags = [](CLI::App& app) {
+    app.add_option("--restart", creep_options.restart,
+                   "resume from this checkpoint (written for the same case settings)");
+    app.add_option("--checkpoint-every-steps", creep_options.every_steps,
+                   "write a checkpoint at the first output time after every N steps")
+        ->check(CLI::NonNegativeNumber);
+    app.add_option("--checkpoint-every-seconds", creep_options.every_seconds,
+                   "write a checkpoint at the first output time after every T wall seconds")
+        ->check(CLI::NonNegativeNumber);
+  };
   return driver_main(kProgram,
                      "rfmems-creep: creep of a plate (pressure, hold voltage), creep life, "
-                     "checkpoints.\nAlso: --restart CHECKPOINT.h5, --checkpoint-every-steps N, "
-                     "--checkpoint-every-seconds T",
-                     static_cast<int>(args.size()), args.data(), run);
+                     "checkpoints.",
+                     argc, argv, run, RankUse::RootOnly, creep_flags);
 }

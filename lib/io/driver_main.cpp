@@ -34,7 +34,8 @@ void print_driver_error(const std::string& program, const std::string& message) 
 namespace {
 
 int parse_and_run(const std::string& program, const std::string& description, int argc,
-                  char** argv, const std::function<int(const DriverOptions&)>& run) {
+                  char** argv, const std::function<int(const DriverOptions&)>& run,
+                  const ExtraOptions& extra_options) {
   DriverOptions options;
   CLI::App app{description};
   app.add_option("case", options.case_path, "case file (YAML)")->required();
@@ -45,6 +46,7 @@ int parse_and_run(const std::string& program, const std::string& description, in
                  "result file (default out/<case name>.h5; an .xdmf is written beside it)");
   app.add_flag("--json", options.json, "print a JSON summary on stdout");
   app.add_flag("--quiet", options.quiet, "no progress or summary lines");
+  if (extra_options) extra_options(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -67,12 +69,12 @@ int parse_and_run(const std::string& program, const std::string& description, in
 
 int driver_main(const std::string& program, const std::string& description, int argc,
                 char** argv, const std::function<int(const DriverOptions&)>& run,
-                RankUse ranks) {
+                RankUse ranks, const ExtraOptions& extra_options) {
   MpiSession session(&argc, &argv);
   const Communicator world = Communicator::world();
   Index code = 0;
   if (ranks == RankUse::AllRanks || world.is_root())
-    code = parse_and_run(program, description, argc, argv, run);
+    code = parse_and_run(program, description, argc, argv, run, extra_options);
   // One verdict for every rank: the worst (the root's, when only the root runs).
   return static_cast<int>(world.max(code));
 }

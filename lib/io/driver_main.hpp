@@ -17,6 +17,10 @@
 
 #include "io/case_file.hpp"
 
+namespace CLI {
+class App;
+}
+
 namespace rfmems {
 
 struct DriverOptions {
@@ -43,10 +47,14 @@ struct DriverCase {
 
 enum class RankUse { RootOnly, AllRanks };
 
+// Options only one driver has: it adds them to the parser (CLI11) before parsing, with their
+// own checks (a failed check is bad input: exit 2).
+using ExtraOptions = std::function<void(CLI::App&)>;
+
 // Parses the command line and calls run(options), mapping exceptions to exit codes.
 int driver_main(const std::string& program, const std::string& description, int argc,
                 char** argv, const std::function<int(const DriverOptions&)>& run,
-                RankUse ranks = RankUse::RootOnly);
+                RankUse ranks = RankUse::RootOnly, const ExtraOptions& extra_options = {});
 
 // "<program>: <message>" on one line on stderr (newlines in the message become spaces).
 void print_driver_error(const std::string& program, const std::string& message);
