@@ -68,15 +68,22 @@ Mat3 ContinuumCreepSystem::hooke(const Mat3& strain) const {
 void ContinuumCreepSystem::build_plastic_source(int degree) {
   const Mesh& mesh = elasticity_.mesh();
   const auto& boundaries = elasticity_.boundaries();
-  PolynomialReconstruction rec(mesh, [](Index) { return BoundaryPoint::None; }, degree);
+  std::unique_ptr<PolynomialReconstruction> rec;
+  if (degree > 0)
+    rec = std::make_unique<PolynomialReconstruction>(
+        mesh, [](Index) { return BoundaryPoint::None; }, degree);
   std::map<std::pair<Index, Index>, Eigen::Matrix<Real, 3, 6>> blocks;
   std::vector<Real> value;
   std::vector<Vec3> gradient;
   std::vector<std::pair<Index, Real>> weights;
   // sigma_p at x from cell's reconstruction: sigma_p,cell + sum_j v_j (sigma_p,j - sigma_p,cell).
   auto add_weights = [&](Index cell, const Vec3& x, Real factor) {
-    rec.weights_at(cell, x, value, gradient);
-    auto points = rec.points(cell);
+    if (!rec) {  // degree 0: the cell value itself
+      weights.push_back({cell, factor});
+      return;
+    }
+    rec->weights_at(cell, x, value, gradient);
+    auto points = rec->points(cell);
     Real sum = 0;
     for (std::size_t j = 0; j < points.size(); ++j) {
       sum += value[j];
@@ -176,6 +183,20 @@ void ContinuumCreepSystem::build_pattern() {
         structural_values_[pattern_.find(dim_ * b.row + a, creep_index(b.col, j))] += b.B(a, j);
 }
 
+void ContinuumCreepSystem::set_creep_stress_mask(const std::array<bool, 6>& keep) {
+  for (int m = 0; m < 6; ++m) creep_stress_mask_[m] = keep[m] ? 1.0 : 0.0;
+}
+
+Mat3 ContinuumCreepSystem::creep_stress(const Mat3& sigma) const {
+  Mat3 s = sigma;
+  for (int m = 0; m < 6; ++m)
+    if (creep_stress_mask_[m] == 0) {
+      const auto [i, j] = kVoigt[m];
+      s(i, j) = s(j, i) = 0;
+    }
+  return s;
+}
+
 std::vector<Real> ContinuumCreepSystem::differential_components() const {
   std::vector<Real> id(size(), 1.0);
   std::fill(id.begin(), id.begin() + structural_size(), 0.0);
@@ -244,7 +265,7 @@ void ContinuumCreepSystem::creep_rates(Real t, std::span<const Real> state,
   for (Index c = 0; c < n_cells_; ++c) {
     const Index q = creep_index(c, 0);
     const RateVector g =
-        rate_vector(law_.rate(cell_stress(state, c, G[c]), state[q + n_plastic_]));
+        rate_vector(law_.rate(creep_stress(cell_stress(state, c, G[c])), state[q + n_plastic_]));
     for (int j = 0; j < n_components(); ++j) rates[q - ns + j] = g[j];
   }
 }
@@ -268,7 +289,8 @@ void ContinuumCreepSystem::jacobian(Real t, Real c_j, std::span<const Real> y,
   const int nc = n_components();
   for (Index c = 0; c < n_cells_; ++c) {
     const Index q = creep_index(c, 0);
-    rate_derivatives(cell_stress(y, c, G[c]), y[q + n_plastic_], d_sigma, d_eps_eff);
+    rate_derivatives(creep_stress(cell_stress(y, c, G[c])), y[q + n_plastic_], d_sigma, d_eps_eff);
+    for (int m = 0; m < 6; ++m) d_sigma.col(m) *= creep_stress_mask_[m];
     // dsigma/d eps_p = -plastic_stress_, so dF_q/d eps_p = c_j I + d_sigma plastic_stress_.
     const RateJacobian d_plastic = d_sigma * plastic_stress_.leftCols(n_plastic_);
     for (int j = 0; j < nc; ++j) {

@@ -42,6 +42,7 @@
 // Schur-complement preconditioner.
 #pragma once
 #include <Eigen/Dense>
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -86,6 +87,12 @@ class ContinuumCreepSystem : public CreepSystem {
   void equilibrate(Real t, std::span<Real> state) override;
   void initial_state(Real t, std::vector<Real>& state, std::vector<Real>& state_dot) override;
 
+  // Diagnostic (the plate-vs-continuum study): the creep law sees only the stress components
+  // kept (Voigt xx, yy, zz, xy, yz, xz; all by default). Dropping the transverse shear and
+  // normal stress of a beam section (section x-y: keep only xx and zz) reproduces the plate's
+  // assumption that only the bending stress creeps. The elastic stress is not affected.
+  void set_creep_stress_mask(const std::array<bool, 6>& keep);
+
   // Post-processing.
   // Plastic strain tensor of cell c (plane stress: eps_p,zz = -(xx + yy)).
   Mat3 plastic_strain(std::span<const Real> state, Index c) const;
@@ -117,6 +124,8 @@ class ContinuumCreepSystem : public CreepSystem {
   // The plastic strain that enters the stress (plane stress: without its zz part).
   Mat3 stress_plastic_strain(std::span<const Real> state, Index c) const;
   Mat3 cell_stress(std::span<const Real> state, Index c, const Mat3& G) const;
+  // The stress the creep law sees (creep_stress_mask_ applied).
+  Mat3 creep_stress(const Mat3& sigma) const;
   // dg/dsigma (Voigt xx, yy, zz, xy, yz, xz; unit symmetric increments) and dg/d eps_eff.
   void rate_derivatives(const Mat3& sigma, Real eps_eff, RateJacobian& d_sigma,
                         RateVector& d_eps_eff) const;
@@ -137,6 +146,7 @@ class ContinuumCreepSystem : public CreepSystem {
   Hypothesis hypothesis_;
   Real mu_, lambda_;
   std::vector<std::pair<int, int>> components_;
+  std::array<Real, 6> creep_stress_mask_{1, 1, 1, 1, 1, 1};
   Eigen::Matrix<Real, 6, 6> plastic_stress_;  // Voigt sigma_p per plastic component (columns)
   std::vector<SourceBlock> source_;
   std::vector<std::vector<StressWeight>> stress_weights_;
