@@ -5,13 +5,13 @@
 //
 // The figure is the thesis's "percentage error" of the plate: 1 - w_p,plate / w_p,continuum.
 // - L/h = 10, Table 4.1 law and load (q = 4 MPa): the plate's plastic deflection is ~15 % below
-//   the continuum's (thesis Table 4.2: 16.76 %). The cause is the transverse shear: the plate lets only
-//   the bending stress creep (thesis sec. 4.2.2), the continuum's von Mises stress includes
-//   sigma_xz, and with the law's strong hardening the creep strain grows only as sigma^0.4
-//   (eps ~ (a t)^(1/(mn+1)), a ~ sigma^m), so the small shear stress of the section still makes
-//   a shear creep strain of the order of the bending one; its deflection is O((h/L)^1.4) of
-//   the bending creep's. Masking sigma_xy (and sigma_zz) out of the continuum's creep law
-//   brings it to the plate within 2 % (measured 0.4 %).
+//   the continuum's (thesis Table 4.2: 16.76 %). The cause is the transverse shear: the plate
+//   lets only the bending stress creep (thesis sec. 4.2.2), the continuum's von Mises stress
+//   includes the section's shear stress sigma_xy, and with the law's strong hardening the creep
+//   strain grows only as sigma^0.4 (eps ~ (a t)^(1/(mn+1)), a ~ sigma^m), so the small shear
+//   stress still makes a shear creep strain of the order of the bending one. Masking sigma_xy
+//   (and sigma_yy) out of the continuum's creep law brings it to the plate within 1 % (measured
+//   0.4 %). The effect falls as ~(h/L)^1.6 (test/study/test_creep_plate_vs_continuum.cpp).
 // - L/h = 60, Coble law of sec. 4.6.2 (m = 1, mild hardening) at q = 1.2 MPa: within 1 %.
 #include <gtest/gtest.h>
 
@@ -57,7 +57,7 @@ TEST(CreepPlateVsPlane, ThickStripCreepsMoreInTheContinuumThroughShear) {
   EXPECT_NEAR(plane.w_elastic / plate.w_elastic, 1.0, 0.02);  // elastic: the models agree
   EXPECT_GT(difference, 0.10);  // measured 15.4 %
   EXPECT_LT(difference, 0.25);
-  EXPECT_LT(std::abs(bending_difference), 0.02);
+  EXPECT_LT(std::abs(bending_difference), 0.01);
 }
 
 TEST(CreepPlateVsPlane, SlenderStripAgreesWithinOnePercentForCobleCreep) {

@@ -13,12 +13,14 @@
 // Coble law of sec. 4.6.2 (m = 1, mild hardening). And a diagnostic continuum whose creep law
 // sees only the axial stress (ContinuumCreepSystem::set_creep_stress_mask: the plate's
 // bending-only assumption), which isolates the cause of the thick-strip difference: creep of
-// the transverse shear stress. With the Table 4.1 law's hardening the creep strain grows only
-// as sigma^(m/(mn+1)) = sigma^0.4 after the first seconds, so even the small shear stress of a
-// slender section creeps by about as much as the bending stress; the shear creep deflection is
-// then O((h/L)^1.4) of the bending creep's (Coble: sigma^(2/3), O((h/L)^(5/3))). The
-// through-thickness stress and the load on the top face instead of the mid-surface matter less
-// (measured: dropping sigma_zz alone changes < 0.5 %).
+// the transverse shear stress (the section's sigma_xy, x-z of the strip). With the Table 4.1
+// law's hardening the creep strain grows only as sigma^(m/(mn+1)) = sigma^0.4 after the first
+// seconds, so even the small shear stress of a slender section creeps by a sizeable fraction of
+// the bending creep (measured: the plate error falls as (h/L)^1.6: 14.9, 2.5, 0.75 %); for the
+// linear Coble law it falls as (h/L)^2, like the elastic shear deflection (11.9, 1.4, 0.5 %).
+// The through-thickness normal stress (the section's sigma_yy) and the load on the top face
+// instead of the mid-surface matter less (measured at L/h = 10: dropping sigma_yy alone from
+// the creep law changes w_p by 0.2 %).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -89,14 +91,15 @@ TEST(CreepPlateVsContinuum, Table41LawAndLoads) {
   const CreepLaw law{8.33e-6, 1.8e8, 2, 2, 1e9};
   std::printf("Table 4.1 law (A = 8.33e-6 /s, B = 1.8e8, m = n = 2, sigma_y0 = 1 GPa), 500 h:\n");
   const Row thick = compare(kCases[0], law);
-  EXPECT_GT(thick.error(), 0.10);  // thesis 16.76 %
+  EXPECT_GT(thick.error(), 0.10);  // measured 14.9 %, thesis 16.76 %
   EXPECT_LT(thick.error(), 0.25);
-  EXPECT_LT(std::abs(thick.bending_error()), 0.02);
+  EXPECT_LT(std::abs(thick.bending_error()), 0.01);  // measured -0.4 %
   const Row mid = compare(kCases[1], law);
-  EXPECT_LT(std::abs(mid.bending_error()), 0.03);
+  EXPECT_LT(std::abs(mid.error()), 0.04);  // measured 2.5 %: the shear creep (thesis 0.15 %)
+  EXPECT_LT(std::abs(mid.bending_error()), 0.01);
   const Row slender = compare(kCases[2], law);
-  EXPECT_LT(std::abs(slender.error()), 0.02);
-  EXPECT_LT(std::abs(slender.bending_error()), 0.02);
+  EXPECT_LT(std::abs(slender.error()), 0.015);  // measured 0.75 %
+  EXPECT_LT(std::abs(slender.bending_error()), 0.01);
   // The shear creep effect falls with h/L.
   EXPECT_GT(thick.error(), mid.error());
   EXPECT_GT(mid.error(), slender.error());
@@ -105,10 +108,17 @@ TEST(CreepPlateVsContinuum, Table41LawAndLoads) {
 TEST(CreepPlateVsContinuum, CobleLaw) {
   const CreepLaw law{2.08e-10, 20, 1, 0.5, 0.7e9};
   std::printf("Coble law (A = 2.08e-10 /s, B = 20, m = 1, n = 0.5, sigma_y0 = 0.7 GPa), 500 h:\n");
+  // Linear creep: the shear creep deflection is O((h/L)^2) of the bending creep's, as the
+  // elastic shear deflection is (measured 11.9 %, 1.4 %, 0.5 %; bending-only 0.2 % or less).
   const Row thick = compare(kCases[0], law);
-  EXPECT_LT(std::abs(thick.bending_error()), 0.02);
-  for (int k = 1; k < 3; ++k) {
-    const Row r = compare(kCases[k], law);
-    EXPECT_LT(std::abs(r.error()), 0.01);
-  }
+  EXPECT_GT(thick.error(), 0.08);
+  EXPECT_LT(std::abs(thick.bending_error()), 0.01);
+  const Row mid = compare(kCases[1], law);
+  EXPECT_LT(std::abs(mid.error()), 0.02);
+  EXPECT_LT(std::abs(mid.bending_error()), 0.01);
+  const Row slender = compare(kCases[2], law);
+  EXPECT_LT(std::abs(slender.error()), 0.01);
+  EXPECT_LT(std::abs(slender.bending_error()), 0.01);
+  EXPECT_GT(thick.error(), mid.error());
+  EXPECT_GT(mid.error(), slender.error());
 }
