@@ -131,7 +131,7 @@ int main(int argc, char** argv) {
   const Real w_scale = problem.load * std::pow(problem.length, 4) / (32 * problem.E * h * h * h);
   IdaOptions options;
   options.rtol = rtol;
-  options.atol = atol_factor * rtol * w_scale;  
+  options.atol = atol_factor * rtol * w_scale;
 
   std::vector<Run> plate_runs, plane_runs;
   for (auto [nx, ny] : plate_meshes) {
@@ -143,7 +143,8 @@ int main(int argc, char** argv) {
   }
   for (auto [nx, nz] : plane_meshes) {
     std::fprintf(stderr, "plane stress %d x %d ...\n", nx, nz);
-    plane_runs.push_back({"plane_stress", nx, nz, run_continuum_creep(problem, nx, nz, options, end)});
+    plane_runs.push_back(
+        {"plane_stress", nx, nz, run_continuum_creep(problem, nx, nz, options, end)});
     print(plane_runs.back(), problem.slenderness);
   }
   const Run& plate = plate_runs[cheapest_within(plate_runs, target)];
@@ -152,11 +153,13 @@ int main(int argc, char** argv) {
              wp_plane = plane_runs.back().result.w_plastic;
   std::printf(
       "{\"kind\": \"summary\", \"slenderness\": %g, \"load\": %g, \"law\": \"%s\", \"hours\": %g, "
-      "\"width_ratio\": %g, \"creep_stress\": \"%s\", \"target\": %g, \"w_plastic_plate\": %.8e, \"w_plastic_plane\": %.8e, "
+      "\"width_ratio\": %g, \"creep_stress\": \"%s\", \"target\": %g, \"w_plastic_plate\": %.8e, "
+      "\"w_plastic_plane\": %.8e, "
       "\"plate_error\": %.5f, \"plate_mesh\": [%d, %d], \"plate_wall_s\": %.4f, "
       "\"plane_mesh\": [%d, %d], \"plane_wall_s\": %.4f, \"wall_ratio\": %.2f}\n",
-      problem.slenderness, problem.load, law.c_str(), hours, width_ratio, creep_stress.c_str(), target, wp_plate,
-      wp_plane, 1 - wp_plate / wp_plane, plate.n1, plate.n2, plate.result.wall_seconds, plane.n1,
-      plane.n2, plane.result.wall_seconds, plane.result.wall_seconds / plate.result.wall_seconds);
+      problem.slenderness, problem.load, law.c_str(), hours, width_ratio, creep_stress.c_str(),
+      target, wp_plate, wp_plane, 1 - wp_plate / wp_plane, plate.n1, plate.n2,
+      plate.result.wall_seconds, plane.n1, plane.n2, plane.result.wall_seconds,
+      plane.result.wall_seconds / plate.result.wall_seconds);
   return 0;
 }

@@ -11,7 +11,8 @@
 //   strain grows only as sigma^0.4 (eps ~ (a t)^(1/(mn+1)), a ~ sigma^m), so the small shear
 //   stress still makes a shear creep strain of the order of the bending one. Masking sigma_xy
 //   (and sigma_yy) out of the continuum's creep law brings it to the plate within 1 % (measured
-//   0.4 %). The effect falls as ~(h/L)^1.6 (test/study/test_creep_plate_vs_continuum.cpp).
+//   0.07 %; 121 x 16 in the study: 0.4 %). The effect falls as ~(h/L)^1.6
+//   (test/study/test_creep_plate_vs_continuum.cpp).
 // - L/h = 60, Coble law of sec. 4.6.2 (m = 1, mild hardening) at q = 1.2 MPa: within 1 %.
 #include <gtest/gtest.h>
 
@@ -45,17 +46,18 @@ TEST(CreepPlateVsPlane, ThickStripCreepsMoreInTheContinuumThroughShear) {
   IdaOptions plate_options = options(p);
   plate_options.linear_solver = IdaOptions::LinearSolver::Spgmr;
   const CreepRunResult plate = run_plate_creep(p, 21, 3, 20, plate_options, kEnd);
-  const CreepRunResult plane = run_continuum_creep(p, 61, 12, options(p), kEnd);
+  const CreepRunResult plane = run_continuum_creep(p, 31, 8, options(p), kEnd);
   p.continuum_creep_stress = FixedFixedCreepProblem::kBendingOnly;
-  const CreepRunResult bending = run_continuum_creep(p, 61, 12, options(p), kEnd);
+  const CreepRunResult bending = run_continuum_creep(p, 31, 8, options(p), kEnd);
   const Real difference = 1 - plate.w_plastic / plane.w_plastic;
   const Real bending_difference = 1 - plate.w_plastic / bending.w_plastic;
-  std::printf("L/h = 10: w_el plate %.4e plane %.4e m; w_p plate %.4e, plane %.4e (plate error %+.2f %%), "
-              "plane bending-only creep %.4e (%+.2f %%)\n",
-              plate.w_elastic, plane.w_elastic, plate.w_plastic, plane.w_plastic,
-              100 * difference, bending.w_plastic, 100 * bending_difference);
-  EXPECT_NEAR(plane.w_elastic / plate.w_elastic, 1.0, 0.02);  // elastic: the models agree
-  EXPECT_GT(difference, 0.10);  // measured 15.4 %
+  std::printf(
+      "L/h = 10: w_el plate %.4e plane %.4e m; w_p plate %.4e, plane %.4e (plate error %+.2f %%), "
+      "plane bending-only creep %.4e (%+.2f %%)\n",
+      plate.w_elastic, plane.w_elastic, plate.w_plastic, plane.w_plastic, 100 * difference,
+      bending.w_plastic, 100 * bending_difference);
+  EXPECT_NEAR(plane.w_elastic / plate.w_elastic, 1.0, 0.03);  // elastic: agree (1.7 %)
+  EXPECT_GT(difference, 0.10);                                // measured 14.5 % (121 x 16: 14.9 %)
   EXPECT_LT(difference, 0.25);
   EXPECT_LT(std::abs(bending_difference), 0.01);
 }
@@ -71,10 +73,10 @@ TEST(CreepPlateVsPlane, SlenderStripAgreesWithinOnePercentForCobleCreep) {
   const CreepRunResult plate = run_plate_creep(p, 41, 3, 20, plate_options, kEnd);
   const CreepRunResult plane = run_continuum_creep(p, 241, 8, options(p), kEnd);
   const Real difference = 1 - plate.w_plastic / plane.w_plastic;
-  std::printf("L/h = 60, Coble: w_el plate %.4e plane %.4e m; w_p plate %.4e, plane %.4e "
-              "(%+.2f %%)\n",
-              plate.w_elastic, plane.w_elastic, plate.w_plastic, plane.w_plastic,
-              100 * difference);
+  std::printf(
+      "L/h = 60, Coble: w_el plate %.4e plane %.4e m; w_p plate %.4e, plane %.4e "
+      "(%+.2f %%)\n",
+      plate.w_elastic, plane.w_elastic, plate.w_plastic, plane.w_plastic, 100 * difference);
   EXPECT_LT(plate.w_plastic, 0);
   EXPECT_LT(std::abs(difference), 0.01);  // measured 0.26 %
 }

@@ -66,24 +66,24 @@ Row compare(const Case& c, const CreepLaw& law) {
   r.plate = plate.w_plastic;
   r.plane_coarse =
       run_continuum_creep(p, c.coarse[0], c.coarse[1], options(p, false), kEnd).w_plastic;
-  const CreepRunResult plane = run_continuum_creep(p, c.fine[0], c.fine[1], options(p, false), kEnd);
+  const CreepRunResult plane =
+      run_continuum_creep(p, c.fine[0], c.fine[1], options(p, false), kEnd);
   r.plane = plane.w_plastic;
   p.continuum_creep_stress = FixedFixedCreepProblem::kBendingOnly;
   r.bending = run_continuum_creep(p, c.fine[0], c.fine[1], options(p, false), kEnd).w_plastic;
-  std::printf("L/h = %2g  q = %8.3g Pa  w_el plate %.4e plane %.4e  w_p plate %.5e  plane %.5e "
-              "(%dx%d; %dx%d: %.2f %% off)  plate error %+6.2f %%  bending-only creep: %.5e "
-              "(plate error %+6.2f %%)  wall plate %.1f s, plane %.1f s\n",
-              c.slenderness, c.load, plate.w_elastic, plane.w_elastic, r.plate, r.plane,
-              c.fine[0], c.fine[1], c.coarse[0], c.coarse[1], 100 * r.mesh_change(),
-              100 * r.error(), r.bending, 100 * r.bending_error(), plate.wall_seconds,
-              plane.wall_seconds);
+  std::printf(
+      "L/h = %2g  q = %8.3g Pa  w_el plate %.4e plane %.4e  w_p plate %.5e  plane %.5e "
+      "(%dx%d; %dx%d: %.2f %% off)  plate error %+6.2f %%  bending-only creep: %.5e "
+      "(plate error %+6.2f %%)  wall plate %.1f s, plane %.1f s\n",
+      c.slenderness, c.load, plate.w_elastic, plane.w_elastic, r.plate, r.plane, c.fine[0],
+      c.fine[1], c.coarse[0], c.coarse[1], 100 * r.mesh_change(), 100 * r.error(), r.bending,
+      100 * r.bending_error(), plate.wall_seconds, plane.wall_seconds);
   std::fflush(stdout);
   return r;
 }
 
-const Case kCases[] = {{10, 4e6, {61, 12}, {121, 16}},
-                       {30, 6e4, {121, 8}, {241, 12}},
-                       {60, 6e4, {241, 8}, {481, 12}}};
+const Case kCases[] = {
+    {10, 4e6, {61, 12}, {121, 16}}, {30, 6e4, {121, 8}, {241, 12}}, {60, 6e4, {241, 8}, {481, 12}}};
 
 }  // namespace
 

@@ -28,9 +28,15 @@ ContinuumCreepSystem::ContinuumCreepSystem(ElasticityOperator& elasticity, const
       lambda_(elasticity.material().lambda()) {
   law_.validate();
   switch (hypothesis_) {
-    case Hypothesis::PlaneStress: components_ = {{0, 0}, {1, 1}, {0, 1}}; break;
-    case Hypothesis::PlaneStrain: components_ = {{0, 0}, {1, 1}, {0, 1}, {2, 2}}; break;
-    case Hypothesis::ThreeD: components_.assign(std::begin(kVoigt), std::end(kVoigt)); break;
+    case Hypothesis::PlaneStress:
+      components_ = {{0, 0}, {1, 1}, {0, 1}};
+      break;
+    case Hypothesis::PlaneStrain:
+      components_ = {{0, 0}, {1, 1}, {0, 1}, {2, 2}};
+      break;
+    case Hypothesis::ThreeD:
+      components_.assign(std::begin(kVoigt), std::end(kVoigt));
+      break;
   }
   n_plastic_ = static_cast<int>(components_.size());
   plastic_stress_.setZero();
@@ -218,8 +224,7 @@ Mat3 ContinuumCreepSystem::plastic_strain(std::span<const Real> state, Index c) 
   return e;
 }
 
-Mat3 ContinuumCreepSystem::cell_stress(std::span<const Real> state, Index c,
-                                       const Mat3& G) const {
+Mat3 ContinuumCreepSystem::cell_stress(std::span<const Real> state, Index c, const Mat3& G) const {
   return hooke(0.5 * (G + G.transpose()) - stress_plastic_strain(state, c));
 }
 
@@ -238,8 +243,8 @@ ContinuumCreepSystem::RateVector ContinuumCreepSystem::rate_vector(const CreepRa
   return v;
 }
 
-void ContinuumCreepSystem::rate_derivatives(const Mat3& sigma, Real eps_eff,
-                                            RateJacobian& d_sigma, RateVector& d_eps_eff) const {
+void ContinuumCreepSystem::rate_derivatives(const Mat3& sigma, Real eps_eff, RateJacobian& d_sigma,
+                                            RateVector& d_eps_eff) const {
   d_sigma.resize(n_components(), 6);
   for (int m = 0; m < 6; ++m)
     d_sigma.col(m) = rate_vector(law_.rate_stress_derivative(
@@ -258,8 +263,7 @@ void ContinuumCreepSystem::add_plastic_source(std::span<const Real> state,
   }
 }
 
-void ContinuumCreepSystem::creep_rates(Real t, std::span<const Real> state,
-                                       std::span<Real> rates) {
+void ContinuumCreepSystem::creep_rates(Real t, std::span<const Real> state, std::span<Real> rates) {
   const std::vector<Mat3> G = elasticity_.cell_gradients(t, state.first(structural_size()));
   const Index ns = structural_size();
   for (Index c = 0; c < n_cells_; ++c) {

@@ -5,7 +5,8 @@
 //   strain split       eps = sym(grad u) = eps_e + eps_p
 //   stress             sigma = 2 mu (eps - eps_p) + lambda tr(eps - eps_p) I
 //   momentum           0 = div sigma + b   (quasi-static: creep is slow, inertia neglected)
-//                        = div sigma_el(u) - div sigma_p + b,  sigma_p = 2 mu eps_p + lambda tr(eps_p) I
+//                        = div sigma_el(u) - div sigma_p + b,
+//                      sigma_p = 2 mu eps_p + lambda tr(eps_p) I
 //   creep law          eps_p' = CreepLaw rate of the cell's stress (von Mises of the full 3 x 3
 //                      stress, materials/creep_law.hpp), eps_eff' = its effective rate
 //

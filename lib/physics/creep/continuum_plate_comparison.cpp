@@ -43,8 +43,7 @@ CreepRunResult integrate(System& system, const IdaOptions& options, Real end_tim
 }  // namespace
 
 CreepRunResult run_plate_creep(const FixedFixedCreepProblem& problem, int nx, int ny,
-                               int thickness_intervals, const IdaOptions& options,
-                               Real end_time) {
+                               int thickness_intervals, const IdaOptions& options, Real end_time) {
   const auto start = Clock::now();
   BoxSpec spec;
   spec.upper = Vec3(problem.length, problem.width, 0);
@@ -85,9 +84,8 @@ CreepRunResult run_continuum_creep(const FixedFixedCreepProblem& problem, int nx
     if (name == "left" || name == "right") bcs[k].kind = ElasticityBoundary::Kind::Fixed;
     if (name == "top") bcs[k].value = [q](const Vec3&, Real) { return Vec3(0, -q, 0); };
   }
-  ElasticityOperator op(mesh,
-                        LinearElastic{problem.E, problem.nu, problem.rho, Hypothesis::PlaneStress},
-                        bcs);
+  ElasticityOperator op(
+      mesh, LinearElastic{problem.E, problem.nu, problem.rho, Hypothesis::PlaneStress}, bcs);
   ContinuumCreepSystem system(op, problem.law, problem.continuum_source_degree);
   system.set_creep_stress_mask(problem.continuum_creep_stress);
   const Vec3 centre(problem.length / 2, problem.thickness() / 2, 0);

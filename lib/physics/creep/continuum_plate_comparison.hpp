@@ -31,7 +31,7 @@ struct FixedFixedCreepProblem {
   Real load = 6e4;        // q [Pa], downward
   Real E = 200e9, nu = 0.3, rho = 7854;
   CreepLaw law{8.33e-6, 1.8e8, 2, 2, 1e9};  // thesis sec. 4.6.1 (grain-boundary sliding)
-  int continuum_source_degree = 2;  // ContinuumCreepSystem's sigma_p reconstruction degree
+  int continuum_source_degree = 2;          // ContinuumCreepSystem's sigma_p reconstruction degree
   // Diagnostic: the stress components the continuum's creep law sees (Voigt xx, yy, zz, xy,
   // yz, xz; ContinuumCreepSystem::set_creep_stress_mask). kBendingOnly keeps the axial stress
   // alone, dropping the section's transverse shear xy and through-thickness yy: the plate's
@@ -42,8 +42,8 @@ struct FixedFixedCreepProblem {
 };
 
 struct CreepRunResult {
-  Real w_elastic = 0;   // centre deflection at t = 0 [m]
-  Real w_plastic = 0;   // w(t_end) - w(0) [m]
+  Real w_elastic = 0;  // centre deflection at t = 0 [m]
+  Real w_plastic = 0;  // w(t_end) - w(0) [m]
   Index unknowns = 0;
   IntegratorStats stats;
   double wall_seconds = 0;  // set-up, initial state and integration

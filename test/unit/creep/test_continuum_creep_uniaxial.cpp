@@ -88,9 +88,10 @@ TEST(ContinuumCreepUniaxial, PlaneStressStripFollowsTheClosedForm) {
   for (auto [law, sigma] : {std::pair{CreepLaw{8.33e-6, 1.8e8, 2, 2, 1e9}, 108e6},
                             std::pair{CreepLaw{2.08e-10, 20, 1, 0.5, 0.7e9}, 150e6}}) {
     const UniaxialResult r = run_uniaxial(2, Hypothesis::PlaneStress, law, sigma);
-    std::printf("plane stress, m = %g, %g MPa: eps_p,xx rel. error %.2e, eps_p,yy %.2e, "
-                "end displacement %.2e (%ld steps)\n",
-                law.m, sigma / 1e6, r.worst_strain, r.worst_lateral, r.worst_extension, r.steps);
+    std::printf(
+        "plane stress, m = %g, %g MPa: eps_p,xx rel. error %.2e, eps_p,yy %.2e, "
+        "end displacement %.2e (%ld steps)\n",
+        law.m, sigma / 1e6, r.worst_strain, r.worst_lateral, r.worst_extension, r.steps);
     EXPECT_LT(r.worst_strain, 1e-4);
     EXPECT_LT(r.worst_lateral, 1e-4);
     EXPECT_LT(r.worst_extension, 1e-4);
@@ -100,9 +101,10 @@ TEST(ContinuumCreepUniaxial, PlaneStressStripFollowsTheClosedForm) {
 TEST(ContinuumCreepUniaxial, ThreeDBarFollowsTheClosedFormAndPreservesVolume) {
   const CreepLaw law{8.33e-6, 1.8e8, 2, 2, 1e9};
   const UniaxialResult r = run_uniaxial(3, Hypothesis::ThreeD, law, 108e6);
-  std::printf("3D: eps_p,xx rel. error %.2e, eps_p,yy %.2e, end displacement %.2e, "
-              "|tr eps_p|/eps %.2e (%ld steps)\n",
-              r.worst_strain, r.worst_lateral, r.worst_extension, r.worst_trace, r.steps);
+  std::printf(
+      "3D: eps_p,xx rel. error %.2e, eps_p,yy %.2e, end displacement %.2e, "
+      "|tr eps_p|/eps %.2e (%ld steps)\n",
+      r.worst_strain, r.worst_lateral, r.worst_extension, r.worst_trace, r.steps);
   EXPECT_LT(r.worst_strain, 1e-4);
   EXPECT_LT(r.worst_lateral, 1e-4);
   EXPECT_LT(r.worst_extension, 1e-4);
