@@ -18,7 +18,8 @@ struct KluFactorization::Impl {
   SuiteSparse_long n = 0;
 };
 
-KluFactorization::KluFactorization(const CsrPattern& pattern, std::span<const Real> values)
+KluFactorization::KluFactorization(const CsrPattern& pattern, std::span<const Real> values,
+                                   KluOrdering ordering)
     : impl_(new Impl) {
   Impl& k = *impl_;
   k.n = pattern.n_rows();
@@ -26,6 +27,7 @@ KluFactorization::KluFactorization(const CsrPattern& pattern, std::span<const Re
   k.idx.assign(pattern.col_idx.begin(), pattern.col_idx.end());
   k.values.assign(values.begin(), values.end());
   klu_l_defaults(&k.common);
+  k.common.ordering = ordering == KluOrdering::Colamd ? 1 : 0;
   k.symbolic = klu_l_analyze(k.n, k.ptr.data(), k.idx.data(), &k.common);
   if (k.symbolic)
     k.numeric = klu_l_factor(k.ptr.data(), k.idx.data(), k.values.data(), k.symbolic, &k.common);

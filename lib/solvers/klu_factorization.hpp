@@ -7,10 +7,16 @@
 
 namespace rfmems {
 
+// Fill-reducing ordering of the symbolic analysis: AMD (KLU's default) on A + A^T, or COLAMD
+// on the columns (less fill for matrices whose rows reach far, e.g. the plate creep Schur
+// complement: 1.32e6 vs 1.37e6 entries in L and a 1.6x faster refactor on 81 x 21 cells).
+enum class KluOrdering { Amd, Colamd };
+
 class KluFactorization {
  public:
   // Factorises the CSR matrix (pattern, values). Throws SolverError if singular.
-  KluFactorization(const CsrPattern& pattern, std::span<const Real> values);
+  KluFactorization(const CsrPattern& pattern, std::span<const Real> values,
+                   KluOrdering ordering = KluOrdering::Amd);
   ~KluFactorization();
   KluFactorization(const KluFactorization&) = delete;
   KluFactorization& operator=(const KluFactorization&) = delete;

@@ -1,6 +1,7 @@
 #include "physics/creep/plate_creep_schur_complement.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/error.hpp"
 
@@ -85,10 +86,41 @@ void PlateCreepSchurComplement::setup(Real t, Real c_j, std::span<const Real> st
         for (int l = 0; l < 2; ++l) values_[*position++] -= s(a, l);
     }
   }
+  if (lu_ && refactor_tolerance_ > 0 && lagged_factors_suffice()) return;
   if (lu_)
     lu_->refactor(values_);
   else
-    lu_ = std::make_unique<KluFactorization>(pattern_, values_);
+    lu_ = std::make_unique<KluFactorization>(pattern_, values_, KluOrdering::Colamd);
+  factored_values_ = values_;
+  ++factorizations_;
+}
+
+bool PlateCreepSchurComplement::lagged_factors_suffice() {
+  // ||S_old^-1 (S - S_old)||, estimated by four power iterations from a fixed vector: the
+  // lagged factors precondition S to I + S_old^-1 (S - S_old), which GMRES handles in a few
+  // iterations while that is small. (A relative change of S's entries is no such measure:
+  // near a singular S a change of 1e-3 in the entries can change S^-1 completely.)
+  const Index n = pattern_.n_rows();
+  std::vector<Real> x(n), y(n);
+  for (Index k = 0; k < n; ++k) x[k] = (k % 3 == 0 ? 1.0 : -1.0) / std::sqrt(Real(n));
+  Real estimate = 0;
+  for (int iteration = 0; iteration < 4; ++iteration) {
+    for (Index row = 0; row < n; ++row) {
+      Real sum = 0;
+      for (Index p = pattern_.row_ptr[row]; p < pattern_.row_ptr[row + 1]; ++p)
+        sum += (values_[p] - factored_values_[p]) * x[pattern_.col_idx[p]];
+      y[row] = sum;
+    }
+    lu_->solve(y);
+    Real norm = 0;
+    for (Real v : y) norm += v * v;
+    norm = std::sqrt(norm);
+    estimate = norm;  // x has unit norm
+    if (!(norm > 0)) break;
+    for (Index k = 0; k < n; ++k) x[k] = y[k] / norm;
+  }
+  last_lag_estimate_ = estimate;
+  return estimate <= refactor_tolerance_;
 }
 
 void PlateCreepSchurComplement::solve(std::span<const Real> r, std::span<Real> z) {

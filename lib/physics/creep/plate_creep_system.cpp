@@ -297,8 +297,23 @@ PlateCreepSystem::PointRateJacobian PlateCreepSystem::point_rate_jacobian(
 
 void PlateCreepSystem::preconditioner_setup(Real t, Real c_j, std::span<const Real> y,
                                             std::span<const Real>) {
-  if (!schur_) schur_ = std::make_unique<PlateCreepSchurComplement>(*this);
+  if (!schur_) {
+    schur_ = std::make_unique<PlateCreepSchurComplement>(*this);
+    schur_->set_refactor_tolerance(schur_refactor_tolerance_);
+  }
   schur_->setup(t, c_j, y);
+}
+
+void PlateCreepSystem::set_schur_refactor_tolerance(Real tolerance) {
+  if (!(tolerance >= 0))
+    throw InputError(fmt::format("plate creep: Schur refactor tolerance must be >= 0, got {}",
+                                 tolerance));
+  schur_refactor_tolerance_ = tolerance;
+  if (schur_) schur_->set_refactor_tolerance(tolerance);
+}
+
+long PlateCreepSystem::schur_factorizations() const {
+  return schur_ ? schur_->factorizations() : 0;
 }
 
 void PlateCreepSystem::preconditioner_solve(std::span<const Real> r, std::span<Real> z) {
