@@ -1,0 +1,322 @@
+#include "physics/gas/kinetic/equilibrium.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "core/error.hpp"
+
+namespace rfmems {
+namespace {
+
+template <int M>
+using VecM = Eigen::Matrix<Real, M, 1>;
+template <int M>
+using MatM = Eigen::Matrix<Real, M, M>;
+
+template <int M>
+VecM<M> basis(const Vec3& xi) {
+  VecM<M> phi;
+  phi[0] = 1;
+  phi[1] = xi[0];
+  phi[2] = xi[1];
+  phi[3] = xi[2];
+  if constexpr (M == 5) {
+    phi[4] = xi.squaredNorm();
+  } else {
+    phi[4] = xi[0] * xi[0];
+    phi[5] = xi[1] * xi[1];
+    phi[6] = xi[2] * xi[2];
+    phi[7] = xi[0] * xi[1];
+    phi[8] = xi[0] * xi[2];
+    phi[9] = xi[1] * xi[2];
+  }
+  return phi;
+}
+
+// Target moments in the scaled variables (xi = c / s).
+template <int M>
+VecM<M> target_moments(const EquilibriumTarget& t, Real s) {
+  const Vec3 u = t.u / s;
+  const Mat3 second = t.rho * (u * u.transpose() + t.covariance / (s * s));
+  VecM<M> m;
+  m[0] = t.rho;
+  m.template segment<3>(1) = t.rho * u;
+  if constexpr (M == 5) {
+    m[4] = second.trace();
+  } else {
+    m[4] = second(0, 0);
+    m[5] = second(1, 1);
+    m[6] = second(2, 2);
+    m[7] = second(0, 1);
+    m[8] = second(0, 2);
+    m[9] = second(1, 2);
+  }
+  return m;
+}
+
+// d m / d u_j (SI u) at fixed rho and covariance.
+template <int M>
+Eigen::Matrix<Real, M, 3> target_velocity_derivative(const EquilibriumTarget& t, Real s) {
+  const Vec3 u = t.u / s;
+  Eigen::Matrix<Real, M, 3> d = Eigen::Matrix<Real, M, 3>::Zero();
+  for (int j = 0; j < 3; ++j) {
+    d(1 + j, j) = t.rho / s;
+    if constexpr (M == 5) {
+      d(4, j) = 2 * t.rho * u[j] / s;
+    } else {
+      // d(rho u_a u_b)/du_j = rho (delta_aj u_b + u_a delta_bj) / s
+      auto second = [&](int a, int b) {
+        return t.rho * ((a == j ? u[b] : 0.0) + (b == j ? u[a] : 0.0)) / s;
+      };
+      d(4, j) = second(0, 0);
+      d(5, j) = second(1, 1);
+      d(6, j) = second(2, 2);
+      d(7, j) = second(0, 1);
+      d(8, j) = second(0, 2);
+      d(9, j) = second(1, 2);
+    }
+  }
+  return d;
+}
+
+// G(a) = sum w phi exp(a . phi) - m, and optionally J = sum w phi phi^T exp(a . phi).
+template <int M>
+VecM<M> newton_residual(const VecM<M>& a, const VecM<M>& m, const VelocityGrid& grid,
+                        MatM<M>* J) {
+  const Real inv_s = 1.0 / grid.reference_speed;
+  VecM<M> G = VecM<M>::Zero();
+  if (J) J->setZero();
+  for (Index k = 0; k < grid.size(); ++k) {
+    const VecM<M> phi = basis<M>(grid.c[k] * inv_s);
+    const Real wf = grid.w[k] * std::exp(a.dot(phi));
+    G.noalias() += wf * phi;
+    if (J) J->template selfadjointView<Eigen::Lower>().rankUpdate(phi, wf);
+  }
+  if (J) *J = J->template selfadjointView<Eigen::Lower>();
+  return G - m;
+}
+
+template <int M>
+VecM<M> continuous_start(const EquilibriumTarget& t, Real s) {
+  const Mat3 lambda = t.covariance / (s * s);  // scaled covariance
+  Eigen::LLT<Mat3> llt(lambda);
+  if (llt.info() != Eigen::Success)
+    throw RecoverableError("equilibrium: covariance not positive definite");
+  const Mat3 A = llt.solve(Mat3::Identity());
+  const Vec3 u = t.u / s;
+  // f in SI per (m/s)^3: n0 = rho / ((2 pi)^(3/2) sqrt(det Lambda_SI)).
+  const Real det_si = t.covariance.determinant();
+  const Real n0 = t.rho / (std::pow(2 * std::numbers::pi, 1.5) * std::sqrt(det_si));
+  VecM<M> a;
+  a[0] = std::log(n0) - 0.5 * u.dot(A * u);
+  a.template segment<3>(1) = A * u;
+  if constexpr (M == 5) {
+    a[4] = -0.5 * A.trace() / 3;  // BGK: A = I / theta
+  } else {
+    a[4] = -0.5 * A(0, 0);
+    a[5] = -0.5 * A(1, 1);
+    a[6] = -0.5 * A(2, 2);
+    a[7] = -A(0, 1);
+    a[8] = -A(0, 2);
+    a[9] = -A(1, 2);
+  }
+  return a;
+}
+
+// Phi(a) = sum_k w_k exp(a . phi_k) - a . m is strictly convex with gradient G and Hessian J,
+// so Newton with a backtracking (Armijo) line search on Phi converges from any start (the
+// dual of the discrete entropy minimisation, Mieussens 2000). Returns false if it did not.
+template <int M>
+Real dual_objective(const VecM<M>& a, const VecM<M>& m, const VelocityGrid& grid) {
+  const Real inv_s = 1.0 / grid.reference_speed;
+  Real sum = 0;
+  for (Index k = 0; k < grid.size(); ++k)
+    sum += grid.w[k] * std::exp(a.dot(basis<M>(grid.c[k] * inv_s)));
+  return sum - a.dot(m);
+}
+
+template <int M>
+bool newton(VecM<M>& a, const VecM<M>& m, const VelocityGrid& grid, EquilibriumSolveInfo& info) {
+  constexpr int max_iterations = 100;
+  const Real scale = 1.0 / m[0];
+  MatM<M> J;
+  VecM<M> G = newton_residual<M>(a, m, grid, &J);
+  Real norm = G.cwiseAbs().maxCoeff() * scale;
+  for (int it = 0; it < max_iterations; ++it) {
+    info.iterations = it;
+    info.residual = norm;
+    if (!std::isfinite(norm)) return false;
+    if (norm < 1e-14) return true;
+    const Eigen::LDLT<MatM<M>> ldlt(J);
+    if (ldlt.info() != Eigen::Success) return false;
+    const VecM<M> step = ldlt.solve(G);
+    // The full step when it reduces |G| (the quadratic regime, also at round-off where Phi
+    // cannot resolve a decrease); else backtracking on Phi.
+    VecM<M> trial = a - step;
+    MatM<M> J_trial;
+    VecM<M> G_trial = newton_residual<M>(trial, m, grid, &J_trial);
+    Real trial_norm = G_trial.cwiseAbs().maxCoeff() * scale;
+    bool full = std::isfinite(trial_norm) && trial_norm < norm;
+    if (!full) {
+      const Real phi0 = dual_objective<M>(a, m, grid);
+      const Real slope = G.dot(step);  // > 0: -step is a descent direction of Phi
+      Real t = 0.5;
+      for (int ls = 0; ls < 40; ++ls, t *= 0.5) {
+        trial = a - t * step;
+        const Real phi = dual_objective<M>(trial, m, grid);
+        if (std::isfinite(phi) && phi <= phi0 - 1e-4 * t * slope) break;
+      }
+      G_trial = newton_residual<M>(trial, m, grid, &J_trial);
+      trial_norm = G_trial.cwiseAbs().maxCoeff() * scale;
+      if (!std::isfinite(trial_norm)) return false;
+    }
+    const Real step_size = step.cwiseAbs().maxCoeff();
+    a = trial;
+    G = G_trial;
+    J = J_trial;
+    norm = trial_norm;
+    // A full Newton step this small leaves |G| ~ step^2: round-off.
+    if (full && step_size < 1e-10) {
+      info.iterations = it + 1;
+      info.residual = norm;
+      return norm < 1e-11;
+    }
+  }
+  info.iterations = max_iterations;
+  info.residual = norm;
+  return norm < 1e-11;
+}
+
+template <int M>
+EquilibriumSolveInfo solve(const EquilibriumTarget& target, const VelocityGrid& grid,
+                           EquilibriumCoefficients& coefficients) {
+  const Real s = grid.reference_speed;
+  const VecM<M> m = target_moments<M>(target, s);
+  EquilibriumSolveInfo info;
+  VecM<M> a;
+  bool warm = coefficients.size == M;
+  if (warm) {
+    for (int i = 0; i < M; ++i) a[i] = coefficients.a[i];
+    if (!newton<M>(a, m, grid, info)) warm = false;
+  }
+  if (!warm) {
+    a = continuous_start<M>(target, s);
+    if (!newton<M>(a, m, grid, info))
+      throw SolverError("discrete equilibrium: Newton did not converge (rho = " +
+                        std::to_string(target.rho) + ", |G|/rho = " +
+                        std::to_string(info.residual) + ")");
+  }
+  coefficients.size = M;
+  coefficients.a.fill(0);
+  for (int i = 0; i < M; ++i) coefficients.a[i] = a[i];
+  return info;
+}
+
+template <int M>
+void velocity_derivative(const EquilibriumCoefficients& coefficients,
+                         const EquilibriumTarget& target, const VelocityGrid& grid,
+                         std::span<const Real> f_eq, std::span<Real> df_du) {
+  const Real inv_s = 1.0 / grid.reference_speed;
+  MatM<M> J = MatM<M>::Zero();
+  for (Index k = 0; k < grid.size(); ++k) {
+    const VecM<M> phi = basis<M>(grid.c[k] * inv_s);
+    J.template selfadjointView<Eigen::Lower>().rankUpdate(phi, grid.w[k] * f_eq[k]);
+  }
+  J = J.template selfadjointView<Eigen::Lower>();
+  const Eigen::Matrix<Real, M, 3> da_du =
+      Eigen::LDLT<MatM<M>>(J).solve(target_velocity_derivative<M>(target, grid.reference_speed));
+  (void)coefficients;
+  for (Index k = 0; k < grid.size(); ++k) {
+    const VecM<M> phi = basis<M>(grid.c[k] * inv_s);
+    const Eigen::RowVector3d d = f_eq[k] * (phi.transpose() * da_du);
+    for (int j = 0; j < 3; ++j) df_du[3 * k + j] = d[j];
+  }
+}
+
+}  // namespace
+
+EquilibriumTarget equilibrium_target(const MacroState& m, const KineticGas& gas) {
+  EquilibriumTarget t;
+  t.rho = m.rho;
+  t.u = m.u;
+  const Real RT = gas.R * m.T;
+  if (gas.model == CollisionModel::Bgk) {
+    t.covariance = RT * Mat3::Identity();
+  } else {
+    const Mat3 theta = m.pressure_tensor / m.rho;
+    t.covariance = (RT / gas.prandtl) * Mat3::Identity() + (1 - 1 / gas.prandtl) * theta;
+  }
+  return t;
+}
+
+EquilibriumTarget maxwellian_target(Real rho, const Vec3& u, Real T, const KineticGas& gas) {
+  return {rho, u, gas.R * T * Mat3::Identity()};
+}
+
+EquilibriumCoefficients continuous_coefficients(const EquilibriumTarget& target,
+                                                CollisionModel model,
+                                                const VelocityGrid& grid) {
+  EquilibriumCoefficients c;
+  if (model == CollisionModel::Bgk) {
+    const VecM<5> a = continuous_start<5>(target, grid.reference_speed);
+    for (int i = 0; i < 5; ++i) c.a[i] = a[i];
+    c.size = 5;
+  } else {
+    const VecM<10> a = continuous_start<10>(target, grid.reference_speed);
+    for (int i = 0; i < 10; ++i) c.a[i] = a[i];
+    c.size = 10;
+  }
+  return c;
+}
+
+EquilibriumSolveInfo solve_equilibrium(const EquilibriumTarget& target, CollisionModel model,
+                                       const VelocityGrid& grid,
+                                       EquilibriumCoefficients& coefficients) {
+  if (!(target.rho > 0)) throw RecoverableError("discrete equilibrium: non-positive density");
+  return model == CollisionModel::Bgk ? solve<5>(target, grid, coefficients)
+                                      : solve<10>(target, grid, coefficients);
+}
+
+EquilibriumCoefficients equilibrium(const EquilibriumTarget& target, CollisionModel model,
+                                    const VelocityGrid& grid) {
+  EquilibriumCoefficients c;
+  solve_equilibrium(target, model, grid, c);
+  return c;
+}
+
+void evaluate_equilibrium(const EquilibriumCoefficients& coefficients, const VelocityGrid& grid,
+                          std::span<Real> f_eq) {
+  const Real inv_s = 1.0 / grid.reference_speed;
+  const auto& a = coefficients.a;
+  for (Index k = 0; k < grid.size(); ++k) {
+    const Vec3 xi = grid.c[k] * inv_s;
+    Real e = a[0] + a[1] * xi[0] + a[2] * xi[1] + a[3] * xi[2];
+    if (coefficients.size == 5) {
+      e += a[4] * xi.squaredNorm();
+    } else {
+      e += a[4] * xi[0] * xi[0] + a[5] * xi[1] * xi[1] + a[6] * xi[2] * xi[2] +
+           a[7] * xi[0] * xi[1] + a[8] * xi[0] * xi[2] + a[9] * xi[1] * xi[2];
+    }
+    f_eq[k] = std::exp(e);
+  }
+}
+
+void equilibrium_velocity_derivative(const EquilibriumCoefficients& coefficients,
+                                     const EquilibriumTarget& target, const VelocityGrid& grid,
+                                     std::span<const Real> f_eq, std::span<Real> df_du) {
+  if (coefficients.size == 5)
+    velocity_derivative<5>(coefficients, target, grid, f_eq, df_du);
+  else
+    velocity_derivative<10>(coefficients, target, grid, f_eq, df_du);
+}
+
+void sample_maxwellian(Real rho, const Vec3& u, Real T, const KineticGas& gas,
+                       const VelocityGrid& grid, std::span<Real> f) {
+  const Real two_RT = 2 * gas.R * T;
+  const Real n0 = rho / std::pow(std::numbers::pi * two_RT, 1.5);
+  for (Index k = 0; k < grid.size(); ++k)
+    f[k] = n0 * std::exp(-(grid.c[k] - u).squaredNorm() / two_RT);
+}
+
+}  // namespace rfmems

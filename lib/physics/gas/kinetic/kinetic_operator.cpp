@@ -1,0 +1,221 @@
+#include "physics/gas/kinetic/kinetic_operator.hpp"
+
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace rfmems {
+
+KineticOperator::KineticOperator(const FaceGraph& graph, VelocityGrid grid, KineticGas gas,
+                                 std::vector<KineticBoundary> boundaries)
+    : graph_(&graph),
+      grid_(std::move(grid)),
+      gas_(std::move(gas)),
+      boundaries_(std::move(boundaries)) {
+  gas_.validate();
+  if (boundaries_.size() != graph.patch_names.size())
+    throw InputError("kinetic operator: " + std::to_string(boundaries_.size()) +
+                     " boundary conditions for " + std::to_string(graph.patch_names.size()) +
+                     " patches");
+  const Index nc = n_cells(), N = n_ordinates();
+  macro_.resize(nc);
+  target_.resize(nc);
+  coefficients_.resize(nc);
+  f_eq_.assign(nc * N, 0.0);
+  nu_.assign(nc, 0.0);
+  const Index nb = graph.n_faces() - graph.n_interior_faces;
+  boundary_values_.assign(nb * N, 0.0);
+  reflection_offset_.assign(nb, -1);
+  for (const KineticBoundary& bc : boundaries_)
+    patch_maxwellian_.push_back(rfmems::boundary_maxwellian(bc, grid_, gas_));
+  for (Index f = graph.n_interior_faces; f < graph.n_faces(); ++f) {
+    const KineticBoundary& bc = boundaries_[graph.face_patch[f]];
+    if (!bc.needs_reflection()) continue;
+    const Vec3 n = graph.face_area[f].normalized();
+    reflection_offset_[f - graph.n_interior_faces] = static_cast<Index>(reflections_.size());
+    const std::vector<Index> map = grid_.reflection_map(n);
+    reflections_.insert(reflections_.end(), map.begin(), map.end());
+  }
+}
+
+void KineticOperator::initialize(std::span<Real> f,
+                                 const std::function<GasState(const Vec3&)>& state) {
+  const Index N = n_ordinates();
+  for (Index c = 0; c < n_cells(); ++c) {
+    const GasState s = state(graph_->cell_centroid[c]);
+    const EquilibriumTarget t = maxwellian_target(s.rho, s.u, s.T, gas_);
+    EquilibriumCoefficients a;
+    solve_equilibrium(t, gas_.model, grid_, a);
+    evaluate_equilibrium(a, grid_, f.subspan(c * N, N));
+  }
+  update_boundary_values(f);
+  update_collision(f);
+}
+
+void KineticOperator::update_collision(Index c, std::span<const Real> f_cell) {
+  macro_[c] = moments(f_cell, grid_, gas_);
+  target_[c] = equilibrium_target(macro_[c], gas_);
+  const EquilibriumSolveInfo info =
+      solve_equilibrium(target_[c], gas_.model, grid_, coefficients_[c]);
+  equilibrium_iterations_ += info.iterations;
+  const Index N = n_ordinates();
+  evaluate_equilibrium(coefficients_[c], grid_, std::span<Real>(f_eq_.data() + c * N, N));
+  nu_[c] = gas_.collision_frequency(macro_[c].rho, macro_[c].T);
+}
+
+void KineticOperator::update_collision(std::span<const Real> f) {
+  equilibrium_iterations_ = 0;
+  for (Index c = 0; c < n_owned_cells(); ++c) update_collision(c, cell(f, c));
+}
+
+std::span<const Index> KineticOperator::reflection(Index face) const {
+  const Index off = reflection_offset_[face - graph_->n_interior_faces];
+  if (off < 0) return {};
+  return {reflections_.data() + off, static_cast<std::size_t>(n_ordinates())};
+}
+
+void KineticOperator::face_values(Index face, std::span<const Real> f,
+                                  std::span<Real> out) const {
+  const FaceGraph& g = *graph_;
+  const int p = g.face_patch[face];
+  fill_boundary_face(boundaries_[p], g.face_area[face], cell(f, g.face_owner[face]), grid_,
+                     reflection(face), patch_maxwellian_[p], out);
+}
+
+void KineticOperator::update_boundary_values(Index face, std::span<const Real> f) {
+  face_values(face, f, boundary_values(face));
+}
+
+void KineticOperator::update_boundary_values(std::span<const Real> f) {
+  for (Index face = graph_->n_interior_faces; face < graph_->n_faces(); ++face)
+    update_boundary_values(face, f);
+}
+
+std::span<const Real> KineticOperator::boundary_values(Index face) const {
+  const Index N = n_ordinates();
+  return {boundary_values_.data() + (face - graph_->n_interior_faces) * N,
+          static_cast<std::size_t>(N)};
+}
+
+std::span<Real> KineticOperator::boundary_values(Index face) {
+  const Index N = n_ordinates();
+  return {boundary_values_.data() + (face - graph_->n_interior_faces) * N,
+          static_cast<std::size_t>(N)};
+}
+
+void KineticOperator::outgoing_coefficients(Index c, std::span<Real> out) const {
+  const FaceGraph& g = *graph_;
+  const Index N = n_ordinates();
+  std::fill(out.begin(), out.end(), 0.0);
+  for (Index i = g.cell_face_offsets[c]; i < g.cell_face_offsets[c + 1]; ++i) {
+    const Index face = g.cell_faces[i];
+    const Vec3 S = g.face_owner[face] == c ? g.face_area[face] : Vec3(-g.face_area[face]);
+    for (Index k = 0; k < N; ++k) out[k] += std::max(grid_.c[k].dot(S), 0.0);
+  }
+}
+
+void KineticOperator::incoming_flux(Index c, std::span<const Real> f, std::span<Real> in) const {
+  const FaceGraph& g = *graph_;
+  const Index N = n_ordinates();
+  std::fill(in.begin(), in.end(), 0.0);
+  for (Index i = g.cell_face_offsets[c]; i < g.cell_face_offsets[c + 1]; ++i) {
+    const Index face = g.cell_faces[i];
+    const bool owner = g.face_owner[face] == c;
+    const Vec3 S = owner ? g.face_area[face] : Vec3(-g.face_area[face]);
+    const Real* upwind = g.is_boundary(face)
+                             ? boundary_values(face).data()
+                             : f.data() + (owner ? g.face_neighbour[face] : g.face_owner[face]) * N;
+    for (Index k = 0; k < N; ++k) in[k] += std::min(grid_.c[k].dot(S), 0.0) * upwind[k];
+  }
+}
+
+void KineticOperator::residual_frozen(std::span<const Real> f, std::span<Real> r) const {
+  const Index N = n_ordinates();
+  std::fill(r.begin(), r.end(), 0.0);
+  std::vector<Real> out(N), in(N);
+  for (Index c = 0; c < n_owned_cells(); ++c) {
+    outgoing_coefficients(c, out);
+    incoming_flux(c, f, in);
+    const Real vnu = graph_->cell_volume[c] * nu_[c];
+    const Real* fc = f.data() + c * N;
+    const Real* feq = f_eq_.data() + c * N;
+    Real* rc = r.data() + c * N;
+    for (Index k = 0; k < N; ++k) rc[k] = out[k] * fc[k] + in[k] - vnu * (feq[k] - fc[k]);
+  }
+}
+
+void KineticOperator::residual(std::span<const Real> f, std::span<Real> r) {
+  update_boundary_values(f);
+  update_collision(f);
+  residual_frozen(f, r);
+}
+
+Real KineticOperator::residual_norm(std::span<const Real> f) {
+  std::vector<Real> r(f.size());
+  residual(f, r);
+  Real s = 0;
+  for (Real x : r) s += x * x;
+  return std::sqrt(s);
+}
+
+Vec3 KineticOperator::wall_force(int patch, std::span<const Real> f) const {
+  const FaceGraph& g = *graph_;
+  const Index N = n_ordinates();
+  std::vector<Real> face(N);
+  Vec3 force = Vec3::Zero();
+  for (Index fc = g.n_interior_faces; fc < g.n_faces(); ++fc) {
+    if (g.face_patch[fc] != patch) continue;
+    face_values(fc, f, face);
+    const Vec3& S = g.face_area[fc];
+    for (Index k = 0; k < N; ++k) force += (grid_.w[k] * grid_.c[k].dot(S) * face[k]) * grid_.c[k];
+  }
+  return force;
+}
+
+Vec3 KineticOperator::wall_force(const std::string& patch, std::span<const Real> f) const {
+  const int p = graph_->find_patch(patch);
+  if (p < 0) throw InputError("wall force: no patch named '" + patch + "'");
+  return wall_force(p, f);
+}
+
+Real KineticOperator::wall_heat_flow(int patch, std::span<const Real> f) const {
+  const FaceGraph& g = *graph_;
+  const Index N = n_ordinates();
+  std::vector<Real> face(N);
+  Real q = 0;
+  for (Index fc = g.n_interior_faces; fc < g.n_faces(); ++fc) {
+    if (g.face_patch[fc] != patch) continue;
+    face_values(fc, f, face);
+    const Vec3& S = g.face_area[fc];
+    for (Index k = 0; k < N; ++k)
+      q += grid_.w[k] * 0.5 * grid_.c[k].squaredNorm() * grid_.c[k].dot(S) * face[k];
+  }
+  return q;
+}
+
+Real KineticOperator::boundary_mass_flow(int patch, std::span<const Real> f) const {
+  const FaceGraph& g = *graph_;
+  const Index N = n_ordinates();
+  std::vector<Real> face(N);
+  Real m = 0;
+  for (Index fc = g.n_interior_faces; fc < g.n_faces(); ++fc) {
+    if (g.face_patch[fc] != patch) continue;
+    face_values(fc, f, face);
+    const Vec3& S = g.face_area[fc];
+    for (Index k = 0; k < N; ++k) m += grid_.w[k] * grid_.c[k].dot(S) * face[k];
+  }
+  return m;
+}
+
+Real KineticOperator::total_mass(std::span<const Real> f) const {
+  const Index N = n_ordinates();
+  Real m = 0;
+  for (Index c = 0; c < n_owned_cells(); ++c) {
+    Real rho = 0;
+    for (Index k = 0; k < N; ++k) rho += grid_.w[k] * f[c * N + k];
+    m += graph_->cell_volume[c] * rho;
+  }
+  return m;
+}
+
+}  // namespace rfmems

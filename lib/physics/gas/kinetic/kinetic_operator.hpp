@@ -1,0 +1,148 @@
+// The steady (and semi-discrete transient) discrete-velocity BGK / ESBGK equation on a FaceGraph,
+// cell-centred finite volumes with first-order upwind convection (thesis eq. 5.7, 5.9):
+//
+//   V_c df_ck/dt + r_ck = 0,
+//   r_ck = sum_{faces f of c} [ (c_k . S_f)^+ f_ck + (c_k . S_f)^- f_k,upwind(f) ]
+//          - V_c nu_c (f_eq,ck - f_ck),
+//
+// S_f the area vector outward from c, (x)^+ = max(x, 0), (x)^- = min(x, 0), f_upwind the
+// neighbour's value or, on a boundary face, the incoming value of the boundary condition
+// (kinetic_boundary.hpp). nu_c and f_eq,c are functions of the cell's moments: the collision
+// frequency of KineticGas and the discrete-conservative equilibrium (equilibrium.hpp), so
+// sum_k w_k phi_k r_ck over a cell is exactly the net flux of mass, momentum, energy.
+//
+// Layout: f[c * N + k], cell-major (all N ordinates of a cell contiguous): COMET solves a cell's
+// ordinates together and a ghost exchange sends whole cells. Cells [0, n_owned) carry equations;
+// ghost cells (if any) only supply upwind values.
+//
+// The operator caches, per cell, the macroscopic state, the equilibrium coefficients (so each
+// Newton warm-starts from the last ones), f_eq and nu, and per boundary face the face values;
+// update_collision / update_boundary_values refresh them from a state f. A solver reads the
+// pieces it needs: outgoing coefficients sum_f (c_k . S_f)^+ and the incoming flux
+// sum_f (c_k . S_f)^- f_upwind of a cell, the cached f_eq and nu.
+//
+// Residual scaling shared by every kinetic solver: ||r||_2 over all owned (cell, ordinate)
+// pairs, reported as ||r||_2 / ||r_0||_2 with r_0 the residual of the initial state;
+// "converged" means that ratio <= 1e-6.
+#pragma once
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/types.hpp"
+#include "fv/face_graph.hpp"
+#include "physics/gas/kinetic/equilibrium.hpp"
+#include "physics/gas/kinetic/kinetic_boundary.hpp"
+#include "physics/gas/kinetic/kinetic_gas.hpp"
+#include "physics/gas/kinetic/macroscopic_state.hpp"
+#include "physics/gas/kinetic/velocity_grid.hpp"
+
+namespace rfmems {
+
+// Density, velocity and temperature of a local Maxwellian (initial states).
+struct GasState {
+  Real rho = 0;
+  Vec3 u = Vec3::Zero();
+  Real T = 0;
+};
+
+class KineticOperator {
+ public:
+  // The graph must outlive the operator. boundaries: one per patch of the graph.
+  KineticOperator(const FaceGraph& graph, VelocityGrid grid, KineticGas gas,
+                  std::vector<KineticBoundary> boundaries);
+
+  const FaceGraph& graph() const { return *graph_; }
+  const VelocityGrid& grid() const { return grid_; }
+  const KineticGas& gas() const { return gas_; }
+  const std::vector<KineticBoundary>& boundaries() const { return boundaries_; }
+  Index n_cells() const { return graph_->n_cells(); }
+  Index n_owned_cells() const { return graph_->n_owned_cells; }
+  Index n_ordinates() const { return grid_.size(); }
+  // Length of f: n_cells * n_ordinates.
+  Index size() const { return n_cells() * n_ordinates(); }
+
+  // f = the discrete equilibrium of the gas's model with moments rho, u, covariance R T I of
+  // state(x_c) in every cell (a fixed point of the collision operator).
+  void initialize(std::span<Real> f, const std::function<GasState(const Vec3&)>& state);
+
+  // --- collision: macros, equilibrium (warm-started Newton), nu, per owned cell ---
+  void update_collision(std::span<const Real> f);
+  void update_collision(Index cell, std::span<const Real> f_cell);
+  const MacroState& macro(Index c) const { return macro_[c]; }
+  const EquilibriumTarget& target(Index c) const { return target_[c]; }
+  const EquilibriumCoefficients& coefficients(Index c) const { return coefficients_[c]; }
+  std::span<const Real> equilibrium(Index c) const {
+    return {f_eq_.data() + c * n_ordinates(), static_cast<std::size_t>(n_ordinates())};
+  }
+  Real collision_frequency(Index c) const { return nu_[c]; }
+  // Newton iterations of the last update_collision(f) (sum over cells).
+  long equilibrium_iterations() const { return equilibrium_iterations_; }
+
+  // --- transport ---
+  // Refreshes the face values of every boundary face from f.
+  void update_boundary_values(std::span<const Real> f);
+  // The same for one face.
+  void update_boundary_values(Index face, std::span<const Real> f);
+  // Cached face values (all ordinates) of boundary face `face`.
+  std::span<const Real> boundary_values(Index face) const;
+  std::span<Real> boundary_values(Index face);
+  // out_k = sum_f (c_k . S_f)^+ over the faces of cell c (>= 0).
+  void outgoing_coefficients(Index c, std::span<Real> out) const;
+  // in_k = sum_f (c_k . S_f)^- f_k,upwind (<= 0): neighbours' values from f, boundary faces'
+  // from the cached boundary values.
+  void incoming_flux(Index c, std::span<const Real> f, std::span<Real> in) const;
+  // Reflection map of a boundary face (empty unless its condition needs one).
+  std::span<const Index> reflection(Index face) const;
+  // The discrete Maxwellian of patch p's condition (boundary_maxwellian; empty if none).
+  std::span<const Real> boundary_maxwellian(int patch) const { return patch_maxwellian_[patch]; }
+
+  // --- residual ---
+  // r (length size(); ghost rows 0) of the steady equation at f: refreshes the boundary
+  // values and the collision cache from f first.
+  void residual(std::span<const Real> f, std::span<Real> r);
+  // The same with the cached collision terms and boundary values (lagged).
+  void residual_frozen(std::span<const Real> f, std::span<Real> r) const;
+  // ||r(f)||_2 (refreshes the caches like residual()).
+  Real residual_norm(std::span<const Real> f);
+
+  // --- walls ---
+  // Force of the gas on the patch (N; per unit depth in 2D): the momentum flux through its
+  // faces, sum_f sum_k w_k c_k (c_k . S_f) f_face,k, pressure and shear together.
+  Vec3 wall_force(int patch, std::span<const Real> f) const;
+  Vec3 wall_force(const std::string& patch, std::span<const Real> f) const;
+  // Heat flux from the gas into the patch (W; per unit depth in 2D):
+  // sum_f sum_k w_k |c_k|^2 / 2 (c_k . S_f) f_face,k (moving walls: includes the work).
+  Real wall_heat_flow(int patch, std::span<const Real> f) const;
+  // Net mass flow out through the patch (kg/s; per unit depth in 2D).
+  Real boundary_mass_flow(int patch, std::span<const Real> f) const;
+  // Total mass sum_c V_c rho_c over owned cells.
+  Real total_mass(std::span<const Real> f) const;
+
+ private:
+  std::span<const Real> cell(std::span<const Real> f, Index c) const {
+    return f.subspan(c * n_ordinates(), n_ordinates());
+  }
+  // Face values of boundary face `face` from f, into out (not cached).
+  void face_values(Index face, std::span<const Real> f, std::span<Real> out) const;
+
+  const FaceGraph* graph_;
+  VelocityGrid grid_;
+  KineticGas gas_;
+  std::vector<KineticBoundary> boundaries_;
+
+  std::vector<MacroState> macro_;
+  std::vector<EquilibriumTarget> target_;
+  std::vector<EquilibriumCoefficients> coefficients_;
+  std::vector<Real> f_eq_;
+  std::vector<Real> nu_;
+  long equilibrium_iterations_ = 0;
+
+  std::vector<Real> boundary_values_;          // (face - n_interior) * N + k
+  std::vector<Index> reflection_offset_;       // per boundary face, -1 if none
+  std::vector<Index> reflections_;
+  std::vector<std::vector<Real>> patch_maxwellian_;  // boundary_maxwellian per patch
+};
+
+}  // namespace rfmems
