@@ -135,14 +135,20 @@ CometResult CometSolver::solve(std::span<Real> f) {
     level->collision_current = false;
   }
   damped_prolongations_ = 0;
-  const long updates0 = [&] {
-    long u = 0;
-    for (auto& level : levels_) u += level->smoother->cell_updates();
-    return u;
-  }();
+  long updates0 = 0, damped0 = 0;
+  for (auto& level : levels_) {
+    updates0 += level->smoother->cell_updates();
+    damped0 += level->smoother->damped_steps();
+  }
+  bool closed = true;
+  for (const KineticBoundary& bc : fine_.boundaries())
+    closed = closed && bc.kind != KineticBoundaryKind::Pressure;
+  const bool rescale = options_.conserve_mass && closed;
+  const Real mass0 = fine_.total_mass(f);
 
   CometResult result;
   result.levels = n_levels();
+  result.mass_rescaled = rescale;
   for (auto& level : levels_) result.level_cells.push_back(level->graph->n_cells());
   result.initial_residual = fine_.residual_norm(f);
   levels_[0]->collision_current = true;
@@ -157,6 +163,10 @@ CometResult CometSolver::solve(std::span<Real> f) {
         smooth(0, options_.pre_sweeps + options_.post_sweeps);
       }
       ++result.cycles;
+      if (rescale) {
+        const Real factor = mass0 / fine_.total_mass(f);
+        for (Real& x : f) x *= factor;
+      }
       ratio = fine_.residual_norm(f) / result.initial_residual;
       levels_[0]->collision_current = true;
       if (!std::isfinite(ratio)) throw SolverError("COMET: residual is not finite");
@@ -176,7 +186,7 @@ CometResult CometSolver::solve(std::span<Real> f) {
     result.fine_sweep_equivalents += Real(level->passes) * Real(level->graph->n_cells()) / fine_cells;
   }
   result.cell_updates -= updates0;
-  result.damped_steps += damped_prolongations_;
+  result.damped_steps += damped_prolongations_ - damped0;
   result.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

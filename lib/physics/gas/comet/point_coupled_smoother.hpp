@@ -55,11 +55,13 @@ class PointCoupledSmoother {
   // entry (update_collision(f) or residual(f)); it is current again on exit.
   void sweep(std::span<Real> f, std::span<const Real> source, bool forward);
 
+  // The point solve of one owned cell (what sweep does per cell).
+  void solve_cell(Index c, std::span<Real> f, std::span<const Real> source);
+
   long cell_updates() const { return cell_updates_; }
   long damped_steps() const { return damped_steps_; }
 
  private:
-  void solve_cell(Index c, std::span<Real> f, std::span<const Real> source);
   template <int M>
   void newton_step(Index c, std::span<Real> f, std::span<const Real> source, ArrowheadSystem<M>& a);
 
