@@ -34,6 +34,44 @@ VecM<M> basis(const Vec3& xi) {
   return phi;
 }
 
+// The basis evaluated at every ordinate, Phi (N x M), and the weights: G, J and f_eq become
+// matrix-vector products (vectorised exp, GEMM-like J = Phi^T diag(v) Phi). Cached per thread
+// for the last grid seen (identified by its ordinates), since every cell of a solve uses the
+// same grid.
+template <int M>
+struct BasisMatrix {
+  Eigen::Matrix<Real, Eigen::Dynamic, M> phi;
+  Eigen::ArrayXd w;
+  const Vec3* key = nullptr;
+  Index n = 0;
+  Vec3 first = Vec3::Zero(), last = Vec3::Zero();
+  Real s = 0;
+};
+
+template <int M>
+const BasisMatrix<M>& basis_matrix(const VelocityGrid& grid) {
+  thread_local BasisMatrix<M> cache;
+  const Index n = grid.size();
+  if (cache.key == grid.c.data() && cache.n == n && cache.s == grid.reference_speed &&
+      n > 0 && cache.first == grid.c.front() && cache.last == grid.c.back())
+    return cache;
+  cache.phi.resize(n, M);
+  cache.w.resize(n);
+  const Real inv_s = 1.0 / grid.reference_speed;
+  for (Index k = 0; k < n; ++k) {
+    cache.phi.row(k) = basis<M>(grid.c[k] * inv_s).transpose();
+    cache.w[k] = grid.w[k];
+  }
+  cache.key = grid.c.data();
+  cache.n = n;
+  cache.s = grid.reference_speed;
+  if (n > 0) {
+    cache.first = grid.c.front();
+    cache.last = grid.c.back();
+  }
+  return cache;
+}
+
 // Target moments in the scaled variables (xi = c / s).
 template <int M>
 VecM<M> target_moments(const EquilibriumTarget& t, Real s) {
@@ -84,17 +122,10 @@ Eigen::Matrix<Real, M, 3> target_velocity_derivative(const EquilibriumTarget& t,
 template <int M>
 VecM<M> newton_residual(const VecM<M>& a, const VecM<M>& m, const VelocityGrid& grid,
                         MatM<M>* J) {
-  const Real inv_s = 1.0 / grid.reference_speed;
-  VecM<M> G = VecM<M>::Zero();
-  if (J) J->setZero();
-  for (Index k = 0; k < grid.size(); ++k) {
-    const VecM<M> phi = basis<M>(grid.c[k] * inv_s);
-    const Real wf = grid.w[k] * std::exp(a.dot(phi));
-    G.noalias() += wf * phi;
-    if (J) J->template selfadjointView<Eigen::Lower>().rankUpdate(phi, wf);
-  }
-  if (J) *J = J->template selfadjointView<Eigen::Lower>();
-  return G - m;
+  const BasisMatrix<M>& B = basis_matrix<M>(grid);
+  const Eigen::ArrayXd v = B.w * (B.phi * a).array().exp();
+  if (J) J->noalias() = B.phi.transpose() * (B.phi.array().colwise() * v).matrix();
+  return B.phi.transpose() * v.matrix() - m;
 }
 
 template <int M>
@@ -129,11 +160,8 @@ VecM<M> continuous_start(const EquilibriumTarget& t, Real s) {
 // dual of the discrete entropy minimisation, Mieussens 2000). Returns false if it did not.
 template <int M>
 Real dual_objective(const VecM<M>& a, const VecM<M>& m, const VelocityGrid& grid) {
-  const Real inv_s = 1.0 / grid.reference_speed;
-  Real sum = 0;
-  for (Index k = 0; k < grid.size(); ++k)
-    sum += grid.w[k] * std::exp(a.dot(basis<M>(grid.c[k] * inv_s)));
-  return sum - a.dot(m);
+  const BasisMatrix<M>& B = basis_matrix<M>(grid);
+  return (B.w * (B.phi * a).array().exp()).sum() - a.dot(m);
 }
 
 template <int M>
@@ -141,23 +169,25 @@ bool newton(VecM<M>& a, const VecM<M>& m, const VelocityGrid& grid, EquilibriumS
   constexpr int max_iterations = 100;
   const Real scale = 1.0 / m[0];
   MatM<M> J;
-  VecM<M> G = newton_residual<M>(a, m, grid, &J);
+  VecM<M> G = newton_residual<M>(a, m, grid, nullptr);
   Real norm = G.cwiseAbs().maxCoeff() * scale;
   for (int it = 0; it < max_iterations; ++it) {
     info.iterations = it;
     info.residual = norm;
     if (!std::isfinite(norm)) return false;
     if (norm < 1e-14) return true;
+    newton_residual<M>(a, m, grid, &J);
     const Eigen::LDLT<MatM<M>> ldlt(J);
     if (ldlt.info() != Eigen::Success) return false;
     const VecM<M> step = ldlt.solve(G);
     // The full step when it reduces |G| (the quadratic regime, also at round-off where Phi
     // cannot resolve a decrease); else backtracking on Phi.
     VecM<M> trial = a - step;
-    MatM<M> J_trial;
-    VecM<M> G_trial = newton_residual<M>(trial, m, grid, &J_trial);
+    VecM<M> G_trial = newton_residual<M>(trial, m, grid, nullptr);
     Real trial_norm = G_trial.cwiseAbs().maxCoeff() * scale;
-    bool full = std::isfinite(trial_norm) && trial_norm < norm;
+    const bool full = std::isfinite(trial_norm) && trial_norm < norm;
+    // No decrease from a point already at |G| ~ round-off: that is the floor.
+    if (!full && norm < 1e-12) return true;
     if (!full) {
       const Real phi0 = dual_objective<M>(a, m, grid);
       const Real slope = G.dot(step);  // > 0: -step is a descent direction of Phi
@@ -167,14 +197,13 @@ bool newton(VecM<M>& a, const VecM<M>& m, const VelocityGrid& grid, EquilibriumS
         const Real phi = dual_objective<M>(trial, m, grid);
         if (std::isfinite(phi) && phi <= phi0 - 1e-4 * t * slope) break;
       }
-      G_trial = newton_residual<M>(trial, m, grid, &J_trial);
+      G_trial = newton_residual<M>(trial, m, grid, nullptr);
       trial_norm = G_trial.cwiseAbs().maxCoeff() * scale;
       if (!std::isfinite(trial_norm)) return false;
     }
     const Real step_size = step.cwiseAbs().maxCoeff();
     a = trial;
     G = G_trial;
-    J = J_trial;
     norm = trial_norm;
     // A full Newton step this small leaves |G| ~ step^2: round-off.
     if (full && step_size < 1e-10) {
@@ -287,18 +316,13 @@ EquilibriumCoefficients equilibrium(const EquilibriumTarget& target, CollisionMo
 
 void evaluate_equilibrium(const EquilibriumCoefficients& coefficients, const VelocityGrid& grid,
                           std::span<Real> f_eq) {
-  const Real inv_s = 1.0 / grid.reference_speed;
-  const auto& a = coefficients.a;
-  for (Index k = 0; k < grid.size(); ++k) {
-    const Vec3 xi = grid.c[k] * inv_s;
-    Real e = a[0] + a[1] * xi[0] + a[2] * xi[1] + a[3] * xi[2];
-    if (coefficients.size == 5) {
-      e += a[4] * xi.squaredNorm();
-    } else {
-      e += a[4] * xi[0] * xi[0] + a[5] * xi[1] * xi[1] + a[6] * xi[2] * xi[2] +
-           a[7] * xi[0] * xi[1] + a[8] * xi[0] * xi[2] + a[9] * xi[1] * xi[2];
-    }
-    f_eq[k] = std::exp(e);
+  Eigen::Map<Eigen::VectorXd> out(f_eq.data(), grid.size());
+  if (coefficients.size == 5) {
+    const VecM<5> a = Eigen::Map<const VecM<5>>(coefficients.a.data());
+    out = (basis_matrix<5>(grid).phi * a).array().exp().matrix();
+  } else {
+    const VecM<10> a = Eigen::Map<const VecM<10>>(coefficients.a.data());
+    out = (basis_matrix<10>(grid).phi * a).array().exp().matrix();
   }
 }
 

@@ -1,0 +1,21 @@
+// What a steady kinetic solve reports, whichever solver ran it (sequential, COMET).
+// Residual scaling (kinetic_operator.hpp): ratio = ||r||_2 / ||r_0||_2 of the full steady
+// residual, r_0 that of the initial state; converged when ratio <= tolerance (1e-6 default).
+#pragma once
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace rfmems {
+
+struct KineticSolveResult {
+  bool converged = false;
+  int iterations = 0;             // outer iterations (sequential: sweeps; COMET: cycles)
+  Real initial_residual = 0;      // ||r_0||_2
+  Real final_residual = 0;        // ||r||_2 at exit
+  Real residual_ratio = 0;        // final / initial
+  double seconds = 0;             // wall time
+  std::vector<Real> history;      // residual ratio after each iteration
+};
+
+}  // namespace rfmems

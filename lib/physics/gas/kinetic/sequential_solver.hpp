@@ -1,0 +1,37 @@
+// The sequential (source-iteration) solver of the steady discrete-velocity BGK / ESBGK
+// equation: the baseline of the literature (thesis sec. 5.3.1, Fig. 5.2) that COMET beats.
+//
+// One iteration:
+//   1. with the collision term lagged (f_eq and nu of the previous iterate) and the boundary
+//      face values lagged (they depend on the owner's other ordinates), each ordinate's
+//      spatial system  sum_f (c_k.S_f)^+ f_ck + (c_k.S_f)^- f_k,up + V_c nu_c f_ck
+//                      = V_c nu_c f_eq,ck
+//      is lower triangular in a downwind order of the cells (downwind_ordering.hpp), so one
+//      sweep in that order solves it exactly (Gauss-Seidel on the closing edge of a cycle);
+//   2. the moments, equilibria (warm-started Newton) and nu are updated from the new f, and
+//      the full steady residual r(f) of kinetic_operator.hpp is evaluated.
+// Stops when ||r||_2 / ||r_0||_2 <= tolerance. Source iteration converges in O(1) iterations
+// in the free-molecular regime and slowly in the near-continuum (the spectral radius tends to
+// 1 as Kn -> 0): the motivation for COMET.
+#pragma once
+#include <functional>
+#include <span>
+
+#include "core/types.hpp"
+#include "physics/gas/kinetic/kinetic_operator.hpp"
+#include "physics/gas/kinetic/kinetic_solve_result.hpp"
+
+namespace rfmems {
+
+struct SequentialOptions {
+  Real tolerance = 1e-6;       // on ||r|| / ||r_0||
+  int max_iterations = 200000;
+  // Called after every iteration with (iteration, ratio); return false to stop.
+  std::function<bool(int, Real)> monitor;
+};
+
+// Iterates f (length op.size(), the initial state on entry) to the steady state.
+KineticSolveResult solve_sequential(KineticOperator& op, std::span<Real> f,
+                                    const SequentialOptions& options = {});
+
+}  // namespace rfmems
