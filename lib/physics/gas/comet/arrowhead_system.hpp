@@ -44,9 +44,10 @@ class ArrowheadSystem {
   Real b(Index k, int j) const { return b_[M * k + j]; }
   Real c(int i, Index k) const { return c_[M * k + i]; }
   const MatM& e() const { return e_; }
-  // Raw rows for assembly loops: B(k, .) and C(., k).
+  // Raw rows for assembly loops: B(k, .) and C(., k); all of B (row-major N x M).
   Real* b_row(Index k) { return &b_[M * k]; }
   Real* c_column(Index k) { return &c_[M * k]; }
+  std::span<Real> b_data() { return b_; }
 
   // Solves A [x_f; x_X] = [rhs_f; rhs_X]. x_f may alias rhs_f.
   void solve(std::span<const Real> rhs_f, const VecM& rhs_x, std::span<Real> x_f, VecM& x_x) const;

@@ -36,7 +36,24 @@ inline Eigen::Matrix<Real, 5, 1> conserved_basis(const VelocityGrid& grid, Index
 // U = sum_k w_k psi_k f_k.
 Eigen::Matrix<Real, 5, 1> conserved_moments(const VelocityGrid& grid, std::span<const Real> f);
 
-// df_dU[5 k + j] = d f_eq,k / dU_j for the model's discrete equilibrium with values f_eq.
+// The derivative for one grid and model, with the basis matrices precomputed (COMET evaluates
+// it once per cell visit: two small dense products over the N ordinates).
+class EquilibriumMomentDerivative {
+ public:
+  EquilibriumMomentDerivative(CollisionModel model, const VelocityGrid& grid);
+  // df_dU[5 k + j] = scale * d f_eq,k / dU_j (scale: COMET's -V nu, folded in for free).
+  void evaluate(std::span<const Real> f_eq, std::span<Real> df_dU, Real scale = 1.0);
+
+ private:
+  using RowMatrix = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  CollisionModel model_;
+  Eigen::MatrixXd phi_;        // N x P basis of the equilibrium's exponent (P = 5 or 10)
+  Eigen::VectorXd w_;          // weights
+  Eigen::MatrixXd weighted_;   // scratch N x P
+};
+
+// df_dU[5 k + j] = d f_eq,k / dU_j for the model's discrete equilibrium with values f_eq
+// (convenience: builds an EquilibriumMomentDerivative).
 void equilibrium_conserved_derivative(CollisionModel model, const VelocityGrid& grid,
                                       std::span<const Real> f_eq, std::span<Real> df_dU);
 

@@ -19,7 +19,10 @@ const char* comet_coupling_name(CometCoupling coupling) {
 
 PointCoupledSmoother::PointCoupledSmoother(KineticOperator& op, CometCoupling coupling,
                                            int cell_newton_iterations)
-    : op_(op), coupling_(coupling), newton_iterations_(std::max(1, cell_newton_iterations)) {
+    : op_(op),
+      coupling_(coupling),
+      newton_iterations_(std::max(1, cell_newton_iterations)),
+      conserved_derivative_(op.gas().model, op.grid()) {
   const Index n = op.n_ordinates(), nc = op.n_owned_cells();
   outgoing_.resize(nc * n);
   for (Index c = 0; c < nc; ++c)
@@ -29,6 +32,14 @@ PointCoupledSmoother::PointCoupledSmoother(KineticOperator& op, CometCoupling co
   dfeq_.resize(5 * n);
   velocity_system_.resize(n);
   conserved_system_.resize(n);
+  // The moment rows C are constant: -w_k c_k (velocity) or -w_k psi_k (conserved).
+  const VelocityGrid& grid = op.grid();
+  for (Index k = 0; k < n; ++k) {
+    const auto psi = conserved_basis(grid, k);
+    for (int j = 0; j < 3; ++j) velocity_system_.c(j, k) = -grid.w[k] * grid.c[k][j];
+    for (int j = 0; j < 5; ++j) conserved_system_.c(j, k) = -grid.w[k] * psi[j];
+  }
+  conserved_system_.e().setIdentity();
 }
 
 void PointCoupledSmoother::sweep(std::span<Real> f, std::span<const Real> source, bool forward) {
@@ -73,31 +84,16 @@ void PointCoupledSmoother::newton_step(Index c, std::span<Real> f, std::span<con
     step_[k] = -r;
     a.d(k) = out[k] + vnu;
   }
-  // Coupling columns B = -V nu df_eq/dX and moment rows [C E].
+  // Coupling columns B = -V nu df_eq/dX (the moment rows [C E] are set once, E = rho I for the
+  // velocity coupling per cell).
   if constexpr (M == 3) {
     equilibrium_velocity_derivative(op_.coefficients(c), op_.target(c), grid, feq,
                                     std::span<Real>(dfeq_).first(3 * n));
-    for (Index k = 0; k < n; ++k) {
-      Real* b = a.b_row(k);
-      Real* cc = a.c_column(k);
-      for (int j = 0; j < 3; ++j) {
-        b[j] = -vnu * dfeq_[3 * k + j];
-        cc[j] = -grid.w[k] * grid.c[k][j];
-      }
-    }
+    const std::span<Real> b = a.b_data();
+    for (Index i = 0; i < 3 * n; ++i) b[i] = -vnu * dfeq_[i];
     a.e() = op_.macro(c).rho * Mat3::Identity();
   } else {
-    equilibrium_conserved_derivative(op_.gas().model, grid, feq, dfeq_);
-    for (Index k = 0; k < n; ++k) {
-      Real* b = a.b_row(k);
-      Real* cc = a.c_column(k);
-      const auto psi = conserved_basis(grid, k);
-      for (int j = 0; j < 5; ++j) {
-        b[j] = -vnu * dfeq_[5 * k + j];
-        cc[j] = -grid.w[k] * psi[j];
-      }
-    }
-    a.e().setIdentity();
+    conserved_derivative_.evaluate(feq, a.b_data(), -vnu);
   }
   typename ArrowheadSystem<M>::VecM dx;
   a.solve(step_, ArrowheadSystem<M>::VecM::Zero(), step_, dx);

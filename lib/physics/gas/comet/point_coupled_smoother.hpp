@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "physics/gas/comet/arrowhead_system.hpp"
+#include "physics/gas/comet/equilibrium_moment_derivative.hpp"
 #include "physics/gas/kinetic/kinetic_operator.hpp"
 
 namespace rfmems {
@@ -70,6 +71,7 @@ class PointCoupledSmoother {
   int newton_iterations_;
   std::vector<Real> outgoing_;  // a_k per owned cell, cell-major
   std::vector<Real> in_, step_, dfeq_;
+  EquilibriumMomentDerivative conserved_derivative_;
   ArrowheadSystem<3> velocity_system_;
   ArrowheadSystem<5> conserved_system_;
   long cell_updates_ = 0;
