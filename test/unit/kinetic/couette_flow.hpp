@@ -5,7 +5,7 @@
 //
 // Quasi-1D mesh: one column of Ny cells in the (x, y) plane with specular sides; the walls move
 // along z, the invariant direction of the 2D mesh, so the specular sides (which reverse c_x)
-// do not touch the flow. First-order slip solution (Maxwell, sigma = 1):
+// do not touch the flow. First-order slip solution (Maxwell, accommodation sigma):
 //   u(y) = U (y / H + zeta) / (1 + 2 zeta),   zeta = (2 - sigma) / sigma Kn.
 // Shared by the Couette regression test and study.
 #pragma once
@@ -26,7 +26,7 @@ struct CouetteRun {
 };
 
 inline CouetteRun run_couette(Real kn, int ny, CollisionModel model = CollisionModel::Esbgk,
-                              int nv = 10) {
+                              int nv = 10, Real sigma = 1) {
   constexpr Real H = 1, U = 10, T0 = 273.15;
   BoxSpec spec;
   spec.upper = Vec3(H, H, 0);
@@ -35,8 +35,8 @@ inline CouetteRun run_couette(Real kn, int ny, CollisionModel model = CollisionM
   const FaceGraph g = face_graph_of(make_structured_mesh(spec));
   const KineticGas gas = KineticGas::argon(model);
   std::vector<KineticBoundary> bcs(g.patch_names.size(), KineticBoundary::specular_wall());
-  bcs[g.find_patch("bottom")] = KineticBoundary::diffuse_wall(T0);
-  bcs[g.find_patch("top")] = KineticBoundary::diffuse_wall(T0, Vec3(0, 0, U));
+  bcs[g.find_patch("bottom")] = KineticBoundary::diffuse_wall(T0, Vec3::Zero(), sigma);
+  bcs[g.find_patch("top")] = KineticBoundary::diffuse_wall(T0, Vec3(0, 0, U), sigma);
   const Real rho = gas.density_for_knudsen(kn, T0, H);
   KineticOperator op(g, VelocityGrid::uniform(nv, nv, nv, 3.5 * gas.thermal_speed(T0)), gas,
                      bcs);
@@ -45,7 +45,7 @@ inline CouetteRun run_couette(Real kn, int ny, CollisionModel model = CollisionM
   op.initialize(f, [&](const Vec3& x) { return GasState{rho, Vec3(0, 0, U * x.y() / H), T0}; });
   CouetteRun run;
   run.solve = solve_sequential(op, f);
-  const Real zeta = kn;
+  const Real zeta = (2 - sigma) / sigma * kn;
   Real sum = 0;
   for (Index c = 0; c < op.n_cells(); ++c) {
     const Real y = g.cell_centroid[c].y();

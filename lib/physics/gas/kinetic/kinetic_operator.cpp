@@ -218,4 +218,15 @@ Real KineticOperator::total_mass(std::span<const Real> f) const {
   return m;
 }
 
+bool KineticOperator::is_closed() const {
+  for (const KineticBoundary& bc : boundaries_)
+    if (bc.kind == KineticBoundaryKind::Pressure) return false;
+  return true;
+}
+
+void KineticOperator::restore_mass(std::span<Real> f, Real mass) const {
+  const Real factor = mass / total_mass(f);
+  for (Real& x : f) x *= factor;
+}
+
 }  // namespace rfmems

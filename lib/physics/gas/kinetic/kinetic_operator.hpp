@@ -119,6 +119,11 @@ class KineticOperator {
   Real boundary_mass_flow(int patch, std::span<const Real> f) const;
   // Total mass sum_c V_c rho_c over owned cells.
   Real total_mass(std::span<const Real> f) const;
+  // True if no patch lets gas in or out (no pressure boundary): the steady state is then
+  // defined only up to the total mass, which the solvers pin to the initial state's.
+  bool is_closed() const;
+  // Scales f so that total_mass(f) = mass (a closed domain's iterate; serial: owned cells).
+  void restore_mass(std::span<Real> f, Real mass) const;
 
  private:
   std::span<const Real> cell(std::span<const Real> f, Index c) const {

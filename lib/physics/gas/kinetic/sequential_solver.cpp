@@ -69,11 +69,12 @@ KineticSolveResult solve_sequential(KineticOperator& op, std::span<Real> f,
   result.initial_residual = norm2(r);
   result.final_residual = result.initial_residual;
   result.residual_ratio = 1;
-  if (result.initial_residual == 0) {
-    result.converged = true;
-  }
+  if (result.initial_residual == 0) result.converged = true;
+  const bool closed = op.is_closed();
+  const Real mass = op.total_mass(f);
   while (!result.converged && result.iterations < options.max_iterations) {
     sweep(op, groups, f);
+    if (closed) op.restore_mass(f, mass);
     op.residual(f, r);
     ++result.iterations;
     result.final_residual = norm2(r);

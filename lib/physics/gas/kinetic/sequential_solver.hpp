@@ -10,6 +10,10 @@
 //      sweep in that order solves it exactly (Gauss-Seidel on the closing edge of a cycle);
 //   2. the moments, equilibria (warm-started Newton) and nu are updated from the new f, and
 //      the full steady residual r(f) of kinetic_operator.hpp is evaluated.
+// In a closed domain (op.is_closed()) the sweeps do not conserve mass (collision and boundary
+// values are lagged) and the steady state is defined only up to its mass, so after each sweep
+// f is scaled to the initial total mass (KineticOperator::restore_mass): every solver pins
+// the mass this way, so they agree on the steady state.
 // Stops when ||r||_2 / ||r_0||_2 <= tolerance. Source iteration converges in O(1) iterations
 // in the free-molecular regime and slowly in the near-continuum (the spectral radius tends to
 // 1 as Kn -> 0): the motivation for COMET.

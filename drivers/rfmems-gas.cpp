@@ -1,0 +1,172 @@
+// rfmems-gas: steady rarefied gas flow by the discrete-velocity BGK / ESBGK model
+// (lib/physics/gas/kinetic): reads a case file (mesh, gas, initial state, velocity grid,
+// boundaries, solver; physics/gas/kinetic/kinetic_case.hpp), iterates to the steady state with
+// the solver named in `solver.type` (sequential; COMET when registered), writes the cell fields
+// and the residual history to HDF5 + XDMF, and reports iterations, residuals and the forces and
+// heat flows on the walls.
+//
+// Sample runs:
+//   rfmems-gas cases/gas_couette/case.yaml                  # -> out/gas_couette.h5, .xdmf
+//   rfmems-gas cases/gas_heat_transfer/case.yaml --json --quiet
+//   rfmems-gas cases/gas_cavity/case.yaml --set initial.knudsen=1 -o out/cavity_kn1.h5
+//
+// Fields (step 0): density (kg/m^3), velocity (m/s), temperature (K), pressure (Pa),
+// heat_flux (W/m^2), stress (viscous, Pa, Voigt xx yy zz yz xz xy). /solver/residual: the
+// ratio ||r|| / ||r_0|| per iteration. Exit codes as rfmems-solid: 0 success; 2 bad input (one
+// line on stderr, no result file); 1 other failures (including no convergence).
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/case_file.hpp"
+#include "io/driver_main.hpp"
+#include "io/interrupt_cleanup.hpp"
+#include "io/json_summary.hpp"
+#include "io/result_writer.hpp"
+#include "physics/gas/kinetic/kinetic_case.hpp"
+
+namespace {
+
+using namespace rfmems;
+
+void write_fields(ResultWriter& writer, const KineticOperator& op) {
+  const Index n = op.n_owned_cells();
+  std::vector<double> rho(n), T(n), p(n), u(3 * n), q(3 * n), tau(6 * n);
+  for (Index c = 0; c < n; ++c) {
+    const MacroState& m = op.macro(c);
+    rho[c] = m.rho;
+    T[c] = m.T;
+    p[c] = m.p;
+    for (int d = 0; d < 3; ++d) {
+      u[3 * c + d] = m.u[d];
+      q[3 * c + d] = m.heat_flux[d];
+    }
+    const Mat3& s = m.stress;
+    const double voigt[6] = {s(0, 0), s(1, 1), s(2, 2), s(1, 2), s(0, 2), s(0, 1)};
+    for (int i = 0; i < 6; ++i) tau[6 * c + i] = voigt[i];
+  }
+  writer.write_cell_field_at(0, 0.0, "density", rho, 1);
+  writer.write_cell_field_at(0, 0.0, "velocity", u, 3, {"x", "y", "z"});
+  writer.write_cell_field_at(0, 0.0, "temperature", T, 1);
+  writer.write_cell_field_at(0, 0.0, "pressure", p, 1);
+  writer.write_cell_field_at(0, 0.0, "heat_flux", q, 3, {"x", "y", "z"});
+  writer.write_cell_field_at(0, 0.0, "stress", tau, 6, {"xx", "yy", "zz", "yz", "xz", "xy"});
+}
+
+int run(const DriverOptions& options) {
+  const DriverCase run_case(options);
+  const CaseFile& case_file = run_case.file;
+  const CaseNode& root = run_case.root;
+  const std::string& name = run_case.name;
+  const std::string& output = run_case.output;
+  auto elapsed = [&] { return run_case.elapsed(); };
+
+  KineticScene scene = build_kinetic_scene(root, run_case.dir);
+  case_file.check_all_used();  // a typo stops the run here, before any solving
+  KineticOperator& op = *scene.op;
+
+  ResultWriter writer(output, *scene.mesh);
+  remove_on_interrupt(temp_path_for(output));
+
+  std::vector<Real> f(op.size());
+  op.initialize(f, [&](const Vec3&) { return scene.initial; });
+  const bool quiet = options.quiet;
+  double last_print = -10;
+  auto monitor = [&](int iteration, Real ratio) {
+    if (!quiet && elapsed() - last_print > 5) {
+      std::fprintf(stderr, "iteration %d: residual ratio %.3e (%.0f s)\n", iteration, ratio,
+                   elapsed());
+      last_print = elapsed();
+    }
+    return true;
+  };
+  const KineticSolveResult result =
+      kinetic_solvers().at(scene.solver.type)(op, f, scene.solver, monitor);
+  op.update_collision(f);  // macros of the final state
+
+  write_fields(writer, op);
+  std::vector<double> its;
+  std::vector<std::vector<double>> ratio_rows;
+  for (std::size_t i = 0; i < result.history.size(); ++i) {
+    its.push_back(static_cast<double>(i + 1));
+    ratio_rows.push_back({result.history[i]});
+  }
+  writer.write_time_series("solver", "residual", its, ratio_rows, {"ratio"}, "iteration");
+
+  const FaceGraph& g = *scene.graph;
+  Json summary;
+  summary["case"] = name;
+  summary["collision"] = collision_model_name(op.gas().model);
+  summary["mesh"] = {{"dim", g.dim}, {"cells", g.n_cells()}};
+  summary["velocity_grid"] = {{"points", op.grid().n}, {"ordinates", op.grid().size()},
+                              {"extent_m_per_s", op.grid().extent.maxCoeff()}};
+  summary["initial"] = {{"density", scene.initial.rho}, {"temperature", scene.initial.T},
+                        {"knudsen", scene.knudsen}, {"reference_length", scene.reference_length}};
+  summary["solver"] = {{"type", scene.solver.type},
+                       {"converged", result.converged},
+                       {"iterations", result.iterations},
+                       {"tolerance", scene.solver.tolerance},
+                       {"residual_initial", result.initial_residual},
+                       {"residual_final", result.final_residual},
+                       {"residual_ratio", result.residual_ratio},
+                       {"seconds", result.seconds}};
+  Json walls = Json::object();
+  for (int p : scene.force_patches) {
+    const Vec3 F = op.wall_force(p, f);
+    walls[g.patch_names[p]] = {{"force", {F.x(), F.y(), F.z()}},
+                               {"heat_flow", op.wall_heat_flow(p, f)},
+                               {"type", kinetic_boundary_kind_name(op.boundaries()[p].kind)}};
+  }
+  summary["walls"] = walls;
+  summary["total_mass"] = op.total_mass(f);
+  summary["output"] = {{"h5", writer.path()}, {"xdmf", writer.xdmf_path()}};
+  summary["wall_time_s"] = elapsed();
+  writer.write_metadata({{"case_file", case_file.path()},
+                         {"case_name", name},
+                         {"case_text", case_file.text()},
+                         {"case_effective", case_file.effective_text()},
+                         {"collision", collision_model_name(op.gas().model)},
+                         {"solver", scene.solver.type},
+                         {"summary", json_text(summary)}},
+                        {{"wall_time_s", elapsed()},
+                         {"iterations", result.iterations},
+                         {"residual_ratio", result.residual_ratio},
+                         {"knudsen", scene.knudsen}});
+  if (!result.converged)
+    throw SolverError("rfmems-gas: no convergence after " + std::to_string(result.iterations) +
+                      " iterations (residual ratio " + std::to_string(result.residual_ratio) +
+                      ", tolerance " + std::to_string(scene.solver.tolerance) + ")");
+  writer.finish();
+
+  if (options.json) {
+    std::cout << json_text(summary) << std::flush;
+  } else if (!quiet) {
+    std::printf("%s (%s, Kn = %.4g, %lld cells x %lld velocities): %s solver converged in %d "
+                "iterations (residual ratio %.2e, %.1f s)\n",
+                name.c_str(), collision_model_name(op.gas().model), scene.knudsen,
+                static_cast<long long>(g.n_cells()), static_cast<long long>(op.grid().size()),
+                scene.solver.type.c_str(), result.iterations, result.residual_ratio,
+                result.seconds);
+    for (int p : scene.force_patches) {
+      const Vec3 F = op.wall_force(p, f);
+      std::printf("  wall %s: force [%.6e, %.6e, %.6e] N%s, heat flow %.6e W%s\n",
+                  g.patch_names[p].c_str(), F.x(), F.y(), F.z(), g.dim == 2 ? "/m" : "",
+                  op.wall_heat_flow(p, f), g.dim == 2 ? "/m" : "");
+    }
+    std::printf("wrote %s and %s (%.1f s)\n", writer.path().c_str(), writer.xdmf_path().c_str(),
+                elapsed());
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return driver_main("rfmems-gas",
+                     "rfmems-gas: steady rarefied gas flow, discrete-velocity BGK / ESBGK (FV)",
+                     argc, argv, run);
+}

@@ -1,0 +1,116 @@
+#include "physics/gas/kinetic/kinetic_case.hpp"
+
+#include <cmath>
+
+#include "core/error.hpp"
+#include "io/mesh_from_case.hpp"
+#include "physics/gas/kinetic/sequential_solver.hpp"
+
+namespace rfmems {
+namespace {
+
+KineticGas read_gas(const CaseNode& node) {
+  KineticGas gas;
+  gas.model = collision_model_from_name(node.get_choice("collision", {"bgk", "esbgk"}, "esbgk"));
+  gas.R = node.get_real("R", gas.R, Range::positive());
+  gas.mu_ref = node.get_quantity("mu_ref", Dimension::Viscosity, gas.mu_ref, Range::positive());
+  gas.T_ref = node.get_quantity("T_ref", Dimension::Temperature, gas.T_ref, Range::positive());
+  gas.omega = node.get_real("omega", gas.omega, Range::closed(0, 2));
+  gas.prandtl = node.get_real("prandtl", gas.prandtl, Range::closed(2.0 / 3.0 - 1e-9, 10));
+  return gas;
+}
+
+Real largest_extent(const FaceGraph& g) {
+  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+  for (const Vec3& x : g.face_centroid) {
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  return (hi - lo).maxCoeff();
+}
+
+}  // namespace
+
+KineticSolverSettings read_kinetic_solver_settings(const CaseNode& node) {
+  KineticSolverSettings s;
+  std::vector<std::string> names;
+  for (const auto& [name, fn] : kinetic_solvers()) names.push_back(name);
+  s.type = node.get_choice("type", names, "sequential");
+  s.tolerance = node.get_real("tolerance", 1e-6, Range::open(0, 1));
+  s.max_iterations = static_cast<int>(node.get_int("max_iterations", 200000, Range::closed(1, 1e9)));
+  s.node = node;
+  return s;
+}
+
+KineticScene build_kinetic_scene(const CaseNode& root, const std::string& case_dir) {
+  KineticScene scene;
+  scene.mesh = std::make_unique<Mesh>(mesh_from_case(root.child("mesh"), case_dir));
+  scene.graph = std::make_unique<FaceGraph>(face_graph_of(*scene.mesh));
+  const KineticGas gas = read_gas(root.child_or_empty("gas"));
+
+  const CaseNode initial = root.child("initial");
+  scene.initial.T = initial.get_quantity("T", Dimension::Temperature, Range::positive());
+  scene.reference_length =
+      initial.has("reference_length")
+          ? initial.get_quantity("reference_length", Dimension::Length, Range::positive())
+          : largest_extent(*scene.graph);
+  const bool has_density = initial.has("density"), has_knudsen = initial.has("knudsen");
+  if (has_density == has_knudsen)
+    initial.fail("density", "give exactly one of 'density' and 'knudsen'");
+  scene.initial.rho =
+      has_density ? initial.get_quantity("density", Dimension::Density, Range::positive())
+                  : gas.density_for_knudsen(initial.get_real("knudsen", Range::positive()),
+                                            scene.initial.T, scene.reference_length);
+  scene.initial.u = initial.has("velocity")
+                        ? initial.get_vec3_quantity("velocity", Dimension::Velocity)
+                        : Vec3::Zero();
+  scene.knudsen = gas.knudsen(scene.initial.rho, scene.initial.T, scene.reference_length);
+
+  const CaseNode vg = root.child("velocity_grid");
+  const std::vector<Real> points = vg.get_reals("points");
+  if (points.size() != 3) vg.fail("points", "expected 3 numbers [N1, N2, N3]");
+  int n[3];
+  for (int d = 0; d < 3; ++d) {
+    if (!(points[d] >= 2 && points[d] <= 200 && points[d] == std::floor(points[d])))
+      vg.fail("points", "each must be an integer in [2, 200]");
+    n[d] = static_cast<int>(points[d]);
+  }
+  const Real extent = vg.get_real("extent", 3.5, Range::positive());
+  VelocityGrid grid = VelocityGrid::uniform(n[0], n[1], n[2], extent * gas.thermal_speed(scene.initial.T));
+
+  std::vector<KineticBoundary> bcs = kinetic_boundaries_from_case(root.child("boundaries"), *scene.graph);
+  scene.solver = read_kinetic_solver_settings(root.child_or_empty("solver"));
+
+  const CaseNode output = root.child_or_empty("output");
+  if (output.has("forces")) {
+    for (const std::string& p : output.get_strings("forces")) {
+      const int id = scene.graph->find_patch(p);
+      if (id < 0) output.fail("forces", "no patch named '" + p + "'");
+      scene.force_patches.push_back(id);
+    }
+  } else {
+    for (std::size_t p = 0; p < bcs.size(); ++p)
+      if (bcs[p].kind == KineticBoundaryKind::DiffuseWall ||
+          bcs[p].kind == KineticBoundaryKind::SpecularWall)
+        scene.force_patches.push_back(static_cast<int>(p));
+  }
+  scene.op = std::make_unique<KineticOperator>(*scene.graph, std::move(grid), gas, std::move(bcs));
+  return scene;
+}
+
+const std::map<std::string, KineticSolverFunction>& kinetic_solvers() {
+  static const std::map<std::string, KineticSolverFunction> solvers = {
+      {"sequential",
+       [](KineticOperator& op, std::span<Real> f, const KineticSolverSettings& s,
+          const std::function<bool(int, Real)>& monitor) {
+         SequentialOptions options;
+         options.tolerance = s.tolerance;
+         options.max_iterations = s.max_iterations;
+         options.monitor = monitor;
+         return solve_sequential(op, f, options);
+       }},
+  };
+  return solvers;
+}
+
+}  // namespace rfmems

@@ -1,0 +1,79 @@
+// A kinetic gas simulation from a case file: mesh, gas, velocity grid, boundaries, initial
+// state and solver settings, and the solver chosen by name (the rfmems-gas driver's model).
+//
+//   mesh: {type: rectangle, size: [1 m, 1 m], cells: [1, 80]}     # io/mesh_from_case.hpp
+//   gas:                                 # all optional; defaults: argon (thesis sec. 5.5.1)
+//     collision: esbgk                   # bgk | esbgk
+//     R: 208.13                          # J/(kg K)
+//     mu_ref: 2.117e-5 Pa s
+//     T_ref: 273.15 K
+//     omega: 0.81
+//     prandtl: 0.6667                    # ESBGK only; [2/3, 10]
+//   initial:                             # uniform Maxwellian
+//     T: 273.15 K
+//     density: 9.28e-6 kg/m^3            # or: knudsen: 0.1 (with reference_length)
+//     knudsen: 0.1                       # Kn = lambda / L, lambda = mu/p sqrt(pi R T/2)
+//     reference_length: 1 m              # L (default: the mesh's largest extent)
+//     velocity: [0, 0, 0]                # optional
+//   velocity_grid:
+//     points: [10, 10, 10]
+//     extent: 3.5                        # half-width in units of sqrt(2 R T_initial)
+//   boundaries: {...}                    # kinetic_boundary.hpp, every patch
+//   solver:
+//     type: sequential                   # sequential | comet (registry below)
+//     tolerance: 1e-6                    # on ||r||_2 / ||r_0||_2
+//     max_iterations: 200000
+//   output:
+//     forces: [top, bottom]              # patches whose force / heat flow is reported
+//                                        # (default: every wall patch)
+#pragma once
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "fv/face_graph.hpp"
+#include "io/case_file.hpp"
+#include "mesh/mesh.hpp"
+#include "physics/gas/kinetic/kinetic_operator.hpp"
+#include "physics/gas/kinetic/kinetic_solve_result.hpp"
+
+namespace rfmems {
+
+struct KineticSolverSettings {
+  std::string type = "sequential";
+  Real tolerance = 1e-6;
+  int max_iterations = 200000;
+  std::optional<CaseNode> node;  // the whole `solver:` map, for solver-specific keys
+};
+
+struct KineticScene {
+  std::unique_ptr<Mesh> mesh;
+  std::unique_ptr<FaceGraph> graph;
+  std::unique_ptr<KineticOperator> op;
+  GasState initial;
+  Real reference_length = 0;
+  Real knudsen = 0;  // of the initial state over reference_length
+  KineticSolverSettings solver;
+  std::vector<int> force_patches;
+};
+
+// Reads every section above (InputError naming file and key on bad input).
+KineticScene build_kinetic_scene(const CaseNode& root, const std::string& case_dir);
+
+// Reads `solver:` (type must be a registered solver).
+KineticSolverSettings read_kinetic_solver_settings(const CaseNode& solver);
+
+// A steady solver: iterates f (the initial state on entry); monitor(iteration, ratio) may stop
+// it by returning false.
+using KineticSolverFunction = std::function<KineticSolveResult(
+    KineticOperator& op, std::span<Real> f, const KineticSolverSettings& settings,
+    const std::function<bool(int, Real)>& monitor)>;
+
+// The solvers by name ("sequential"; COMET registers "comet").
+const std::map<std::string, KineticSolverFunction>& kinetic_solvers();
+
+}  // namespace rfmems

@@ -1,0 +1,112 @@
+#!/usr/bin/env bash
+# rfmems-gas end to end on reduced versions of the gas cases: Couette flow (20 cells) against
+# the first-order slip solution and with balanced wall forces; heat transfer (8 x 8, Kn = 1)
+# with balanced wall heat flows and a temperature uniform along x; the cavity (8 x 8, Kn = 1)
+# with balanced x forces and a clockwise vortex; the plots; and the bad-input contract.
+#
+# Usage: bash test_gas_driver.sh <directory of the drivers> <source directory>
+set -uo pipefail
+
+DRIVER="$1/rfmems-gas"
+SRC="$2"
+PY=/usr/bin/python3
+COUETTE="$SRC/cases/gas_couette/case.yaml"
+HEAT="$SRC/cases/gas_heat_transfer/case.yaml"
+CAVITY="$SRC/cases/gas_cavity/case.yaml"
+
+WORK=$(mktemp -d)
+trap 'rm -rf "$WORK"' EXIT
+source "$SRC/test/drivers/common.sh"
+
+# ---- Couette, Kn = 0.1, 20 cells: slip solution within 2 % RMS, forces balance --------------
+if "$DRIVER" "$COUETTE" --set "mesh.cells=[1, 20]" -o "$WORK/couette.h5" --json --quiet \
+     >"$WORK/couette.json" 2>"$WORK/err" &&
+   $PY - "$WORK/couette.json" "$WORK/couette.h5" <<'PY'
+import json, sys
+import h5py, numpy as np
+d = json.load(open(sys.argv[1]))
+s = d["solver"]
+assert s["converged"] and s["residual_ratio"] <= 1e-6 and s["type"] == "sequential", s
+assert abs(d["initial"]["knudsen"] / 0.1 - 1) < 1e-12, d["initial"]
+fb, ft = d["walls"]["bottom"]["force"], d["walls"]["top"]["force"]
+assert abs(fb[2] + ft[2]) < 1e-3 * fb[2] and fb[2] > 0, (fb, ft)
+with h5py.File(sys.argv[2]) as f:
+    y = f["mesh/cell_centroids"][:, 1]
+    uz = f["fields/000000/velocity"][()].reshape(-1, 3)[:, 2]
+    its = f["solver/residual/iteration"][()]
+    assert len(its) == s["iterations"], (len(its), s["iterations"])
+kn, U = 0.1, 10.0
+rms = np.sqrt(np.mean(((uz - U * (y + kn) / (1 + 2 * kn)) / U) ** 2))
+assert rms < 0.02, rms
+print(f"RMS error vs slip {100 * rms:.3f} %, {s['iterations']} iterations, wall force {fb[2]:.4e} N/m")
+PY
+then
+  pass "Couette: converged, velocity within 2 % RMS of the slip solution, wall forces balance"
+else
+  fail "Couette: $(cat "$WORK/err")"
+fi
+if $PY "$SRC/python/plot_gas.py" "$WORK/couette.h5" >/dev/null && [ -s "$WORK/couette_fields.png" ] &&
+   [ -s "$WORK/couette_profile.png" ] && [ -s "$WORK/couette_residual.png" ]; then
+  pass "plot_gas.py draws fields, profile and residual history"
+else
+  fail "plot_gas.py"
+fi
+
+# ---- heat transfer, 8 x 8, Kn = 1: heat flows balance, T uniform along x --------------------
+if "$DRIVER" "$HEAT" --set "mesh.cells=[8, 8]" --set initial.knudsen=1 \
+     --set "velocity_grid.points=[8, 8, 8]" -o "$WORK/heat.h5" --json --quiet \
+     >"$WORK/heat.json" 2>"$WORK/err" &&
+   $PY - "$WORK/heat.json" "$WORK/heat.h5" <<'PY'
+import json, sys
+import h5py, numpy as np
+d = json.load(open(sys.argv[1]))
+qb, qt = d["walls"]["bottom"]["heat_flow"], d["walls"]["top"]["heat_flow"]
+assert d["solver"]["converged"] and qb > 0 and abs(qb + qt) < 1e-3 * qb, (qb, qt)
+with h5py.File(sys.argv[2]) as f:
+    T = f["fields/000000/temperature"][()].reshape(8, 8)  # rows: y
+assert np.all(T.max(axis=1) - T.min(axis=1) < 1e-6 * T.mean()), T
+assert 273.15 < T.min() and T.max() < 327.78, (T.min(), T.max())
+print(f"heat flow {qb:.4e} W/m, T from {T.min():.2f} to {T.max():.2f} K")
+PY
+then
+  pass "heat transfer: converged, wall heat flows balance, temperature uniform along x"
+else
+  fail "heat transfer: $(cat "$WORK/err")"
+fi
+
+# ---- cavity, 8 x 8, Kn = 1: x forces balance, clockwise vortex -------------------------------
+if "$DRIVER" "$CAVITY" --set "mesh.cells=[8, 8]" --set initial.knudsen=1 \
+     --set "velocity_grid.points=[8, 8, 8]" -o "$WORK/cavity.h5" --json --quiet \
+     >"$WORK/cavity.json" 2>"$WORK/err" &&
+   $PY - "$WORK/cavity.json" "$WORK/cavity.h5" <<'PY'
+import json, sys
+import h5py, numpy as np
+d = json.load(open(sys.argv[1]))
+w = d["walls"]
+fx = [w[p]["force"][0] for p in ("top", "bottom", "left", "right")]
+assert d["solver"]["converged"] and fx[0] < 0 and abs(sum(fx)) < 1e-3 * abs(fx[0]), fx
+with h5py.File(sys.argv[2]) as f:
+    u = f["fields/000000/velocity"][()].reshape(8, 8, 3)
+assert u[-1, :, 0].mean() > 0 and u[0, :, 0].mean() < 0, u[:, :, 0]
+print(f"lid drag {fx[0]:.4e} N/m, u_x under the lid {u[-1, :, 0].mean():.3f} m/s")
+PY
+then
+  pass "cavity: converged, x forces on the walls balance, clockwise vortex"
+else
+  fail "cavity: $(cat "$WORK/err")"
+fi
+
+# ---- bad input: exit 2, one line naming file and key, no result file (common.sh) ------------
+expect_input_error bad_collision "gas.collision" "$COUETTE" --set gas.collision=bgk2
+expect_input_error missing_boundary "boundaries.left" "$COUETTE" \
+  --set "boundaries={top: {type: specular_wall}, bottom: {type: specular_wall}, right: {type: specular_wall}}"
+expect_input_error unknown_patch "boundaries.lid" "$COUETTE" --set "boundaries.lid={type: symmetry}"
+expect_input_error density_and_knudsen "initial" "$COUETTE" --set "initial.density=1e-5 kg/m^3"
+expect_input_error bad_points "velocity_grid.points" "$COUETTE" --set "velocity_grid.points=[10, 10]"
+expect_input_error bad_solver "solver.type" "$COUETTE" --set solver.type=multigrid
+expect_input_error negative_wall_T "boundaries.top.T" "$COUETTE" --set "boundaries.top.T=-3 K"
+expect_input_error bad_accommodation "boundaries.top.accommodation" "$COUETTE" \
+  --set boundaries.top.accommodation=1.5
+expect_input_error typo "solver.tolerence" "$COUETTE" --set solver.tolerence=1e-8
+
+exit $((failures > 0))
