@@ -140,10 +140,7 @@ CometResult CometSolver::solve(std::span<Real> f) {
     updates0 += level->smoother->cell_updates();
     damped0 += level->smoother->damped_steps();
   }
-  bool closed = true;
-  for (const KineticBoundary& bc : fine_.boundaries())
-    closed = closed && bc.kind != KineticBoundaryKind::Pressure;
-  const bool rescale = options_.conserve_mass && closed;
+  const bool rescale = options_.conserve_mass && fine_.is_closed();
   const Real mass0 = fine_.total_mass(f);
 
   CometResult result;
@@ -163,10 +160,7 @@ CometResult CometSolver::solve(std::span<Real> f) {
         smooth(0, options_.pre_sweeps + options_.post_sweeps);
       }
       ++result.cycles;
-      if (rescale) {
-        const Real factor = mass0 / fine_.total_mass(f);
-        for (Real& x : f) x *= factor;
-      }
+      if (rescale) fine_.restore_mass(f, mass0);
       ratio = fine_.residual_norm(f) / result.initial_residual;
       levels_[0]->collision_current = true;
       if (!std::isfinite(ratio)) throw SolverError("COMET: residual is not finite");

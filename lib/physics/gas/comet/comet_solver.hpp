@@ -23,7 +23,7 @@
 // (3 % in the 10 x 10 heat-transfer case); since nu grows with rho the drift changes the
 // solution (its Knudsen number). With conserve_mass (default) f is rescaled to the initial
 // total mass after every cycle, so the converged state is the steady solution with the initial
-// mass, to round-off.
+// mass, to round-off (KineticOperator::restore_mass, as the sequential solver does).
 //
 // Convergence (shared with the sequential solver, kinetic_operator.hpp): ||r(f)||_2 /
 // ||r(f_0)||_2 <= tolerance on the fine level, checked after every cycle. With
