@@ -9,7 +9,10 @@
 //    in cycles at this Kn;
 //  - the total mass is held to round-off (1e-12 relative) in the heat-transfer box (diffuse
 //    and specular walls) and in a specular box started from a non-uniform state;
-//  - no damped step (the positivity guard never acts).
+//  - no damped step (the positivity guard never acts);
+//  - the regime switch: domain_knudsen of the initial state is the Kn the case was built for
+//    (1e-12), and at Kn = 1 the default options hand the solve to the sequential iteration
+//    (method "sequential", converged, mass held), at Kn = 0.1 they run COMET.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -81,6 +84,19 @@ TEST(CometMultigrid, SpecularBoxHoldsMassToRoundOff) {
   Real umax = 0;
   for (Index c = 0; c < p->op->n_owned_cells(); ++c) umax = std::max(umax, p->op->macro(c).u.norm());
   EXPECT_LT(umax, 1e-3);
+}
+
+TEST(CometMultigrid, RegimeSwitch) {
+  for (Real kn : {1.0, 0.1}) {
+    auto p = make_problem(Case::HeatTransfer, kn, 10, 8);
+    CometSolver solver(*p->op, CometOptions{});
+    EXPECT_NEAR(solver.domain_knudsen(p->f), kn, 1e-12 * kn);
+    const Real mass0 = p->op->total_mass(p->f);
+    const CometResult r = solver.solve(p->f);
+    EXPECT_TRUE(r.converged);
+    EXPECT_STREQ(r.method, kn >= 0.2 ? "sequential" : "comet");
+    EXPECT_NEAR(p->op->total_mass(p->f), mass0, 1e-12 * mass0);
+  }
 }
 
 }  // namespace

@@ -19,7 +19,7 @@ TEST(CometKineticSolver, ReadsEveryKey) {
   const CaseFile file = CaseFile::parse(
       "solver: {type: comet, coupling: velocity, multigrid: false, pre_sweeps: 2, post_sweeps: 3,\n"
       "         coarsest_sweeps: 7, symmetric: false, min_coarse_cells: 16,\n"
-      "         cell_newton_iterations: 2}\n",
+      "         cell_newton_iterations: 2, sequential_above_knudsen: 0.5}\n",
       "test.yaml");
   const CaseNode solver = file.root().child("solver");
   solver.get_string("type");
@@ -32,6 +32,7 @@ TEST(CometKineticSolver, ReadsEveryKey) {
   EXPECT_FALSE(o.symmetric);
   EXPECT_EQ(o.min_coarse_cells, 16);
   EXPECT_EQ(o.cell_newton_iterations, 2);
+  EXPECT_EQ(o.sequential_above_knudsen, 0.5);
   EXPECT_NO_THROW(file.check_all_used());
 
   const CaseFile empty = CaseFile::parse("solver: {type: comet}\n", "test.yaml");
@@ -41,6 +42,7 @@ TEST(CometKineticSolver, ReadsEveryKey) {
   EXPECT_EQ(d.pre_sweeps, 1);
   EXPECT_EQ(d.post_sweeps, 1);
   EXPECT_TRUE(d.symmetric);
+  EXPECT_EQ(d.sequential_above_knudsen, 0.2);
 }
 
 TEST(CometKineticSolver, RejectsBadValues) {

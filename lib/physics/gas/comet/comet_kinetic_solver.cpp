@@ -14,6 +14,8 @@ CometOptions read_comet_options(const CaseNode& solver) {
   o.coarsest_sweeps = static_cast<int>(solver.get_int("coarsest_sweeps", 4, Range::closed(1, 1000)));
   o.symmetric = solver.has("symmetric") ? solver.get_bool("symmetric") : true;
   o.min_coarse_cells = solver.get_int("min_coarse_cells", 8, Range::closed(1, 1e9));
+  o.sequential_above_knudsen =
+      solver.get_real("sequential_above_knudsen", 0.2, Range::non_negative());
   o.cell_newton_iterations =
       static_cast<int>(solver.get_int("cell_newton_iterations", 1, Range::closed(1, 100)));
   return o;

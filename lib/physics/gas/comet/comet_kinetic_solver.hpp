@@ -14,6 +14,7 @@
 //     symmetric: true
 //     min_coarse_cells: 8        # agglomerate down to this many cells
 //     cell_newton_iterations: 1
+//     sequential_above_knudsen: 0.2   # regime switch (comet_solver.hpp); 0: always COMET
 // The COMET keys must be read before the case's unused-key check: call read_comet_options on
 // the `solver:` node when the scene is built (with type comet), not only when solving.
 #pragma once

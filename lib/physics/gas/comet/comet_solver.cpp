@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "core/error.hpp"
 #include "physics/gas/comet/fas_transfer.hpp"
+#include "physics/gas/kinetic/sequential_solver.hpp"
 
 namespace rfmems {
 
@@ -125,10 +127,49 @@ void CometSolver::cycle(int l) {
   smooth(l, options_.post_sweeps);
 }
 
+Real CometSolver::domain_knudsen(std::span<const Real> f) const {
+  const FaceGraph& g = fine_.graph();
+  const Index n = fine_.n_ordinates();
+  Real volume = 0, mass = 0, thermal = 0;
+  for (Index c = 0; c < g.n_owned_cells; ++c) {
+    const MacroState m = moments(f.subspan(c * n, n), fine_.grid(), fine_.gas());
+    volume += g.cell_volume[c];
+    mass += g.cell_volume[c] * m.rho;
+    thermal += g.cell_volume[c] * m.T;
+  }
+  Vec3 lo = Vec3::Constant(std::numeric_limits<Real>::infinity()), hi = -lo;
+  for (const Vec3& x : g.face_centroid) {
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  const Real extent = (hi - lo).maxCoeff();
+  return fine_.gas().knudsen(mass / volume, thermal / volume, extent);
+}
+
 CometResult CometSolver::solve(std::span<Real> f) {
   if (static_cast<Index>(f.size()) != fine_.size())
     throw InputError("COMET: state has the wrong length");
   const auto start = std::chrono::steady_clock::now();
+  const Real knudsen = domain_knudsen(f);
+  if (options_.sequential_above_knudsen > 0 && knudsen >= options_.sequential_above_knudsen) {
+    SequentialOptions so;
+    so.tolerance = options_.tolerance;
+    so.max_iterations = options_.max_cycles;
+    so.monitor = options_.monitor;
+    const KineticSolveResult rs = solve_sequential(fine_, f, so);
+    CometResult r;
+    r.method = "sequential";
+    r.knudsen = knudsen;
+    r.converged = rs.converged;
+    r.cycles = rs.iterations;
+    r.initial_residual = rs.initial_residual;
+    r.residual_ratio = rs.residual_ratio;
+    r.history = rs.history;
+    r.level_cells = {fine_.graph().n_cells()};
+    r.mass_rescaled = fine_.is_closed();
+    r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return r;
+  }
   fine_f_ = f;
   for (auto& level : levels_) {
     level->passes = 0;
@@ -144,6 +185,7 @@ CometResult CometSolver::solve(std::span<Real> f) {
   const Real mass0 = fine_.total_mass(f);
 
   CometResult result;
+  result.knudsen = knudsen;
   result.levels = n_levels();
   result.mass_rescaled = rescale;
   for (auto& level : levels_) result.level_cells.push_back(level->graph->n_cells());
