@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -27,13 +28,17 @@
 #include "io/interrupt_cleanup.hpp"
 #include "io/json_summary.hpp"
 #include "io/result_writer.hpp"
+#include "parallel/communicator.hpp"
 #include "physics/gas/kinetic/kinetic_case.hpp"
 
 namespace {
 
 using namespace rfmems;
 
-void write_fields(ResultWriter& writer, const KineticOperator& op) {
+// The macroscopic fields of the owned cells, gathered in global order on the root; only the
+// root writes (writer is null elsewhere).
+void write_fields(ResultWriter* writer, const KineticScene& scene) {
+  const KineticOperator& op = *scene.op;
   const Index n = op.n_owned_cells();
   std::vector<double> rho(n), T(n), p(n), u(3 * n), q(3 * n), tau(6 * n);
   for (Index c = 0; c < n; ++c) {
@@ -49,12 +54,17 @@ void write_fields(ResultWriter& writer, const KineticOperator& op) {
     const double voigt[6] = {s(0, 0), s(1, 1), s(2, 2), s(1, 2), s(0, 2), s(0, 1)};
     for (int i = 0; i < 6; ++i) tau[6 * c + i] = voigt[i];
   }
-  writer.write_cell_field_at(0, 0.0, "density", rho, 1);
-  writer.write_cell_field_at(0, 0.0, "velocity", u, 3, {"x", "y", "z"});
-  writer.write_cell_field_at(0, 0.0, "temperature", T, 1);
-  writer.write_cell_field_at(0, 0.0, "pressure", p, 1);
-  writer.write_cell_field_at(0, 0.0, "heat_flux", q, 3, {"x", "y", "z"});
-  writer.write_cell_field_at(0, 0.0, "stress", tau, 6, {"xx", "yy", "zz", "yz", "xz", "xy"});
+  auto write = [&](const char* name, const std::vector<double>& values, int block,
+                   std::vector<std::string> components = {}) {
+    const std::vector<double> all = scene.gather(values, block);
+    if (writer) writer->write_cell_field_at(0, 0.0, name, all, block, std::move(components));
+  };
+  write("density", rho, 1);
+  write("velocity", u, 3, {"x", "y", "z"});
+  write("temperature", T, 1);
+  write("pressure", p, 1);
+  write("heat_flux", q, 3, {"x", "y", "z"});
+  write("stress", tau, 6, {"xx", "yy", "zz", "yz", "xz", "xy"});
 }
 
 int run(const DriverOptions& options) {
@@ -65,16 +75,20 @@ int run(const DriverOptions& options) {
   const std::string& output = run_case.output;
   auto elapsed = [&] { return run_case.elapsed(); };
 
-  KineticScene scene = build_kinetic_scene(root, run_case.dir);
+  const Communicator world = Communicator::world();
+  KineticScene scene = build_kinetic_scene(root, run_case.dir, world);
   case_file.check_all_used();  // a typo stops the run here, before any solving
   KineticOperator& op = *scene.op;
 
-  ResultWriter writer(output, *scene.mesh);
-  remove_on_interrupt(temp_path_for(output));
+  std::unique_ptr<ResultWriter> writer;  // the root writes
+  if (world.is_root()) {
+    writer = std::make_unique<ResultWriter>(output, *scene.mesh);
+    remove_on_interrupt(temp_path_for(output));
+  }
 
   std::vector<Real> f(op.size());
   op.initialize(f, [&](const Vec3&) { return scene.initial; });
-  const bool quiet = options.quiet;
+  const bool quiet = options.quiet || !world.is_root();
   double last_print = -10;
   auto monitor = [&](int iteration, Real ratio) {
     if (!quiet && elapsed() - last_print > 5) {
@@ -88,20 +102,25 @@ int run(const DriverOptions& options) {
       kinetic_solvers().at(scene.solver.type)(op, f, scene.solver, monitor);
   op.update_collision(f);  // macros of the final state
 
-  write_fields(writer, op);
+  write_fields(writer.get(), scene);
   std::vector<double> its;
   std::vector<std::vector<double>> ratio_rows;
   for (std::size_t i = 0; i < result.history.size(); ++i) {
     its.push_back(static_cast<double>(i + 1));
     ratio_rows.push_back({result.history[i]});
   }
-  writer.write_time_series("solver", "residual", its, ratio_rows, {"ratio"}, "iteration");
+  if (writer)
+    writer->write_time_series("solver", "residual", its, ratio_rows, {"ratio"}, "iteration");
 
   const FaceGraph& g = *scene.graph;
   Json summary;
   summary["case"] = name;
   summary["collision"] = collision_model_name(op.gas().model);
-  summary["mesh"] = {{"dim", g.dim}, {"cells", g.n_cells()}};
+  summary["mesh"] = {{"dim", g.dim}, {"cells", scene.mesh->n_cells()}};
+  if (scene.distributed)
+    summary["partition"] = {{"ranks", world.size()},
+                            {"edge_cut", scene.distributed->partition.edge_cut},
+                            {"imbalance", scene.distributed->partition.imbalance}};
   summary["velocity_grid"] = {{"points", op.grid().n}, {"ordinates", op.grid().size()},
                               {"extent_m_per_s", op.grid().extent.maxCoeff()}};
   summary["initial"] = {{"density", scene.initial.rho}, {"temperature", scene.initial.T},
@@ -115,17 +134,26 @@ int run(const DriverOptions& options) {
                        {"residual_ratio", result.residual_ratio},
                        {"seconds", result.seconds}};
   Json walls = Json::object();
-  for (int p : scene.force_patches) {
-    const Vec3 F = op.wall_force(p, f);
-    walls[g.patch_names[p]] = {{"force", {F.x(), F.y(), F.z()}},
-                               {"heat_flow", op.wall_heat_flow(p, f)},
-                               {"type", kinetic_boundary_kind_name(op.boundaries()[p].kind)}};
+  std::vector<Vec3> forces;
+  std::vector<Real> heat_flows;
+  for (const std::string& name : scene.force_patches) {
+    const int p = g.find_patch(name);  // -1 on a rank without it: contributes nothing
+    forces.push_back(op.wall_force(p, f));
+    heat_flows.push_back(op.wall_heat_flow(p, f));
+    const Vec3& F = forces.back();
+    walls[name] = {{"force", {F.x(), F.y(), F.z()}}, {"heat_flow", heat_flows.back()}};
   }
   summary["walls"] = walls;
   summary["total_mass"] = op.total_mass(f);
-  summary["output"] = {{"h5", writer.path()}, {"xdmf", writer.xdmf_path()}};
+  summary["output"] = {{"h5", output},
+                       {"xdmf", output.substr(0, output.rfind('.')) + ".xdmf"}};
   summary["wall_time_s"] = elapsed();
-  writer.write_metadata({{"case_file", case_file.path()},
+  if (!result.converged)
+    throw SolverError("rfmems-gas: no convergence after " + std::to_string(result.iterations) +
+                      " iterations (residual ratio " + std::to_string(result.residual_ratio) +
+                      ", tolerance " + std::to_string(scene.solver.tolerance) + ")");
+  if (!world.is_root()) return 0;
+  writer->write_metadata({{"case_file", case_file.path()},
                          {"case_name", name},
                          {"case_text", case_file.text()},
                          {"case_effective", case_file.effective_text()},
@@ -136,11 +164,7 @@ int run(const DriverOptions& options) {
                          {"iterations", result.iterations},
                          {"residual_ratio", result.residual_ratio},
                          {"knudsen", scene.knudsen}});
-  if (!result.converged)
-    throw SolverError("rfmems-gas: no convergence after " + std::to_string(result.iterations) +
-                      " iterations (residual ratio " + std::to_string(result.residual_ratio) +
-                      ", tolerance " + std::to_string(scene.solver.tolerance) + ")");
-  writer.finish();
+  writer->finish();
 
   if (options.json) {
     std::cout << json_text(summary) << std::flush;
@@ -148,17 +172,18 @@ int run(const DriverOptions& options) {
     std::printf("%s (%s, Kn = %.4g, %lld cells x %lld velocities): %s solver converged in %d "
                 "iterations (residual ratio %.2e, %.1f s)\n",
                 name.c_str(), collision_model_name(op.gas().model), scene.knudsen,
-                static_cast<long long>(g.n_cells()), static_cast<long long>(op.grid().size()),
+                static_cast<long long>(scene.mesh->n_cells()),
+                static_cast<long long>(op.grid().size()),
                 scene.solver.type.c_str(), result.iterations, result.residual_ratio,
                 result.seconds);
-    for (int p : scene.force_patches) {
-      const Vec3 F = op.wall_force(p, f);
+    for (std::size_t i = 0; i < forces.size(); ++i) {
+      const Vec3& F = forces[i];
       std::printf("  wall %s: force [%.6e, %.6e, %.6e] N%s, heat flow %.6e W%s\n",
-                  g.patch_names[p].c_str(), F.x(), F.y(), F.z(), g.dim == 2 ? "/m" : "",
-                  op.wall_heat_flow(p, f), g.dim == 2 ? "/m" : "");
+                  scene.force_patches[i].c_str(), F.x(), F.y(), F.z(), g.dim == 2 ? "/m" : "",
+                  heat_flows[i], g.dim == 2 ? "/m" : "");
     }
-    std::printf("wrote %s and %s (%.1f s)\n", writer.path().c_str(), writer.xdmf_path().c_str(),
-                elapsed());
+    std::printf("wrote %s and %s (%.1f s)\n", writer->path().c_str(),
+                writer->xdmf_path().c_str(), elapsed());
   }
   return 0;
 }
@@ -168,5 +193,5 @@ int run(const DriverOptions& options) {
 int main(int argc, char** argv) {
   return driver_main("rfmems-gas",
                      "rfmems-gas: steady rarefied gas flow, discrete-velocity BGK / ESBGK (FV)",
-                     argc, argv, run);
+                     argc, argv, run, RankUse::AllRanks);
 }

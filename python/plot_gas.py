@@ -99,8 +99,8 @@ def main():
         fig.tight_layout()
         fig.savefig(prefix + "_residual.png", dpi=120)
         plt.close(fig)
-    print(f"wrote {prefix}_fields.png" + (", _profile.png" if os.path.exists(prefix + "_profile.png") else "")
-          + ", _residual.png")
+    profile = os.path.exists(prefix + "_profile.png")
+    print(f"wrote {prefix}_fields.png" + (", _profile.png" if profile else "") + ", _residual.png")
 
 
 if __name__ == "__main__":

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "core/error.hpp"
+#include "parallel/communicator.hpp"
 
 namespace rfmems {
 
@@ -30,8 +31,11 @@ void print_driver_error(const std::string& program, const std::string& message) 
   std::fprintf(stderr, "%s: %s\n", program.c_str(), line.c_str());
 }
 
-int driver_main(const std::string& program, const std::string& description, int argc,
-                char** argv, const std::function<int(const DriverOptions&)>& run) {
+namespace {
+
+int parse_and_run(const std::string& program, const std::string& description, int argc,
+                  char** argv, const std::function<int(const DriverOptions&)>& run,
+                  const ExtraOptions& extra_options) {
   DriverOptions options;
   CLI::App app{description};
   app.add_option("case", options.case_path, "case file (YAML)")->required();
@@ -42,6 +46,7 @@ int driver_main(const std::string& program, const std::string& description, int 
                  "result file (default out/<case name>.h5; an .xdmf is written beside it)");
   app.add_flag("--json", options.json, "print a JSON summary on stdout");
   app.add_flag("--quiet", options.quiet, "no progress or summary lines");
+  if (extra_options) extra_options(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -58,6 +63,20 @@ int driver_main(const std::string& program, const std::string& description, int 
     print_driver_error(program, std::string("error: ") + e.what());
     return 1;
   }
+}
+
+}  // namespace
+
+int driver_main(const std::string& program, const std::string& description, int argc,
+                char** argv, const std::function<int(const DriverOptions&)>& run,
+                RankUse ranks, const ExtraOptions& extra_options) {
+  MpiSession session(&argc, &argv);
+  const Communicator world = Communicator::world();
+  Index code = 0;
+  if (ranks == RankUse::AllRanks || world.is_root())
+    code = parse_and_run(program, description, argc, argv, run, extra_options);
+  // One verdict for every rank: the worst (the root's, when only the root runs).
+  return static_cast<int>(world.max(code));
 }
 
 }  // namespace rfmems

@@ -4,6 +4,11 @@
 //
 // and its error contract: bad input (InputError, MeshError, a bad option) prints one line
 // "<program>: <message>" on stderr and exits 2; any other failure exits 1; --help exits 0.
+//
+// Under mpirun every driver starts MPI. A driver whose physics is distributed runs on every
+// rank (RankUse::AllRanks); the others (a structure small enough for one rank) run on the root
+// while the other ranks wait, so `mpirun -np P` gives the serial answer and one output file.
+// Every rank exits with the root's code.
 #pragma once
 #include <chrono>
 #include <functional>
@@ -11,6 +16,10 @@
 #include <vector>
 
 #include "io/case_file.hpp"
+
+namespace CLI {
+class App;
+}
 
 namespace rfmems {
 
@@ -36,9 +45,16 @@ struct DriverCase {
   std::chrono::steady_clock::time_point start_;
 };
 
+enum class RankUse { RootOnly, AllRanks };
+
+// Options only one driver has: it adds them to the parser (CLI11) before parsing, with their
+// own checks (a failed check is bad input: exit 2).
+using ExtraOptions = std::function<void(CLI::App&)>;
+
 // Parses the command line and calls run(options), mapping exceptions to exit codes.
 int driver_main(const std::string& program, const std::string& description, int argc,
-                char** argv, const std::function<int(const DriverOptions&)>& run);
+                char** argv, const std::function<int(const DriverOptions&)>& run,
+                RankUse ranks = RankUse::RootOnly, const ExtraOptions& extra_options = {});
 
 // "<program>: <message>" on one line on stderr (newlines in the message become spaces).
 void print_driver_error(const std::string& program, const std::string& message);

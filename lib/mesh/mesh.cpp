@@ -237,6 +237,12 @@ Real MeshBuilder::signed_measure(Index c) const {
   return volume;
 }
 
+Mesh MeshBuilder::build_empty() const {
+  Mesh mesh;
+  mesh.dim_ = dim_;
+  return mesh;
+}
+
 Mesh MeshBuilder::build(const std::string& source, const std::string& default_patch) {
   Mesh mesh;
   mesh.dim_ = dim_;

@@ -110,6 +110,8 @@ class MeshBuilder {
   // Builds faces, geometry, and checks quality (throws MeshError). `source` names the file
   // or generator in error messages.
   Mesh build(const std::string& source, const std::string& default_patch = "unassigned");
+  // A mesh with no cells: the part of a rank that METIS left empty (build() refuses one).
+  Mesh build_empty() const;
 
   Index n_nodes() const { return static_cast<Index>(nodes_.size()); }
   Index n_cells() const { return static_cast<Index>(cells_.size()); }

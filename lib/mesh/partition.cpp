@@ -67,6 +67,10 @@ LocalMesh extract_local_mesh(const Mesh& global, const Partition& partition, int
       taken[c] = 1;
     }
   const Index n_owned = static_cast<Index>(cells.size());
+  if (n_owned == 0) {  // METIS may leave a part empty (more parts than a tiny graph allows)
+    local.mesh = MeshBuilder(global.dim()).build_empty();
+    return local;
+  }
   // Ghost layers: breadth-first over face neighbours.
   Index layer_begin = 0;
   for (int layer = 0; layer < ghost_layers; ++layer) {

@@ -3,7 +3,7 @@
 //  - Kn = 0.1: RMS error <= 2 % at 80 cells (thesis: 1.21 %), and the observed spatial order
 //    from the differences of successive meshes 10-20-40-80 is ~1 (first-order upwind; thesis
 //    0.92), each solve converged to ||r|| / ||r_0|| <= 1e-6;
-//  - Kn = 0.01 on 20 cells: RMS error <= 2 % (the 80-cell Kn = 0.01 run takes ~1 minute with
+//  - Kn = 0.01 on 20 cells: RMS error <= 2 % (the 80-cell Kn = 0.01 run takes ~22 s with
 //    the sequential solver and is in test/study/test_kinetic_couette_study.cpp);
 //  - partial accommodation sigma = 0.8 (Kn = 0.1, 40 cells): RMS error <= 2 % against the slip
 //    solution with zeta = (2 - sigma) / sigma Kn;

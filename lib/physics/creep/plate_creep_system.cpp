@@ -1,7 +1,15 @@
 #include "physics/creep/plate_creep_system.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <map>
+#include <stdexcept>
+
+#include "core/error.hpp"
+#include "physics/creep/plate_creep_schur_complement.hpp"
 
 namespace rfmems {
 
@@ -36,6 +44,8 @@ PlateCreepSystem::PlateCreepSystem(PlateOperator& plate, const CreepLaw& law,
   plate.stiffness(0, zero, plate_stiffness_);
   plate_lu_ = std::make_unique<KluFactorization>(plate.stiffness_pattern(), plate_stiffness_);
 }
+
+PlateCreepSystem::~PlateCreepSystem() = default;
 
 void PlateCreepSystem::build_plastic_source() {
   const Mesh& mesh = plate_.mesh();
@@ -221,6 +231,7 @@ void PlateCreepSystem::residual(Real t, std::span<const Real> y, std::span<const
   const Index ns = structural_size();
   plate_.internal_residual(t, y.first(ns), r.first(ns));
   add_plastic_source(y, r);
+  add_hold_load(y, r);
   std::span<Real> rq = r.subspan(ns);
   creep_rates(t, y, rq);
   for (Index k = 0; k < size() - ns; ++k) rq[k] = yp[ns + k] - rq[k];
@@ -229,47 +240,95 @@ void PlateCreepSystem::residual(Real t, std::span<const Real> y, std::span<const
 void PlateCreepSystem::jacobian(Real t, Real c_j, std::span<const Real> y, std::span<const Real>,
                                 std::span<Real> values) {
   std::copy(structural_values_.begin(), structural_values_.end(), values.begin());
-  const std::vector<Mat3> G = plate_.rotation_gradients(t, y.first(structural_size()));
-  const Mat3 unit[3] = {stress_tensor(Vec3(1, 0, 0)), stress_tensor(Vec3(0, 1, 0)),
-                        stress_tensor(Vec3(0, 0, 1))};
-  auto as_vector = [](const CreepRate& r) {
-    return Eigen::Vector4d(r.strain_rate(0, 0), r.strain_rate(1, 1), r.strain_rate(0, 1),
-                           r.effective_rate);
-  };
+  if (hold_) {
+    const Real v2 = hold_->voltage * hold_->voltage;
+    for (std::size_t e = 0; e < hold_->elements.size(); ++e) {
+      const GapElement& el = hold_->elements[e];
+      values[hold_diagonal_[e]] +=
+          v2 * el.area * hold_->law.pressure_per_volt2_derivative(hold_->initial_gap + y[el.dof]);
+    }
+  }
+  const std::vector<Vec3> kappa = curvatures(t, y);
   for (Index c = 0; c < n_cells_; ++c) {
-    const Vec3 kappa = curvature(G[c]);
     const auto& stencil = curvature_weights_[c];
     for (Index i = 0; i < n_points(); ++i) {
       const Index q = creep_index(c, i, 0);
-      const Mat3 sigma = stress_tensor(point_stress(y, c, i, kappa));
-      const Real eps = y[q + kEff];
-      Mat43 d_sigma;  // d g / d sigma (Voigt)
-      for (int d = 0; d < 3; ++d)
-        d_sigma.col(d) = as_vector(law_.rate_stress_derivative(sigma, eps, unit[d]));
-      const Eigen::Vector4d d_eps_eff = as_vector(law_.rate_hardening_derivative(sigma, eps));
-      const Mat43 d_eps_p = -d_sigma * C_;
-      const Mat43 d_kappa = quadrature_.z[i] * d_sigma * C_;
+      const PointRateJacobian d = point_rate_jacobian(y, c, i, kappa[c]);
       for (int j = 0; j < kPerPoint; ++j) {
         Real* row = values.data() + pattern_.row_ptr[q + j];
         for (const auto& w : stencil) {
           // kappa = (G_xx, G_yy, (G_xy + G_yx)/2), G = sum_k beta_k w_k^T.
-          *row++ = -d_kappa.row(j).dot(Vec3(w.weight.x(), 0, 0.5 * w.weight.y()));
-          *row++ = -d_kappa.row(j).dot(Vec3(0, w.weight.y(), 0.5 * w.weight.x()));
+          *row++ = -d.d_kappa.row(j).dot(Vec3(w.weight.x(), 0, 0.5 * w.weight.y()));
+          *row++ = -d.d_kappa.row(j).dot(Vec3(0, w.weight.y(), 0.5 * w.weight.x()));
         }
-        for (int l = 0; l < 3; ++l) *row++ = (j == l ? c_j : 0.0) - d_eps_p(j, l);
-        *row++ = (j == kEff ? c_j : 0.0) - d_eps_eff[j];
+        for (int l = 0; l < 3; ++l) *row++ = (j == l ? c_j : 0.0) - d.d_eps_p(j, l);
+        *row++ = (j == kEff ? c_j : 0.0) - d.d_eps_eff[j];
       }
     }
   }
 }
 
+std::vector<Vec3> PlateCreepSystem::curvatures(Real t, std::span<const Real> state) const {
+  const std::vector<Mat3> G = plate_.rotation_gradients(t, state.first(structural_size()));
+  std::vector<Vec3> kappa(n_cells_);
+  for (Index c = 0; c < n_cells_; ++c) kappa[c] = curvature(G[c]);
+  return kappa;
+}
+
+PlateCreepSystem::PointRateJacobian PlateCreepSystem::point_rate_jacobian(
+    std::span<const Real> state, Index c, Index i, const Vec3& kappa) const {
+  static const Mat3 unit[3] = {stress_tensor(Vec3(1, 0, 0)), stress_tensor(Vec3(0, 1, 0)),
+                               stress_tensor(Vec3(0, 0, 1))};
+  auto as_vector = [](const CreepRate& r) {
+    return Eigen::Vector4d(r.strain_rate(0, 0), r.strain_rate(1, 1), r.strain_rate(0, 1),
+                           r.effective_rate);
+  };
+  const Mat3 sigma = stress_tensor(point_stress(state, c, i, kappa));
+  const Real eps = state[creep_index(c, i, kEff)];
+  Mat43 d_sigma;  // d g / d sigma (Voigt)
+  for (int d = 0; d < 3; ++d)
+    d_sigma.col(d) = as_vector(law_.rate_stress_derivative(sigma, eps, unit[d]));
+  PointRateJacobian out;
+  out.d_eps_p = -d_sigma * C_;
+  out.d_eps_eff = as_vector(law_.rate_hardening_derivative(sigma, eps));
+  out.d_kappa = quadrature_.z[i] * d_sigma * C_;
+  return out;
+}
+
+void PlateCreepSystem::preconditioner_setup(Real t, Real c_j, std::span<const Real> y,
+                                            std::span<const Real>) {
+  if (!schur_) schur_ = std::make_unique<PlateCreepSchurComplement>(*this);
+  schur_->setup(t, c_j, y);
+}
+
+void PlateCreepSystem::preconditioner_solve(std::span<const Real> r, std::span<Real> z) {
+  if (!schur_) throw std::logic_error("PlateCreepSystem: preconditioner_solve before setup");
+  schur_->solve(r, z);
+}
+
 void PlateCreepSystem::equilibrate(Real t, std::span<Real> state) {
   const Index ns = structural_size();
-  scratch_.assign(ns, 0.0);
-  plate_.internal_residual(t, state.first(ns), scratch_);
-  add_plastic_source(state, scratch_);
-  plate_lu_->solve(scratch_);  // the plate is linear: one Newton step is exact
-  for (Index k = 0; k < ns; ++k) state[k] -= scratch_[k];
+  // Without a hold voltage the plate is linear: one Newton step is exact. With one, Newton on
+  // the tangent until the update is at round-off of the deflection (quadratic convergence:
+  // 3-5 iterations from the previous state); no convergence means no equilibrium (pull-in).
+  const int max_iterations = hold_ ? 50 : 1;
+  for (int iteration = 0; iteration < max_iterations; ++iteration) {
+    scratch_.assign(ns, 0.0);
+    plate_.internal_residual(t, state.first(ns), scratch_);
+    add_plastic_source(state, scratch_);
+    add_hold_load(state, scratch_);
+    structural_factors(state).solve(scratch_);
+    Real update = 0, size = 0;
+    for (Index k = 0; k < ns; ++k) {
+      state[k] -= scratch_[k];
+      update = std::max(update, std::abs(scratch_[k]));
+      size = std::max(size, std::abs(state[k]));
+    }
+    if (!hold_ || update <= 1e-13 * size) return;
+  }
+  throw SolverError(fmt::format(
+      "plate creep: no equilibrium under the hold voltage {} V at t = {:.6g} s (pull-in?)",
+      hold_->voltage, t));
 }
 
 void PlateCreepSystem::initial_state(Real t, std::vector<Real>& state,
@@ -279,11 +338,74 @@ void PlateCreepSystem::initial_state(Real t, std::vector<Real>& state,
   equilibrate(t, state);
   state_dot.assign(size(), 0.0);
   creep_rates(t, state, std::span<Real>(state_dot).subspan(ns));
-  // K y' + (dR/dq) q' = 0: the source is linear in q, so apply it to q'.
+  // T y' + (dR/dq) q' = 0 (T: the structural tangent): the source is linear in q, so apply it
+  // to q'.
   scratch_.assign(ns, 0.0);
   add_plastic_source(state_dot, scratch_);
-  plate_lu_->solve(scratch_);
+  structural_factors(state).solve(scratch_);
   for (Index k = 0; k < ns; ++k) state_dot[k] = -scratch_[k];
+}
+
+void PlateCreepSystem::set_hold_voltage(CreepHoldVoltage hold) {
+  if (!(hold.initial_gap > 0) || !(hold.voltage >= 0))
+    throw InputError(fmt::format("plate creep hold voltage: need a gap > 0 and V >= 0 (g0 = {}, "
+                                 "V = {})",
+                                 hold.initial_gap, hold.voltage));
+  std::vector<Index> diagonal, plate_diagonal;
+  for (const GapElement& e : hold.elements) {
+    const Index a = e.dof >= 0 && e.dof < structural_size() ? pattern_.find(e.dof, e.dof) : -1;
+    const Index b = a >= 0 ? plate_.stiffness_pattern().find(e.dof, e.dof) : -1;
+    if (b < 0)
+      throw InputError(fmt::format(
+          "plate creep hold voltage: dof {} is not a plate unknown with a diagonal entry", e.dof));
+    diagonal.push_back(a);
+    plate_diagonal.push_back(b);
+  }
+  hold_ = std::move(hold);
+  hold_diagonal_ = std::move(diagonal);
+  hold_plate_diagonal_ = std::move(plate_diagonal);
+}
+
+Real PlateCreepSystem::min_gap(std::span<const Real> state) const {
+  Real g = std::numeric_limits<Real>::infinity();
+  if (hold_)
+    for (const GapElement& e : hold_->elements) g = std::min(g, hold_->initial_gap + state[e.dof]);
+  return g;
+}
+
+void PlateCreepSystem::add_hold_load(std::span<const Real> state, std::span<Real> r) const {
+  if (!hold_) return;
+  const Real v2 = hold_->voltage * hold_->voltage;
+  for (std::size_t e = 0; e < hold_->elements.size(); ++e) {
+    const GapElement& el = hold_->elements[e];
+    const Real g = hold_->initial_gap + state[el.dof];
+    if (hold_->law.electrical_gap(g) <= 0)
+      throw RecoverableError(
+          fmt::format("plate creep: the gap closed (g = {:.3e} m at element {})", g, e));
+    r[el.dof] += v2 * el.area * hold_->law.pressure_per_volt2(g);
+  }
+}
+
+void PlateCreepSystem::structural_tangent(std::span<const Real> state,
+                                          std::vector<Real>& values) const {
+  values = plate_stiffness_;
+  if (!hold_) return;
+  const Real v2 = hold_->voltage * hold_->voltage;
+  for (std::size_t e = 0; e < hold_->elements.size(); ++e) {
+    const GapElement& el = hold_->elements[e];
+    values[hold_plate_diagonal_[e]] +=
+        v2 * el.area * hold_->law.pressure_per_volt2_derivative(hold_->initial_gap + state[el.dof]);
+  }
+}
+
+KluFactorization& PlateCreepSystem::structural_factors(std::span<const Real> state) {
+  if (!hold_) return *plate_lu_;
+  structural_tangent(state, tangent_values_);
+  if (tangent_lu_)
+    tangent_lu_->refactor(tangent_values_);
+  else
+    tangent_lu_ = std::make_unique<KluFactorization>(plate_.stiffness_pattern(), tangent_values_);
+  return *tangent_lu_;
 }
 
 }  // namespace rfmems

@@ -30,13 +30,20 @@
 // Jacobian (analytic): the y rows are constant (the plate is linear, M_p linear in q) and are
 // assembled once; a q row of point (c, i) depends on its own four states and, through kappa_c
 // (the centroid gradient of the plate's beta reconstruction), on the rotations of c's stencil.
+//
+// Hold voltage (set_hold_voltage, physics/creep/creep_hold_voltage.hpp): the parallel-plate
+// pressure V^2 A_e p1(g0 + w_e) on the gap elements is added to their w rows, so F_y is
+// nonlinear in w: the Jacobian's y rows are the constant ones plus V^2 A_e p1'(g_e) on those
+// diagonals, and equilibrate() becomes a Newton iteration on the plate's tangent.
 #pragma once
 #include <Eigen/Dense>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "fv/polynomial_reconstruction.hpp"
 #include "materials/creep_law.hpp"
+#include "physics/creep/creep_hold_voltage.hpp"
 #include "physics/creep/creep_system.hpp"
 #include "physics/creep/thickness_quadrature.hpp"
 #include "physics/plate/plate_operator.hpp"
@@ -44,11 +51,14 @@
 
 namespace rfmems {
 
+class PlateCreepSchurComplement;
+
 class PlateCreepSystem : public CreepSystem {
  public:
   static constexpr int kXX = 0, kYY = 1, kXY = 2, kEff = 3, kPerPoint = 4;
 
   PlateCreepSystem(PlateOperator& plate, const CreepLaw& law, int thickness_intervals = 20);
+  ~PlateCreepSystem() override;
 
   // Layout.
   Index n_cells() const { return n_cells_; }
@@ -66,9 +76,24 @@ class PlateCreepSystem : public CreepSystem {
   void jacobian(Real t, Real c_j, std::span<const Real> y, std::span<const Real> yp,
                 std::span<Real> values) override;
 
+  // Preconditioner: the exact Jacobian solve by the Schur complement on the plate unknowns
+  // (physics/creep/plate_creep_schur_complement.hpp), so that IDA with SPGMR needs about one
+  // Krylov iteration per Newton iteration and no factorisation of the full Jacobian.
+  bool has_preconditioner() const override { return true; }
+  void preconditioner_setup(Real t, Real c_j, std::span<const Real> y,
+                            std::span<const Real> yp) override;
+  void preconditioner_solve(std::span<const Real> r, std::span<Real> z) override;
+
   void creep_rates(Real t, std::span<const Real> state, std::span<Real> rates) override;
   void equilibrate(Real t, std::span<Real> state) override;
   void initial_state(Real t, std::vector<Real>& state, std::vector<Real>& state_dot) override;
+
+  // The electrostatic hold load (replaces a previous one). Throws InputError for a dof that is
+  // not a structural unknown with a diagonal entry, a gap <= 0 or a negative voltage.
+  void set_hold_voltage(CreepHoldVoltage hold);
+  const std::optional<CreepHoldVoltage>& hold_voltage() const { return hold_; }
+  // Smallest air gap g0 + u[dof_e] over the hold voltage's elements; +infinity without one.
+  Real min_gap(std::span<const Real> state) const;
 
   // Post-processing.
   // Plastic moments (M_p,xx, M_p,yy, M_p,xy) per cell [N m/m].
@@ -81,8 +106,19 @@ class PlateCreepSystem : public CreepSystem {
   const ThicknessQuadrature& quadrature() const { return quadrature_; }
 
  private:
+  friend class PlateCreepSchurComplement;  // reads the blocks of the Jacobian it inverts
   using Mat23 = Eigen::Matrix<Real, 2, 3>;
   using Mat43 = Eigen::Matrix<Real, 4, 3>;
+  // Rate derivatives of point (c, i): dg/d(eps_p xx, yy, xy), dg/d eps_eff, dg/d kappa.
+  struct PointRateJacobian {
+    Mat43 d_eps_p;
+    Eigen::Vector4d d_eps_eff;
+    Mat43 d_kappa;
+  };
+  PointRateJacobian point_rate_jacobian(std::span<const Real> state, Index c, Index i,
+                                        const Vec3& kappa) const;
+  // Curvature of every cell at the state (kappa = sym grad beta at the centroid).
+  std::vector<Vec3> curvatures(Real t, std::span<const Real> state) const;
   struct SourceBlock {  // moment rows of cell `row` += B M_p(col)
     Index row, col;
     Mat23 B;
@@ -97,6 +133,12 @@ class PlateCreepSystem : public CreepSystem {
   static Mat3 stress_tensor(const Vec3& s);
   static Vec3 curvature(const Mat3& G);
   void add_plastic_source(std::span<const Real> state, std::span<Real> r) const;
+  // The hold voltage's load on the w rows (RecoverableError if a gap has closed).
+  void add_hold_load(std::span<const Real> state, std::span<Real> r) const;
+  // dR_y/dy in the plate's stiffness pattern: K plus the hold load's tangent.
+  void structural_tangent(std::span<const Real> state, std::vector<Real>& values) const;
+  // The factorised structural tangent at the state (the plate's own factors without a hold).
+  KluFactorization& structural_factors(std::span<const Real> state);
 
   PlateOperator& plate_;
   CreepLaw law_;
@@ -112,6 +154,12 @@ class PlateCreepSystem : public CreepSystem {
   Index structural_nnz_ = 0;             // y rows occupy values [0, structural_nnz_)
   std::vector<Real> plate_stiffness_;
   std::unique_ptr<KluFactorization> plate_lu_;  // dR_plate/dy, factorised once (linear)
+  std::optional<CreepHoldVoltage> hold_;
+  std::vector<Index> hold_diagonal_;  // per element: value index of (dof, dof) in pattern_
+  std::vector<Index> hold_plate_diagonal_;  // ... and in the plate's stiffness pattern
+  std::unique_ptr<KluFactorization> tangent_lu_;  // K + hold tangent, refactorised per use
+  std::vector<Real> tangent_values_;
+  std::unique_ptr<PlateCreepSchurComplement> schur_;
   std::vector<Real> scratch_;
 };
 

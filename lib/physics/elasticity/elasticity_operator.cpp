@@ -254,6 +254,22 @@ Vec3 ElasticityOperator::displacement_at(Index cell, const Vec3& x, std::span<co
   return cell_u(u, cell) + gradients[cell] * (x - mesh_.cell_centroid(cell));
 }
 
+std::vector<ElasticityOperator::GradientTerm> ElasticityOperator::centroid_gradient_terms(
+    Index c) const {
+  // G_c = sum_j (v_j - u_c) g_j^T with v_j = M_j u_{cell_j} (or a boundary value).
+  std::vector<GradientTerm> out;
+  auto points = reconstruction_->points(c);
+  Vec3 sum = Vec3::Zero();
+  for (std::size_t j = 0; j < points.size(); ++j) {
+    const Vec3& g = centroid_gradient_[point_offset_[c] + j];
+    sum += g;
+    if (points[j].kind != StencilPoint::Kind::BoundaryValue)
+      out.push_back({points[j].cell, point_map(points[j]), g});
+  }
+  out.push_back({c, Mat3::Identity(), -sum});
+  return out;
+}
+
 void ElasticityOperator::primary_matrix(int k, Real kappa, CsrPattern& pattern,
                                         std::vector<Real>& values) const {
   const Index nc = mesh_.n_cells();

@@ -47,6 +47,7 @@ class ElasticityOperator : public SecondOrderOperator {
   int dim() const { return dim_; }
   const Mesh& mesh() const { return mesh_; }
   const LinearElastic& material() const { return material_; }
+  const std::vector<ElasticityBoundary>& boundaries() const { return boundaries_; }
 
   void internal_residual(Real t, std::span<const Real> u, std::span<Real> r) override;
   const CsrPattern& stiffness_pattern() const override { return sparsity_->pattern(); }
@@ -58,6 +59,18 @@ class ElasticityOperator : public SecondOrderOperator {
   // Displacement at point x from the nearest cell's linear reconstruction.
   Vec3 displacement_at(Index cell, const Vec3& x, std::span<const Real> u,
                        const std::vector<Mat3>& gradients) const;
+
+  // The centroid gradient of cell_gradients() as a linear map of the unknowns (for analytic
+  // Jacobians of terms that use the cell's strain, e.g. creep):
+  //   G_c = G_b(t) + sum_terms (map u_cell) weight^T,
+  // G_b from prescribed boundary values (independent of u); map is I, or the reflection of a
+  // mirror image across a symmetry face. A cell may appear in several terms.
+  struct GradientTerm {
+    Index cell;
+    Mat3 map;
+    Vec3 weight;
+  };
+  std::vector<GradientTerm> centroid_gradient_terms(Index c) const;
 
   // The implicit "primary" part of each displacement component (segregated formulation):
   // kappa (e.S)/|d| per face, Dirichlet faces on the diagonal, symmetry faces on the

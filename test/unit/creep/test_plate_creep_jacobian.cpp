@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <memory>
 #include <random>
 
@@ -117,4 +119,100 @@ TEST(PlateCreepSystem, InitialStateIsConsistentAndEvenPlasticStrainIsNoSource) {
   worst = 0;
   for (Index k = 0; k < system.structural_size(); ++k) worst = std::max(worst, std::abs(r[k]));
   EXPECT_LT(worst, 1e-9 * force_scale);
+}
+
+namespace {
+
+// Every cell faces the electrode (as PlateScene::gap_elements): its w moves it, its area.
+CreepHoldVoltage hold_on_every_cell(const Mesh& mesh, Real gap, Real voltage,
+                                    const ParallelPlateLaw& law = {}) {
+  CreepHoldVoltage hold;
+  hold.law = law;
+  hold.initial_gap = gap;
+  hold.voltage = voltage;
+  for (Index c = 0; c < mesh.n_cells(); ++c)
+    hold.elements.push_back({3 * c + PlateOperator::kW, mesh.cell_volume(c), Vec3::Zero(),
+                             Vec3::Zero()});
+  return hold;
+}
+
+}  // namespace
+
+// With a hold voltage the w rows carry V^2 A p1(g0 + w), nonlinear in w: the Jacobian's
+// diagonal there must follow the state. Gap 2e-4 m against random w up to 1e-4 m and 3 kV
+// (p ~ 2e3-1.8e4 Pa, tangent ~ 4e8 A /m) make the term a visible part of the w rows.
+TEST(PlateCreepSystem, JacobianWithHoldVoltageMatchesFiniteDifferences) {
+  const Mesh mesh = distorted_mesh(7, 5, 4);
+  PlateOperator plate(mesh, section(), mixed_boundaries(mesh),
+                      [](const Vec3& x, Real) { return -1e4 * (1 + x.y()); });
+  PlateCreepSystem system(plate, CreepLaw{1e-3, 3e3, 2.5, 1.5, 1e9}, 6);
+  ParallelPlateLaw law;
+  law.dielectric_thickness = 1e-5;
+  law.dielectric_permittivity = 7.5;
+  system.set_hold_voltage(hold_on_every_cell(mesh, 2e-4, 3e3, law));
+
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<Real> u(-1, 1);
+  std::vector<Real> y(system.size()), yp(system.size()), steps(system.size()),
+      scales(system.size());
+  for (Index k = 0; k < system.size(); ++k) {
+    const Real scale = k < system.structural_size() ? (k % 3 == 0 ? 1e-4 : 2e-3) : 1e-4;
+    y[k] = scale * u(rng);
+    yp[k] = scale * u(rng);
+    if (k >= system.structural_size() &&
+        (k - system.structural_size()) % 4 == PlateCreepSystem::kEff)
+      y[k] = std::abs(y[k]);
+    steps[k] = 1e-5 * scale;
+    scales[k] = scale;
+  }
+  for (Real c_j : {0.0, 2.5e2}) {
+    const auto check = test_support::check_jacobian(system, 0.3, c_j, y, yp, steps, scales);
+    EXPECT_LT(check.max_entry_relative, 1e-3)
+        << "c_j " << c_j << " row " << check.worst_entry_row << " col " << check.worst_entry_col;
+    EXPECT_LT(check.max_row_relative, 1e-6) << "c_j " << c_j << " row " << check.worst_row;
+  }
+  // The smallest gap is that of the most deflected element.
+  Real w_min = 1e300;
+  for (Index c = 0; c < mesh.n_cells(); ++c) w_min = std::min(w_min, y[3 * c]);
+  EXPECT_DOUBLE_EQ(system.min_gap(y), 2e-4 + w_min);
+}
+
+// Equilibrium under a hold voltage (Newton in equilibrate) is consistent, and the load grows
+// as the gap closes: the plate sags more than under the constant pressure V^2 p1(g0) that the
+// voltage exerts on the flat plate, and less than under V^2 p1(g_min) everywhere. Without a
+// hold voltage min_gap is +infinity.
+TEST(PlateCreepSystem, HoldVoltageEquilibriumSoftensTheStructure) {
+  const Mesh mesh = distorted_mesh(8, 5, 3);
+  std::vector<PlateBoundary> bcs(mesh.patches().size());
+  for (std::size_t p = 0; p < bcs.size(); ++p)
+    bcs[p].kind = (mesh.patches()[p].name == "left" || mesh.patches()[p].name == "right")
+                      ? Kind::Clamped
+                      : Kind::Free;
+  const Real gap = 2e-3, voltage = 7e4;  // p(g0) = 5.4 kPa, sag ~ 5 % of the gap
+  const ParallelPlateLaw law;
+  auto run = [&](Real pressure, bool hold) {
+    PlateOperator plate(mesh, section(), bcs, [pressure](const Vec3&, Real) { return pressure; });
+    PlateCreepSystem system(plate, CreepLaw{1e-3, 3e3, 2.0, 2.0, 1e9}, 4);
+    std::vector<Real> state(system.size(), 0.0), state_dot;
+    EXPECT_EQ(system.min_gap(state), std::numeric_limits<Real>::infinity());
+    if (hold) system.set_hold_voltage(hold_on_every_cell(mesh, gap, voltage));
+    system.initial_state(0.0, state, state_dot);
+    std::vector<Real> r(system.size());
+    system.residual(0.0, state, state_dot, r);
+    Real worst = 0;
+    for (Real v : r) worst = std::max(worst, std::abs(v));
+    EXPECT_LT(worst, 1e-9 * voltage * voltage * law.pressure_per_volt2(gap) * 2.0 * 1.2);
+    Real w_min = 1e300;
+    for (Index c = 0; c < mesh.n_cells(); ++c) w_min = std::min(w_min, state[3 * c]);
+    if (hold) EXPECT_DOUBLE_EQ(system.min_gap(state), gap + w_min);
+    return w_min;
+  };
+  const Real p0 = voltage * voltage * law.pressure_per_volt2(gap);
+  const Real w_hold = run(0.0, true), w_flat = run(-p0, false);
+  const Real p_min = voltage * voltage * law.pressure_per_volt2(gap + w_hold);
+  const Real w_max = run(-p_min, false);
+  std::printf("max sag: hold %.5e m, constant p(g0) %.5e m, constant p(g_min) %.5e m\n",
+              -w_hold, -w_flat, -w_max);
+  EXPECT_LT(w_hold, 1.02 * w_flat);  // at least 2 % more sag (measured below)
+  EXPECT_GT(w_hold, w_max);
 }

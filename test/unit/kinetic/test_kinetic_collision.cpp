@@ -156,7 +156,8 @@ TEST(KineticCollision, VelocityDerivativeMatchesFiniteDifferences) {
 
 namespace {
 
-// Rates of decay of the shear stress and the heat flux in df/dt = nu (f_eq(f) - f), RK4 over t = 1 / nu.
+// Rates of decay of the shear stress and the heat flux in df/dt = nu (f_eq(f) - f), RK4 over
+// t = 1 / nu.
 std::pair<Real, Real> relaxation_rates(const KineticGas& gas) {
   const VelocityGrid grid = grid_for(16);
   // A Grad-like perturbation of a drifting Maxwellian: shear stress and heat flux well above

@@ -164,11 +164,21 @@ Real dual_objective(const VecM<M>& a, const VecM<M>& m, const VelocityGrid& grid
   return (B.w * (B.phi * a).array().exp()).sum() - a.dot(m);
 }
 
+// Newton's method with the Jacobian kept while it contracts well (a chord step costs one pass
+// over the grid, a new Jacobian three to five): it is refreshed when a step reduces |G| by less
+// than 10x or fails to reduce it. J / have_jacobian: in, a Jacobian to start with (the cell's
+// previous solve); out, the last one computed.
 template <int M>
-bool newton(VecM<M>& a, const VecM<M>& m, const VelocityGrid& grid, EquilibriumSolveInfo& info) {
+bool newton(VecM<M>& a, const VecM<M>& m, const VelocityGrid& grid, EquilibriumSolveInfo& info,
+            MatM<M>& J, bool& have_jacobian) {
   constexpr int max_iterations = 100;
   const Real scale = 1.0 / m[0];
-  MatM<M> J;
+  Eigen::LDLT<MatM<M>> ldlt;
+  bool current = have_jacobian;  // iterate with J until it stops contracting
+  if (current) {
+    ldlt.compute(J);
+    if (ldlt.info() != Eigen::Success) current = false;
+  }
   VecM<M> G = newton_residual<M>(a, m, grid, nullptr);
   Real norm = G.cwiseAbs().maxCoeff() * scale;
   for (int it = 0; it < max_iterations; ++it) {
@@ -176,41 +186,54 @@ bool newton(VecM<M>& a, const VecM<M>& m, const VelocityGrid& grid, EquilibriumS
     info.residual = norm;
     if (!std::isfinite(norm)) return false;
     if (norm < 1e-14) return true;
-    newton_residual<M>(a, m, grid, &J);
-    const Eigen::LDLT<MatM<M>> ldlt(J);
-    if (ldlt.info() != Eigen::Success) return false;
+    const bool fresh = !current;
+    if (fresh) {
+      newton_residual<M>(a, m, grid, &J);
+      ldlt.compute(J);
+      if (ldlt.info() != Eigen::Success) return false;
+      current = have_jacobian = true;
+    }
     const VecM<M> step = ldlt.solve(G);
-    // The full step when it reduces |G| (the quadratic regime, also at round-off where Phi
-    // cannot resolve a decrease); else backtracking on Phi.
     VecM<M> trial = a - step;
     VecM<M> G_trial = newton_residual<M>(trial, m, grid, nullptr);
     Real trial_norm = G_trial.cwiseAbs().maxCoeff() * scale;
-    const bool full = std::isfinite(trial_norm) && trial_norm < norm;
-    // No decrease from a point already at |G| ~ round-off: that is the floor.
-    if (!full && norm < 1e-12) return true;
-    if (!full) {
-      const Real phi0 = dual_objective<M>(a, m, grid);
-      const Real slope = G.dot(step);  // > 0: -step is a descent direction of Phi
-      Real t = 0.5;
-      for (int ls = 0; ls < 40; ++ls, t *= 0.5) {
-        trial = a - t * step;
-        const Real phi = dual_objective<M>(trial, m, grid);
-        if (std::isfinite(phi) && phi <= phi0 - 1e-4 * t * slope) break;
+    const bool decrease = std::isfinite(trial_norm) && trial_norm < norm;
+    if (decrease) {
+      if (trial_norm > 0.1 * norm) current = false;
+      const Real step_size = step.cwiseAbs().maxCoeff();
+      a = trial;
+      G = G_trial;
+      norm = trial_norm;
+      // A full Newton step this small leaves |G| ~ step^2: round-off.
+      if (fresh && step_size < 1e-10) {
+        info.iterations = it + 1;
+        info.residual = norm;
+        return norm < 1e-11;
       }
-      G_trial = newton_residual<M>(trial, m, grid, nullptr);
-      trial_norm = G_trial.cwiseAbs().maxCoeff() * scale;
-      if (!std::isfinite(trial_norm)) return false;
+      continue;
     }
-    const Real step_size = step.cwiseAbs().maxCoeff();
+    // No decrease from a point already at |G| ~ round-off: that is the floor.
+    if (norm < 1e-12) return true;
+    if (!fresh) {  // an old Jacobian: retry with a new one
+      current = false;
+      continue;
+    }
+    // Far from the root: backtracking on the convex Phi along the Newton direction.
+    const Real phi0 = dual_objective<M>(a, m, grid);
+    const Real slope = G.dot(step);  // > 0: -step is a descent direction of Phi
+    Real t = 0.5;
+    for (int ls = 0; ls < 40; ++ls, t *= 0.5) {
+      trial = a - t * step;
+      const Real phi = dual_objective<M>(trial, m, grid);
+      if (std::isfinite(phi) && phi <= phi0 - 1e-4 * t * slope) break;
+    }
+    G_trial = newton_residual<M>(trial, m, grid, nullptr);
+    trial_norm = G_trial.cwiseAbs().maxCoeff() * scale;
+    if (!std::isfinite(trial_norm)) return false;
     a = trial;
     G = G_trial;
     norm = trial_norm;
-    // A full Newton step this small leaves |G| ~ step^2: round-off.
-    if (full && step_size < 1e-10) {
-      info.iterations = it + 1;
-      info.residual = norm;
-      return norm < 1e-11;
-    }
+    current = false;
   }
   info.iterations = max_iterations;
   info.residual = norm;
@@ -224,14 +247,18 @@ EquilibriumSolveInfo solve(const EquilibriumTarget& target, const VelocityGrid& 
   const VecM<M> m = target_moments<M>(target, s);
   EquilibriumSolveInfo info;
   VecM<M> a;
+  MatM<M> J;
   bool warm = coefficients.size == M;
+  bool have_jacobian = warm && coefficients.has_jacobian;
   if (warm) {
     for (int i = 0; i < M; ++i) a[i] = coefficients.a[i];
-    if (!newton<M>(a, m, grid, info)) warm = false;
+    if (have_jacobian) J = Eigen::Map<const MatM<M>>(coefficients.jacobian.data());
+    if (!newton<M>(a, m, grid, info, J, have_jacobian)) warm = false;
   }
   if (!warm) {
     a = continuous_start<M>(target, s);
-    if (!newton<M>(a, m, grid, info))
+    have_jacobian = false;
+    if (!newton<M>(a, m, grid, info, J, have_jacobian))
       throw SolverError("discrete equilibrium: Newton did not converge (rho = " +
                         std::to_string(target.rho) + ", |G|/rho = " +
                         std::to_string(info.residual) + ")");
@@ -239,6 +266,8 @@ EquilibriumSolveInfo solve(const EquilibriumTarget& target, const VelocityGrid& 
   coefficients.size = M;
   coefficients.a.fill(0);
   for (int i = 0; i < M; ++i) coefficients.a[i] = a[i];
+  coefficients.has_jacobian = have_jacobian;
+  if (have_jacobian) Eigen::Map<MatM<M>>(coefficients.jacobian.data()) = J;
   return info;
 }
 

@@ -121,17 +121,21 @@ void fill_boundary_face(const KineticBoundary& bc, const Vec3& area,
       return;
     case KineticBoundaryKind::DiffuseWall: {
       const Real sigma = bc.accommodation;
-      // Mass flux of the outgoing and specularly reflected values, and of the unit-density
-      // wall Maxwellian over the incoming ordinates.
+      // Mass flux, relative to the wall ((c - u_w) . S), of the outgoing and specularly
+      // reflected values and of the unit-density wall Maxwellian over the incoming ordinates.
+      // The wall is impermeable in its own frame: the net flux through the (fixed) face is
+      // rho_face u_w . S, the gas a normally moving wall pushes or draws (squeeze film).
+      const Real wall_flux = bc.velocity.dot(area);
       Real flux_known = 0, flux_maxwellian = 0;
       for (Index k = 0; k < n; ++k) {
-        const Real cn = grid.c[k].dot(area) * grid.w[k];
+        const Real cn = grid.c[k].dot(area);
+        const Real relative = (cn - wall_flux) * grid.w[k];
         if (cn >= 0) {
           f_face[k] = f_owner[k];
-          flux_known += cn * f_owner[k];
+          flux_known += relative * f_owner[k];
         } else {
-          flux_maxwellian += cn * maxwellian[k];
-          if (sigma < 1) flux_known += (1 - sigma) * cn * f_owner[reflection[k]];
+          flux_maxwellian += relative * maxwellian[k];
+          if (sigma < 1) flux_known += (1 - sigma) * relative * f_owner[reflection[k]];
         }
       }
       // sigma n_w flux_maxwellian + flux_known = 0.

@@ -4,9 +4,11 @@
 //   diffuse_wall {T, velocity, accommodation sigma (default 1)}:
 //       f_in = sigma n_w M_w + (1 - sigma) f_owner(c'),  c' the specular image, M_w the wall
 //       Maxwellian (u_w, T_w) of unit density; n_w from zero net mass flux through the face
-//       (thesis eq. 5.32): sum_k w_k c_k . S f_face,k = 0, solved for n_w in closed form on the
-//       grid, so a diffuse wall is impermeable to round-off (eq. 5.34 for sigma < 1). The wall
-//       moves tangentially (the mesh is fixed); a normal wall velocity is not modelled here.
+//       (thesis eq. 5.32) in the wall's frame: sum_k w_k (c_k - u_w) . S f_face,k = 0, solved
+//       for n_w in closed form on the grid, so a diffuse wall is impermeable to round-off
+//       (eq. 5.34 for sigma < 1). The mesh is fixed: a wall moving along its normal (a beam
+//       over a substrate, quasi-steady squeeze film) shows as the net mass flux
+//       rho_face u_w . S through its faces; a tangential one as shear only.
 //   specular_wall, symmetry:  f_in(c) = f_owner(c') (eq. 5.33), the reflection map of
 //       VelocityGrid (exact for axis-aligned walls).
 //   pressure {p, T}:  f_in = the Maxwellian at rest with rho = p / (R T) (eq. 5.35).

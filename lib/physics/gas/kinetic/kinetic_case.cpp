@@ -37,12 +37,14 @@ KineticSolverSettings read_kinetic_solver_settings(const CaseNode& node) {
   for (const auto& [name, fn] : kinetic_solvers()) names.push_back(name);
   s.type = node.get_choice("type", names, "sequential");
   s.tolerance = node.get_real("tolerance", 1e-6, Range::open(0, 1));
-  s.max_iterations = static_cast<int>(node.get_int("max_iterations", 200000, Range::closed(1, 1e9)));
+  s.max_iterations =
+      static_cast<int>(node.get_int("max_iterations", 200000, Range::closed(1, 1e9)));
   s.node = node;
   return s;
 }
 
-KineticScene build_kinetic_scene(const CaseNode& root, const std::string& case_dir) {
+KineticScene build_kinetic_scene(const CaseNode& root, const std::string& case_dir,
+                                 const Communicator& comm) {
   KineticScene scene;
   scene.mesh = std::make_unique<Mesh>(mesh_from_case(root.child("mesh"), case_dir));
   scene.graph = std::make_unique<FaceGraph>(face_graph_of(*scene.mesh));
@@ -76,26 +78,50 @@ KineticScene build_kinetic_scene(const CaseNode& root, const std::string& case_d
     n[d] = static_cast<int>(points[d]);
   }
   const Real extent = vg.get_real("extent", 3.5, Range::positive());
-  VelocityGrid grid = VelocityGrid::uniform(n[0], n[1], n[2], extent * gas.thermal_speed(scene.initial.T));
+  VelocityGrid grid =
+      VelocityGrid::uniform(n[0], n[1], n[2], extent * gas.thermal_speed(scene.initial.T));
 
-  std::vector<KineticBoundary> bcs = kinetic_boundaries_from_case(root.child("boundaries"), *scene.graph);
+  std::vector<KineticBoundary> bcs =
+      kinetic_boundaries_from_case(root.child("boundaries"), *scene.graph);
   scene.solver = read_kinetic_solver_settings(root.child_or_empty("solver"));
 
   const CaseNode output = root.child_or_empty("output");
   if (output.has("forces")) {
     for (const std::string& p : output.get_strings("forces")) {
-      const int id = scene.graph->find_patch(p);
-      if (id < 0) output.fail("forces", "no patch named '" + p + "'");
-      scene.force_patches.push_back(id);
+      if (scene.graph->find_patch(p) < 0) output.fail("forces", "no patch named '" + p + "'");
+      scene.force_patches.push_back(p);
     }
   } else {
     for (std::size_t p = 0; p < bcs.size(); ++p)
       if (bcs[p].kind == KineticBoundaryKind::DiffuseWall ||
           bcs[p].kind == KineticBoundaryKind::SpecularWall)
-        scene.force_patches.push_back(static_cast<int>(p));
+        scene.force_patches.push_back(scene.graph->patch_names[p]);
   }
-  scene.op = std::make_unique<KineticOperator>(*scene.graph, std::move(grid), gas, std::move(bcs));
+
+  if (!comm.is_serial()) {
+    // This rank's part; its patches by name (a part may lack some), and the faces closing
+    // its ghost layer ("processor") get a placeholder: only ghost cells touch them.
+    scene.distributed =
+        std::make_unique<DistributedMesh>(distribute_mesh(*scene.mesh, comm, 1));
+    const FaceGraph global_graph = std::move(*scene.graph);
+    *scene.graph = face_graph_of(scene.distributed->local.mesh);
+    std::vector<KineticBoundary> local_bcs;
+    for (const std::string& name : scene.graph->patch_names) {
+      const int p = global_graph.find_patch(name);
+      local_bcs.push_back(p >= 0 ? bcs[p] : KineticBoundary::specular_wall());
+    }
+    bcs = std::move(local_bcs);
+  }
+  scene.op =
+      std::make_unique<KineticOperator>(*scene.graph, std::move(grid), gas, std::move(bcs));
+  if (scene.distributed) scene.op->set_parallel(comm, &scene.distributed->exchange);
   return scene;
+}
+
+std::vector<Real> KineticScene::gather(std::span<const Real> values, int block) const {
+  if (!distributed) return {values.begin(), values.begin() + graph->n_owned_cells * block};
+  return gather_to_root(op->communicator(), distributed->local, values, block,
+                        distributed->n_global_cells);
 }
 
 const std::map<std::string, KineticSolverFunction>& kinetic_solvers() {

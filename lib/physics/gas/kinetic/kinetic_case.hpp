@@ -38,6 +38,7 @@
 #include "fv/face_graph.hpp"
 #include "io/case_file.hpp"
 #include "mesh/mesh.hpp"
+#include "parallel/distributed_mesh.hpp"
 #include "physics/gas/kinetic/kinetic_operator.hpp"
 #include "physics/gas/kinetic/kinetic_solve_result.hpp"
 
@@ -50,19 +51,28 @@ struct KineticSolverSettings {
   std::optional<CaseNode> node;  // the whole `solver:` map, for solver-specific keys
 };
 
+// Serial: graph is the whole mesh's. Distributed (comm.size() > 1): `mesh` is still the whole
+// mesh (the root writes results on it), `distributed` holds this rank's part with one ghost
+// layer and its exchange, and graph / op live on that part.
 struct KineticScene {
   std::unique_ptr<Mesh> mesh;
+  std::unique_ptr<DistributedMesh> distributed;
   std::unique_ptr<FaceGraph> graph;
   std::unique_ptr<KineticOperator> op;
   GasState initial;
   Real reference_length = 0;
   Real knudsen = 0;  // of the initial state over reference_length
   KineticSolverSettings solver;
-  std::vector<int> force_patches;
+  std::vector<std::string> force_patches;  // by name: a rank's part may lack a patch
+
+  // Owned cells' values (block per cell) in global cell order on the root (serial: as is).
+  std::vector<Real> gather(std::span<const Real> values, int block) const;
 };
 
-// Reads every section above (InputError naming file and key on bad input).
-KineticScene build_kinetic_scene(const CaseNode& root, const std::string& case_dir);
+// Reads every section above (InputError naming file and key on bad input); distributes the
+// mesh over comm's ranks (METIS) when there are several.
+KineticScene build_kinetic_scene(const CaseNode& root, const std::string& case_dir,
+                                 const Communicator& comm = Communicator::serial());
 
 // Reads `solver:` (type must be a registered solver).
 KineticSolverSettings read_kinetic_solver_settings(const CaseNode& solver);

@@ -1,5 +1,7 @@
 #include "physics/gas/kinetic/kinetic_operator.hpp"
 
+#include "parallel/ghost_exchange.hpp"
+
 #include <cmath>
 
 #include "core/error.hpp"
@@ -153,9 +155,22 @@ void KineticOperator::residual(std::span<const Real> f, std::span<Real> r) {
 Real KineticOperator::residual_norm(std::span<const Real> f) {
   std::vector<Real> r(f.size());
   residual(f, r);
+  return global_norm(r);
+}
+
+void KineticOperator::set_parallel(const Communicator& comm, const GhostExchange* exchange) {
+  comm_ = comm;
+  exchange_ = exchange;
+}
+
+void KineticOperator::exchange_ghosts(std::span<Real> f) const {
+  if (exchange_) exchange_->exchange(f, static_cast<int>(n_ordinates()));
+}
+
+Real KineticOperator::global_norm(std::span<const Real> r) const {
   Real s = 0;
-  for (Real x : r) s += x * x;
-  return std::sqrt(s);
+  for (Index i = 0; i < n_owned_cells() * n_ordinates(); ++i) s += r[i] * r[i];
+  return std::sqrt(comm_.sum(s));
 }
 
 Vec3 KineticOperator::wall_force(int patch, std::span<const Real> f) const {
@@ -164,11 +179,12 @@ Vec3 KineticOperator::wall_force(int patch, std::span<const Real> f) const {
   std::vector<Real> face(N);
   Vec3 force = Vec3::Zero();
   for (Index fc = g.n_interior_faces; fc < g.n_faces(); ++fc) {
-    if (g.face_patch[fc] != patch) continue;
+    if (g.face_patch[fc] != patch || !owned_face(fc)) continue;
     face_values(fc, f, face);
     const Vec3& S = g.face_area[fc];
     for (Index k = 0; k < N; ++k) force += (grid_.w[k] * grid_.c[k].dot(S) * face[k]) * grid_.c[k];
   }
+  comm_.sum_in_place(std::span<Real>(force.data(), 3));
   return force;
 }
 
@@ -184,13 +200,13 @@ Real KineticOperator::wall_heat_flow(int patch, std::span<const Real> f) const {
   std::vector<Real> face(N);
   Real q = 0;
   for (Index fc = g.n_interior_faces; fc < g.n_faces(); ++fc) {
-    if (g.face_patch[fc] != patch) continue;
+    if (g.face_patch[fc] != patch || !owned_face(fc)) continue;
     face_values(fc, f, face);
     const Vec3& S = g.face_area[fc];
     for (Index k = 0; k < N; ++k)
       q += grid_.w[k] * 0.5 * grid_.c[k].squaredNorm() * grid_.c[k].dot(S) * face[k];
   }
-  return q;
+  return comm_.sum(q);
 }
 
 Real KineticOperator::boundary_mass_flow(int patch, std::span<const Real> f) const {
@@ -199,12 +215,12 @@ Real KineticOperator::boundary_mass_flow(int patch, std::span<const Real> f) con
   std::vector<Real> face(N);
   Real m = 0;
   for (Index fc = g.n_interior_faces; fc < g.n_faces(); ++fc) {
-    if (g.face_patch[fc] != patch) continue;
+    if (g.face_patch[fc] != patch || !owned_face(fc)) continue;
     face_values(fc, f, face);
     const Vec3& S = g.face_area[fc];
     for (Index k = 0; k < N; ++k) m += grid_.w[k] * grid_.c[k].dot(S) * face[k];
   }
-  return m;
+  return comm_.sum(m);
 }
 
 Real KineticOperator::total_mass(std::span<const Real> f) const {
@@ -215,7 +231,7 @@ Real KineticOperator::total_mass(std::span<const Real> f) const {
     for (Index k = 0; k < N; ++k) rho += grid_.w[k] * f[c * N + k];
     m += graph_->cell_volume[c] * rho;
   }
-  return m;
+  return comm_.sum(m);
 }
 
 bool KineticOperator::is_closed() const {

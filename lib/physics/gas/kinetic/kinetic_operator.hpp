@@ -21,6 +21,11 @@
 // pieces it needs: outgoing coefficients sum_f (c_k . S_f)^+ and the incoming flux
 // sum_f (c_k . S_f)^- f_upwind of a cell, the cached f_eq and nu.
 //
+// Distributed runs (parallel/distributed_mesh.hpp): the graph is a rank's part with its ghost
+// cells; set_parallel gives the communicator and the ghost exchange. Solvers call
+// exchange_ghosts after they change f; norms, masses and wall integrals are summed over the
+// ranks (owned cells and their faces only), so every rank sees the global figures.
+//
 // Residual scaling shared by every kinetic solver: ||r||_2 over all owned (cell, ordinate)
 // pairs, reported as ||r||_2 / ||r_0||_2 with r_0 the residual of the initial state;
 // "converged" means that ratio <= 1e-6.
@@ -32,6 +37,7 @@
 
 #include "core/types.hpp"
 #include "fv/face_graph.hpp"
+#include "parallel/communicator.hpp"
 #include "physics/gas/kinetic/equilibrium.hpp"
 #include "physics/gas/kinetic/kinetic_boundary.hpp"
 #include "physics/gas/kinetic/kinetic_gas.hpp"
@@ -39,6 +45,8 @@
 #include "physics/gas/kinetic/velocity_grid.hpp"
 
 namespace rfmems {
+
+class GhostExchange;
 
 // Density, velocity and temperature of a local Maxwellian (initial states).
 struct GasState {
@@ -66,6 +74,14 @@ class KineticOperator {
   // f = the discrete equilibrium of the gas's model with moments rho, u, covariance R T I of
   // state(x_c) in every cell (a fixed point of the collision operator).
   void initialize(std::span<Real> f, const std::function<GasState(const Vec3&)>& state);
+
+  // --- distribution over ranks (serial: a no-op) ---
+  void set_parallel(const Communicator& comm, const GhostExchange* exchange);
+  const Communicator& communicator() const { return comm_; }
+  // Refreshes the ghost cells' distributions from their owners.
+  void exchange_ghosts(std::span<Real> f) const;
+  // ||r||_2 over the owned rows of every rank.
+  Real global_norm(std::span<const Real> r) const;
 
   // --- collision: macros, equilibrium (warm-started Newton), nu, per owned cell ---
   void update_collision(std::span<const Real> f);
@@ -117,7 +133,7 @@ class KineticOperator {
   Real wall_heat_flow(int patch, std::span<const Real> f) const;
   // Net mass flow out through the patch (kg/s; per unit depth in 2D).
   Real boundary_mass_flow(int patch, std::span<const Real> f) const;
-  // Total mass sum_c V_c rho_c over owned cells.
+  // Total mass sum_c V_c rho_c over owned cells (of every rank).
   Real total_mass(std::span<const Real> f) const;
   // True if no patch lets gas in or out (no pressure boundary): the steady state is then
   // defined only up to the total mass, which the solvers pin to the initial state's.
@@ -132,7 +148,12 @@ class KineticOperator {
   // Face values of boundary face `face` from f, into out (not cached).
   void face_values(Index face, std::span<const Real> f, std::span<Real> out) const;
 
+  // Does boundary face `face` belong to an owned cell (counted by this rank)?
+  bool owned_face(Index face) const { return graph_->face_owner[face] < n_owned_cells(); }
+
   const FaceGraph* graph_;
+  Communicator comm_ = Communicator::serial();
+  const GhostExchange* exchange_ = nullptr;
   VelocityGrid grid_;
   KineticGas gas_;
   std::vector<KineticBoundary> boundaries_;

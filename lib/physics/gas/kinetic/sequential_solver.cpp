@@ -8,12 +8,6 @@
 namespace rfmems {
 namespace {
 
-Real norm2(const std::vector<Real>& r) {
-  Real s = 0;
-  for (Real x : r) s += x * x;
-  return std::sqrt(s);
-}
-
 // One sweep over every group: f_ck = (V nu f_eq - sum (c.S)^- f_up) / (sum (c.S)^+ + V nu),
 // cells in downwind order so upwind neighbours already hold this sweep's values.
 void sweep(const KineticOperator& op, const std::vector<DownwindGroup>& groups,
@@ -27,6 +21,7 @@ void sweep(const KineticOperator& op, const std::vector<DownwindGroup>& groups,
     numerator.resize(m);
     denominator.resize(m);
     for (const Index c : group.cells) {
+      if (c >= op.n_owned_cells()) continue;  // ghosts come from their owners
       const Real vnu = g.cell_volume[c] * op.collision_frequency(c);
       const std::span<const Real> feq = op.equilibrium(c);
       for (std::size_t j = 0; j < m; ++j) {
@@ -65,8 +60,9 @@ KineticSolveResult solve_sequential(KineticOperator& op, std::span<Real> f,
   const std::vector<DownwindGroup> groups = downwind_groups(op.graph(), op.grid());
   std::vector<Real> r(op.size());
   KineticSolveResult result;
+  op.exchange_ghosts(f);
   op.residual(f, r);  // also refreshes the lagged collision and boundary values
-  result.initial_residual = norm2(r);
+  result.initial_residual = op.global_norm(r);
   result.final_residual = result.initial_residual;
   result.residual_ratio = 1;
   if (result.initial_residual == 0) result.converged = true;
@@ -75,9 +71,10 @@ KineticSolveResult solve_sequential(KineticOperator& op, std::span<Real> f,
   while (!result.converged && result.iterations < options.max_iterations) {
     sweep(op, groups, f);
     if (closed) op.restore_mass(f, mass);
+    op.exchange_ghosts(f);  // ranks: block Jacobi between partitions, Gauss-Seidel within
     op.residual(f, r);
     ++result.iterations;
-    result.final_residual = norm2(r);
+    result.final_residual = op.global_norm(r);
     result.residual_ratio = result.final_residual / result.initial_residual;
     result.history.push_back(result.residual_ratio);
     result.converged = result.residual_ratio <= options.tolerance;

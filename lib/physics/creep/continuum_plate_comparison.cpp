@@ -1,0 +1,99 @@
+#include "physics/creep/continuum_plate_comparison.hpp"
+
+#include <chrono>
+
+#include "mesh/structured_mesh.hpp"
+#include "physics/creep/continuum_creep_system.hpp"
+#include "physics/creep/plate_creep_system.hpp"
+
+namespace rfmems {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+Index nearest_cell(const Mesh& mesh, const Vec3& x) {
+  Index best = 0;
+  Real distance = 1e300;
+  for (Index c = 0; c < mesh.n_cells(); ++c) {
+    const Real d = (mesh.cell_centroid(c) - x).norm();
+    if (d < distance) distance = d, best = c;
+  }
+  return best;
+}
+
+// Runs IDA from the system's initial state; deflection(state) is the centre deflection.
+template <class System, class Deflection>
+CreepRunResult integrate(System& system, const IdaOptions& options, Real end_time,
+                         Clock::time_point start, Deflection&& deflection) {
+  CreepRunResult r;
+  std::vector<Real> y, yp;
+  system.initial_state(0, y, yp);
+  r.w_elastic = deflection(std::span<const Real>(y));
+  IdaIntegrator ida(system, options);
+  ida.initialize(0, y, yp);
+  ida.advance(end_time);
+  r.w_plastic = deflection(ida.y()) - r.w_elastic;
+  r.unknowns = system.size();
+  r.stats = ida.stats();
+  r.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return r;
+}
+
+}  // namespace
+
+CreepRunResult run_plate_creep(const FixedFixedCreepProblem& problem, int nx, int ny,
+                               int thickness_intervals, const IdaOptions& options, Real end_time) {
+  const auto start = Clock::now();
+  BoxSpec spec;
+  spec.upper = Vec3(problem.length, problem.width, 0);
+  spec.n[0] = nx;
+  spec.n[1] = ny;
+  const Mesh mesh = make_structured_mesh(spec);
+  PlateSection section;
+  section.E = problem.E;
+  section.nu = problem.nu;
+  section.rho = problem.rho;
+  section.thickness = problem.thickness();
+  std::vector<PlateBoundary> bcs(mesh.patches().size());
+  for (std::size_t k = 0; k < bcs.size(); ++k) {
+    const std::string& name = mesh.patches()[k].name;
+    bcs[k].kind = (name == "left" || name == "right") ? PlateBoundary::Kind::Clamped
+                                                      : PlateBoundary::Kind::Free;
+  }
+  const Real q = problem.load;
+  PlateOperator plate(mesh, section, bcs, [q](const Vec3&, Real) { return -q; });
+  PlateCreepSystem system(plate, problem.law, thickness_intervals);
+  const Index centre = nearest_cell(mesh, Vec3(problem.length / 2, problem.width / 2, 0));
+  return integrate(system, options, end_time, start,
+                   [centre](std::span<const Real> y) { return y[3 * centre]; });
+}
+
+CreepRunResult run_continuum_creep(const FixedFixedCreepProblem& problem, int nx, int nz,
+                                   const IdaOptions& options, Real end_time) {
+  const auto start = Clock::now();
+  BoxSpec spec;
+  spec.upper = Vec3(problem.length, problem.thickness(), 0);
+  spec.n[0] = nx;
+  spec.n[1] = nz;
+  const Mesh mesh = make_structured_mesh(spec);
+  std::vector<ElasticityBoundary> bcs(mesh.patches().size());
+  const Real q = problem.load;
+  for (std::size_t k = 0; k < bcs.size(); ++k) {
+    const std::string& name = mesh.patches()[k].name;
+    if (name == "left" || name == "right") bcs[k].kind = ElasticityBoundary::Kind::Fixed;
+    if (name == "top") bcs[k].value = [q](const Vec3&, Real) { return Vec3(0, -q, 0); };
+  }
+  ElasticityOperator op(
+      mesh, LinearElastic{problem.E, problem.nu, problem.rho, Hypothesis::PlaneStress}, bcs);
+  ContinuumCreepSystem system(op, problem.law, problem.continuum_source_degree);
+  system.set_creep_stress_mask(problem.continuum_creep_stress);
+  const Vec3 centre(problem.length / 2, problem.thickness() / 2, 0);
+  const Index cell = nearest_cell(mesh, centre);
+  return integrate(system, options, end_time, start, [&](std::span<const Real> y) {
+    const auto G = op.cell_gradients(0, y.first(system.structural_size()));
+    return op.displacement_at(cell, centre, y.first(system.structural_size()), G).y();
+  });
+}
+
+}  // namespace rfmems

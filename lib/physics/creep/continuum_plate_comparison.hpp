@@ -1,0 +1,60 @@
+// The plate-vs-continuum creep benchmark of thesis sec. 4.6.1 (Tables 4.1-4.2): a fixed-fixed
+// strip of length L and thickness h = L/(L/h) under a uniform downward pressure q, its two
+// ends clamped, the rest free; creep for a given time. The same problem in two models:
+//
+//   plate      PlateCreepSystem on the mid-surface (L x width), ends Clamped, long edges Free,
+//              q on the mid-surface; Simpson points through the thickness.
+//   continuum  ContinuumCreepSystem on the x-z section (L x h) in plane stress, ends Fixed
+//              (u = 0), q as a traction on the top face, the bottom face free.
+//
+// Which 2D continuum: a plate with free long edges bends anticlastically (M_yy = 0 away from
+// the clamps: sigma_yy = 0 in every fibre), i.e. as a narrow beam with modulus E, which is the
+// plane-stress section; plane strain (E/(1 - nu^2), sigma_yy = nu sigma_xx) would be cylindrical
+// bending, which the plate only has within ~ a width of a clamp. So the plate strip is made
+// narrow (width ~ L/20 and below) for the comparison, and the width's own effect is measured.
+//
+// Both run IDA from the elastic state (initial_state); the result is the centre deflection at
+// t = 0 and its creep increment w(t_end) - w(0) (the thesis's "plastic deformation").
+#pragma once
+#include <array>
+
+#include "materials/creep_law.hpp"
+#include "materials/linear_elastic.hpp"
+#include "solvers/ida_integrator.hpp"
+
+namespace rfmems {
+
+struct FixedFixedCreepProblem {
+  Real length = 240e-6;   // L [m]
+  Real slenderness = 60;  // L/h
+  Real width = 12e-6;     // plate width [m] (the plane-stress section has none)
+  Real load = 6e4;        // q [Pa], downward
+  Real E = 200e9, nu = 0.3, rho = 7854;
+  CreepLaw law{8.33e-6, 1.8e8, 2, 2, 1e9};  // thesis sec. 4.6.1 (grain-boundary sliding)
+  int continuum_source_degree = 2;          // ContinuumCreepSystem's sigma_p reconstruction degree
+  // Diagnostic: the stress components the continuum's creep law sees (Voigt xx, yy, zz, xy,
+  // yz, xz; ContinuumCreepSystem::set_creep_stress_mask). kBendingOnly keeps the axial stress
+  // alone, dropping the section's transverse shear xy and through-thickness yy: the plate's
+  // bending-only creep assumption inside the continuum model.
+  std::array<bool, 6> continuum_creep_stress{true, true, true, true, true, true};
+  static constexpr std::array<bool, 6> kBendingOnly{true, false, true, false, false, false};
+  Real thickness() const { return length / slenderness; }
+};
+
+struct CreepRunResult {
+  Real w_elastic = 0;  // centre deflection at t = 0 [m]
+  Real w_plastic = 0;  // w(t_end) - w(0) [m]
+  Index unknowns = 0;
+  IntegratorStats stats;
+  double wall_seconds = 0;  // set-up, initial state and integration
+};
+
+// nx x ny cells on the plate's mid-surface; thickness_intervals Simpson intervals. IDA with its
+// options (the Schur-complement preconditioned SPGMR of the plate if linear_solver is Spgmr).
+CreepRunResult run_plate_creep(const FixedFixedCreepProblem& problem, int nx, int ny,
+                               int thickness_intervals, const IdaOptions& options, Real end_time);
+// nx x nz cells on the x-z section, plane stress.
+CreepRunResult run_continuum_creep(const FixedFixedCreepProblem& problem, int nx, int nz,
+                                   const IdaOptions& options, Real end_time);
+
+}  // namespace rfmems

@@ -1,0 +1,100 @@
+// The plate creep case's run model and result fields (see the header).
+#include "physics/creep/creep_plate_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "physics/creep/plate_creep_system.hpp"
+
+namespace rfmems {
+
+namespace {
+
+// Von Mises stress of an in-plane stress (sigma_xx, sigma_yy, sigma_xy), sigma_zz = 0.
+Real von_mises(const Vec3& s) {
+  return std::sqrt(s[0] * s[0] + s[1] * s[1] - s[0] * s[1] + 3 * s[2] * s[2]);
+}
+
+PlateCreepSystem& as_plate(CreepSystem& system) { return dynamic_cast<PlateCreepSystem&>(system); }
+
+// The element with the smallest gap (first of equals).
+std::size_t smallest_gap_element(const CreepCase& c, std::span<const Real> state) {
+  std::size_t best = 0;
+  for (std::size_t e = 1; e < c.gap_elements.size(); ++e)
+    if (state[c.gap_elements[e].dof] < state[c.gap_elements[best].dof]) best = e;
+  return best;
+}
+
+}  // namespace
+
+CreepRunModel make_plate_creep_model(const CreepCase& c) {
+  CreepRunModel m;
+  m.make_system = [&c]() -> std::unique_ptr<CreepSystem> {
+    auto system = std::make_unique<PlateCreepSystem>(*c.plate->op, c.law, c.thickness_intervals);
+    if (c.hold) system->set_hold_voltage(*c.hold);
+    return system;
+  };
+  if (c.has_gap) {
+    m.min_gap = [&c](std::span<const Real> state) {
+      return c.initial_gap + state[c.gap_elements[smallest_gap_element(c, state)].dof];
+    };
+    m.min_gap_rate = [&c](std::span<const Real> state, std::span<const Real> state_dot) {
+      return state_dot[c.gap_elements[smallest_gap_element(c, state)].dof];
+    };
+  }
+  for (const Probe& p : c.probes) m.series_columns.push_back(p.name);
+  if (c.has_gap) m.series_columns.push_back("min_gap");
+  m.series_columns.push_back("max_surface_von_mises");
+  m.series_columns.push_back("max_creep_strain");
+
+  m.sample = [&c, min_gap = m.min_gap](CreepSystem& system, Real t, std::span<const Real> state) {
+    PlateCreepSystem& plate = as_plate(system);
+    std::vector<double> row;
+    const std::span<const Real> y = state.first(plate.structural_size());
+    for (const Vec3& v : c.plate->probe_values(c.probes, t, y)) row.push_back(v[0]);
+    if (min_gap) row.push_back(min_gap(state));
+    Real vm = 0;
+    for (Index i : {Index{0}, plate.n_points() - 1})
+      for (const Vec3& s : plate.fibre_stress(t, state, i)) vm = std::max(vm, von_mises(s));
+    row.push_back(vm);
+    Real eps = 0;
+    for (Index cell = 0; cell < plate.n_cells(); ++cell)
+      for (Index i = 0; i < plate.n_points(); ++i)
+        eps = std::max(eps, state[plate.creep_index(cell, i, PlateCreepSystem::kEff)]);
+    row.push_back(eps);
+    return row;
+  };
+
+  m.output_fields = [](CreepSystem& system, Real t, std::span<const Real> state) {
+    PlateCreepSystem& plate = as_plate(system);
+    const Index nc = plate.n_cells();
+    std::map<std::string, std::vector<double>> f;
+    f["structure"].assign(state.begin(), state.begin() + plate.structural_size());
+    auto& mp = f["plastic_moment"];
+    for (const Vec3& m : plate.plastic_moments(state)) mp.insert(mp.end(), {m[0], m[1], m[2]});
+    const std::pair<const char*, Index> surfaces[] = {{"von_mises_bottom", 0},
+                                                      {"von_mises_top", plate.n_points() - 1}};
+    for (const auto& [name, i] : surfaces) {
+      auto& vm = f[name];
+      for (const Vec3& s : plate.fibre_stress(t, state, i)) vm.push_back(von_mises(s));
+    }
+    auto& eps = f["creep_strain"];
+    eps.assign(nc, 0.0);
+    for (Index cell = 0; cell < nc; ++cell)
+      for (Index i = 0; i < plate.n_points(); ++i)
+        eps[cell] = std::max(eps[cell], state[plate.creep_index(cell, i, PlateCreepSystem::kEff)]);
+    return f;
+  };
+  return m;
+}
+
+void write_plate_creep_output(const CreepCase& c, ResultWriter& writer, int index,
+                              const CreepOutput& out) {
+  c.plate->write_fields(writer, index, out.time, out.fields.at("structure"), {});
+  writer.write_cell_field_at(index, out.time, "plastic_moment", out.fields.at("plastic_moment"), 3,
+                             {"Mp_xx", "Mp_yy", "Mp_xy"});
+  for (const char* name : {"von_mises_top", "von_mises_bottom", "creep_strain"})
+    writer.write_cell_field_at(index, out.time, name, out.fields.at(name), 1);
+}
+
+}  // namespace rfmems

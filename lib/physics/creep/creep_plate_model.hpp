@@ -1,0 +1,26 @@
+// What a creep run (creep_run.hpp) needs of a plate creep case (creep_case.hpp), and how its
+// outputs go into a result file:
+//   system     a fresh PlateCreepSystem (law, thickness points, the hold voltage if any) on the
+//              case's plate operator, per run segment;
+//   gap        min over the gap elements over the electrode of g0 + w (as
+//              coupling/parallel_plate_actuation.hpp), its rate from w' of that element;
+//   series     per probe its deflection w [m]; min_gap [m] (with a gap); the largest von Mises
+//              stress over the two surfaces (z = +-h/2, where creep is fastest) [Pa]; the largest
+//              effective creep strain [-];
+//   fields     the plate's own (deflection, rotation, elastic moment, shear force: PlateScene),
+//              plastic_moment (M_p,xx, M_p,yy, M_p,xy) [N m/m], von_mises_top, von_mises_bottom
+//              [Pa] and creep_strain (max over the thickness of eps_eff) per cell.
+#pragma once
+#include "io/result_writer.hpp"
+#include "physics/creep/creep_case.hpp"
+#include "physics/creep/creep_run.hpp"
+
+namespace rfmems {
+
+CreepRunModel make_plate_creep_model(const CreepCase& creep_case);
+
+// Writes output `index` (fields kept by the run) as step `index` of the result file.
+void write_plate_creep_output(const CreepCase& creep_case, ResultWriter& writer, int index,
+                              const CreepOutput& output);
+
+}  // namespace rfmems
