@@ -2,7 +2,8 @@
 # rfmems-gas end to end on reduced versions of the gas cases: Couette flow (20 cells) against
 # the first-order slip solution and with balanced wall forces; heat transfer (8 x 8, Kn = 1)
 # with balanced wall heat flows and a temperature uniform along x; the cavity (8 x 8, Kn = 1)
-# with balanced x forces and a clockwise vortex; the plots; and the bad-input contract.
+# with balanced x forces and a clockwise vortex; COMET against the sequential solver (heat
+# transfer 10 x 10, Kn = 0.01); the plots; and the bad-input contract.
 #
 # Usage: bash test_gas_driver.sh <directory of the drivers> <source directory>
 set -uo pipefail
@@ -96,6 +97,36 @@ else
   fail "cavity: $(cat "$WORK/err")"
 fi
 
+# ---- COMET against the sequential solver, heat transfer 10 x 10 at Kn = 0.01 ----------------
+# The same converged state (both to 1e-6 of the initial residual) from both solvers, and COMET
+# in far fewer iterations (V-cycles against sweeps) in the near-continuum regime it is for.
+COMET_ARGS=("$HEAT" --set "mesh.cells=[10, 10]" --set initial.knudsen=0.01
+            --set "velocity_grid.points=[8, 8, 8]" --json --quiet)
+if "$DRIVER" "${COMET_ARGS[@]}" -o "$WORK/seq.h5" >"$WORK/seq.json" 2>"$WORK/err" &&
+   "$DRIVER" "${COMET_ARGS[@]}" --set solver.type=comet -o "$WORK/comet.h5" \
+     >"$WORK/comet.json" 2>"$WORK/err" &&
+   $PY - "$WORK/seq.json" "$WORK/comet.json" "$WORK/seq.h5" "$WORK/comet.h5" <<'PY'
+import json, sys
+import h5py, numpy as np
+seq, com = (json.load(open(p)) for p in sys.argv[1:3])
+assert seq["solver"]["converged"] and com["solver"]["converged"], (seq["solver"], com["solver"])
+assert com["solver"]["type"] == "comet", com["solver"]
+qs, qc = seq["walls"]["bottom"]["heat_flow"], com["walls"]["bottom"]["heat_flow"]
+assert abs(qc / qs - 1) < 1e-3, (qs, qc)
+with h5py.File(sys.argv[3]) as a, h5py.File(sys.argv[4]) as b:
+    Ts, Tc = a["fields/000000/temperature"][()], b["fields/000000/temperature"][()]
+dT = np.abs(Tc - Ts).max() / (327.78 - 273.15)
+assert dT < 1e-3, dT
+its, itc = seq["solver"]["iterations"], com["solver"]["iterations"]
+assert 5 * itc < its, (its, itc)
+print(f"heat flow {qs:.6e} / {qc:.6e} W/m, max dT/DT {dT:.1e}, iterations {its} / {itc}")
+PY
+then
+  pass "COMET: same heat flow and temperatures as the sequential solver, >5x fewer iterations"
+else
+  fail "COMET vs sequential: $(cat "$WORK/err")"
+fi
+
 # ---- bad input: exit 2, one line naming file and key, no result file (common.sh) ------------
 expect_input_error bad_collision "gas.collision" "$COUETTE" --set gas.collision=bgk2
 expect_input_error missing_boundary "boundaries.left" "$COUETTE" \
@@ -108,5 +139,9 @@ expect_input_error negative_wall_T "boundaries.top.T" "$COUETTE" --set "boundari
 expect_input_error bad_accommodation "boundaries.top.accommodation" "$COUETTE" \
   --set boundaries.top.accommodation=1.5
 expect_input_error typo "solver.tolerence" "$COUETTE" --set solver.tolerence=1e-8
+expect_input_error comet_key_typo "solver.pre_sweep" "$COUETTE" --set solver.type=comet \
+  --set solver.pre_sweep=2
+expect_input_error comet_bad_coupling "solver.coupling" "$COUETTE" --set solver.type=comet \
+  --set solver.coupling=momentum
 
 exit $((failures > 0))

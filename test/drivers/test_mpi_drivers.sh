@@ -3,7 +3,8 @@
 # solved on the root, the other rank waits), writes one result file, and a bad key still
 # exits 2 with the driver's one line (mpirun adds its own notice after it). rfmems-gas runs
 # distributed (METIS parts, ghost exchange, block Jacobi between parts): on 2 and 3 ranks its
-# fields and wall heat flows equal the serial ones to 1e-9 at a 1e-10 residual tolerance.
+# fields and wall heat flows equal the serial ones to 1e-9 at a 1e-10 residual tolerance;
+# COMET (serial only) under mpirun is bad input.
 #
 # Usage: bash test_mpi_drivers.sh <directory of the drivers> <source directory>
 set -uo pipefail
@@ -72,4 +73,15 @@ print(f"ranks {p['ranks']}: edge cut {p['edge_cut']}, imbalance {p['imbalance']:
 PY
   then pass "rfmems-gas on $n ranks = serial"; else fail "rfmems-gas on $n ranks: $(head -3 "$WORK/err")"; fi
 done
+
+# COMET is serial for now: asking for it under mpirun is bad input, one line, exit 2.
+"${MPIRUN[@]}" "$GAS" "${GAS_ARGS[@]}" --set solver.type=comet -o "$WORK/comet.h5" --quiet \
+  >/dev/null 2>"$WORK/comet.err"
+code=$?
+if [ "$code" -eq 2 ] && [ "$(grep -c '^rfmems-gas: ' "$WORK/comet.err")" -eq 1 ] &&
+   grep -q "solver.type" "$WORK/comet.err" && [ ! -e "$WORK/comet.h5" ]; then
+  pass "solver.type=comet under mpirun -> exit 2: $(grep '^rfmems-gas: ' "$WORK/comet.err")"
+else
+  fail "comet under mpirun: exit $code, $(head -2 "$WORK/comet.err")"
+fi
 exit $((failures > 0))

@@ -204,7 +204,9 @@ TEST(PlateCreepSystem, HoldVoltageEquilibriumSoftensTheStructure) {
     EXPECT_LT(worst, 1e-9 * voltage * voltage * law.pressure_per_volt2(gap) * 2.0 * 1.2);
     Real w_min = 1e300;
     for (Index c = 0; c < mesh.n_cells(); ++c) w_min = std::min(w_min, state[3 * c]);
-    if (hold) EXPECT_DOUBLE_EQ(system.min_gap(state), gap + w_min);
+    if (hold) {
+      EXPECT_DOUBLE_EQ(system.min_gap(state), gap + w_min);
+    }
     return w_min;
   };
   const Real p0 = voltage * voltage * law.pressure_per_volt2(gap);

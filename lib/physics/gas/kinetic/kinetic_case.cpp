@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "io/mesh_from_case.hpp"
+#include "physics/gas/comet/comet_kinetic_solver.hpp"
 #include "physics/gas/kinetic/sequential_solver.hpp"
 
 namespace rfmems {
@@ -36,6 +37,7 @@ KineticSolverSettings read_kinetic_solver_settings(const CaseNode& node) {
   std::vector<std::string> names;
   for (const auto& [name, fn] : kinetic_solvers()) names.push_back(name);
   s.type = node.get_choice("type", names, "sequential");
+  if (s.type == "comet") read_comet_options(node);  // its keys are checked with the case's
   s.tolerance = node.get_real("tolerance", 1e-6, Range::open(0, 1));
   s.max_iterations =
       static_cast<int>(node.get_int("max_iterations", 200000, Range::closed(1, 1e9)));
@@ -83,7 +85,11 @@ KineticScene build_kinetic_scene(const CaseNode& root, const std::string& case_d
 
   std::vector<KineticBoundary> bcs =
       kinetic_boundaries_from_case(root.child("boundaries"), *scene.graph);
-  scene.solver = read_kinetic_solver_settings(root.child_or_empty("solver"));
+  const CaseNode solver = root.child_or_empty("solver");
+  scene.solver = read_kinetic_solver_settings(solver);
+  // COMET's multigrid and cell-coupled smoother are serial (issue 7 leaves them to do).
+  if (scene.solver.type == "comet" && !comm.is_serial())
+    solver.fail("type", "'comet' runs on one process; use 'sequential' under mpirun");
 
   const CaseNode output = root.child_or_empty("output");
   if (output.has("forces")) {
@@ -134,6 +140,12 @@ const std::map<std::string, KineticSolverFunction>& kinetic_solvers() {
          options.max_iterations = s.max_iterations;
          options.monitor = monitor;
          return solve_sequential(op, f, options);
+       }},
+      {"comet",
+       [](KineticOperator& op, std::span<Real> f, const KineticSolverSettings& s,
+          const std::function<bool(int, Real)>& monitor) {
+         return solve_comet(op, f, read_comet_options(*s.node), s.tolerance, s.max_iterations,
+                            monitor);
        }},
   };
   return solvers;
