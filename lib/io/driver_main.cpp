@@ -57,7 +57,8 @@ int parse_and_run(const std::string& program, const std::string& description, in
   try {
     return run(options);
   } catch (const InputError& e) {  // also MeshError
-    print_driver_error(program, e.what());
+    // Every rank reads the same input and fails alike: one line, from the root.
+    if (Communicator::world().is_root()) print_driver_error(program, e.what());
     return 2;
   } catch (const std::exception& e) {
     print_driver_error(program, std::string("error: ") + e.what());
