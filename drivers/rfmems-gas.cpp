@@ -144,6 +144,11 @@ int run(const DriverOptions& options) {
     walls[name] = {{"force", {F.x(), F.y(), F.z()}}, {"heat_flow", heat_flows.back()}};
   }
   summary["walls"] = walls;
+  // Net outflow of mass through every patch: a steady state passes as much in as out.
+  Json boundaries = Json::object();
+  for (const Patch& patch : scene.mesh->patches())
+    boundaries[patch.name] = {{"mass_flow", op.boundary_mass_flow(g.find_patch(patch.name), f)}};
+  summary["boundaries"] = boundaries;
   summary["total_mass"] = op.total_mass(f);
   summary["output"] = {{"h5", output},
                        {"xdmf", output.substr(0, output.rfind('.')) + ".xdmf"}};

@@ -3,7 +3,8 @@
 # the first-order slip solution and with balanced wall forces; heat transfer (8 x 8, Kn = 1)
 # with balanced wall heat flows and a temperature uniform along x; the cavity (8 x 8, Kn = 1)
 # with balanced x forces and a clockwise vortex; COMET against the sequential solver (heat
-# transfer 10 x 10, Kn = 0.01); the plots; and the bad-input contract.
+# transfer 10 x 10, Kn = 0.01); the squeeze film (coarse: odd, linear, mass balanced); the
+# plots; and the bad-input contract.
 #
 # Usage: bash test_gas_driver.sh <directory of the drivers> <source directory>
 set -uo pipefail
@@ -125,6 +126,37 @@ then
   pass "COMET: same heat flow and temperatures as the sequential solver, >5x fewer iterations"
 else
   fail "COMET vs sequential: $(cat "$WORK/err")"
+fi
+
+# ---- squeeze film, coarse (167 cells, 8^3 velocities), beam at -0.1, +0.1, -0.2 m/s -------
+# Damping opposes the motion, is linear in the velocity and odd in it at these speeds (the
+# film's pressure change is ~1.5 % of p, which bounds the nonlinearity), and the steady state
+# passes as much gas out of the domain as the moving beam pushes in (mass balance over all
+# patches to the solver's tolerance).
+SQUEEZE="$SRC/cases/gas_squeeze_film/case.yaml"
+for v in -0.1 0.1 -0.2; do
+  "$DRIVER" "$SQUEEZE" --set mesh.parameters.refine=0.25 --set "velocity_grid.points=[8, 8, 8]" \
+    --set "boundaries.beam.velocity=[0 m/s, $v m/s]" -o "$WORK/squeeze$v.h5" --json --quiet \
+    >"$WORK/squeeze$v.json" 2>"$WORK/err" || fail "squeeze film at $v m/s: $(cat "$WORK/err")"
+done
+if $PY - "$WORK"/squeeze-0.1.json "$WORK"/squeeze0.1.json "$WORK"/squeeze-0.2.json <<'PY'
+import json, sys
+runs = [json.load(open(p)) for p in sys.argv[1:4]]
+for d in runs:
+    assert d["solver"]["converged"], d["solver"]
+    flows = [b["mass_flow"] for b in d["boundaries"].values()]
+    assert abs(sum(flows)) < 1e-3 * max(abs(q) for q in flows), d["boundaries"]
+down, up, down2 = (d["walls"]["beam"]["force"][1] for d in runs)
+assert down > 0 > up, (down, up)
+assert abs(down + up) < 0.05 * down, (down, up)
+assert abs(down2 / down - 2) < 0.04, (down, down2)
+print(f"half-beam force {down:.4e} / {up:.4e} / {down2:.4e} N/m at -0.1 / +0.1 / -0.2 m/s: "
+      f"odd to {abs(down + up) / down:.1e}, linear to {abs(down2 / down / 2 - 1):.1e}")
+PY
+then
+  pass "squeeze film: damping opposes the motion, odd and linear in the velocity, mass balanced"
+else
+  fail "squeeze film"
 fi
 
 # ---- bad input: exit 2, one line naming file and key, no result file (common.sh) ------------
