@@ -17,9 +17,8 @@
 #include <vector>
 
 #include "core/error.hpp"
-#include "mesh/structured_mesh.hpp"
+#include "physics/creep/continuum_plate_comparison.hpp"
 #include "physics/creep/explicit_creep_integrator.hpp"
-#include "physics/creep/plate_creep_system.hpp"
 #include "solvers/ida_integrator.hpp"
 #include "bench_support.hpp"
 
@@ -36,42 +35,18 @@ inline CreepLaw creep_law_by_name(const std::string& name) {
   throw InputError("creep law: table41, table41_b1.8e3 or coble, got " + name);
 }
 
-struct CreepPlate {
-  Mesh mesh;
-  std::unique_ptr<PlateOperator> op;
-  std::unique_ptr<PlateCreepSystem> system;
-  Index centre = -1;
-};
+using CreepPlate = FixedFixedCreepPlate;
 
+// The Table 4.1 plate: L = 240 um, width L/4, the given L/h, load and law, 20 Simpson intervals.
 inline std::unique_ptr<CreepPlate> make_creep_plate(Real slenderness, Real load,
                                                      const CreepLaw& law, int nx, int ny) {
-  auto p = std::make_unique<CreepPlate>();
-  BoxSpec spec;
-  spec.upper = Vec3(kCreepPlateLength, kCreepPlateLength / 4, 0);
-  spec.n[0] = nx;
-  spec.n[1] = ny;
-  p->mesh = make_structured_mesh(spec);
-  PlateSection s;
-  s.E = 200e9;
-  s.nu = 0.3;
-  s.rho = 7854;
-  s.thickness = kCreepPlateLength / slenderness;
-  std::vector<PlateBoundary> bcs(p->mesh.patches().size());
-  for (std::size_t k = 0; k < bcs.size(); ++k) {
-    const std::string& name = p->mesh.patches()[k].name;
-    bcs[k].kind = (name == "left" || name == "right") ? PlateBoundary::Kind::Clamped
-                                                      : PlateBoundary::Kind::Free;
-  }
-  p->op = std::make_unique<PlateOperator>(p->mesh, s, bcs,
-                                          [load](const Vec3&, Real) { return -load; });
-  p->system = std::make_unique<PlateCreepSystem>(*p->op, law);
-  Real best = 1e300;
-  for (Index c = 0; c < p->mesh.n_cells(); ++c) {
-    const Real d =
-        (p->mesh.cell_centroid(c) - Vec3(kCreepPlateLength / 2, kCreepPlateLength / 8, 0)).norm();
-    if (d < best) best = d, p->centre = c;
-  }
-  return p;
+  FixedFixedCreepProblem problem;
+  problem.length = kCreepPlateLength;
+  problem.width = kCreepPlateLength / 4;
+  problem.slenderness = slenderness;
+  problem.load = load;
+  problem.law = law;
+  return make_fixed_fixed_creep_plate(problem, nx, ny);
 }
 
 struct CreepRun {

@@ -21,13 +21,12 @@
 #include <chrono>
 #include <cmath>
 
-#include "mesh/structured_mesh.hpp"
+#include "physics/creep/continuum_plate_comparison.hpp"
 #include "physics/creep/explicit_creep_integrator.hpp"
 #include "physics/creep/plate_creep_system.hpp"
 #include "solvers/ida_integrator.hpp"
 
 using namespace rfmems;
-using Kind = PlateBoundary::Kind;
 
 namespace {
 
@@ -36,40 +35,18 @@ constexpr Real kLength = 240e-6, kHours = 3600.0;
 CreepLaw table_4_1_law() { return {8.33e-6, 1.8e8, 2, 2, 1e9}; }
 CreepLaw coble_law() { return {2.08e-10, 20, 1, 0.5, 0.7e9}; }
 
-struct Plate {
-  Mesh mesh;
-  std::unique_ptr<PlateOperator> op;
-  std::unique_ptr<PlateCreepSystem> system;
-  Index centre = -1;
-};
+using Plate = FixedFixedCreepPlate;
 
+// L = 240 um, width L/4 (the Table 4.1 plate), 20 Simpson intervals.
 std::unique_ptr<Plate> make_plate(Real slenderness, Real load, const CreepLaw& law, int nx,
                                   int ny) {
-  auto p = std::make_unique<Plate>();
-  BoxSpec spec;
-  spec.upper = Vec3(kLength, kLength / 4, 0);
-  spec.n[0] = nx;
-  spec.n[1] = ny;
-  p->mesh = make_structured_mesh(spec);
-  PlateSection s;
-  s.E = 200e9;
-  s.nu = 0.3;
-  s.rho = 7854;
-  s.thickness = kLength / slenderness;
-  std::vector<PlateBoundary> bcs(p->mesh.patches().size());
-  for (std::size_t k = 0; k < bcs.size(); ++k) {
-    const std::string& name = p->mesh.patches()[k].name;
-    bcs[k].kind = (name == "left" || name == "right") ? Kind::Clamped : Kind::Free;
-  }
-  p->op = std::make_unique<PlateOperator>(p->mesh, s, bcs,
-                                          [load](const Vec3&, Real) { return -load; });
-  p->system = std::make_unique<PlateCreepSystem>(*p->op, law);
-  Real best = 1e300;
-  for (Index c = 0; c < p->mesh.n_cells(); ++c) {
-    const Real d = (p->mesh.cell_centroid(c) - Vec3(kLength / 2, kLength / 8, 0)).norm();
-    if (d < best) best = d, p->centre = c;
-  }
-  return p;
+  FixedFixedCreepProblem problem;
+  problem.length = kLength;
+  problem.width = kLength / 4;
+  problem.slenderness = slenderness;
+  problem.load = load;
+  problem.law = law;
+  return make_fixed_fixed_creep_plate(problem, nx, ny);
 }
 
 struct Result {

@@ -4,7 +4,6 @@
 
 #include "mesh/structured_mesh.hpp"
 #include "physics/creep/continuum_creep_system.hpp"
-#include "physics/creep/plate_creep_system.hpp"
 
 namespace rfmems {
 
@@ -42,30 +41,39 @@ CreepRunResult integrate(System& system, const IdaOptions& options, Real end_tim
 
 }  // namespace
 
-CreepRunResult run_plate_creep(const FixedFixedCreepProblem& problem, int nx, int ny,
-                               int thickness_intervals, const IdaOptions& options, Real end_time) {
-  const auto start = Clock::now();
+std::unique_ptr<FixedFixedCreepPlate> make_fixed_fixed_creep_plate(
+    const FixedFixedCreepProblem& problem, int nx, int ny, int thickness_intervals) {
+  auto p = std::make_unique<FixedFixedCreepPlate>();
   BoxSpec spec;
   spec.upper = Vec3(problem.length, problem.width, 0);
   spec.n[0] = nx;
   spec.n[1] = ny;
-  const Mesh mesh = make_structured_mesh(spec);
+  p->mesh = make_structured_mesh(spec);
   PlateSection section;
   section.E = problem.E;
   section.nu = problem.nu;
   section.rho = problem.rho;
   section.thickness = problem.thickness();
-  std::vector<PlateBoundary> bcs(mesh.patches().size());
+  std::vector<PlateBoundary> bcs(p->mesh.patches().size());
   for (std::size_t k = 0; k < bcs.size(); ++k) {
-    const std::string& name = mesh.patches()[k].name;
+    const std::string& name = p->mesh.patches()[k].name;
     bcs[k].kind = (name == "left" || name == "right") ? PlateBoundary::Kind::Clamped
                                                       : PlateBoundary::Kind::Free;
   }
   const Real q = problem.load;
-  PlateOperator plate(mesh, section, bcs, [q](const Vec3&, Real) { return -q; });
-  PlateCreepSystem system(plate, problem.law, thickness_intervals);
-  const Index centre = nearest_cell(mesh, Vec3(problem.length / 2, problem.width / 2, 0));
-  return integrate(system, options, end_time, start,
+  p->op = std::make_unique<PlateOperator>(p->mesh, section, bcs,
+                                          [q](const Vec3&, Real) { return -q; });
+  p->system = std::make_unique<PlateCreepSystem>(*p->op, problem.law, thickness_intervals);
+  p->centre = nearest_cell(p->mesh, Vec3(problem.length / 2, problem.width / 2, 0));
+  return p;
+}
+
+CreepRunResult run_plate_creep(const FixedFixedCreepProblem& problem, int nx, int ny,
+                               int thickness_intervals, const IdaOptions& options, Real end_time) {
+  const auto start = Clock::now();
+  const auto plate = make_fixed_fixed_creep_plate(problem, nx, ny, thickness_intervals);
+  const Index centre = plate->centre;
+  return integrate(*plate->system, options, end_time, start,
                    [centre](std::span<const Real> y) { return y[3 * centre]; });
 }
 

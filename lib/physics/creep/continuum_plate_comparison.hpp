@@ -17,9 +17,13 @@
 // t = 0 and its creep increment w(t_end) - w(0) (the thesis's "plastic deformation").
 #pragma once
 #include <array>
+#include <memory>
 
 #include "materials/creep_law.hpp"
 #include "materials/linear_elastic.hpp"
+#include "mesh/mesh.hpp"
+#include "physics/creep/plate_creep_system.hpp"
+#include "physics/plate/plate_operator.hpp"
 #include "solvers/ida_integrator.hpp"
 
 namespace rfmems {
@@ -48,6 +52,17 @@ struct CreepRunResult {
   IntegratorStats stats;
   double wall_seconds = 0;  // set-up, initial state and integration
 };
+
+// The plate model of the problem, for runs that drive its creep system themselves (the
+// benchmarks' explicit and implicit integrations, the Table 4.1 study).
+struct FixedFixedCreepPlate {
+  Mesh mesh;
+  std::unique_ptr<PlateOperator> op;
+  std::unique_ptr<PlateCreepSystem> system;
+  Index centre = -1;  // the cell nearest the centre of the mid-surface: w = state[3 centre]
+};
+std::unique_ptr<FixedFixedCreepPlate> make_fixed_fixed_creep_plate(
+    const FixedFixedCreepProblem& problem, int nx, int ny, int thickness_intervals = 20);
 
 // nx x ny cells on the plate's mid-surface; thickness_intervals Simpson intervals. IDA with its
 // options (the Schur-complement preconditioned SPGMR of the plate if linear_solver is Spgmr).
