@@ -8,6 +8,8 @@
 // top face of the plane model), at rest at t = 0 (step load for the transient).
 //   plate   the mid-surface strip [0, L] x [0, b] (b = L/10 by default), long edges free,
 //           cubic reconstruction; transient: ReducedInertiaSystem (rotations quasi-static).
+//           --plate-grading g grades its meshes towards the clamped ends and the free edges
+//           (docs/BENCHMARKS.md section 12); --plate-degree sets the reconstruction degree.
 //   plane   the section [0, L] x [-h/2, h/2] in plane stress (sigma out of plane = 0: the
 //           strip's interior bends with free anticlastic curvature, M_yy = 0, so its bending
 //           stiffness is E h^3/12 per width, the plane-stress value, not D = E h^3/(12(1-nu^2))
@@ -129,7 +131,7 @@ class PlateStrip : public Model {
   // grading g in [0, 1): cells graded towards the clamped ends (x) and the free edges (y),
   // x = L (xi - g sin(2 pi xi)/(2 pi)), so the end cells are (1 - g) times the uniform size and
   // the middle ones (1 + g) times (g = 0: uniform).
-  PlateStrip(int nx, int ny, double width, double grading = 0) : width_(width) {
+  PlateStrip(int nx, int ny, double width, double grading = 0, int degree = 3) : width_(width) {
     BoxSpec spec;
     spec.upper = Vec3(kLength, width, 0);
     spec.n[0] = nx;
@@ -147,7 +149,8 @@ class PlateStrip : public Model {
                                                       : PlateBoundary::Kind::Free;
     }
     op_ = std::make_unique<PlateOperator>(mesh_, PlateSection{kE, kNu, kRho, kThickness}, bcs,
-                                          [](const Vec3&, double) { return -kPressure; });
+                                          [](const Vec3&, double) { return -kPressure; },
+                                          degree);
     const double dx = (1 + grading) * kLength / nx, dy = (1 + grading) * width / ny;
     for (Index c = 0; c < mesh_.n_cells(); ++c) {
       const Vec3 d = mesh_.cell_centroid(c) - centre();
@@ -267,11 +270,12 @@ struct Config {
   double rtol = 0;  // transient only
 };
 
-// --plate-grading (PlateStrip's grading; 0: uniform meshes).
+// --plate-grading (PlateStrip's grading; 0: uniform meshes) and --plate-degree.
 double plate_grading = 0;
+int plate_degree = 3;
 
 std::unique_ptr<Model> make_model(const std::string& model, MeshSize m, double width) {
-  if (model == "plate") return std::make_unique<PlateStrip>(m.nx, m.ny, width, plate_grading);
+  if (model == "plate") return std::make_unique<PlateStrip>(m.nx, m.ny, width, plate_grading, plate_degree);
   return std::make_unique<PlaneSection>(m.nx, m.ny);
 }
 
@@ -431,6 +435,9 @@ int main(int argc, char** argv) {
                  "plate meshes graded towards the clamped ends and the free edges: end cells "
                  "(1 - g) times the uniform size (0: uniform)")
       ->check(CLI::Range(0.0, 0.95));
+  app.add_option("--plate-degree", plate_degree,
+                 "plate reconstruction degree: 1 (linear, the thesis's), 2, 3 (cubic, default)")
+      ->check(CLI::Range(1, 3));
   app.add_option("--repeats", repeats, "timed runs per configuration (the minimum is kept)");
   app.add_option("--targets", targets, "target relative errors");
   app.add_option("--plate-nx", plate_nx, "static plate meshes: cells along L (even)");
