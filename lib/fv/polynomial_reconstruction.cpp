@@ -2,7 +2,12 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <fmt/format.h>
+
+#include <limits>
+#include <map>
+#include <stdexcept>
 
 #include "core/error.hpp"
 
@@ -11,7 +16,7 @@ namespace rfmems {
 namespace {
 
 // Exponents (i, j, k) with 1 <= i + j + k <= degree, ordered by total degree.
-std::vector<std::array<int, 3>> exponents(int dim, int degree) {
+std::vector<std::array<int, 3>> make_exponents(int dim, int degree) {
   std::vector<std::array<int, 3>> e;
   for (int total = 1; total <= degree; ++total)
     for (int i = total; i >= 0; --i)
@@ -21,6 +26,20 @@ std::vector<std::array<int, 3>> exponents(int dim, int degree) {
         e.push_back({i, j, k});
       }
   return e;
+}
+
+// The same, tabulated once (monomials() runs per stencil point: no allocation there).
+constexpr int kMaxTabulatedDegree = 6;
+const std::vector<std::array<int, 3>>& exponents(int dim, int degree) {
+  static const auto table = [] {
+    std::array<std::array<std::vector<std::array<int, 3>>, kMaxTabulatedDegree + 1>, 4> t;
+    for (int d = 1; d <= 3; ++d)
+      for (int g = 0; g <= kMaxTabulatedDegree; ++g) t[d][g] = make_exponents(d, g);
+    return t;
+  }();
+  if (dim < 1 || dim > 3 || degree < 0 || degree > kMaxTabulatedDegree)
+    throw std::invalid_argument(fmt::format("monomials: dim {} degree {}", dim, degree));
+  return table[dim][degree];
 }
 
 double factorial(int n) { return n <= 1 ? 1.0 : n * factorial(n - 1); }
@@ -39,7 +58,7 @@ void monomials(int dim, int degree, const Vec3& d, Eigen::VectorXd& value,
                Eigen::Matrix<double, Eigen::Dynamic, 3>& gradient) {
   // Taylor-scaled monomials x^i y^j z^k / (i! j! k!), so the first dim coefficients are the
   // gradient at the centroid.
-  auto e = exponents(dim, degree);
+  const auto& e = exponents(dim, degree);
   value.resize(static_cast<Eigen::Index>(e.size()));
   gradient.setZero(static_cast<Eigen::Index>(e.size()), 3);
   for (std::size_t m = 0; m < e.size(); ++m) {
@@ -116,6 +135,25 @@ PolynomialReconstruction::PolynomialReconstruction(
     return all;
   };
 
+  // Fits are reused across congruent stencils: W depends only on the degree and the stencil
+  // offsets, and on a structured mesh most cells see the same ones. Candidates are found by
+  // offsets rounded to 1e-9 of the mesh size, then accepted only if every offset agrees to
+  // 1e-12 of the stencil radius (so a reused W differs from a fresh fit at round-off level).
+  Vec3 lo = Vec3::Constant(std::numeric_limits<Real>::max()), hi = -lo;
+  for (Index c = 0; c < mesh.n_cells(); ++c) {
+    lo = lo.cwiseMin(mesh.cell_centroid(c));
+    hi = hi.cwiseMax(mesh.cell_centroid(c));
+  }
+  const Real key_unit = 1e-9 * std::max((hi - lo).norm(), std::numeric_limits<Real>::min());
+  struct Fit {
+    std::vector<Vec3> offsets;
+    bool ok = false;
+    Index coefficients = -1;  // into coefficients_
+  };
+  std::map<std::vector<long long>, std::vector<Fit>> fits;
+  std::vector<long long> key;
+  std::vector<Vec3> offsets;
+
   Eigen::VectorXd b;
   Eigen::Matrix<double, Eigen::Dynamic, 3> grad_b;
   for (Index c = 0; c < mesh.n_cells(); ++c) {
@@ -126,28 +164,57 @@ PolynomialReconstruction::PolynomialReconstruction(
         std::vector<StencilPoint> pts = stencil(c, rings);
         const int nb = n_monomials(dim, degree), np = static_cast<int>(pts.size());
         if (np < nb) continue;
-        Eigen::MatrixXd A(np, nb);
-        Eigen::VectorXd w(np);
+        offsets.resize(np);
+        key.assign({degree, np});
+        Real radius = 0;
         for (int j = 0; j < np; ++j) {
-          Vec3 d = position(pts[j]) - xc;
-          monomials(dim, degree, d, b, grad_b);
-          A.row(j) = b.transpose();
-          w[j] = 1.0 / d.squaredNorm();
+          offsets[j] = position(pts[j]) - xc;
+          radius = std::max(radius, offsets[j].norm());
+          for (int k = 0; k < 3; ++k) key.push_back(std::llround(offsets[j][k] / key_unit));
         }
-        // Column scaling keeps the normal equations well conditioned on small cells.
-        Eigen::VectorXd scale = A.colwise().norm().transpose();
-        if ((scale.array() <= 0).any()) continue;
-        Eigen::MatrixXd As = A * scale.cwiseInverse().asDiagonal();
-        Eigen::MatrixXd M = As.transpose() * w.asDiagonal() * As;
-        Eigen::LDLT<Eigen::MatrixXd> ldlt(M);
-        Eigen::VectorXd diag = ldlt.vectorD();
-        if (ldlt.info() != Eigen::Success || diag.minCoeff() <= 1e-9 * diag.maxCoeff()) continue;
-        Eigen::MatrixXd W = scale.cwiseInverse().asDiagonal() *
-                            ldlt.solve(As.transpose() * w.asDiagonal());
+        std::vector<Fit>& candidates = fits[key];
+        const Fit* fit = nullptr;
+        for (const Fit& f : candidates) {
+          bool same = true;
+          for (int j = 0; j < np && same; ++j)
+            same = (f.offsets[j] - offsets[j]).norm() <= 1e-12 * radius;
+          if (same) {
+            fit = &f;
+            break;
+          }
+        }
+        if (!fit) {
+          Fit f;
+          f.offsets = offsets;
+          Eigen::MatrixXd A(np, nb);
+          Eigen::VectorXd w(np);
+          for (int j = 0; j < np; ++j) {
+            monomials(dim, degree, offsets[j], b, grad_b);
+            A.row(j) = b.transpose();
+            w[j] = 1.0 / offsets[j].squaredNorm();
+          }
+          // Column scaling keeps the normal equations well conditioned on small cells.
+          Eigen::VectorXd scale = A.colwise().norm().transpose();
+          if ((scale.array() > 0).all()) {
+            Eigen::MatrixXd As = A * scale.cwiseInverse().asDiagonal();
+            Eigen::MatrixXd M = As.transpose() * w.asDiagonal() * As;
+            Eigen::LDLT<Eigen::MatrixXd> ldlt(M);
+            Eigen::VectorXd diag = ldlt.vectorD();
+            if (ldlt.info() == Eigen::Success && diag.minCoeff() > 1e-9 * diag.maxCoeff()) {
+              f.ok = true;
+              f.coefficients = static_cast<Index>(coefficients_.size());
+              coefficients_.push_back(scale.cwiseInverse().asDiagonal() *
+                                      ldlt.solve(As.transpose() * w.asDiagonal()));
+            }
+          }
+          candidates.push_back(std::move(f));
+          fit = &candidates.back();
+        }
+        if (!fit->ok) continue;
         points_.insert(points_.end(), pts.begin(), pts.end());
         offsets_.push_back(static_cast<Index>(points_.size()));
         degree_.push_back(degree);
-        coefficients_.push_back(std::move(W));
+        coefficient_index_.push_back(fit->coefficients);
         done = true;
       }
     }
@@ -160,17 +227,23 @@ PolynomialReconstruction::PolynomialReconstruction(
 
 void PolynomialReconstruction::weights_at(Index c, const Vec3& x, std::vector<Real>& value,
                                           std::vector<Vec3>& gradient) const {
-  Eigen::VectorXd b;
-  Eigen::Matrix<double, Eigen::Dynamic, 3> grad_b;
+  thread_local Eigen::VectorXd b;
+  thread_local Eigen::Matrix<double, Eigen::Dynamic, 3> grad_b;
   monomials(mesh_.dim(), degree_[c], x - mesh_.cell_centroid(c), b, grad_b);
-  const Eigen::MatrixXd& W = coefficients_[c];
-  Eigen::VectorXd v = W.transpose() * b;                  // n_points
-  Eigen::Matrix<double, Eigen::Dynamic, 3> g = W.transpose() * grad_b;  // n_points x 3
-  value.resize(v.size());
-  gradient.resize(v.size());
-  for (Eigen::Index j = 0; j < v.size(); ++j) {
-    value[j] = v[j];
-    gradient[j] = g.row(j).transpose();
+  const Eigen::MatrixXd& W = coefficients_[coefficient_index_[c]];
+  const Eigen::Index nb = W.rows(), np = W.cols();
+  value.resize(static_cast<std::size_t>(np));
+  gradient.resize(static_cast<std::size_t>(np));
+  for (Eigen::Index j = 0; j < np; ++j) {
+    Real v = 0;
+    Vec3 g = Vec3::Zero();
+    for (Eigen::Index k = 0; k < nb; ++k) {
+      const Real wkj = W(k, j);
+      v += wkj * b[k];
+      g += wkj * grad_b.row(k).transpose();
+    }
+    value[j] = v;
+    gradient[j] = g;
   }
 }
 

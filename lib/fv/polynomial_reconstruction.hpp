@@ -58,7 +58,8 @@ class PolynomialReconstruction {
   std::vector<Index> offsets_{0};
   std::vector<StencilPoint> points_;
   std::vector<int> degree_;
-  std::vector<Eigen::MatrixXd> coefficients_;  // W per cell: n_basis x n_points
+  std::vector<Eigen::MatrixXd> coefficients_;  // W (n_basis x n_points), shared by congruent cells
+  std::vector<Index> coefficient_index_;       // per cell, into coefficients_
 };
 
 // Number of monomials of degree 1..degree in dim dimensions.

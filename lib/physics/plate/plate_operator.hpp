@@ -69,7 +69,6 @@
 #include <vector>
 
 #include "core/system_operator.hpp"
-#include "fv/block_sparsity.hpp"
 #include "fv/polynomial_reconstruction.hpp"
 #include "materials/plate_section.hpp"
 #include "mesh/mesh.hpp"
@@ -99,7 +98,7 @@ class PlateOperator : public SecondOrderOperator {
   const PlateSection& section() const { return section_; }
 
   void internal_residual(Real t, std::span<const Real> y, std::span<Real> r) override;
-  const CsrPattern& stiffness_pattern() const override { return sparsity_->pattern(); }
+  const CsrPattern& stiffness_pattern() const override { return pattern_; }
   void stiffness(Real t, std::span<const Real> y, std::span<Real> values) override;
   std::vector<Real> mass_diagonal() const override;
   // true for the rotation unknowns: the components whose (rotary) inertia
@@ -150,11 +149,11 @@ class PlateOperator : public SecondOrderOperator {
     Index cell;
     Mat3 T;
   };
-  // G_f += (T y_cell) h^T
-  struct GradientTerm {
+  // G_f += (sel y_cell) h^T + value (value_map sel y_cell) e^T, sel y = (beta_x, beta_y, 0)
+  struct BendingTerm {
     Index cell;
-    Mat3 T;
     Vec3 h;
+    Real value;
   };
 
   Vec3 bc_value(const PlateBoundary& bc, const Vec3& x, Real t) const;
@@ -174,8 +173,8 @@ class PlateOperator : public SecondOrderOperator {
 
   // Jacobian helpers (linear terms in the unknowns).
   void value_terms(const Eval& s, Real factor, const Mat3& map, std::vector<VectorTerm>& out) const;
-  void gradient_terms(const Eval& s, Real grad_factor, Real value_factor, const Mat3& value_map,
-                      const Vec3& e, std::vector<GradientTerm>& out) const;
+  void bending_terms(const Eval& s, Real grad_factor, Real value_factor,
+                     std::vector<BendingTerm>& out) const;
   void strain_terms(Index f, std::vector<ScalarTerm>& out) const;
   void assemble_stiffness();
 
@@ -185,7 +184,10 @@ class PlateOperator : public SecondOrderOperator {
   ScalarField pressure_;
   std::vector<std::pair<Index, std::function<Vec3(Real)>>> point_loads_;
   Real mu_, lambda_, kgh_;  // D (1-nu)/2, D nu, k G h
-  std::unique_ptr<PolynomialReconstruction> beta_rec_, w_rec_;
+  std::unique_ptr<PolynomialReconstruction> beta_rec_, own_w_rec_;
+  const PolynomialReconstruction* w_rec_ = nullptr;  // beta_rec_ when their stencils agree
+  std::vector<Real> value_scratch_;                  // of make_eval
+  std::vector<Vec3> gradient_scratch_;
 
   std::vector<Real> eval_value_;
   std::vector<Vec3> eval_gradient_;
@@ -202,7 +204,7 @@ class PlateOperator : public SecondOrderOperator {
   mutable std::vector<Real> gamma_e_;  // scratch of internal_residual
   mutable std::vector<Vec3> gamma_c_;
 
-  std::unique_ptr<BlockSparsity> sparsity_;
+  CsrPattern pattern_;  // the structurally nonzero entries of dR/dy, and the diagonal
   std::vector<Real> stiffness_values_;
 };
 
