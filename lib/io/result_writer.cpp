@@ -9,12 +9,9 @@
 #include <stdexcept>
 
 #include "io/atomic_file.hpp"
+#include "io/build_info.hpp"
 #include "io/hdf5_util.hpp"
 #include "io/xdmf.hpp"
-
-#ifndef RFMEMS_GIT_HASH
-#define RFMEMS_GIT_HASH "unknown"
-#endif
 
 namespace rfmems {
 
@@ -148,7 +145,7 @@ ResultWriter::ResultWriter(const std::string& path, const Mesh& mesh)
 
   create_group(f, "fields", path);
   w.metadata = create_group(f, "metadata", path);
-  write_attribute(w.metadata.get(), "git_hash", std::string(RFMEMS_GIT_HASH), path);
+  write_attribute(w.metadata.get(), "git_hash", std::string(git_hash()), path);
 }
 
 ResultWriter::~ResultWriter() = default;  // Impl deletes the temporary if unfinished
