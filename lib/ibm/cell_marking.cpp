@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <deque>
-#include <fmt/format.h>
 
 #include "core/error.hpp"
 #include "ibm/boost_geometry.hpp"
@@ -16,55 +15,44 @@ struct CellMarker::Index2D {
   BoxTree cell_boxes;
 };
 
-Index CellMarking::count(CellClass k) const {
-  return std::count(cell.begin(), cell.end(), k);
-}
+Index CellMarking::count(CellClass k) const { return std::count(cell.begin(), cell.end(), k); }
 
-Index CellMarking::count(FaceClass k) const {
-  return std::count(face.begin(), face.end(), k);
-}
+Index CellMarking::count(FaceClass k) const { return std::count(face.begin(), face.end(), k); }
 
 std::vector<Index> CellMarking::cells_of(CellClass k) const {
   std::vector<Index> out;
   for (Index c = 0; c < static_cast<Index>(cell.size()); ++c)
-    if (cell[c] == k)
-      out.push_back(c);
+    if (cell[c] == k) out.push_back(c);
   return out;
 }
 
-Real CellMarking::area(const Mesh &mesh, CellClass k) const {
+Real CellMarking::area(const Mesh& mesh, CellClass k) const {
   Real a = 0;
   for (Index c = 0; c < static_cast<Index>(cell.size()); ++c)
-    if (cell[c] == k)
-      a += mesh.cell_volume(c);
+    if (cell[c] == k) a += mesh.cell_volume(c);
   return a;
 }
 
-CellMarker::CellMarker(const Mesh &background)
-    : mesh_(background), index_(new Index2D) {
-  if (background.dim() != 2)
-    throw MeshError("cell marking: the background mesh is not 2D");
+CellMarker::CellMarker(const Mesh& background) : mesh_(background), index_(new Index2D) {
+  if (background.dim() != 2) throw MeshError("cell marking: the background mesh is not 2D");
   std::vector<BoxValue> boxes;
   boxes.reserve(background.n_cells());
   for (Index c = 0; c < background.n_cells(); ++c) {
     Polygon poly;
-    for (Index n : background.cell_nodes(c))
-      bg::append(poly.outer(), point(background.nodes()[n]));
-    bg::correct(
-        poly); // closes the ring (and orients it, should a cell be clockwise)
+    for (Index n : background.cell_nodes(c)) bg::append(poly.outer(), point(background.nodes()[n]));
+    bg::correct(poly);  // closes the ring (and orients it, should a cell be clockwise)
     Box b;
     bg::envelope(poly, b);
     boxes.emplace_back(b, c);
     index_->cell_polygon.push_back(std::move(poly));
   }
-  index_->cell_boxes =
-      BoxTree(boxes.begin(), boxes.end()); // bulk loading (packing)
+  index_->cell_boxes = BoxTree(boxes.begin(), boxes.end());  // bulk loading (packing)
 }
 
 CellMarker::~CellMarker() = default;
 
-CellMarking CellMarker::mark(const ImmersedSurface &body) const {
-  const Mesh &mesh = mesh_;
+CellMarking CellMarker::mark(const ImmersedSurface& body) const {
+  const Mesh& mesh = mesh_;
   const Index nc = mesh.n_cells(), nf = mesh.n_faces();
   enum : std::uint8_t { Unknown, Fluid, Solid, Cut };
   std::vector<std::uint8_t> state(nc, Unknown);
@@ -76,45 +64,21 @@ CellMarking CellMarker::mark(const ImmersedSurface &body) const {
   for (Index k = 0; k < body.n_segments(); ++k) {
     const Linestring s = segment(body.start(k), body.end(k));
     hits.clear();
-    index_->cell_boxes.query(
-        bgi::intersects(box_of(body.start(k), body.end(k))),
-        std::back_inserter(hits));
-    for (const auto &[box, c] : hits)
+    index_->cell_boxes.query(bgi::intersects(box_of(body.start(k), body.end(k))),
+                             std::back_inserter(hits));
+    for (const auto& [box, c] : hits)
       if (bg::relate(s, index_->cell_polygon[c], interiors_meet)) {
         state[c] = Cut;
         cutting[c].push_back(k);
       }
   }
 
-  // A face between two uncut cells blocks the flood when it lies on the
-  // surface: the two cells are then on opposite sides (a body edge along a grid
-  // line). Between uncut cells a face the surface merely touches at points
-  // joins cells of one side.
-  std::vector<BoxValue> segment_boxes;
-  for (Index k = 0; k < body.n_segments(); ++k)
-    segment_boxes.emplace_back(box_of(body.start(k), body.end(k)), k);
-  const BoxTree segment_tree(segment_boxes.begin(), segment_boxes.end());
-  const bg::de9im::mask overlap("1********");
-  auto face_on_surface = [&](Index f) {
-    auto fn = mesh.face_nodes(f);
-    const Vec3 &a = mesh.nodes()[fn[0]];
-    const Vec3 &b = mesh.nodes()[fn[1]];
-    const Linestring e = segment(a, b);
-    hits.clear();
-    segment_tree.query(bgi::intersects(box_of(a, b)), std::back_inserter(hits));
-    for (const auto &[box, k] : hits)
-      if (bg::relate(e, segment(body.start(k), body.end(k)), overlap))
-        return true;
-    return false;
-  };
-
   CellMarking m;
   m.centroid_inside.resize(nc);
   const Vec3 lo = body.lower(), hi = body.upper();
   for (Index c = 0; c < nc; ++c) {
-    const Vec3 &x = mesh.cell_centroid(c);
-    const bool in_box =
-        x.x() > lo.x() && x.x() < hi.x() && x.y() > lo.y() && x.y() < hi.y();
+    const Vec3& x = mesh.cell_centroid(c);
+    const bool in_box = x.x() > lo.x() && x.x() < hi.x() && x.y() > lo.y() && x.y() < hi.y();
     m.centroid_inside[c] = in_box && body.contains(x);
   }
 
@@ -131,12 +95,10 @@ CellMarking CellMarker::mark(const ImmersedSurface &body) const {
     const Index c = queue.front();
     queue.pop_front();
     for (Index f : mesh.cell_faces(c)) {
-      if (mesh.is_boundary(f))
-        continue;
-      const Index n =
-          mesh.face_owner(f) == c ? mesh.face_neighbour(f) : mesh.face_owner(f);
-      if (state[n] != Unknown || face_on_surface(f))
-        continue;
+      if (mesh.is_boundary(f)) continue;
+      const Index n = mesh.face_owner(f) == c ? mesh.face_neighbour(f) : mesh.face_owner(f);
+      // An uncut neighbour lies wholly on one side of the surface: the side of its centroid.
+      if (state[n] != Unknown || m.centroid_inside[n]) continue;
       state[n] = Fluid;
       queue.push_back(n);
     }
@@ -146,27 +108,16 @@ CellMarking CellMarker::mark(const ImmersedSurface &body) const {
   m.cell.resize(nc);
   for (Index c = 0; c < nc; ++c) {
     switch (state[c]) {
-    case Fluid:
-      m.cell[c] = CellClass::Fluid;
-      break;
-    case Cut:
-      m.cell[c] = CellClass::ImmersedBoundary;
-      break;
-    default:
-      m.cell[c] = CellClass::Solid;
-      if (!m.centroid_inside[c])
-        ++m.n_unreached_outside;
+      case Fluid: m.cell[c] = CellClass::Fluid; break;
+      case Cut: m.cell[c] = CellClass::ImmersedBoundary; break;
+      default:
+        m.cell[c] = CellClass::Solid;
+        if (!m.centroid_inside[c]) ++m.n_unreached_outside;
     }
-    if (state[c] == Fluid && m.centroid_inside[c])
-      throw std::logic_error(
-          fmt::format("cell marking: the flood fill reached cell {} inside "
-                      "the body (is the surface closed?)",
-                      c));
   }
   m.cut_offsets.assign(1, 0);
   for (Index c = 0; c < nc; ++c) {
-    m.cut_segments.insert(m.cut_segments.end(), cutting[c].begin(),
-                          cutting[c].end());
+    m.cut_segments.insert(m.cut_segments.end(), cutting[c].begin(), cutting[c].end());
     m.cut_offsets.push_back(static_cast<Index>(m.cut_segments.size()));
   }
 
@@ -186,7 +137,7 @@ CellMarking CellMarker::mark(const ImmersedSurface &body) const {
       m.face[f] = FaceClass::Solid;
     } else {
       m.face[f] = FaceClass::ImmersedBoundary;
-      const Vec3 n_out = mesh.face_area(f).normalized(); // out of the owner
+      const Vec3 n_out = mesh.face_area(f).normalized();  // out of the owner
       m.ib_faces.push_back(f);
       m.ib_face_fluid_cell.push_back(fluid_o ? o : n);
       m.ib_face_normal.push_back(fluid_o ? n_out : Vec3(-n_out));
@@ -195,4 +146,4 @@ CellMarking CellMarker::mark(const ImmersedSurface &body) const {
   return m;
 }
 
-} // namespace rfmems
+}  // namespace rfmems

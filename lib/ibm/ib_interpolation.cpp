@@ -1,8 +1,8 @@
 #include "ibm/ib_interpolation.hpp"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "core/error.hpp"
 #include "fv/polynomial_reconstruction.hpp"
@@ -15,21 +15,16 @@ using namespace ibm_geometry;
 namespace {
 
 // FLUID cells within `rings` face-neighbour rings of c0 (c0 first).
-std::vector<Index> fluid_rings(const Mesh &mesh, const CellMarking &marking,
-                               Index c0, int rings) {
+std::vector<Index> fluid_rings(const Mesh& mesh, const CellMarking& marking, Index c0, int rings) {
   std::vector<Index> all{c0}, frontier{c0};
   for (int r = 1; r < rings + 1 && !frontier.empty(); ++r) {
     std::vector<Index> next;
     for (Index c : frontier)
       for (Index f : mesh.cell_faces(c)) {
-        if (mesh.is_boundary(f))
-          continue;
-        const Index n = mesh.face_owner(f) == c ? mesh.face_neighbour(f)
-                                                : mesh.face_owner(f);
-        if (marking.cell[n] != CellClass::Fluid)
-          continue;
-        if (std::find(all.begin(), all.end(), n) != all.end())
-          continue;
+        if (mesh.is_boundary(f)) continue;
+        const Index n = mesh.face_owner(f) == c ? mesh.face_neighbour(f) : mesh.face_owner(f);
+        if (marking.cell[n] != CellClass::Fluid) continue;
+        if (std::find(all.begin(), all.end(), n) != all.end()) continue;
         all.push_back(n);
         next.push_back(n);
       }
@@ -39,12 +34,10 @@ std::vector<Index> fluid_rings(const Mesh &mesh, const CellMarking &marking,
 }
 
 // x strictly inside the convex hull of the points (2D).
-bool strictly_inside_hull(const Vec3 &x, const std::vector<Vec3> &points) {
-  if (points.size() < 3)
-    return false;
+bool strictly_inside_hull(const Vec3& x, const std::vector<Vec3>& points) {
+  if (points.size() < 3) return false;
   bg::model::multi_point<Point> mp;
-  for (const Vec3 &p : points)
-    bg::append(mp, point(p));
+  for (const Vec3& p : points) bg::append(mp, point(p));
   Polygon hull;
   bg::convex_hull(mp, hull);
   return bg::within(point(x), hull);
@@ -58,18 +51,16 @@ struct Fit {
 // Weighted least-squares value at `x` of the degree-`degree` polynomial through
 // `points` (as weights on the point values), or false if there are fewer points
 // than coefficients.
-bool fit_value(int degree, const Vec3 &x, Real h,
-               const std::vector<Vec3> &points, Fit &out) {
+bool fit_value(int degree, const Vec3& x, Real h, const std::vector<Vec3>& points, Fit& out) {
   const int nb = 1 + (degree > 0 ? n_monomials(2, degree) : 0);
   const int np = static_cast<int>(points.size());
-  if (np < nb)
-    return false;
+  if (np < nb) return false;
   Eigen::MatrixXd A(np, nb);
   Eigen::VectorXd sqrt_omega(np);
   Eigen::VectorXd b;
   Eigen::Matrix<double, Eigen::Dynamic, 3> grad_b;
   for (int j = 0; j < np; ++j) {
-    const Vec3 d = (points[j] - x) / h; // scaled so every column is O(1)
+    const Vec3 d = (points[j] - x) / h;  // scaled so every column is O(1)
     A(j, 0) = 1;
     if (degree > 0) {
       monomials(2, degree, d, b, grad_b);
@@ -79,36 +70,29 @@ bool fit_value(int degree, const Vec3 &x, Real h,
   }
   Eigen::MatrixXd As = sqrt_omega.asDiagonal() * A;
   const Eigen::VectorXd scale = As.colwise().norm().transpose();
-  if ((scale.array() <= 0).any())
-    return false;
+  if ((scale.array() <= 0).any()) return false;
   As = As * scale.cwiseInverse().asDiagonal();
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(As, Eigen::ComputeThinU |
-                                                Eigen::ComputeThinV);
-  const Eigen::VectorXd &s = svd.singularValues();
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(As, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const Eigen::VectorXd& s = svd.singularValues();
   out.condition = s[s.size() - 1] > 0 ? s[0] / s[s.size() - 1] : INFINITY;
-  if (!std::isfinite(out.condition))
-    return false;
+  if (!std::isfinite(out.condition)) return false;
   // a_0 = e_0^T S^-1 V Sigma^-1 U^T diag(sqrt_omega) phi.
   const Eigen::RowVectorXd v0 = svd.matrixV().row(0) / scale[0];
   const Eigen::RowVectorXd row =
-      (v0 * s.cwiseInverse().asDiagonal() * svd.matrixU().transpose()) *
-      sqrt_omega.asDiagonal();
+      (v0 * s.cwiseInverse().asDiagonal() * svd.matrixU().transpose()) * sqrt_omega.asDiagonal();
   out.weights.assign(row.data(), row.data() + np);
   out.lebesgue = row.cwiseAbs().sum();
   return true;
 }
 
-} // namespace
+}  // namespace
 
-IbInterpolation::IbInterpolation(const Mesh &mesh, const CellMarking &marking,
-                                 const ImmersedSurface &body,
-                                 IbInterpolationOptions options) {
+IbInterpolation::IbInterpolation(const Mesh& mesh, const CellMarking& marking,
+                                 const ImmersedSurface& body, IbInterpolationOptions options) {
   if (options.degree < 0 || options.degree > 2)
-    throw InputError(fmt::format("IB interpolation: degree {} is not 0, 1 or 2",
-                                 options.degree));
+    throw InputError(fmt::format("IB interpolation: degree {} is not 0, 1 or 2", options.degree));
   if (options.max_rings < 1)
-    throw InputError(fmt::format("IB interpolation: max_rings {} is not >= 1",
-                                 options.max_rings));
+    throw InputError(fmt::format("IB interpolation: max_rings {} is not >= 1", options.max_rings));
   // R-tree of the admissible wall points.
   std::vector<BoxValue> wall;
   if (options.use_wall_points)
@@ -120,7 +104,7 @@ IbInterpolation::IbInterpolation(const Mesh &mesh, const CellMarking &marking,
   std::vector<BoxValue> hits;
   for (std::size_t k = 0; k < marking.ib_faces.size(); ++k) {
     const Index f = marking.ib_faces[k], c0 = marking.ib_face_fluid_cell[k];
-    const Vec3 &x = mesh.face_centroid(f);
+    const Vec3& x = mesh.face_centroid(f);
     const Real h = std::sqrt(mesh.cell_volume(c0));
     bool accepted = false;
     Fit fit;
@@ -136,34 +120,28 @@ IbInterpolation::IbInterpolation(const Mesh &mesh, const CellMarking &marking,
         }
         const Real radius = (rings + 0.5) * h;
         hits.clear();
-        wall_tree.query(
-            bgi::intersects(Box(Point(x.x() - radius, x.y() - radius),
-                                Point(x.x() + radius, x.y() + radius))),
-            std::back_inserter(hits));
-        std::sort(hits.begin(), hits.end(),
-                  [](auto &a, auto &b) { return a.second < b.second; });
-        for (const auto &[box, s] : hits)
+        wall_tree.query(bgi::intersects(Box(Point(x.x() - radius, x.y() - radius),
+                                            Point(x.x() + radius, x.y() + radius))),
+                        std::back_inserter(hits));
+        std::sort(hits.begin(), hits.end(), [](auto& a, auto& b) { return a.second < b.second; });
+        for (const auto& [box, s] : hits)
           if ((body.midpoint(s) - x).norm() <= radius) {
             pts.push_back({IbStencilPoint::Kind::WallPoint, s, 0.0});
             xs.push_back(body.midpoint(s));
           }
         const bool last_resort = degree == 0;
-        if (!fit_value(degree, x, h, xs, fit))
+        if (!fit_value(degree, x, h, xs, fit)) continue;
+        if (!last_resort &&
+            (fit.condition > options.max_condition || fit.lebesgue > options.max_lebesgue))
           continue;
-        if (!last_resort && (fit.condition > options.max_condition ||
-                             fit.lebesgue > options.max_lebesgue))
-          continue;
-        for (std::size_t j = 0; j < pts.size(); ++j)
-          pts[j].weight = fit.weights[j];
+        for (std::size_t j = 0; j < pts.size(); ++j) pts[j].weight = fit.weights[j];
         chosen = std::move(pts);
-        info = {degree, rings, fit.condition, fit.lebesgue,
-                !strictly_inside_hull(x, xs)};
+        info = {degree, rings, fit.condition, fit.lebesgue, !strictly_inside_hull(x, xs)};
         accepted = true;
       }
     }
-    if (!accepted) // degree 0 on ring 1 always fits (c0 itself)
-      throw std::logic_error(
-          fmt::format("IB interpolation: no stencil for face {}", f));
+    if (!accepted)  // degree 0 on ring 1 always fits (c0 itself)
+      throw std::logic_error(fmt::format("IB interpolation: no stencil for face {}", f));
     faces_.push_back(f);
     targets_.push_back(x);
     points_.insert(points_.end(), chosen.begin(), chosen.end());
@@ -173,32 +151,27 @@ IbInterpolation::IbInterpolation(const Mesh &mesh, const CellMarking &marking,
 }
 
 Index IbInterpolation::count_one_sided() const {
-  return std::count_if(fits_.begin(), fits_.end(),
-                       [](auto &f) { return f.one_sided; });
+  return std::count_if(fits_.begin(), fits_.end(), [](auto& f) { return f.one_sided; });
 }
 
 Index IbInterpolation::count_degree(int degree) const {
-  return std::count_if(fits_.begin(), fits_.end(),
-                       [&](auto &f) { return f.degree == degree; });
+  return std::count_if(fits_.begin(), fits_.end(), [&](auto& f) { return f.degree == degree; });
 }
 
 Real IbInterpolation::interpolate(Index k, std::span<const Real> cell_values,
                                   std::span<const Real> wall_values) const {
   Real v = 0;
-  for (const IbStencilPoint &p : stencil(k))
-    v += p.weight * (p.kind == IbStencilPoint::Kind::FluidCell
-                         ? cell_values[p.index]
-                         : wall_values[p.index]);
+  for (const IbStencilPoint& p : stencil(k))
+    v += p.weight *
+         (p.kind == IbStencilPoint::Kind::FluidCell ? cell_values[p.index] : wall_values[p.index]);
   return v;
 }
 
-std::vector<Real>
-IbInterpolation::interpolate(std::span<const Real> cell_values,
-                             std::span<const Real> wall_values) const {
+std::vector<Real> IbInterpolation::interpolate(std::span<const Real> cell_values,
+                                               std::span<const Real> wall_values) const {
   std::vector<Real> out(faces_.size());
-  for (Index k = 0; k < n_faces(); ++k)
-    out[k] = interpolate(k, cell_values, wall_values);
+  for (Index k = 0; k < n_faces(); ++k) out[k] = interpolate(k, cell_values, wall_values);
   return out;
 }
 
-} // namespace rfmems
+}  // namespace rfmems
