@@ -33,14 +33,15 @@ std::vector<Index> fluid_rings(const Mesh& mesh, const CellMarking& marking, Ind
   return all;
 }
 
-// x strictly inside the convex hull of the points (2D).
-bool strictly_inside_hull(const Vec3& x, const std::vector<Vec3>& points) {
+// x inside or on the convex hull of the points (2D). On the hull is not one-sided: it is the
+// case of an IB face on the surface (a body edge along a grid line), between its wall points.
+bool covered_by_hull(const Vec3& x, const std::vector<Vec3>& points) {
   if (points.size() < 3) return false;
   bg::model::multi_point<Point> mp;
   for (const Vec3& p : points) bg::append(mp, point(p));
   Polygon hull;
   bg::convex_hull(mp, hull);
-  return bg::within(point(x), hull);
+  return bg::covered_by(point(x), hull);
 }
 
 struct Fit {
@@ -136,7 +137,7 @@ IbInterpolation::IbInterpolation(const Mesh& mesh, const CellMarking& marking,
           continue;
         for (std::size_t j = 0; j < pts.size(); ++j) pts[j].weight = fit.weights[j];
         chosen = std::move(pts);
-        info = {degree, rings, fit.condition, fit.lebesgue, !strictly_inside_hull(x, xs)};
+        info = {degree, rings, fit.condition, fit.lebesgue, !covered_by_hull(x, xs)};
         accepted = true;
       }
     }

@@ -27,8 +27,9 @@
 // surrounded by its stencil: the value is extrapolated, the fit's condition number grows and
 // it amplifies the data (sum |w_j|, the Lebesgue constant, grows; > 1 means overshoot, and
 // for distribution functions possibly negative values).
-//   Detection: a stencil is one-sided when x_f is not strictly inside the convex hull of its
-//   points (Boost.Geometry convex_hull + within).
+//   Detection: a stencil is one-sided when x_f lies outside the convex hull of its points
+//   (Boost.Geometry convex_hull + covered_by; on the hull is the face on the surface, between
+//   its wall points, and not one-sided).
 //   Handling, by kappa = sigma_max / sigma_min of the column-scaled weighted least-squares
 //   matrix (SVD) and by the Lebesgue constant:
 //     for degree = p, p-1, ..., 0: for rings = 1, ..., max_rings:
