@@ -68,9 +68,10 @@ int main(int argc, char** argv) {
       t = bench::cpu_now();
       std::vector<Real> wall(moved.n_segments(), 0.0);
       const auto values = ib.interpolate(field, wall);
-      const auto loads = transfer.to_surface(transfer.ib_face_forces(
-          [](const Vec3&, const Vec3& n) -> Vec3 { return 1e4 * n; }));
-      const auto velocity = transfer.to_ib_faces(std::vector<Vec3>(moved.n_segments(), Vec3(0, -0.1, 0)));
+      const auto loads = transfer.to_surface(
+          transfer.ib_face_forces([](const Vec3&, const Vec3& n) -> Vec3 { return 1e4 * n; }));
+      const auto velocity =
+          transfer.to_ib_faces(std::vector<Vec3>(moved.n_segments(), Vec3(0, -0.1, 0)));
       t_apply += bench::cpu_now() - t;
       n_ib_faces = m.ib_faces.size();
       n_ib_cells = m.count(CellClass::ImmersedBoundary);
