@@ -46,6 +46,7 @@ bool covered_by_hull(const Vec3& x, const std::vector<Vec3>& points) {
 
 struct Fit {
   std::vector<Real> weights;
+  std::vector<Vec3> gradient_weights;  // zero for degree 0
   Real condition = 0, lebesgue = 0;
 };
 
@@ -83,6 +84,15 @@ bool fit_value(int degree, const Vec3& x, Real h, const std::vector<Vec3>& point
       (v0 * s.cwiseInverse().asDiagonal() * svd.matrixU().transpose()) * sqrt_omega.asDiagonal();
   out.weights.assign(row.data(), row.data() + np);
   out.lebesgue = row.cwiseAbs().sum();
+  // grad P(x) = (a_1, a_2) / h: the rows of the degree-1 coefficients, unscaled.
+  out.gradient_weights.assign(np, Vec3::Zero());
+  if (degree > 0)
+    for (int r = 1; r <= 2; ++r) {
+      const Eigen::RowVectorXd g = (svd.matrixV().row(r) / scale[r] *
+                                    s.cwiseInverse().asDiagonal() * svd.matrixU().transpose()) *
+                                   sqrt_omega.asDiagonal() / h;
+      for (int j = 0; j < np; ++j) out.gradient_weights[j][r - 1] = g[j];
+    }
   return true;
 }
 
@@ -116,7 +126,7 @@ IbInterpolation::IbInterpolation(const Mesh& mesh, const CellMarking& marking,
         std::vector<IbStencilPoint> pts;
         std::vector<Vec3> xs;
         for (Index c : fluid_rings(mesh, marking, c0, rings)) {
-          pts.push_back({IbStencilPoint::Kind::FluidCell, c, 0.0});
+          pts.push_back({IbStencilPoint::Kind::FluidCell, c, 0.0, Vec3::Zero()});
           xs.push_back(mesh.cell_centroid(c));
         }
         const Real radius = (rings + 0.5) * h;
@@ -127,7 +137,7 @@ IbInterpolation::IbInterpolation(const Mesh& mesh, const CellMarking& marking,
         std::sort(hits.begin(), hits.end(), [](auto& a, auto& b) { return a.second < b.second; });
         for (const auto& [box, s] : hits)
           if ((body.midpoint(s) - x).norm() <= radius) {
-            pts.push_back({IbStencilPoint::Kind::WallPoint, s, 0.0});
+            pts.push_back({IbStencilPoint::Kind::WallPoint, s, 0.0, Vec3::Zero()});
             xs.push_back(body.midpoint(s));
           }
         const bool last_resort = degree == 0;
@@ -135,7 +145,10 @@ IbInterpolation::IbInterpolation(const Mesh& mesh, const CellMarking& marking,
         if (!last_resort &&
             (fit.condition > options.max_condition || fit.lebesgue > options.max_lebesgue))
           continue;
-        for (std::size_t j = 0; j < pts.size(); ++j) pts[j].weight = fit.weights[j];
+        for (std::size_t j = 0; j < pts.size(); ++j) {
+          pts[j].weight = fit.weights[j];
+          pts[j].gradient_weight = fit.gradient_weights[j];
+        }
         chosen = std::move(pts);
         info = {degree, rings, fit.condition, fit.lebesgue, !covered_by_hull(x, xs)};
         accepted = true;
@@ -166,6 +179,15 @@ Real IbInterpolation::interpolate(Index k, std::span<const Real> cell_values,
     v += p.weight *
          (p.kind == IbStencilPoint::Kind::FluidCell ? cell_values[p.index] : wall_values[p.index]);
   return v;
+}
+
+Vec3 IbInterpolation::gradient(Index k, std::span<const Real> cell_values,
+                               std::span<const Real> wall_values) const {
+  Vec3 g = Vec3::Zero();
+  for (const IbStencilPoint& p : stencil(k))
+    g += p.gradient_weight *
+         (p.kind == IbStencilPoint::Kind::FluidCell ? cell_values[p.index] : wall_values[p.index]);
+  return g;
 }
 
 std::vector<Real> IbInterpolation::interpolate(std::span<const Real> cell_values,

@@ -70,7 +70,9 @@ struct IbStencilPoint {
   enum class Kind { FluidCell, WallPoint };
   Kind kind;
   Index index;  // the cell, or the surface segment
-  Real weight;
+  Real weight;  // phi(x_f) = sum_j weight_j phi_j
+  // grad phi(x_f) = sum_j gradient_weight_j phi_j (the fit's gradient; zero for degree 0)
+  Vec3 gradient_weight;
 };
 
 struct IbFaceFit {
@@ -103,6 +105,9 @@ class IbInterpolation {
                    std::span<const Real> wall_values) const;
   std::vector<Real> interpolate(std::span<const Real> cell_values,
                                 std::span<const Real> wall_values) const;
+  // The fit's gradient at IB face k (zero for a degree-0 face).
+  Vec3 gradient(Index k, std::span<const Real> cell_values,
+                std::span<const Real> wall_values) const;
 
  private:
   std::vector<Index> faces_;

@@ -13,8 +13,8 @@ namespace rfmems {
 
 ImmersedElectrostatics::ImmersedElectrostatics(const Mesh& background,
                                                std::map<std::string, PotentialBoundary> patches,
-                                               Real permittivity)
-    : mesh_(background), permittivity_(permittivity) {
+                                               Real permittivity, IbFaceFlux ib_flux)
+    : mesh_(background), permittivity_(permittivity), ib_flux_(ib_flux) {
   if (background.dim() != 2) throw MeshError("immersed electrostatics: the background is not 2D");
   if (!(permittivity > 0))
     throw InputError(
@@ -34,6 +34,10 @@ ImmersedElectrostatics::ImmersedElectrostatics(const Mesh& background,
                       p.name));
     boundary_.push_back(it->second);
   }
+}
+
+bool ImmersedElectrostatics::uses_gradient(const IbInterpolation& ib, Index k) const {
+  return ib_flux_ == IbFaceFlux::FitGradient && ib.fit(k).degree >= 1;
 }
 
 void ImmersedElectrostatics::solve(const CellMarking& marking, const IbInterpolation& ib,
@@ -61,8 +65,19 @@ void ImmersedElectrostatics::solve(const CellMarking& marking, const IbInterpola
     const Vec3& xP = mesh.cell_centroid(P);
     for (Index f : mesh.cell_faces(P)) {
       const Real area = mesh.face_area(f).norm();
-      if (ib_of_face[f] >= 0) {  // phi_b from the IB interpolation
+      if (ib_of_face[f] >= 0) {  // the IB interpolation's fit
         const Index k = ib_of_face[f];
+        const Vec3& n_in = marking.ib_face_normal[k];
+        if (uses_gradient(ib, k)) {  // eps |S| n . grad P(x_f)
+          for (const IbStencilPoint& p : ib.stencil(k)) {
+            const Real a = permittivity_ * area * n_in.dot(p.gradient_weight);
+            if (p.kind == IbStencilPoint::Kind::FluidCell)
+              triplets.emplace_back(row, unknown[p.index], a);
+            else
+              rhs[row] -= a * body_potential;
+          }
+          continue;
+        }
         const Real a = permittivity_ * area / normal_distance(f, xP, mesh.face_centroid(f));
         triplets.emplace_back(row, row, -a);
         for (const IbStencilPoint& p : ib.stencil(k)) {
@@ -103,13 +118,21 @@ void ImmersedElectrostatics::solve(const CellMarking& marking, const IbInterpola
   ib_face_area_.assign(ib.n_faces(), 0.0);
   for (Index k = 0; k < ib.n_faces(); ++k) {
     const Index f = ib.face(k), P = marking.ib_face_fluid_cell[k];
-    Real phi_f = 0;
-    for (const IbStencilPoint& p : ib.stencil(k))
-      phi_f += p.weight *
-               (p.kind == IbStencilPoint::Kind::FluidCell ? potential_[p.index] : body_potential);
     const Real area = mesh.face_area(f).norm();
-    const Real d = normal_distance(f, mesh.cell_centroid(P), mesh.face_centroid(f));
-    ib_face_charge_[k] = permittivity_ * area * (phi_f - potential_[P]) / d;
+    Real phi_f = 0;
+    Vec3 grad = Vec3::Zero();
+    for (const IbStencilPoint& p : ib.stencil(k)) {
+      const Real v =
+          p.kind == IbStencilPoint::Kind::FluidCell ? potential_[p.index] : body_potential;
+      phi_f += p.weight * v;
+      grad += p.gradient_weight * v;
+    }
+    if (uses_gradient(ib, k)) {
+      ib_face_charge_[k] = permittivity_ * area * marking.ib_face_normal[k].dot(grad);
+    } else {
+      const Real d = normal_distance(f, mesh.cell_centroid(P), mesh.face_centroid(f));
+      ib_face_charge_[k] = permittivity_ * area * (phi_f - potential_[P]) / d;
+    }
     ib_face_area_[k] = area;
   }
 }

@@ -5,12 +5,14 @@
 //   phi = V_body            on the body's surface (an equipotential, through the IB faces),
 //   per outer patch: phi = V or phi = field(x) (PotentialBoundary::potential), or zero flux.
 //
-// Cell-centred FV with the two-point flux F = eps |S| (phi_b - phi_P) / d_n on every face of a
-// FLUID cell (d_n the normal distance from the centroid to the neighbour's centroid or to the
-// face), so the background must be K-orthogonal (Cartesian, as the thesis's): there is no
-// non-orthogonal correction. On an IB face phi_b is the IB interpolation (ib_interpolation.hpp)
-// of the FLUID cell potentials and of V_body at the wall points; that row is implicit (the
-// interpolation weights go into the matrix), so one sparse LU solve (Eigen SparseLU) gives phi.
+// Cell-centred FV with the two-point flux F = eps |S| (phi_b - phi_P) / d_n on the interior and
+// outer faces of a FLUID cell (d_n the normal distance from the centroid to the neighbour's
+// centroid or to the face), so the background must be K-orthogonal (Cartesian, as the
+// thesis's): there is no non-orthogonal correction. On an IB face the flux is
+// eps |S| n . grad P(x_f), P the IB interpolation's least-squares fit (ib_interpolation.hpp)
+// through the FLUID cell potentials and V_body at the wall points (or, as an option, the
+// two-point difference to the fit's value P(x_f)). Those rows are implicit (the fit's weights go
+// into the matrix), so one sparse LU solve (Eigen SparseLU) gives phi.
 // Exact for a field linear in the gap (a wide beam over a ground plane: the parallel-plate
 // solution), since the interpolation and the two-point flux are exact for linear fields.
 //
@@ -33,11 +35,17 @@
 
 namespace rfmems {
 
+// The flux through an IB face: the gradient of the interpolation's fit at the face
+// (second order; the default), or the two-point difference (phi_f - phi_P) / d (first order
+// at the face). Degree-0 faces (no gradient) always use the two-point difference.
+enum class IbFaceFlux { FitGradient, TwoPoint };
+
 class ImmersedElectrostatics {
  public:
   // One boundary per background patch (Potential or ZeroFlux; InputError otherwise).
   ImmersedElectrostatics(const Mesh& background, std::map<std::string, PotentialBoundary> patches,
-                         Real permittivity = kVacuumPermittivity);
+                         Real permittivity = kVacuumPermittivity,
+                         IbFaceFlux ib_flux = IbFaceFlux::FitGradient);
 
   // Solves on the FLUID cells of `marking` with the body at potential body_potential, the IB
   // faces' values from `interpolation` (built on the same marking).
@@ -52,8 +60,10 @@ class ImmersedElectrostatics {
   std::vector<Vec3> ib_face_forces() const;
 
  private:
+  bool uses_gradient(const IbInterpolation& ib, Index k) const;
   const Mesh& mesh_;
   Real permittivity_;
+  IbFaceFlux ib_flux_;
   std::vector<PotentialBoundary> boundary_;  // per patch
   std::vector<Real> potential_, ib_face_charge_;
   std::vector<Vec3> ib_face_normal_;

@@ -4,7 +4,8 @@
 //  - exactness: with FLUID cell values and wall (segment-midpoint) values sampled from a
 //    linear and from a quadratic field, every IB face value equals the field at the face
 //    centroid to round-off (quadratic: on the degree-2 faces), circle and beam, with wall
-//    points (every face quadratic) and without (extrapolation);
+//    points (every face quadratic) and without (extrapolation); so is the fit's gradient at
+//    the face (the IB-face flux of the immersed electrostatics);
 //  - accuracy: for phi = sin(2x + 1) cos(3y - 0.5) around a circle, the largest IB-face error
 //    on 16..128 cells per side falls at an observed order >= 1.8 (measured: 2.96 with wall
 //    points, 2.01 without, where the one-sided faces are linear);
@@ -90,6 +91,18 @@ TEST(IbInterpolation, ExactForLinearAndQuadraticFields) {
       EXPECT_EQ(ib.count_degree(0), 0);
       EXPECT_LT(max_error(mesh, ib, *body, linear), 1e-12);
       EXPECT_LT(max_error(mesh, ib, *body, quadratic, 2), 1e-12);
+      // The fit's gradient at the face: exact for linear fields (degree >= 1) and quadratic
+      // ones (degree 2).
+      const Sampled lin = sample(mesh, *body, linear), quad = sample(mesh, *body, quadratic);
+      for (Index k = 0; k < ib.n_faces(); ++k) {
+        const Vec3 x = ib.target(k);
+        const Vec3 g_lin(-2, 3, 0);
+        const Vec3 g_quad(2 + 8 * x.x() - 5 * x.y(), -3 - 5 * x.x() + 12 * x.y(), 0);
+        EXPECT_LT((ib.gradient(k, lin.cells, lin.wall) - g_lin).norm(), 1e-10);
+        if (ib.fit(k).degree == 2) {
+          EXPECT_LT((ib.gradient(k, quad.cells, quad.wall) - g_quad).norm(), 1e-10);
+        }
+      }
       for (Index k = 0; k < ib.n_faces(); ++k) {
         Real sum = 0;
         for (const auto& p : ib.stencil(k)) sum += p.weight;
