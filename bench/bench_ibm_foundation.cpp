@@ -6,7 +6,9 @@
 // Per background resolution (150 x 50 is the thesis's), CPU seconds of: building the marker
 // (R-tree, once), mark() (every step), IbInterpolation (every step), ForceTransfer (every
 // step), and applying them (interpolate one field, transfer one load, map one velocity).
-// Each figure is the mean over --repeats calls. One JSON object per line.
+// Each figure is the mean over --repeats calls. Also one electrostatic solve at 100 V on the
+// undeflected beam (ImmersedElectrostatics) and its force against the parallel plate
+// eps V^2 / (2 g^2) L (no fringing). One JSON object per line.
 //
 //   build/bench/bench_ibm_foundation [--repeats 20] [--scales 1 2 4]
 #include <CLI/CLI.hpp>
@@ -16,7 +18,9 @@
 #include "ibm/cell_marking.hpp"
 #include "ibm/force_transfer.hpp"
 #include "ibm/ib_interpolation.hpp"
+#include "ibm/immersed_electrostatics.hpp"
 #include "mesh/structured_mesh.hpp"
+#include "physics/electrostatics/parallel_plate.hpp"
 
 using namespace rfmems;
 
@@ -79,6 +83,20 @@ int main(int argc, char** argv) {
       n_linear = ib.count_degree(1);
       if (values.empty() || loads.empty() || velocity.empty()) return 1;
     }
+    // Electrostatics at 100 V on the undeflected beam, against the parallel-plate force.
+    const CellMarking m0 = marker.mark(beam);
+    const IbInterpolation ib0(background, m0, beam);
+    ImmersedElectrostatics es(background, {{"bottom", PotentialBoundary::potential(0.0)},
+                                           {"top", PotentialBoundary::zero_flux()},
+                                           {"left", PotentialBoundary::zero_flux()},
+                                           {"right", PotentialBoundary::zero_flux()}});
+    double t = bench::cpu_now();
+    es.solve(m0, ib0, 100.0);
+    const double t_es = bench::cpu_now() - t;
+    Vec3 force = Vec3::Zero();
+    for (const Vec3& f : es.ib_face_forces()) force += f;
+    const Real plate = ParallelPlateLaw{}.pressure_per_volt2(1.5 * um) * 1e4 * 45 * um;
+
     nlohmann::json j;
     j["bench"] = "ibm_foundation";
     j["background_cells"] = {bg.n[0], bg.n[1]};
@@ -93,6 +111,9 @@ int main(int argc, char** argv) {
     j["cpu_s_interpolation_build"] = t_interp / repeats;
     j["cpu_s_transfer_build"] = t_transfer / repeats;
     j["cpu_s_apply"] = t_apply / repeats;
+    j["cpu_s_electrostatics_solve"] = t_es;
+    j["electrostatic_force_N_per_m"] = force.y();
+    j["force_over_parallel_plate"] = -force.y() / plate;
     bench::emit(j);
   }
   return 0;
