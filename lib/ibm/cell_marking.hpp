@@ -1,5 +1,5 @@
 // Marking of a fixed 2D background FV mesh against an immersed body (thesis sec. 6.1.1,
-// after Kamakoti's steps 1-8):
+// after the 8 steps of its ref. [135]):
 //
 //   1. IB cells: the cells whose interior the body's surface cuts. Candidates come from a
 //      Boost.Geometry R-tree of the background cells' bounding boxes (built once), queried

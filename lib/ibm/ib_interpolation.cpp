@@ -53,10 +53,11 @@ struct Fit {
 // Weighted least-squares value at `x` of the degree-`degree` polynomial through
 // `points` (as weights on the point values), or false if there are fewer points
 // than coefficients.
-bool fit_value(int degree, const Vec3& x, Real h, const std::vector<Vec3>& points, Fit& out) {
+bool fit_value(int degree, const Vec3& x, Real h, const std::vector<Vec3>& points,
+               Real min_points_per_coefficient, Fit& out) {
   const int nb = 1 + (degree > 0 ? n_monomials(2, degree) : 0);
   const int np = static_cast<int>(points.size());
-  if (np < nb) return false;
+  if (np < nb || (degree > 0 && np < min_points_per_coefficient * nb)) return false;
   Eigen::MatrixXd A(np, nb);
   Eigen::VectorXd sqrt_omega(np);
   Eigen::VectorXd b;
@@ -98,12 +99,73 @@ bool fit_value(int degree, const Vec3& x, Real h, const std::vector<Vec3>& point
 
 }  // namespace
 
-IbInterpolation::IbInterpolation(const Mesh& mesh, const CellMarking& marking,
-                                 const ImmersedSurface& body, IbInterpolationOptions options) {
+namespace {
+
+// The accepted stencil of target x beside FLUID cell c0 (the rule of the header).
+void build_stencil(const Mesh& mesh, const CellMarking& marking, const ImmersedSurface& body,
+                   const IbInterpolationOptions& options, const BoxTree& wall_tree, const Vec3& x,
+                   Index c0, std::vector<IbStencilPoint>& chosen, IbFaceFit& info) {
+  const Real h = std::sqrt(mesh.cell_volume(c0));
+  std::vector<BoxValue> hits;
+  Fit fit;
+  for (int degree = options.degree; degree >= 0; --degree) {
+    for (int rings = 1; rings <= options.max_rings; ++rings) {
+      std::vector<IbStencilPoint> pts;
+      std::vector<Vec3> xs;
+      for (Index c : fluid_rings(mesh, marking, c0, rings)) {
+        pts.push_back({IbStencilPoint::Kind::FluidCell, c, 0.0, Vec3::Zero()});
+        xs.push_back(mesh.cell_centroid(c));
+      }
+      const Real radius = (rings + 0.5) * h;
+      hits.clear();
+      wall_tree.query(bgi::intersects(Box(Point(x.x() - radius, x.y() - radius),
+                                          Point(x.x() + radius, x.y() + radius))),
+                      std::back_inserter(hits));
+      std::sort(hits.begin(), hits.end(), [](auto& a, auto& b) { return a.second < b.second; });
+      for (const auto& [box, s] : hits)
+        if ((body.midpoint(s) - x).norm() <= radius) {
+          pts.push_back({IbStencilPoint::Kind::WallPoint, s, 0.0, Vec3::Zero()});
+          xs.push_back(body.midpoint(s));
+        }
+      if (!fit_value(degree, x, h, xs, options.min_points_per_coefficient, fit)) continue;
+      const bool last_resort = degree == 0;
+      if (!last_resort &&
+          (fit.condition > options.max_condition || fit.lebesgue > options.max_lebesgue))
+        continue;
+      for (std::size_t j = 0; j < pts.size(); ++j) {
+        pts[j].weight = fit.weights[j];
+        pts[j].gradient_weight = fit.gradient_weights[j];
+      }
+      chosen = std::move(pts);
+      info = {degree, rings, fit.condition, fit.lebesgue, !covered_by_hull(x, xs)};
+      return;
+    }
+  }
+  // degree 0 on ring 1 always fits (c0 itself)
+  throw std::logic_error("IB interpolation: no stencil for a target");
+}
+
+void check(const IbInterpolationOptions& options) {
   if (options.degree < 0 || options.degree > 2)
     throw InputError(fmt::format("IB interpolation: degree {} is not 0, 1 or 2", options.degree));
   if (options.max_rings < 1)
     throw InputError(fmt::format("IB interpolation: max_rings {} is not >= 1", options.max_rings));
+}
+
+}  // namespace
+
+void IbInterpolation::add(Index id, const Vec3& x, std::vector<IbStencilPoint> stencil,
+                          const IbFaceFit& fit) {
+  faces_.push_back(id);
+  targets_.push_back(x);
+  points_.insert(points_.end(), stencil.begin(), stencil.end());
+  offsets_.push_back(static_cast<Index>(points_.size()));
+  fits_.push_back(fit);
+}
+
+IbInterpolation::IbInterpolation(const Mesh& mesh, const CellMarking& marking,
+                                 const ImmersedSurface& body, IbInterpolationOptions options) {
+  check(options);
   // R-tree of the admissible wall points.
   std::vector<BoxValue> wall;
   if (options.use_wall_points)
@@ -111,57 +173,49 @@ IbInterpolation::IbInterpolation(const Mesh& mesh, const CellMarking& marking,
       if (!options.wall_point_admissible || options.wall_point_admissible(k))
         wall.emplace_back(box_of(body.midpoint(k), body.midpoint(k)), k);
   const BoxTree wall_tree(wall.begin(), wall.end());
-
-  std::vector<BoxValue> hits;
   for (std::size_t k = 0; k < marking.ib_faces.size(); ++k) {
-    const Index f = marking.ib_faces[k], c0 = marking.ib_face_fluid_cell[k];
-    const Vec3& x = mesh.face_centroid(f);
-    const Real h = std::sqrt(mesh.cell_volume(c0));
-    bool accepted = false;
-    Fit fit;
-    std::vector<IbStencilPoint> chosen;
-    IbFaceFit info;
-    for (int degree = options.degree; degree >= 0 && !accepted; --degree) {
-      for (int rings = 1; rings <= options.max_rings && !accepted; ++rings) {
-        std::vector<IbStencilPoint> pts;
-        std::vector<Vec3> xs;
-        for (Index c : fluid_rings(mesh, marking, c0, rings)) {
-          pts.push_back({IbStencilPoint::Kind::FluidCell, c, 0.0, Vec3::Zero()});
-          xs.push_back(mesh.cell_centroid(c));
-        }
-        const Real radius = (rings + 0.5) * h;
-        hits.clear();
-        wall_tree.query(bgi::intersects(Box(Point(x.x() - radius, x.y() - radius),
-                                            Point(x.x() + radius, x.y() + radius))),
-                        std::back_inserter(hits));
-        std::sort(hits.begin(), hits.end(), [](auto& a, auto& b) { return a.second < b.second; });
-        for (const auto& [box, s] : hits)
-          if ((body.midpoint(s) - x).norm() <= radius) {
-            pts.push_back({IbStencilPoint::Kind::WallPoint, s, 0.0, Vec3::Zero()});
-            xs.push_back(body.midpoint(s));
-          }
-        const bool last_resort = degree == 0;
-        if (!fit_value(degree, x, h, xs, fit)) continue;
-        if (!last_resort &&
-            (fit.condition > options.max_condition || fit.lebesgue > options.max_lebesgue))
-          continue;
-        for (std::size_t j = 0; j < pts.size(); ++j) {
-          pts[j].weight = fit.weights[j];
-          pts[j].gradient_weight = fit.gradient_weights[j];
-        }
-        chosen = std::move(pts);
-        info = {degree, rings, fit.condition, fit.lebesgue, !covered_by_hull(x, xs)};
-        accepted = true;
-      }
-    }
-    if (!accepted)  // degree 0 on ring 1 always fits (c0 itself)
-      throw std::logic_error(fmt::format("IB interpolation: no stencil for face {}", f));
-    faces_.push_back(f);
-    targets_.push_back(x);
-    points_.insert(points_.end(), chosen.begin(), chosen.end());
-    offsets_.push_back(static_cast<Index>(points_.size()));
-    fits_.push_back(info);
+    const Index f = marking.ib_faces[k];
+    std::vector<IbStencilPoint> stencil;
+    IbFaceFit fit;
+    build_stencil(mesh, marking, body, options, wall_tree, mesh.face_centroid(f),
+                  marking.ib_face_fluid_cell[k], stencil, fit);
+    add(f, mesh.face_centroid(f), std::move(stencil), fit);
   }
+}
+
+IbInterpolationOptions IbInterpolation::surface_point_options() {
+  IbInterpolationOptions o;
+  o.use_wall_points = false;
+  o.max_lebesgue = 8.0;
+  o.min_points_per_coefficient = 1.5;
+  o.max_rings = 4;
+  return o;
+}
+
+IbInterpolation IbInterpolation::to_surface_points(const Mesh& mesh, const CellMarking& marking,
+                                                   const ImmersedSurface& body,
+                                                   IbInterpolationOptions options) {
+  check(options);
+  // Seeds: the FLUID cell nearest each segment midpoint (an R-tree of FLUID centroids).
+  std::vector<BoxValue> fluid;
+  for (Index c = 0; c < mesh.n_cells(); ++c)
+    if (marking.cell[c] == CellClass::Fluid)
+      fluid.emplace_back(box_of(mesh.cell_centroid(c), mesh.cell_centroid(c)), c);
+  if (fluid.empty()) throw MeshError("IB interpolation: no FLUID cell to interpolate from");
+  const BoxTree fluid_tree(fluid.begin(), fluid.end());
+  const BoxTree no_walls;
+  IbInterpolation out;
+  std::vector<BoxValue> nearest;
+  for (Index k = 0; k < body.n_segments(); ++k) {
+    const Vec3 x = body.midpoint(k);
+    nearest.clear();
+    fluid_tree.query(bgi::nearest(point(x), 1), std::back_inserter(nearest));
+    std::vector<IbStencilPoint> stencil;
+    IbFaceFit fit;
+    build_stencil(mesh, marking, body, options, no_walls, x, nearest.front().second, stencil, fit);
+    out.add(k, x, std::move(stencil), fit);
+  }
+  return out;
 }
 
 Index IbInterpolation::count_one_sided() const {

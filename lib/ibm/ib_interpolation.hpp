@@ -61,6 +61,8 @@ struct IbInterpolationOptions {
   int max_rings = 3;            // widest stencil tried before a lower degree
   Real max_condition = 1e3;     // criterion on kappa of the scaled weighted fit
   Real max_lebesgue = 2.5;      // criterion on sum |w_j|
+  // A fit needs at least this many stencil points per coefficient (1: square systems allowed).
+  Real min_points_per_coefficient = 1.0;
   // Wall points may use segment k only if this returns true (empty: all
   // segments).
   std::function<bool(Index segment)> wall_point_admissible;
@@ -87,9 +89,22 @@ class IbInterpolation {
  public:
   IbInterpolation(const Mesh& background, const CellMarking& marking, const ImmersedSurface& body,
                   IbInterpolationOptions options = {});
+  // The thesis's step 1 for the gas (sec. 6.1.2): values at the surface segments' midpoints
+  // (the structure's faces) from the FLUID cells alone, seeded at the FLUID cell nearest each
+  // midpoint; the same fit and rule (an extrapolation by about a cell, so most of these
+  // stencils are one-sided). face(k) is then segment k.
+  // The default options allow sum |w| <= 8 there (an extrapolation a cell beyond the fluid
+  // amplifies more than an IB face's, and the 2.5 of the IB faces would leave only degree 0)
+  // and ask 1.5 points per coefficient, up to 4 rings. Measured (circle, 16..128 cells): with
+  // the IB-face options, 3-point linear fits at the diagonal walls (sum |w| = 4.7) spoiled the
+  // order to 1.1; with these every stencil is quadratic (sum |w| <= 8) and the order is 2.8.
+  static IbInterpolationOptions surface_point_options();
+  static IbInterpolation to_surface_points(
+      const Mesh& background, const CellMarking& marking, const ImmersedSurface& body,
+      IbInterpolationOptions options = surface_point_options());
 
   Index n_faces() const { return static_cast<Index>(faces_.size()); }
-  // The background face of IB face k (marking.ib_faces[k]).
+  // The background face of IB face k (marking.ib_faces[k]); for to_surface_points, segment k.
   Index face(Index k) const { return faces_[k]; }
   const Vec3& target(Index k) const { return targets_[k]; }
   std::span<const IbStencilPoint> stencil(Index k) const {
@@ -110,6 +125,8 @@ class IbInterpolation {
                 std::span<const Real> wall_values) const;
 
  private:
+  IbInterpolation() = default;
+  void add(Index id, const Vec3& x, std::vector<IbStencilPoint> stencil, const IbFaceFit& fit);
   std::vector<Index> faces_;
   std::vector<Vec3> targets_;
   std::vector<Index> offsets_{0};

@@ -16,6 +16,8 @@
 //    sum |w| <= 2.5; widen, then lower the degree) sends the one-sided faces to a linear fit,
 //    keeps the two-sided ones quadratic, every Lebesgue constant <= 2.5 and linear fields
 //    exact; without the bounds the one-sided faces keep a quadratic with sum |w| > 3;
+//  - the map to the surface points (thesis step 1: FLUID cells only): exact for linear fields
+//    (quadratic on degree-2 stencils), observed order >= 1.8 for the smooth field;
 //  - the fallback order: with kappa <= 1 every face drops to degree 0 (constants exact); with
 //    kappa <= 5 the worse-conditioned quadratic fits drop to degree 1 and stay exact for
 //    linear fields, the others stay quadratic and exact for quadratics.
@@ -264,6 +266,55 @@ TEST(IbInterpolation, FallsBackToFirstOrderWhenTheCriterionCannotBeMet) {
   for (Index k = 0; k < ib1.n_faces(); ++k) EXPECT_LE(ib1.fit(k).condition, 5.0);
   EXPECT_LT(max_error(cc.mesh, ib1, cc.beam, linear, 1), 1e-12);
   EXPECT_LT(max_error(cc.mesh, ib1, cc.beam, quadratic, 2), 1e-12);
+}
+
+TEST(IbInterpolation, ToSurfacePointsFromTheFluidCells) {
+  // Thesis step 1: values at the segment midpoints from FLUID cells only.
+  std::vector<Real> hs, errors;
+  for (int n : {16, 32, 64, 128}) {
+    Mesh mesh = unit_square(n);
+    CellMarker marker(mesh);
+    const auto circle = ImmersedSurface::circle({0.503, 0.488, 0}, 0.3, 4 * n);
+    const CellMarking m = marker.mark(circle);
+    const auto to_surface = IbInterpolation::to_surface_points(mesh, m, circle);
+    ASSERT_EQ(to_surface.n_faces(), circle.n_segments());
+    std::vector<Real> lin, quad, smo;
+    for (Index c = 0; c < mesh.n_cells(); ++c) {
+      lin.push_back(linear(mesh.cell_centroid(c)));
+      quad.push_back(quadratic(mesh.cell_centroid(c)));
+      smo.push_back(smooth(mesh.cell_centroid(c)));
+    }
+    Real e = 0;
+    for (Index k = 0; k < to_surface.n_faces(); ++k) {
+      const Vec3& x = circle.midpoint(k);
+      EXPECT_EQ(to_surface.face(k), k);
+      for (const auto& p : to_surface.stencil(k)) {
+        EXPECT_EQ(p.kind, IbStencilPoint::Kind::FluidCell);
+        EXPECT_EQ(m.cell[p.index], CellClass::Fluid);
+      }
+      EXPECT_NEAR(to_surface.interpolate(k, lin, {}), linear(x), 1e-12);
+      if (to_surface.fit(k).degree == 2) {
+        EXPECT_NEAR(to_surface.interpolate(k, quad, {}), quadratic(x), 1e-11);
+      }
+      const Real ek = std::abs(to_surface.interpolate(k, smo, {}) - smooth(x));
+      if (ek > e && getenv("IBM_DEBUG"))
+        std::printf("  k %ld x %.4f %.4f err %.3e deg %d rings %d kappa %.1f L %.2f n %zu\n",
+                    static_cast<long>(k), x.x(), x.y(), ek, to_surface.fit(k).degree,
+                    to_surface.fit(k).rings, to_surface.fit(k).condition,
+                    to_surface.fit(k).lebesgue, to_surface.stencil(k).size());
+      e = std::max(e, ek);
+    }
+    EXPECT_EQ(to_surface.count_degree(0), 0);
+    hs.push_back(1.0 / n);
+    errors.push_back(e);
+    std::printf("to surface, %d cells: degrees 2/1 %ld/%ld, one-sided %ld, max error %.3e\n", n,
+                static_cast<long>(to_surface.count_degree(2)),
+                static_cast<long>(to_surface.count_degree(1)),
+                static_cast<long>(to_surface.count_one_sided()), e);
+  }
+  const Real order = fitted_order(hs, errors);
+  std::printf("to surface: observed order %.2f\n", order);
+  EXPECT_GE(order, 1.8);
 }
 
 }  // namespace
