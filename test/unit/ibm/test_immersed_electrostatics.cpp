@@ -15,12 +15,15 @@
 //    2.83) and >= 1.5 / 1.4 with the two-point one (measured 1.76 / 1.55);
 //  - a finite beam (b/g = 10, 12.5): the charge under it exceeds the parallel plate's by less
 //    than 10 % (edge fringing), the whole beam (sides, top) carries more, under 1.5 times;
-//    moved closer and re-marked, it carries more charge and relatively less fringing.
+//    moved closer and re-marked, it carries more charge and relatively less fringing;
+//  - bad input (a patch without a condition, an unknown patch, a floating patch, eps <= 0, an
+//    interpolation degree of 3, no rings, a degenerate polygon) throws InputError/MeshError.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
+#include "core/error.hpp"
 #include "ibm/cell_marking.hpp"
 #include "ibm/force_transfer.hpp"
 #include "ibm/ib_interpolation.hpp"
@@ -168,6 +171,30 @@ TEST(ImmersedElectrostatics, FiniteBeamFringesAndFollowsTheGap) {
     previous_ratio = ratio;
     previous_charge = es.body_charge();
   }
+}
+
+TEST(ImmersedElectrostatics, BadInputIsAnInputError) {
+  Mesh mesh = rectangle({0, 0, 0}, {1, 1, 0}, 4, 4);
+  auto bcs = grounded_bottom();
+  bcs.erase("top");
+  EXPECT_THROW(ImmersedElectrostatics(mesh, bcs), InputError);  // a patch without a condition
+  bcs = grounded_bottom();
+  bcs["lid"] = PotentialBoundary::zero_flux();
+  EXPECT_THROW(ImmersedElectrostatics(mesh, bcs), InputError);  // not a patch
+  bcs = grounded_bottom();
+  bcs["top"] = PotentialBoundary::floating();
+  EXPECT_THROW(ImmersedElectrostatics(mesh, bcs), InputError);  // floating: not supported
+  EXPECT_THROW(ImmersedElectrostatics(mesh, grounded_bottom(), -1.0), InputError);
+  const auto body = ImmersedSurface::rectangle({0.3, 0.3, 0}, {0.7, 0.7, 0});
+  const CellMarking m = CellMarker(mesh).mark(body);
+  IbInterpolationOptions o;
+  o.degree = 3;
+  EXPECT_THROW(IbInterpolation(mesh, m, body, o), InputError);
+  o.degree = 2;
+  o.max_rings = 0;
+  EXPECT_THROW(IbInterpolation(mesh, m, body, o), InputError);
+  EXPECT_THROW(ImmersedSurface({{0, 0, 0}, {1, 0, 0}}), MeshError);             // two vertices
+  EXPECT_THROW(ImmersedSurface({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}), MeshError);  // no area
 }
 
 }  // namespace
