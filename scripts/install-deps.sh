@@ -17,6 +17,7 @@ packages=(
   nlohmann-json3-dev                    # JSON summaries
   libgtest-dev googletest               # unit tests
   libnanoflann-dev                      # KD-trees (mesh motion)
+  libboost-dev                          # Boost.Geometry R-tree: immersed-boundary cell marking
   gmsh                                  # unstructured meshes from cases/*.geo
   python3 python3-matplotlib python3-h5py python3-numpy  # plots (call /usr/bin/python3)
 )
