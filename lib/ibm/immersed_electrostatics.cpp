@@ -1,13 +1,13 @@
 #include "ibm/immersed_electrostatics.hpp"
 
 #include <fmt/format.h>
-#include <Eigen/Sparse>
-#include <Eigen/SparseLU>
+#include <Eigen/SparseCore>
 #include <cmath>
 #include <limits>
 #include <numeric>
 
 #include "core/error.hpp"
+#include "solvers/klu_factorization.hpp"
 
 namespace rfmems {
 
@@ -101,13 +101,21 @@ void ImmersedElectrostatics::solve(const CellMarking& marking, const IbInterpola
       }
     }
   }
-  Eigen::SparseMatrix<Real> A(n, n);
+  // Duplicates summed into a compressed row-major matrix, then the project's sparse direct
+  // solver (KLU) on its CSR arrays.
+  Eigen::SparseMatrix<Real, Eigen::RowMajor> A(n, n);
   A.setFromTriplets(triplets.begin(), triplets.end());
-  Eigen::SparseLU<Eigen::SparseMatrix<Real>> lu;
-  lu.compute(A);
-  if (lu.info() != Eigen::Success)
+  A.makeCompressed();
+  CsrPattern pattern;
+  pattern.row_ptr.assign(A.outerIndexPtr(), A.outerIndexPtr() + n + 1);
+  pattern.col_idx.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
+  std::vector<Real> phi(rhs.data(), rhs.data() + n);
+  try {
+    KluFactorization lu(pattern, std::span<const Real>(A.valuePtr(), A.nonZeros()));
+    lu.solve(phi);
+  } catch (const SolverError&) {
     throw SolverError("immersed electrostatics: singular matrix (no potential prescribed?)");
-  const Eigen::VectorXd phi = lu.solve(rhs);
+  }
 
   potential_.assign(nc, std::numeric_limits<Real>::quiet_NaN());
   for (Index c = 0; c < nc; ++c)

@@ -12,7 +12,7 @@
 // eps |S| n . grad P(x_f), P the IB interpolation's least-squares fit (ib_interpolation.hpp)
 // through the FLUID cell potentials and V_body at the wall points (or, as an option, the
 // two-point difference to the fit's value P(x_f)). Those rows are implicit (the fit's weights go
-// into the matrix), so one sparse LU solve (Eigen SparseLU) gives phi.
+// into the matrix), so one sparse LU solve (KLU) gives phi.
 // Exact for a field linear in the gap (a wide beam over a ground plane: the parallel-plate
 // solution), since the interpolation and the two-point flux are exact for linear fields.
 //
