@@ -19,9 +19,12 @@
 
 #include "mesh/structured_mesh.hpp"
 #include "physics/electrostatics/electrostatic_solver.hpp"
+#include "../support/convergence_order.hpp"
 
 namespace rfmems {
 namespace {
+
+using rfmems::test_support::fitted_order;
 
 Real exact(const Vec3& p) {
   const Real x = p.x(), y = p.y();
@@ -84,17 +87,6 @@ Errors solve_on(int n, int degree) {
     area += a;
   }
   return {std::sqrt(e2 / volume), std::sqrt(f2 / area)};
-}
-
-// Least-squares slope of log(error) against log(h).
-Real fitted_order(const std::vector<Real>& h, const std::vector<Real>& e) {
-  Real sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const Real m = static_cast<Real>(h.size());
-  for (std::size_t i = 0; i < h.size(); ++i) {
-    const Real x = std::log(h[i]), y = std::log(e[i]);
-    sx += x, sy += y, sxx += x * x, sxy += x * y;
-  }
-  return (m * sxy - sx * sy) / (m * sxx - sx * sx);
 }
 
 TEST(LaplaceManufactured, SecondOrderOnPerturbedSkewedMeshes) {

@@ -29,9 +29,12 @@
 #include "ibm/cell_marking.hpp"
 #include "ibm/ib_interpolation.hpp"
 #include "mesh/structured_mesh.hpp"
+#include "../../support/convergence_order.hpp"
 
 namespace rfmems {
 namespace {
+
+using rfmems::test_support::fitted_order;
 
 using Field = std::function<Real(const Vec3&)>;
 
@@ -135,16 +138,6 @@ TEST(IbInterpolation, ExactForLinearAndQuadraticFields) {
       }
     }
   }
-}
-
-Real fitted_order(const std::vector<Real>& h, const std::vector<Real>& e) {
-  Real sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const Real k = static_cast<Real>(h.size());
-  for (std::size_t i = 0; i < h.size(); ++i) {
-    const Real x = std::log(h[i]), y = std::log(e[i]);
-    sx += x, sy += y, sxx += x * x, sxy += x * y;
-  }
-  return (k * sxy - sx * sy) / (k * sxx - sx * sx);
 }
 
 TEST(IbInterpolation, ObservedOrderForASmoothField) {

@@ -30,9 +30,12 @@
 #include "ibm/immersed_electrostatics.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/electrostatics/parallel_plate.hpp"
+#include "../../support/convergence_order.hpp"
 
 namespace rfmems {
 namespace {
+
+using rfmems::test_support::fitted_order;
 
 constexpr Real um = 1e-6;
 
@@ -83,16 +86,6 @@ TEST(ImmersedElectrostatics, WideBeamIsTheParallelPlateExactly) {
   Vec3 on_structure = Vec3::Zero();
   for (const Vec3& f : transfer.to_surface(es.ib_face_forces())) on_structure += f;
   EXPECT_LT((on_structure - total).norm(), 1e-12 * force);
-}
-
-Real fitted_order(const std::vector<Real>& h, const std::vector<Real>& e) {
-  Real sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const Real k = static_cast<Real>(h.size());
-  for (std::size_t i = 0; i < h.size(); ++i) {
-    const Real x = std::log(h[i]), y = std::log(e[i]);
-    sx += x, sy += y, sxx += x * x, sxy += x * y;
-  }
-  return (k * sxy - sx * sy) / (k * sxx - sx * sx);
 }
 
 TEST(ImmersedElectrostatics, CoaxialCylindersConverge) {
