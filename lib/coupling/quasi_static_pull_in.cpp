@@ -63,7 +63,8 @@ class DisplacementControlSystem : public SystemOperator {
   std::vector<Real> k_values_, q_;
 };
 
-// The stiffness scale: the largest diagonal entry of K.
+}  // namespace
+
 Real stiffness_scale(ParallelPlateActuation& act) {
   const CsrPattern& k = act.stiffness_pattern();
   std::vector<Real> values(k.nnz());
@@ -73,8 +74,6 @@ Real stiffness_scale(ParallelPlateActuation& act) {
   for (Index i = 0; i < act.size(); ++i) scale = std::max(scale, std::abs(values[k.find(i, i)]));
   return scale;
 }
-
-}  // namespace
 
 QuasiStaticPullIn trace_fold(const DeltaSolve& solve, const FoldSample& rest, Real gap,
                              const QuasiStaticOptions& options) {

@@ -49,6 +49,9 @@ struct QuasiStaticPullIn {
   std::vector<Real> fold_state;     // the solver's state at the fold (structure unknowns first)
 };
 
+// The structure's stiffness scale k_ref: the largest diagonal entry of its K at rest.
+Real stiffness_scale(ParallelPlateActuation& actuation);
+
 // control: the index of y_c. The actuation's voltage function is overwritten.
 QuasiStaticPullIn trace_pull_in(ParallelPlateActuation& actuation, Index control,
                                 const QuasiStaticOptions& options = {});
