@@ -2,7 +2,9 @@
 // parallel-plate force (static adaptor: K + V^2 A p1'(g) on the diagonal) and the monolithic
 // plate + parallel-plate + Reynolds film system for IDA (dF/dY + c_j dF/dY', including the
 // film's gap and gap-rate columns, which point at the plate's w and its velocity), on a
-// deflected plate with a non-uniform film pressure.
+// deflected plate with a non-uniform film pressure; and both again with the actuated cells
+// pressed into the dielectric's contact penalty, whose entries are also checked on their own
+// scale (there a 0.1 % error in them is caught: PerturbedContact).
 #include <gtest/gtest.h>
 
 #include <cmath>
