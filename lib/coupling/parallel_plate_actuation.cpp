@@ -45,10 +45,13 @@ void ParallelPlateActuation::set_contact(const ContactPenalty& contact) {
     throw std::logic_error("ParallelPlateActuation: the contact gap must lie in (0, initial gap)");
   contact_ = contact;
   p1_contact_ = contact.enabled() ? law_.pressure_per_volt2(contact.gap) : 0.0;
+  linear_below_ = contact.gap - kLinearBelow * contact.penetration;
+  if (contact.enabled() && law_.electrical_gap(linear_below_) <= 0)
+    throw std::logic_error("ParallelPlateActuation: the penetration is too large for the gap");
 }
 
 void ParallelPlateActuation::check_gap(Real g, std::size_t e) const {
-  if (law_.electrical_gap(g) <= 0)
+  if (!contact_.enabled() && law_.electrical_gap(g) <= 0)
     throw RecoverableError(fmt::format("parallel-plate gap closed (g = {:.3e} m at element {})", g, e));
 }
 
@@ -94,7 +97,7 @@ Real ParallelPlateActuation::min_gap(std::span<const Real> y) const {
 Real ParallelPlateActuation::total_force(Real voltage_squared, std::span<const Real> y) const {
   Real f = 0;
   for (std::size_t e = 0; e < elements_.size(); ++e)
-    f -= voltage_squared * elements_[e].area * law_.pressure_per_volt2(gap(y, e));
+    f -= voltage_squared * elements_[e].area * electrostatic_per_volt2(gap(y, e));
   return f;
 }
 

@@ -16,10 +16,11 @@
 // -V^2 A_e p1(g_c) phi(s_e) n_e and the diagonal +V^2 A_e p1(g_c) phi'(s_e)/delta, so the
 // structure can rest on the dielectric and the exact tangent includes the contact stiffness.
 //
-// A gap that closes to g_e <= 0 (electrical gap) raises RecoverableError: IDA retries with a
+// Without contact, a gap that closes to g_e <= 0 (electrical gap) raises RecoverableError: IDA retries with a
 // smaller step, KINSOL backtracks; without contact a run that really touches down is stopped
 // before by the contact root (see dynamic_pull_in.hpp).
 #pragma once
+#include <algorithm>
 #include <functional>
 #include <vector>
 
@@ -81,12 +82,26 @@ class ParallelPlateActuation : public SecondOrderOperator {
 
  private:
   void check_gap(Real g, std::size_t e) const;
+  // Electrostatic pressure per V^2 at air gap g, and its derivative: the parallel-plate law,
+  // continued linearly (C^1) below g_c - kLinearBelow delta when there is contact, so that the
+  // residual is defined for every Newton iterate and, with the penalty's slope there
+  // (2 p1(g_c)/delta > |p1'|), monotone deep inside the dielectric.
+  static constexpr Real kLinearBelow = 5;
+  Real electrostatic_per_volt2(Real g) const {
+    if (contact_.enabled() && g < linear_below_)
+      return law_.pressure_per_volt2(linear_below_) +
+             law_.pressure_per_volt2_derivative(linear_below_) * (g - linear_below_);
+    return law_.pressure_per_volt2(g);
+  }
+  Real electrostatic_per_volt2_derivative(Real g) const {
+    return law_.pressure_per_volt2_derivative(contact_.enabled() ? std::max(g, linear_below_) : g);
+  }
   // Net pressure per V^2 (electrostatic minus contact) at air gap g, and its derivative.
   Real net_pressure_per_volt2(Real g) const {
-    return law_.pressure_per_volt2(g) - contact_.pressure_per_volt2(g, p1_contact_);
+    return electrostatic_per_volt2(g) - contact_.pressure_per_volt2(g, p1_contact_);
   }
   Real net_pressure_per_volt2_derivative(Real g) const {
-    return law_.pressure_per_volt2_derivative(g) -
+    return electrostatic_per_volt2_derivative(g) -
            contact_.pressure_per_volt2_derivative(g, p1_contact_);
   }
 
@@ -95,7 +110,8 @@ class ParallelPlateActuation : public SecondOrderOperator {
   Real gap0_;
   ParallelPlateLaw law_;
   ContactPenalty contact_;
-  Real p1_contact_ = 0;  // p1(g_c)
+  Real p1_contact_ = 0;   // p1(g_c)
+  Real linear_below_ = 0;  // g_c - kLinearBelow delta
   std::function<Real(Real)> voltage_squared_;
   std::vector<Index> diagonal_position_;  // per element: value index of (dof, dof)
 };

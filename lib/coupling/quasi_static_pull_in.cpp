@@ -173,3 +173,29 @@ QuasiStaticPullIn trace_pull_in(ParallelPlateActuation& act, Index control,
 }
 
 }  // namespace rfmems
+
+namespace rfmems {
+
+std::vector<Real> follow_displacement(ParallelPlateActuation& act, Index control,
+                                      std::span<const Real> from, const std::vector<Real>& path,
+                                      const QuasiStaticOptions& options) {
+  const Index n = act.size();
+  const Real k_ref = stiffness_scale(act);
+  DisplacementControlSystem system(act, control, k_ref);
+  KinsolOptions kin;
+  kin.max_iterations = options.max_newton_iterations;
+  kin.line_search = true;
+  kin.relative_tolerance = options.newton_tolerance;
+  kin.residual_scale = k_ref * act.initial_gap();
+  KinsolSolver solver(system, kin);
+  std::vector<Real> state(from.begin(), from.end());
+  for (const Real delta : path) {
+    const Real scale = delta / state[control];
+    for (Index i = 0; i < n; ++i) state[i] *= scale;
+    system.set_target(delta);
+    solver.solve(0.0, state);
+  }
+  return state;
+}
+
+}  // namespace rfmems

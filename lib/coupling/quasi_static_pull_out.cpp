@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -12,52 +13,110 @@
 
 namespace rfmems {
 
-QuasiStaticPullOut trace_pull_out(ParallelPlateActuation& act, Index control,
-                                  std::span<const Real> guess, const PullOutOptions& options) {
-  const ContactPenalty& contact = act.contact();
-  if (!contact.enabled()) throw std::logic_error("trace_pull_out: the actuation has no contact");
-  if (options.start_voltage <= 0) throw std::logic_error("trace_pull_out: start_voltage <= 0");
-  const Index n = act.size();
-  const Real g0 = act.initial_gap();
-  StaticSystem system(act);
-  KinsolOptions kin;
-  kin.max_iterations = options.max_newton_iterations;
-  kin.line_search = true;
-  kin.relative_tolerance = options.newton_tolerance;
-  kin.residual_scale = stiffness_scale(act) * g0;
-  KinsolSolver solver(system, kin);
+namespace {
 
-  QuasiStaticPullOut out;
+struct ContactSolver {
+  ParallelPlateActuation& act;
+  StaticSystem system;
+  Real tolerance;  // on ||F||_inf [N]
+  KinsolSolver solver;
+  long solves = 0, newton = 0;
+  ContactSolver(ParallelPlateActuation& a, const PullOutOptions& options)
+      : act(a), system(a), tolerance(options.newton_tolerance * stiffness_scale(a) * a.initial_gap()),
+        solver(system, [&] {
+          KinsolOptions kin;
+          kin.max_iterations = options.max_newton_iterations;
+          kin.line_search = true;
+          kin.relative_tolerance = options.newton_tolerance;
+          kin.residual_scale = stiffness_scale(a) * a.initial_gap();
+          return kin;
+        }()) {}
   // The equilibrium at voltage v from `from`; false if Newton fails or leaves the dielectric.
-  auto solve = [&](Real v, const std::vector<Real>& from, std::vector<Real>& state, long& iterations) {
+  bool solve(Real v, const std::vector<Real>& from, std::vector<Real>& state, long& iterations) {
     act.set_voltage_squared([v](Real) { return v * v; });
     state = from;
-    ++out.solves;
+    ++solves;
+    NonlinearStats stats;
     try {
-      iterations = solver.solve(0.0, state).newton_iters;
-    } catch (const std::exception&) {  // SolverError, or a closed gap in every line-search try
+      stats = solver.solve(0.0, state);
+    } catch (const std::exception&) {  // SolverError, RecoverableError from the film/gap
       return false;
     }
-    out.newton_iterations += iterations;
-    return act.min_gap(state) < contact.gap;
-  };
+    iterations = stats.newton_iters;
+    newton += iterations;
+    // KINSOL can stop with a warning (a stalled line search at the fold, where the Jacobian is
+    // singular and no solution exists below it): only a small residual is an equilibrium.
+    if (stats.final_residual > 10 * tolerance) return false;
+    return act.min_gap(state) < act.contact().gap;
+  }
+};
+
+void check_contact(const ParallelPlateActuation& act, Real voltage) {
+  if (!act.contact().enabled()) throw std::logic_error("pull-out: the actuation has no contact");
+  if (voltage <= 0) throw std::logic_error("pull-out: the voltage must be > 0");
+}
+
+}  // namespace
+
+std::vector<Real> press_onto_dielectric(ParallelPlateActuation& act, Index control,
+                                        std::span<const Real> guess, Real voltage,
+                                        const PullOutOptions& options) {
+  check_contact(act, voltage);
+  const Index n = act.size();
+  const ContactPenalty& contact = act.contact();
+  if (guess.size() != static_cast<std::size_t>(n + 1) || guess[control] >= 0)
+    throw std::logic_error("press_onto_dielectric: the guess must be a displacement-controlled "
+                           "state (structure, V^2) deflected towards the electrode");
+  std::vector<Real> path;
+  const Real half = -(act.initial_gap() - contact.gap + 0.5 * contact.penetration);
+  for (int k = 1; k <= 12; ++k) path.push_back(guess[control] + (half - guess[control]) * k / 12);
+  QuasiStaticOptions qs;
+  qs.newton_tolerance = options.newton_tolerance;
+  qs.max_newton_iterations = options.max_newton_iterations;
+  const std::vector<Real> controlled = follow_displacement(act, control, guess, path, qs);
+  std::vector<Real> state(controlled.begin(), controlled.begin() + n), trial;
+  Real v = std::sqrt(std::max(controlled[n], 0.0));
+  ContactSolver cs(act, options);
+  long iterations = 0;
+  Real ratio = 1 / options.step_ratio;
+  while (v < voltage) {
+    const Real next = std::min(voltage, v * ratio);
+    if (cs.solve(next, state, trial, iterations)) {
+      state = trial;
+      v = next;
+      ratio = std::min(1 / options.step_ratio, 1 + 2 * (ratio - 1));
+    } else if ((ratio = 1 + 0.5 * (ratio - 1)) < 1 + 1e-3) {
+      throw SolverError(fmt::format("pull-out: no equilibrium in contact reached at {:.4g} V "
+                                    "(the contact branch from the touching point folds at {:.4g} V)",
+                                    voltage, v));
+    }
+  }
+  return state;
+}
+
+QuasiStaticPullOut trace_pull_out(ParallelPlateActuation& act, Index control,
+                                  std::span<const Real> contact_state, const PullOutOptions& options) {
+  check_contact(act, options.start_voltage);
+  const Index n = act.size();
+  ContactSolver cs(act, options);
+  QuasiStaticPullOut out;
   auto point = [&](Real v, const std::vector<Real>& state, long iterations) {
     return ContactBranchPoint{v, state[control], act.min_gap(state), act.contact_fraction(state),
                               iterations};
   };
-
-  // The guess, scaled so that the control unknown sits one penetration below the contact gap.
-  std::vector<Real> pressed(guess.begin(), guess.begin() + n);
-  if (pressed[control] >= 0)
-    throw std::logic_error("trace_pull_out: the guess must deflect the control towards the electrode");
-  const Real target = -(g0 - contact.gap + contact.penetration);
-  for (Real& x : pressed) x *= target / guess[control];
+  auto solve = [&](Real v, const std::vector<Real>& from, std::vector<Real>& state, long& it) {
+    const bool ok = cs.solve(v, from, state, it);
+    out.solves = cs.solves;
+    out.newton_iterations = cs.newton;
+    return ok;
+  };
   std::vector<Real> state, trial;
   long iterations = 0;
   Real v = options.start_voltage;
-  if (!solve(v, pressed, state, iterations))
-    throw SolverError(fmt::format("pull-out: no equilibrium in contact found at {:.4g} V (start "
-                                  "above the pull-in voltage)",
+  if (!solve(v, std::vector<Real>(contact_state.begin(), contact_state.begin() + n), state,
+             iterations))
+    throw SolverError(fmt::format("pull-out: no equilibrium in contact at {:.4g} V from the given "
+                                  "state",
                                   v));
   out.branch.push_back(point(v, state, iterations));
   // Descent until the contact equilibrium is lost.

@@ -4,13 +4,13 @@
 //
 // Voltage control is regular on the contact branch: the penalty's stiffness V^2 A p1(g_c)
 // phi'(s)/delta outweighs the electrostatic softening wherever a cell rests on the dielectric.
-// KINSOL (exact Newton + KLU, line search) solves R(y) + V^2 q(y) = 0 at start_voltage (above
-// the pull-in voltage, where only contact equilibria exist) from a guess pressed onto the
-// dielectric, then at V_{k+1} = step_ratio V_k, each from the previous contact state, while the
-// solution stays in contact (min gap < g_c). The first voltage without a contact equilibrium
-// (Newton fails, or converges to a state off the dielectric: the unstable branch) and the last
-// with one bracket the pull-out voltage; bisection, always from the last contact state, narrows
-// the bracket to voltage_tolerance.
+// From a state resting on the dielectric (pulled in: the end of a dynamic approach, or
+// press_onto_dielectric) KINSOL (exact Newton + KLU, line search) solves R(y) + V^2 q(y) = 0
+// under voltage control at start_voltage, then at V_{k+1} = step_ratio V_k, each from the
+// previous contact state, while the solution stays in contact (min gap < g_c). The first
+// voltage without a contact equilibrium (Newton fails, or converges to a state off the
+// dielectric: the unstable branch) and the last with one bracket the pull-out voltage;
+// bisection, always from the last contact state, narrows the bracket to voltage_tolerance.
 //
 // For a lumped parallel-plate actuator (spring k, area A, gap g0 over a dielectric t_d, eps_r,
 // contact gap g_c) the contact equilibrium k (g0 - g) = A V^2 (p1(g) - p_c) exists down to
@@ -48,10 +48,20 @@ struct QuasiStaticPullOut {
   std::vector<Real> state;    // the structure at the pull-out voltage
 };
 
-// guess: a deflected structure (e.g. the quasi-static fold state); it is scaled so that the
-// control unknown presses the dielectric before the first solve. control: the index of y_c.
-// The actuation must have a contact penalty; its voltage function is overwritten.
+// contact_state: the structure's unknowns (its first size() entries are read) resting on the
+// dielectric near start_voltage. control: the index of y_c. The actuation must have a contact
+// penalty; its voltage function is overwritten.
 QuasiStaticPullOut trace_pull_out(ParallelPlateActuation& actuation, Index control,
-                                  std::span<const Real> guess, const PullOutOptions& options);
+                                  std::span<const Real> contact_state, const PullOutOptions& options);
+
+// A state on the dielectric at `voltage` from a displacement-controlled guess (structure
+// unknowns, then V^2; e.g. the quasi-static fold state): displacement control until the control
+// unknown presses half a penetration in, then voltage control up to `voltage` in steps of
+// 1/step_ratio. Works where the contact branch from the touching point rises in V to `voltage`
+// (a lumped actuator); a membrane's folds first (SolverError), so a switch study takes its
+// contact state from the dynamic approach instead.
+std::vector<Real> press_onto_dielectric(ParallelPlateActuation& actuation, Index control,
+                                        std::span<const Real> guess, Real voltage,
+                                        const PullOutOptions& options);
 
 }  // namespace rfmems

@@ -126,7 +126,7 @@ SwitchScene build_switch_scene(const CaseNode& root, const std::string& case_dir
     s.contact.gap = c.get_quantity("gap", Dimension::Length, 0.02 * s.gap,
                                    Range::open(0.0, s.gap));
     s.contact.penetration = c.get_quantity("penetration", Dimension::Length, 0.1 * s.contact.gap,
-                                           Range::open(0.0, s.contact.gap));
+                                           Range{0.0, 0.2 * s.contact.gap, true, false});
     s.actuation->set_contact(s.contact);
   }
   s.film = read_gas(root, s);

@@ -13,8 +13,8 @@
 //                                     # (plates: width = the mesh's extent in y)
 //     contact:                        # optional: the structure can rest on the dielectric
 //       gap: 75 nm                    # air gap at which the surfaces touch (default 2 % of gap)
-//       penetration: 7.5 nm           # penalty's penetration tolerance (default 10 % of the
-//                                     # contact gap; contact_penalty.hpp)
+//       penetration: 7.5 nm           # penalty's penetration tolerance (default 10 %, at most
+//                                     # 20 % of the contact gap; contact_penalty.hpp)
 //     laplace: {gap_cells: 16}        # laplace: cells across the gap mesh
 //
 //   gas:                              # optional (default none): the squeeze film under a plate
