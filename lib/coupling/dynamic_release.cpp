@@ -24,10 +24,11 @@ ReleaseApproach approach_contact(SwitchSystem& system, Index control, const Dyna
   }
   const Real v = release.voltage;
   ReleaseApproach a;
-  a.run = run_dynamic(system, control, [v](Real) { return v; }, o);
+  a.run = run_dynamic(
+      system, control, [v](Real) { return v; }, o);
   if (!a.run.pulled_in)
-    throw SolverError(fmt::format("release: a step to {:.4g} V does not touch down by {:g} s",
-                                  v, o.end_time));
+    throw SolverError(
+        fmt::format("release: a step to {:.4g} V does not touch down by {:g} s", v, o.end_time));
   a.drop = a.run.final_state;
   return a;
 }
@@ -40,7 +41,8 @@ DynamicRun run_hold(SwitchSystem& system, Index control, const DynamicState& dro
   o.stop_after_contact = -1;
   o.end_time = drop.t + release.window;
   o.release_gap = o.contact_gap + release.lift;
-  return run_dynamic(system, control, [hold_voltage](Real) { return hold_voltage; }, o, &drop);
+  return run_dynamic(
+      system, control, [hold_voltage](Real) { return hold_voltage; }, o, &drop);
 }
 
 DynamicPullOut find_dynamic_pull_out(SwitchSystem& system, Index control, const DynamicState& drop,
@@ -58,12 +60,13 @@ DynamicPullOut find_dynamic_pull_out(SwitchSystem& system, Index control, const 
   };
   DynamicRun at_low = run_at(low);
   if (!at_low.released)
-    throw SolverError(fmt::format("dynamic pull-out: a hold at {:.4g} V does not release within "
-                                  "{:g} s (lower the bracket or lengthen the window)",
-                                  low, release.window));
+    throw SolverError(
+        fmt::format("dynamic pull-out: a hold at {:.4g} V does not release within "
+                    "{:g} s (lower the bracket or lengthen the window)",
+                    low, release.window));
   if (run_at(high).released)
-    throw SolverError(fmt::format("dynamic pull-out: a hold at {:.4g} V releases (raise the bracket)",
-                                  high));
+    throw SolverError(
+        fmt::format("dynamic pull-out: a hold at {:.4g} V releases (raise the bracket)", high));
   while (high - low > tolerance) {
     const Real mid = 0.5 * (low + high);
     DynamicRun run = run_at(mid);

@@ -17,16 +17,16 @@
 namespace rfmems {
 
 struct ReleaseOptions {
-  Real voltage = 0;      // [V] the step that pulls the switch in
-  Real delay = 0;        // [s] the drop, this long after touch-down...
-  Real drop_time = -1;   // [s] ...or at this time (>= 0)
-  Real window = 0;       // [s] a hold that has not released by drop + window holds
-  Real lift = 0;         // [m] released when the smallest gap exceeds contact_gap + lift
+  Real voltage = 0;     // [V] the step that pulls the switch in
+  Real delay = 0;       // [s] the drop, this long after touch-down...
+  Real drop_time = -1;  // [s] ...or at this time (>= 0)
+  Real window = 0;      // [s] a hold that has not released by drop + window holds
+  Real lift = 0;        // [m] released when the smallest gap exceeds contact_gap + lift
 };
 
 struct ReleaseApproach {
-  DynamicRun run;        // the approach (history; pull-in time)
-  DynamicState drop;     // the state at the drop
+  DynamicRun run;     // the approach (history; pull-in time)
+  DynamicState drop;  // the state at the drop
 };
 
 // base: the dynamic options (IDA, contact gap, output interval); the system's actuation must

@@ -16,9 +16,9 @@
 // -V^2 A_e p1(g_c) phi(s_e) n_e and the diagonal +V^2 A_e p1(g_c) phi'(s_e)/delta, so the
 // structure can rest on the dielectric and the exact tangent includes the contact stiffness.
 //
-// Without contact, a gap that closes to g_e <= 0 (electrical gap) raises RecoverableError: IDA retries with a
-// smaller step, KINSOL backtracks; without contact a run that really touches down is stopped
-// before by the contact root (see dynamic_pull_in.hpp).
+// Without contact, a gap that closes to g_e <= 0 (electrical gap) raises RecoverableError: IDA
+// retries with a smaller step, KINSOL backtracks; without contact a run that really touches down is
+// stopped before by the contact root (see dynamic_pull_in.hpp).
 #pragma once
 #include <algorithm>
 #include <functional>
@@ -110,7 +110,7 @@ class ParallelPlateActuation : public SecondOrderOperator {
   Real gap0_;
   ParallelPlateLaw law_;
   ContactPenalty contact_;
-  Real p1_contact_ = 0;   // p1(g_c)
+  Real p1_contact_ = 0;    // p1(g_c)
   Real linear_below_ = 0;  // g_c - kLinearBelow delta
   std::function<Real(Real)> voltage_squared_;
   std::vector<Index> diagonal_position_;  // per element: value index of (dof, dof)

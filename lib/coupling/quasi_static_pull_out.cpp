@@ -22,7 +22,9 @@ struct ContactSolver {
   KinsolSolver solver;
   long solves = 0, newton = 0;
   ContactSolver(ParallelPlateActuation& a, const PullOutOptions& options)
-      : act(a), system(a), tolerance(options.newton_tolerance * stiffness_scale(a) * a.initial_gap()),
+      : act(a),
+        system(a),
+        tolerance(options.newton_tolerance * stiffness_scale(a) * a.initial_gap()),
         solver(system, [&] {
           KinsolOptions kin;
           kin.max_iterations = options.max_newton_iterations;
@@ -65,8 +67,9 @@ std::vector<Real> press_onto_dielectric(ParallelPlateActuation& act, Index contr
   const Index n = act.size();
   const ContactPenalty& contact = act.contact();
   if (guess.size() != static_cast<std::size_t>(n + 1) || guess[control] >= 0)
-    throw std::logic_error("press_onto_dielectric: the guess must be a displacement-controlled "
-                           "state (structure, V^2) deflected towards the electrode");
+    throw std::logic_error(
+        "press_onto_dielectric: the guess must be a displacement-controlled "
+        "state (structure, V^2) deflected towards the electrode");
   std::vector<Real> path;
   const Real half = -(act.initial_gap() - contact.gap + 0.5 * contact.penetration);
   for (int k = 1; k <= 12; ++k) path.push_back(guess[control] + (half - guess[control]) * k / 12);
@@ -86,16 +89,18 @@ std::vector<Real> press_onto_dielectric(ParallelPlateActuation& act, Index contr
       v = next;
       ratio = std::min(1 / options.step_ratio, 1 + 2 * (ratio - 1));
     } else if ((ratio = 1 + 0.5 * (ratio - 1)) < 1 + 1e-3) {
-      throw SolverError(fmt::format("pull-out: no equilibrium in contact reached at {:.4g} V "
-                                    "(the contact branch from the touching point folds at {:.4g} V)",
-                                    voltage, v));
+      throw SolverError(
+          fmt::format("pull-out: no equilibrium in contact reached at {:.4g} V "
+                      "(the contact branch from the touching point folds at {:.4g} V)",
+                      voltage, v));
     }
   }
   return state;
 }
 
 QuasiStaticPullOut trace_pull_out(ParallelPlateActuation& act, Index control,
-                                  std::span<const Real> contact_state, const PullOutOptions& options) {
+                                  std::span<const Real> contact_state,
+                                  const PullOutOptions& options) {
   check_contact(act, options.start_voltage);
   const Index n = act.size();
   ContactSolver cs(act, options);
@@ -115,9 +120,10 @@ QuasiStaticPullOut trace_pull_out(ParallelPlateActuation& act, Index control,
   Real v = options.start_voltage;
   if (!solve(v, std::vector<Real>(contact_state.begin(), contact_state.begin() + n), state,
              iterations))
-    throw SolverError(fmt::format("pull-out: no equilibrium in contact at {:.4g} V from the given "
-                                  "state",
-                                  v));
+    throw SolverError(
+        fmt::format("pull-out: no equilibrium in contact at {:.4g} V from the given "
+                    "state",
+                    v));
   out.branch.push_back(point(v, state, iterations));
   // Descent until the contact equilibrium is lost.
   Real lower = 0;

@@ -25,10 +25,10 @@
 namespace rfmems {
 
 struct PullOutOptions {
-  Real start_voltage = 0;        // [V] a voltage above the pull-in voltage
-  Real step_ratio = 0.9;         // descent V_{k+1} = step_ratio V_k
-  Real voltage_tolerance = 0.01; // [V] on the pull-out voltage
-  Real newton_tolerance = 1e-10; // KINSOL: ||F||_inf <= this x k_ref g0
+  Real start_voltage = 0;         // [V] a voltage above the pull-in voltage
+  Real step_ratio = 0.9;          // descent V_{k+1} = step_ratio V_k
+  Real voltage_tolerance = 0.01;  // [V] on the pull-out voltage
+  Real newton_tolerance = 1e-10;  // KINSOL: ||F||_inf <= this x k_ref g0
   int max_newton_iterations = 50;
 };
 
@@ -45,14 +45,15 @@ struct QuasiStaticPullOut {
   Real released_voltage = 0;  // the highest found without one (within voltage_tolerance)
   std::vector<ContactBranchPoint> branch;  // in order of decreasing voltage, pull-out last
   long solves = 0, newton_iterations = 0;
-  std::vector<Real> state;    // the structure at the pull-out voltage
+  std::vector<Real> state;  // the structure at the pull-out voltage
 };
 
 // contact_state: the structure's unknowns (its first size() entries are read) resting on the
 // dielectric near start_voltage. control: the index of y_c. The actuation must have a contact
 // penalty; its voltage function is overwritten.
 QuasiStaticPullOut trace_pull_out(ParallelPlateActuation& actuation, Index control,
-                                  std::span<const Real> contact_state, const PullOutOptions& options);
+                                  std::span<const Real> contact_state,
+                                  const PullOutOptions& options);
 
 // A state on the dielectric at `voltage` from a displacement-controlled guess (structure
 // unknowns, then V^2; e.g. the quasi-static fold state): displacement control until the control

@@ -101,10 +101,11 @@ TEST(ContactPullOut, LumpedActuatorClosedForms) {
         l.act, 0, press_onto_dielectric(l.act, 0, in.fold_state, po.start_voltage, po), po);
     const double eps = penetration / kGec;
     error[k] = 1 - out.pull_out_voltage / kPullOut;
-    std::printf("delta = g_c/%.0f: V_PI %.5f V (closed form %.5f), V_PO %.6f V (closed form "
-                "%.6f, relative error %.3e, eps^2/2 = %.3e), %ld solves\n",
-                kContactGap / penetration, in.pull_in_voltage, kPullIn, out.pull_out_voltage,
-                kPullOut, error[k], eps * eps / 2, out.solves);
+    std::printf(
+        "delta = g_c/%.0f: V_PI %.5f V (closed form %.5f), V_PO %.6f V (closed form "
+        "%.6f, relative error %.3e, eps^2/2 = %.3e), %ld solves\n",
+        kContactGap / penetration, in.pull_in_voltage, kPullIn, out.pull_out_voltage, kPullOut,
+        error[k], eps * eps / 2, out.solves);
     EXPECT_GT(error[k], 0.0);  // the penalty lowers V_PO
     EXPECT_LT(error[k], 1.2 * eps * eps / 2);
     EXPECT_LT(out.pull_out_voltage - out.released_voltage, 2e-6);
@@ -144,10 +145,11 @@ TEST(ContactPullOut, LumpedDynamicReleaseConvergesToStatic) {
     const DynamicPullOut d =
         find_dynamic_pull_out(system, 0, drop, 0.0, in.pull_in_voltage, tolerance, o, r);
     excess[k] = 0.5 * (d.released + d.voltage) / out.pull_out_voltage - 1;
-    std::printf("delta = g_c/%.0f: dynamic pull-out (%.3f, %.3f] V against quasi-static %.4f V "
-                "(%.2f %% above); %d runs\n",
-                kContactGap / penetration, d.released, d.voltage, out.pull_out_voltage,
-                100 * excess[k], d.runs);
+    std::printf(
+        "delta = g_c/%.0f: dynamic pull-out (%.3f, %.3f] V against quasi-static %.4f V "
+        "(%.2f %% above); %d runs\n",
+        kContactGap / penetration, d.released, d.voltage, out.pull_out_voltage, 100 * excess[k],
+        d.runs);
     EXPECT_GT(d.released, out.pull_out_voltage);
     EXPECT_LE(d.voltage - d.released, tolerance);
     // Far below V_PO the spring alone lifts the mass: x(t) = x0 cos(w t) from x0 (the penalty
