@@ -5,7 +5,10 @@
 //                 KINSOL, stable and unstable branches): the static pull-in voltage;
 //   dynamic:      a step voltage from rest under IDA with contact and turning-point roots;
 //                 the dynamic pull-in voltage by bisection, the pull-in time, and the
-//                 histories at voltages around it.
+//                 histories at voltages around it;
+//   with actuation.contact: the quasi-static pull-out voltage, and (pull_in.release) the drop
+//                 to a hold voltage after touch-down, the release time, and the dynamic
+//                 pull-out voltage by bisection on the hold.
 //
 // Sample runs:
 //   rfmems-pullin cases/switch_plate/case.yaml                  # dynamic, prints V_PI and t_PI
@@ -76,11 +79,29 @@ int run(const DriverOptions& options) {
                 summary["pull_in"]["electrostatics"].get<std::string>().c_str(),
                 qs.pull_in_voltage, qs.pull_in_displacement * 1e6,
                 -100 * qs.pull_in_displacement / scene.gap);
+    if (report.has_pull_out)
+      std::printf("  quasi-static pull-out at %.2f V (resting on the dielectric over %.1f %% of the "
+                  "electrode just above it)\n",
+                  report.pull_out.pull_out_voltage, 100 * report.pull_out.branch.back().contact_fraction);
     if (report.has_dynamic)
       std::printf("  dynamic pull-in (%s voltage) at %.2f V (%.3f of quasi-static; %.2f V does "
                   "not), pull-in time %.3f us; %d runs\n",
                   report.waveform.c_str(), report.dynamic.voltage, report.dynamic.voltage / qs.pull_in_voltage,
                   report.dynamic.lower, report.dynamic.pull_in_time * 1e6, report.dynamic.runs);
+    if (report.has_release) {
+      const DynamicRun& h = report.hold;
+      std::printf("  release: step to %.2f V, touch-down at %.3f us, drop to %.2f V at %.3f us: %s",
+                  report.release_voltage, report.approach.run.pull_in_time * 1e6,
+                  report.hold_voltage, report.approach.drop.t * 1e6,
+                  h.released ? "released" : "holds");
+      if (h.released) std::printf(" %.3f us later", (h.release_time - report.approach.drop.t) * 1e6);
+      std::printf("\n");
+      if (report.has_dynamic_pull_out)
+        std::printf("  dynamic pull-out at %.2f V (holds; %.2f V releases, %.3f us after the drop); "
+                    "%d runs\n",
+                    report.dynamic_pull_out.voltage, report.dynamic_pull_out.released,
+                    report.dynamic_pull_out.release_time * 1e6, report.dynamic_pull_out.runs);
+    }
     std::printf("wrote %s (%.1f s)\n", writer.path().c_str(), elapsed());
   }
   return 0;

@@ -4,6 +4,9 @@
   <PREFIX>_curve.png     control deflection vs voltage: stable branch, unstable branch, fold
   <PREFIX>_dynamic.png   control deflection vs time for the recorded step voltages (dynamic)
   <PREFIX>_forces.png    electrostatic and gas force vs time for the same runs (dynamic)
+  <PREFIX>_release.png   with pull_in.release: smallest gap and voltage vs time through
+                         touch-down, rest on the dielectric, the drop to the hold voltage and
+                         the release; the contact branch (pull-out) is added to the curve plot
 
 Usage: plot_pullin.py RESULT.h5 [-o PREFIX]     (PREFIX defaults to RESULT without .h5)
 """
@@ -45,6 +48,13 @@ def main():
         v_pi = summary["quasi_static"]["pull_in_voltage"]
         w_pi = -summary["quasi_static"]["pull_in_displacement"] * 1e6
         ax.plot([v_pi], [w_pi], "o", color="k", label=f"fold: V_PI = {v_pi:.2f} V")
+        if "pull_in/contact_branch" in f:
+            branch = f["pull_in/contact_branch"]
+            bv = branch["voltage"][()]
+            bw = -branch["values"][()][:, 0] * 1e6
+            v_po = summary["quasi_static"]["pull_out_voltage"]
+            ax.plot(bv, bw, "-", color="C2", label="in contact (voltage decreasing)")
+            ax.plot([bv[0]], [bw[0]], "s", color="C2", label=f"pull-out: V_PO = {v_po:.2f} V")
         if "dynamic" in summary:
             ax.axvline(summary["dynamic"]["pull_in_voltage"], color="C3", lw=0.8,
                        label=f"dynamic V_PI = {summary['dynamic']['pull_in_voltage']:.2f} V")
@@ -85,6 +95,36 @@ def main():
             plt.close(fig)
             plt.close(fig2)
             written += [prefix + "_dynamic.png", prefix + "_forces.png"]
+
+        if "dynamic/release" in f:
+            rel = summary["dynamic"]["release"]
+            t = f["dynamic/release/time"][()] * 1e6
+            v = f["dynamic/release/values"][()]
+            fig, ax = plt.subplots(figsize=(7, 4.5))
+            ax.plot(t, v[:, 1] * 1e6, color="C0", label="smallest gap")
+            ax.axhline(summary["contact"]["gap"] * 1e6, color="k", lw=0.6, ls=":",
+                       label="contact gap")
+            ax.axvline(rel["pull_in_time"] * 1e6, color="C3", lw=0.8, ls="--", label="touch-down")
+            ax.axvline(rel["drop_time"] * 1e6, color="C1", lw=0.8, ls="--",
+                       label=f"drop to {rel['hold_voltage']:.1f} V")
+            if rel["released"]:
+                ax.axvline((rel["drop_time"] + rel["release_time"]) * 1e6, color="C2", lw=0.8,
+                           ls="--", label="release")
+            ax.set_xlabel("time [µs]")
+            ax.set_ylabel("smallest gap [µm]")
+            ax.grid(True, alpha=0.3)
+            axv = ax.twinx()
+            axv.plot(t, v[:, 5], color="C7", lw=0.8)
+            axv.set_ylabel("voltage [V] (grey)")
+            title = f"step to {rel['voltage']:.1f} V, hold {rel['hold_voltage']:.1f} V"
+            if "pull_out_voltage" in rel:
+                title += f"; dynamic pull-out {rel['pull_out_voltage']:.2f} V"
+            ax.set_title(title, fontsize="medium")
+            ax.legend(fontsize="small", loc="center right")
+            fig.tight_layout()
+            fig.savefig(prefix + "_release.png", dpi=150)
+            plt.close(fig)
+            written.append(prefix + "_release.png")
     print("wrote " + ", ".join(written))
 
 

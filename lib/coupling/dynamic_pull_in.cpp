@@ -10,49 +10,81 @@
 namespace rfmems {
 
 DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(Real)> voltage,
-                       const DynamicOptions& options) {
+                       const DynamicOptions& options, const DynamicState* start) {
   system.actuation().set_voltage_squared([voltage](Real t) {
     const Real v = voltage(t);
     return v * v;
   });
   std::vector<Real> y, yp;
-  system.initial_state(0.0, y, yp);
+  Real t0 = 0;
+  if (start) {
+    t0 = start->t;
+    y = start->y;
+    yp = start->yp;
+  } else {
+    system.initial_state(0.0, y, yp);
+  }
   IdaIntegrator ida(system, options.ida);
-  ida.initialize(0.0, y, yp);
+  ida.initialize(t0, y, yp);
+  const Real span = options.end_time - t0;
   const Real first_output =
-      options.output_interval > 0 ? std::min(options.output_interval, options.end_time)
-                                  : options.end_time;
-  ida.correct_initial_conditions(first_output);
-  ida.set_roots(2, [&](Real, std::span<const Real> yy, std::span<const Real> yyp,
+      t0 + (options.output_interval > 0 ? std::min(options.output_interval, span) : span);
+  try {
+    ida.correct_initial_conditions(first_output);
+  } catch (const SolverError&) {
+    // From a stored state IDACalcIC's line search can stall on a state that is consistent to
+    // round-off already (a stiff contact at rest); IDA's first steps then absorb what is left.
+    if (!start) throw;
+    ida.reinitialize(t0, y, yp);
+  }
+  ida.set_roots(3, [&](Real, std::span<const Real> yy, std::span<const Real> yyp,
                        std::span<Real> g) {
-    g[0] = system.min_gap(yy) - options.contact_gap;
+    const Real gap = system.min_gap(yy);
+    g[0] = gap - options.contact_gap;
     g[1] = system.velocity(yy, yyp, control);
+    g[2] = options.release_gap > 0 ? gap - options.release_gap : 1.0;
   });
 
   DynamicRun run;
   auto sample = [&](Real t) {
     const auto state = ida.y();
+    const Real v = voltage(t);
     run.history.push_back({t, system.displacement(state, control), system.min_gap(state),
-                           system.electrostatic_force(t, state), system.gas_force(state)});
+                           system.electrostatic_force(t, state), system.gas_force(state),
+                           system.contact_force(t, state), v});
   };
-  sample(0.0);
+  sample(t0);
   Real next_output = first_output;
+  Real stop_time = options.end_time;  // moves to touch-down + stop_after_contact
   bool moved_down = false;
   while (true) {
-    const IdaIntegrator::Status status = ida.advance(next_output);
+    const IdaIntegrator::Status status = ida.advance(std::min(next_output, stop_time));
     const Real t = ida.time();
     const auto state = ida.y();
     run.extreme_control = std::min(run.extreme_control, system.displacement(state, control));
     if (system.displacement(state, control) < 0) moved_down = true;
     if (status == IdaIntegrator::Status::Root) {
       const std::vector<int> found = ida.roots_found();
-      if (found[0] != 0) {
+      if (found[0] < 0) {
+        ++run.touch_downs;
+        if (!run.pulled_in) {
+          run.pulled_in = true;
+          run.pull_in_time = t;
+          if (options.stop_at_contact) {
+            sample(t);
+            break;
+          }
+          if (options.stop_after_contact >= 0)
+            stop_time = std::min(options.end_time, t + options.stop_after_contact);
+        }
+      }
+      if (found[2] > 0) {
         sample(t);
-        run.pulled_in = true;
-        run.pull_in_time = t;
+        run.released = true;
+        run.release_time = t;
         break;
       }
-      if (found[1] > 0 && moved_down && run.turning_time == 0) {
+      if (found[1] > 0 && moved_down && run.turning_time == 0 && !run.pulled_in) {
         run.turning_time = t;
         if (options.stop_at_turning) {
           sample(t);
@@ -61,13 +93,15 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
       }
       continue;  // resume towards the same output time
     }
-    if (options.output_interval > 0) sample(t);
-    if (t >= options.end_time * (1 - 1e-12)) break;
+    if (options.output_interval > 0 || t >= stop_time * (1 - 1e-12)) sample(t);
+    if (t >= stop_time * (1 - 1e-12)) break;
     next_output = std::min(options.end_time, t + (options.output_interval > 0
                                                       ? options.output_interval
-                                                      : options.end_time));
+                                                      : options.end_time - t0));
   }
   run.final_time = ida.time();
+  run.final_state = {ida.time(), std::vector<Real>(ida.y().begin(), ida.y().end()),
+                     std::vector<Real>(ida.yp().begin(), ida.yp().end())};
   run.stats = ida.stats();
   return run;
 }

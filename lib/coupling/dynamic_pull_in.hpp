@@ -1,13 +1,23 @@
 // Dynamic pull-in: the transient response of a switch to a voltage waveform, with IDA
 // (adaptive order and step) and two root functions:
 //
-//   contact:  min_gap(y) - contact_gap          falls through 0: touch-down, the run ends and
-//                                                reports the pull-in time;
+//   contact:  min_gap(y) - contact_gap          falls through 0: touch-down, the pull-in time;
+//                                                the run ends, or (with the actuation's
+//                                                contact penalty, stop_at_contact false) goes
+//                                                on with the structure resting on the
+//                                                dielectric;
 //   turning:  velocity of the control unknown    rises through 0 after moving towards the
 //                                                electrode: the structure turned back before
 //                                                touching, so (for a step voltage, undamped or
 //                                                underdamped) it will not pull in; the run ends
-//                                                early unless told to go on (release studies).
+//                                                early unless told to go on (release studies);
+//   release:  min_gap(y) - release_gap           rises through 0 (armed with release_gap > 0):
+//                                                the structure lifted off the dielectric, the
+//                                                run ends and reports the release time.
+//
+// A run can start from a stored state (DynamicState: the state in contact where the voltage
+// drops to a hold value, coupling/dynamic_release.hpp); IDACalcIC then makes the derivatives
+// consistent with the new voltage.
 //
 // The dynamic pull-in voltage is found by bisection on the step voltage between a value that
 // does not pull in and one that does, to a tolerance in volts. Without damping it is ~0.92 of
@@ -23,23 +33,38 @@
 namespace rfmems {
 
 struct DynamicOptions {
-  Real end_time = 0;            // the run gives up (not pulled in) here
+  Real end_time = 0;            // the run gives up (not pulled in) here (absolute time)
   Real contact_gap = 0;         // touch-down when the smallest gap reaches this [m]
   bool stop_at_turning = true;  // end when the control unknown turns back (see above)
+  bool stop_at_contact = true;  // end at touch-down (false: go on in contact; needs a penalty)
+  Real stop_after_contact = -1; // >= 0 (with stop_at_contact false): end this long after
+                                // touch-down (where a release study drops the voltage)
+  Real release_gap = 0;         // > 0: end when the smallest gap rises through this (release)
   Real output_interval = 0;     // > 0: record samples every this much (else only events)
   IdaOptions ida;
 };
 
 struct DynamicSample {
   Real t, control, min_gap, electrostatic_force, gas_force;
+  Real contact_force = 0, voltage = 0;
+};
+
+// The integrator's state at time t (structure and film unknowns, and their derivatives).
+struct DynamicState {
+  Real t = 0;
+  std::vector<Real> y, yp;
 };
 
 struct DynamicRun {
   bool pulled_in = false;
-  Real pull_in_time = 0;        // time of touch-down (pulled_in)
+  Real pull_in_time = 0;        // time of (the first) touch-down (pulled_in)
+  int touch_downs = 0;          // contact root crossings downwards (bounces count again)
+  bool released = false;
+  Real release_time = 0;        // time of lift-off (released)
   Real turning_time = 0;        // time of the first turning point (0: none)
   Real extreme_control = 0;     // the control unknown's most negative value
   Real final_time = 0;
+  DynamicState final_state;
   IntegratorStats stats;
   std::vector<DynamicSample> history;
 };
@@ -58,8 +83,9 @@ struct FreeResponse {
 FreeResponse free_response(const std::vector<DynamicSample>& history);
 
 // `voltage(t)` [V] is installed into the system's actuation; control indexes the structure.
+// From rest at t = 0, or from `start`.
 DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(Real)> voltage,
-                       const DynamicOptions& options);
+                       const DynamicOptions& options, const DynamicState* start = nullptr);
 
 struct DynamicPullIn {
   Real voltage = 0;             // the smallest voltage found to pull in (upper bracket end)

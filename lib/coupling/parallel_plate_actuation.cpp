@@ -40,8 +40,18 @@ ParallelPlateActuation::ParallelPlateActuation(SecondOrderOperator& structure,
   }
 }
 
+void ParallelPlateActuation::set_contact(const ContactPenalty& contact) {
+  if (contact.enabled() && (contact.gap <= 0 || contact.gap >= gap0_))
+    throw std::logic_error("ParallelPlateActuation: the contact gap must lie in (0, initial gap)");
+  contact_ = contact;
+  p1_contact_ = contact.enabled() ? law_.pressure_per_volt2(contact.gap) : 0.0;
+  linear_below_ = contact.gap - kLinearBelow * contact.penetration;
+  if (contact.enabled() && law_.electrical_gap(linear_below_) <= 0)
+    throw std::logic_error("ParallelPlateActuation: the penetration is too large for the gap");
+}
+
 void ParallelPlateActuation::check_gap(Real g, std::size_t e) const {
-  if (law_.electrical_gap(g) <= 0)
+  if (!contact_.enabled() && law_.electrical_gap(g) <= 0)
     throw RecoverableError(fmt::format("parallel-plate gap closed (g = {:.3e} m at element {})", g, e));
 }
 
@@ -53,7 +63,7 @@ void ParallelPlateActuation::internal_residual(Real t, std::span<const Real> y,
   for (std::size_t e = 0; e < elements_.size(); ++e) {
     const Real g = gap(y, e);
     check_gap(g, e);
-    r[elements_[e].dof] += v2 * elements_[e].area * law_.pressure_per_volt2(g);
+    r[elements_[e].dof] += v2 * elements_[e].area * net_pressure_per_volt2(g);
   }
 }
 
@@ -64,8 +74,7 @@ void ParallelPlateActuation::stiffness(Real t, std::span<const Real> y, std::spa
   for (std::size_t e = 0; e < elements_.size(); ++e) {
     const Real g = gap(y, e);
     check_gap(g, e);
-    values[diagonal_position_[e]] +=
-        v2 * elements_[e].area * law_.pressure_per_volt2_derivative(g);
+    values[diagonal_position_[e]] += v2 * elements_[e].area * net_pressure_per_volt2_derivative(g);
   }
 }
 
@@ -75,7 +84,7 @@ void ParallelPlateActuation::residual_per_volt2(std::span<const Real> y,
   for (std::size_t e = 0; e < elements_.size(); ++e) {
     const Real g = gap(y, e);
     check_gap(g, e);
-    out[elements_[e].dof] += elements_[e].area * law_.pressure_per_volt2(g);
+    out[elements_[e].dof] += elements_[e].area * net_pressure_per_volt2(g);
   }
 }
 
@@ -88,8 +97,29 @@ Real ParallelPlateActuation::min_gap(std::span<const Real> y) const {
 Real ParallelPlateActuation::total_force(Real voltage_squared, std::span<const Real> y) const {
   Real f = 0;
   for (std::size_t e = 0; e < elements_.size(); ++e)
-    f -= voltage_squared * elements_[e].area * law_.pressure_per_volt2(gap(y, e));
+    f -= voltage_squared * elements_[e].area * electrostatic_per_volt2(gap(y, e));
   return f;
+}
+
+}  // namespace rfmems
+
+namespace rfmems {
+
+Real ParallelPlateActuation::contact_force(Real voltage_squared, std::span<const Real> y) const {
+  Real f = 0;
+  for (std::size_t e = 0; e < elements_.size(); ++e)
+    f += voltage_squared * elements_[e].area * contact_.pressure_per_volt2(gap(y, e), p1_contact_);
+  return f;
+}
+
+Real ParallelPlateActuation::contact_fraction(std::span<const Real> y) const {
+  if (!contact_.enabled()) return 0.0;
+  Real touching = 0, total = 0;
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    total += elements_[e].area;
+    if (gap(y, e) < contact_.gap) touching += elements_[e].area;
+  }
+  return total > 0 ? touching / total : 0.0;
 }
 
 }  // namespace rfmems

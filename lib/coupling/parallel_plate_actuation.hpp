@@ -11,14 +11,21 @@
 // structure's stiffness. The coupling is monolithic and local: one Newton step of a static
 // solve or an IDA step sees the exact tangent.
 //
-// A gap that closes to g_e <= 0 (electrical gap) raises RecoverableError: IDA retries with a
-// smaller step, KINSOL backtracks; a run that really touches down is stopped before by the
-// contact root (see pull_in.hpp).
+// With a contact penalty (contact_penalty.hpp) each element also carries the contact pressure
+// p_c(g, V) = V^2 p1(g_c) phi((g_c - g)/delta), opening: the residual adds
+// -V^2 A_e p1(g_c) phi(s_e) n_e and the diagonal +V^2 A_e p1(g_c) phi'(s_e)/delta, so the
+// structure can rest on the dielectric and the exact tangent includes the contact stiffness.
+//
+// Without contact, a gap that closes to g_e <= 0 (electrical gap) raises RecoverableError: IDA
+// retries with a smaller step, KINSOL backtracks; without contact a run that really touches down is
+// stopped before by the contact root (see dynamic_pull_in.hpp).
 #pragma once
+#include <algorithm>
 #include <functional>
 #include <vector>
 
 #include "core/system_operator.hpp"
+#include "coupling/contact_penalty.hpp"
 #include "physics/electrostatics/parallel_plate.hpp"
 #include "physics/structure/structural_model.hpp"
 
@@ -41,6 +48,10 @@ class ParallelPlateActuation : public SecondOrderOperator {
   ParallelPlateActuation(SecondOrderOperator& structure, std::vector<GapElement> elements,
                          Real initial_gap, ParallelPlateLaw law);
 
+  // Contact with the dielectric (default: none).
+  void set_contact(const ContactPenalty& contact);
+  const ContactPenalty& contact() const { return contact_; }
+
   // V(t)^2 [V^2]; zero until set.
   void set_voltage_squared(std::function<Real(Real t)> v2) { voltage_squared_ = std::move(v2); }
   Real voltage_squared(Real t) const { return voltage_squared_ ? voltage_squared_(t) : 0.0; }
@@ -51,13 +62,18 @@ class ParallelPlateActuation : public SecondOrderOperator {
   void stiffness(Real t, std::span<const Real> y, std::span<Real> values) override;
   std::vector<Real> mass_diagonal() const override { return structure_.mass_diagonal(); }
 
-  // d(residual)/d(V^2) = sum_e A_e p1(g_e) n_e (the force per V^2, with the residual's sign).
+  // d(residual)/d(V^2) = sum_e A_e (p1(g_e) - p_c(g_e)/V^2) n_e (the force per V^2, with the
+  // residual's sign).
   void residual_per_volt2(std::span<const Real> y, std::span<Real> out) const;
   // Air gap of element e, the smallest over the elements, and the electrostatic force along
   // the gap axis summed over the elements (negative: closing) at V^2.
   Real gap(std::span<const Real> y, std::size_t e) const { return gap0_ + y[elements_[e].dof]; }
   Real min_gap(std::span<const Real> y) const;
   Real total_force(Real voltage_squared, std::span<const Real> y) const;
+  // The contact force along the gap axis summed over the elements (positive: opening) at V^2,
+  // and the fraction of the electrode's area in contact (g_e < g_c).
+  Real contact_force(Real voltage_squared, std::span<const Real> y) const;
+  Real contact_fraction(std::span<const Real> y) const;
 
   const std::vector<GapElement>& elements() const { return elements_; }
   Real initial_gap() const { return gap0_; }
@@ -66,11 +82,36 @@ class ParallelPlateActuation : public SecondOrderOperator {
 
  private:
   void check_gap(Real g, std::size_t e) const;
+  // Electrostatic pressure per V^2 at air gap g, and its derivative: the parallel-plate law,
+  // continued linearly (C^1) below g_c - kLinearBelow delta when there is contact, so that the
+  // residual is defined for every Newton iterate and, with the penalty's slope there
+  // (2 p1(g_c)/delta > |p1'|), monotone deep inside the dielectric.
+  static constexpr Real kLinearBelow = 5;
+  Real electrostatic_per_volt2(Real g) const {
+    if (contact_.enabled() && g < linear_below_)
+      return law_.pressure_per_volt2(linear_below_) +
+             law_.pressure_per_volt2_derivative(linear_below_) * (g - linear_below_);
+    return law_.pressure_per_volt2(g);
+  }
+  Real electrostatic_per_volt2_derivative(Real g) const {
+    return law_.pressure_per_volt2_derivative(contact_.enabled() ? std::max(g, linear_below_) : g);
+  }
+  // Net pressure per V^2 (electrostatic minus contact) at air gap g, and its derivative.
+  Real net_pressure_per_volt2(Real g) const {
+    return electrostatic_per_volt2(g) - contact_.pressure_per_volt2(g, p1_contact_);
+  }
+  Real net_pressure_per_volt2_derivative(Real g) const {
+    return electrostatic_per_volt2_derivative(g) -
+           contact_.pressure_per_volt2_derivative(g, p1_contact_);
+  }
 
   SecondOrderOperator& structure_;
   std::vector<GapElement> elements_;
   Real gap0_;
   ParallelPlateLaw law_;
+  ContactPenalty contact_;
+  Real p1_contact_ = 0;    // p1(g_c)
+  Real linear_below_ = 0;  // g_c - kLinearBelow delta
   std::function<Real(Real)> voltage_squared_;
   std::vector<Index> diagonal_position_;  // per element: value index of (dof, dof)
 };

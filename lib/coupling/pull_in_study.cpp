@@ -25,8 +25,14 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
   if (!s.dynamic && !node.has("dynamic")) return s;
   const CaseNode dyn = node.child("dynamic");
   s.run.end_time = dyn.get_quantity("end_time", Dimension::Time, Range::positive());
-  s.run.contact_gap = dyn.get_quantity("contact_gap", Dimension::Length, 0.02 * scene.gap,
-                                       Range{0.0, scene.gap, false, true});
+  if (scene.contact.enabled()) {
+    dyn.require(!dyn.has("contact_gap"), "contact_gap",
+                "with actuation.contact the touch-down is at actuation.contact.gap");
+    s.run.contact_gap = scene.contact.gap;
+  } else {
+    s.run.contact_gap = dyn.get_quantity("contact_gap", Dimension::Length, 0.02 * scene.gap,
+                                         Range{0.0, scene.gap, false, true});
+  }
   s.run.output_interval = dyn.get_quantity("output_interval", Dimension::Time,
                                            s.run.end_time / 500, Range::positive());
   if (dyn.has("bracket")) {
@@ -52,6 +58,32 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
       s.waveform.release_time = w.get_quantity("release_time", Dimension::Time, Range::positive());
       s.waveform.hold_fraction = w.get_real("hold", 0.0, Range::closed(0.0, 1.0));
     }
+  }
+
+  if (node.has("release")) {
+    const CaseNode r = node.child("release");
+    if (!scene.contact.enabled())
+      node.fail("release", "a release needs the contact model (actuation.contact)");
+    s.release = true;
+    ReleaseOptions& o = s.release_options;
+    s.hold_voltage = r.get_quantity("hold_voltage", Dimension::Voltage, Range::non_negative());
+    o.voltage = r.get_quantity("voltage", Dimension::Voltage, 0.0, Range::positive());
+    r.require(!(r.has("delay") && r.has("time")), "time", "give either delay or time");
+    o.delay = r.get_quantity("delay", Dimension::Time, 2e-6, Range::non_negative());
+    o.drop_time = r.get_quantity("time", Dimension::Time, -1.0, Range::positive());
+    o.window = r.get_quantity("window", Dimension::Time, 20e-6, Range::positive());
+    o.lift = r.get_quantity("lift", Dimension::Length, 0.05 * scene.gap,
+                            Range::open(0.0, scene.gap - scene.contact.gap));
+    s.release_tolerance = r.get_quantity("tolerance", Dimension::Voltage, 0.5, Range::non_negative());
+    if (r.has("bracket")) {
+      const std::vector<Real> b = r.get_quantities("bracket", Dimension::Voltage);
+      r.require(b.size() == 2 && 0 <= b[0] && b[0] < b[1], "bracket",
+                "expected [low, high] with 0 <= low < high");
+      s.release_bracket_low = b[0];
+      s.release_bracket_high = b[1];
+    }
+    r.require(o.voltage == 0 || s.hold_voltage < o.voltage, "hold_voltage",
+              "the hold must be below the voltage that pulls in");
   }
 
   const CaseNode solver = root.child_or_empty("solver");
@@ -84,10 +116,12 @@ void write_history(ResultWriter& writer, const std::string& name, const DynamicR
   std::vector<std::vector<double>> values;
   for (const DynamicSample& s : run.history) {
     t.push_back(s.t);
-    values.push_back({s.control, s.min_gap, s.electrostatic_force, s.gas_force});
+    values.push_back({s.control, s.min_gap, s.electrostatic_force, s.gas_force, s.contact_force,
+                      s.voltage});
   }
   writer.write_time_series("dynamic", name, t, values,
-                           {"control", "min_gap", "electrostatic_force", "gas_force"});
+                           {"control", "min_gap", "electrostatic_force", "gas_force",
+                            "contact_force", "voltage"});
 }
 
 }  // namespace
@@ -128,6 +162,7 @@ PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& setting
     DynamicRun run = run_dynamic(system, scene.control, settings.waveform.at(v), [&] {
       DynamicOptions o = settings.run;
       o.stop_at_turning = false;  // the whole history up to end_time (or touch-down)
+      o.stop_at_contact = !scene.contact.enabled();  // with contact: resting on the dielectric
       return o;
     }());
     write_history(writer, fmt::format("V{}", k), run);
@@ -141,6 +176,46 @@ PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& setting
     write_history(writer, "small_signal", run);
     report.small_signal_voltage = v;
     report.small_signal = free_response(run.history);
+  }
+  if (settings.release) {
+    ReleaseOptions r = settings.release_options;
+    if (r.voltage == 0) r.voltage = 1.03 * report.dynamic.voltage;
+    if (settings.hold_voltage >= r.voltage)
+      throw InputError(fmt::format("pull_in.release.hold_voltage = {:.4g} V must be below the "
+                                   "voltage that pulls in ({:.4g} V)",
+                                   settings.hold_voltage, r.voltage));
+    report.release_voltage = r.voltage;
+    report.hold_voltage = settings.hold_voltage;
+    report.approach = approach_contact(system, scene.control, settings.run, r);
+    // The quasi-static pull-out: the contact equilibrium from the pulled-in state down.
+    PullOutOptions po;
+    po.start_voltage = r.voltage;
+    po.voltage_tolerance = settings.quasi_static.voltage_tolerance;
+    report.pull_out = trace_pull_out(*scene.actuation, scene.control, report.approach.drop.y, po);
+    report.has_pull_out = true;
+    std::vector<Real> v;
+    std::vector<std::vector<double>> branch;
+    for (auto it = report.pull_out.branch.rbegin(); it != report.pull_out.branch.rend(); ++it) {
+      v.push_back(it->voltage);
+      branch.push_back({it->control, it->min_gap, it->contact_fraction});
+    }
+    writer.write_time_series("pull_in", "contact_branch", v, branch,
+                             {"control", "min_gap", "contact_fraction"}, "voltage");
+    report.hold = run_hold(system, scene.control, report.approach.drop, settings.hold_voltage,
+                           settings.run, r);
+    DynamicRun both = report.approach.run;
+    both.history.insert(both.history.end(), report.hold.history.begin(), report.hold.history.end());
+    write_history(writer, "release", both);
+    report.has_release = true;
+    if (settings.release_tolerance > 0) {
+      const Real high = settings.release_bracket_high > 0
+                            ? settings.release_bracket_high
+                            : std::min(r.voltage, 2 * report.pull_out.pull_out_voltage);
+      report.dynamic_pull_out = find_dynamic_pull_out(
+          system, scene.control, report.approach.drop, settings.release_bracket_low, high,
+          settings.release_tolerance, settings.run, r);
+      report.has_dynamic_pull_out = true;
+    }
   }
   return report;
 }
@@ -157,6 +232,17 @@ Json pull_in_summary(const SwitchScene& scene, const PullInReport& report) {
                        {"solves", qs.solves},
                        {"newton_iterations", qs.newton_iterations}};
   if (report.laplace_solves > 0) j["quasi_static"]["laplace_solves"] = report.laplace_solves;
+  if (report.has_pull_out) {
+    const QuasiStaticPullOut& po = report.pull_out;
+    j["contact"] = {{"gap", scene.contact.gap}, {"penetration", scene.contact.penetration}};
+    j["quasi_static"]["pull_out_voltage"] = po.pull_out_voltage;
+    j["quasi_static"]["pull_out"] = {{"voltage", po.pull_out_voltage},
+                                     {"released_voltage", po.released_voltage},
+                                     {"contact_fraction", po.branch.back().contact_fraction},
+                                     {"branch_points", po.branch.size()},
+                                     {"solves", po.solves},
+                                     {"newton_iterations", po.newton_iterations}};
+  }
   if (report.has_dynamic) {
     const DynamicPullIn& d = report.dynamic;
     j["dynamic"] = {{"pull_in_voltage", d.voltage},
@@ -177,6 +263,26 @@ Json pull_in_summary(const SwitchScene& scene, const PullInReport& report) {
                            {"extreme_control", run.extreme_control},
                            {"steps", run.stats.steps}});
     j["dynamic"]["histories"] = histories;
+    if (report.has_release) {
+      const DynamicRun& a = report.approach.run;
+      const DynamicRun& h = report.hold;
+      Json r = {{"voltage", report.release_voltage},
+                {"hold_voltage", report.hold_voltage},
+                {"pull_in_time", a.pull_in_time},
+                {"drop_time", report.approach.drop.t},
+                {"released", h.released},
+                {"release_time", h.released ? h.release_time - report.approach.drop.t : 0.0},
+                {"steps", a.stats.steps + h.stats.steps}};
+      if (report.has_dynamic_pull_out) {
+        const DynamicPullOut& d = report.dynamic_pull_out;
+        r["pull_out_voltage"] = d.voltage;
+        r["releasing"] = d.released;
+        r["release_time_at_releasing"] = d.release_time;
+        r["runs"] = d.runs;
+        r["ratio_to_quasi_static"] = d.voltage / report.pull_out.pull_out_voltage;
+      }
+      j["dynamic"]["release"] = r;
+    }
     if (report.small_signal_voltage > 0)
       j["dynamic"]["small_signal"] = {{"voltage", report.small_signal_voltage},
                                       {"damping_ratio", report.small_signal.damping_ratio},

@@ -20,9 +20,23 @@
 //       small_signal: 0.3             # a step to this fraction of the quasi-static V_PI,
 //                                     # recorded to end_time: damping ratio and frequency of
 //                                     # the free response (0: none; default 0.3)
+//     release:                        # optional, needs actuation.contact: after touch-down the
+//                                     # voltage drops to a hold value (coupling/dynamic_release.hpp)
+//       hold_voltage: 10 V            # the hold whose history is recorded
+//       voltage: 180 V                # the step that pulls in (default 1.03 x the dynamic V_PI)
+//       delay: 2 us                   # the drop, after touch-down (default 2 us), or
+//       time: 20 us                   #   at this time
+//       window: 20 us                 # a hold not released by drop + window holds (default 20 us)
+//       lift: 0.19 um                 # released: the smallest gap above contact gap + lift
+//                                     # (default 5 % of the gap)
+//       tolerance: 0.5 V              # bisection on the hold: the dynamic pull-out (0: none)
+//       bracket: [0 V, 40 V]          # default [0, min(voltage, 2 x the quasi-static pull-out)]
 //   solver:                           # dynamic runs (IDA): rtol (default 1e-3), atol (default
 //     rtol: 1e-3                      # 1e-4 x the gap) and max_order (default 2)
 //
+// With actuation.contact dynamic histories go on in contact after touch-down, and a release
+// study also finds the quasi-static pull-out voltage on the contact branch from the pulled-in
+// state of its approach (quasi_static_pull_out.hpp).
 // Quasi-static: parallel_plate scenes by KINSOL under displacement control
 // (quasi_static_pull_in.hpp), laplace scenes by the strongly coupled iteration
 // (laplace_pull_in.hpp). Dynamic: parallel_plate only (a laplace scene's dynamic study uses its
@@ -32,7 +46,9 @@
 #include <vector>
 
 #include "coupling/dynamic_pull_in.hpp"
+#include "coupling/dynamic_release.hpp"
 #include "coupling/quasi_static_pull_in.hpp"
+#include "coupling/quasi_static_pull_out.hpp"
 #include "coupling/switch_scene.hpp"
 #include "io/json_summary.hpp"
 #include "io/result_writer.hpp"
@@ -48,6 +64,12 @@ struct PullInSettings {
   std::vector<Real> voltages;         // empty: around the dynamic V_PI
   Real small_signal = 0.3;            // fraction of the quasi-static V_PI (0: none)
   VoltageWaveform waveform;
+  // pull_in.release
+  bool release = false;
+  ReleaseOptions release_options;     // voltage 0: from the dynamic V_PI
+  Real hold_voltage = 0;
+  Real release_tolerance = 0.5;       // 0: no bisection
+  Real release_bracket_low = 0, release_bracket_high = 0;  // high 0: the default
 };
 
 PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& scene);
@@ -61,12 +83,22 @@ struct PullInReport {
   Real small_signal_voltage = 0;
   FreeResponse small_signal;
   long laplace_solves = 0;
+  bool has_pull_out = false;          // the scene has contact
+  QuasiStaticPullOut pull_out;
+  bool has_release = false;
+  ReleaseApproach approach;           // the step before the drop
+  Real release_voltage = 0, hold_voltage = 0;
+  DynamicRun hold;                    // from the drop at hold_voltage
+  bool has_dynamic_pull_out = false;
+  DynamicPullOut dynamic_pull_out;
 };
 
 // Runs the study; writes the fold's fields (index 0), the curve (/pull_in/curve: abscissa
-// control_displacement, values voltage, min_gap, stable) and the histories
-// (/dynamic/V<k>: time; control, min_gap, electrostatic_force, gas_force; the small-signal
-// run is /dynamic/small_signal) into `writer`.
+// control_displacement, values voltage, min_gap, stable), with contact the contact branch
+// (/pull_in/contact_branch: abscissa voltage, values control, min_gap, contact_fraction) and
+// the histories (/dynamic/V<k>: time; control, min_gap, electrostatic_force, gas_force,
+// contact_force, voltage; the small-signal run is /dynamic/small_signal, the release
+// /dynamic/release: the approach and the hold) into `writer`.
 PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& settings,
                                ResultWriter& writer);
 

@@ -63,7 +63,8 @@ class DisplacementControlSystem : public SystemOperator {
   std::vector<Real> k_values_, q_;
 };
 
-// The stiffness scale: the largest diagonal entry of K.
+}  // namespace
+
 Real stiffness_scale(ParallelPlateActuation& act) {
   const CsrPattern& k = act.stiffness_pattern();
   std::vector<Real> values(k.nnz());
@@ -73,8 +74,6 @@ Real stiffness_scale(ParallelPlateActuation& act) {
   for (Index i = 0; i < act.size(); ++i) scale = std::max(scale, std::abs(values[k.find(i, i)]));
   return scale;
 }
-
-}  // namespace
 
 QuasiStaticPullIn trace_fold(const DeltaSolve& solve, const FoldSample& rest, Real gap,
                              const QuasiStaticOptions& options) {
@@ -171,6 +170,32 @@ QuasiStaticPullIn trace_pull_in(ParallelPlateActuation& act, Index control,
   result.solves = solves;
   result.last = last;
   return result;
+}
+
+}  // namespace rfmems
+
+namespace rfmems {
+
+std::vector<Real> follow_displacement(ParallelPlateActuation& act, Index control,
+                                      std::span<const Real> from, const std::vector<Real>& path,
+                                      const QuasiStaticOptions& options) {
+  const Index n = act.size();
+  const Real k_ref = stiffness_scale(act);
+  DisplacementControlSystem system(act, control, k_ref);
+  KinsolOptions kin;
+  kin.max_iterations = options.max_newton_iterations;
+  kin.line_search = true;
+  kin.relative_tolerance = options.newton_tolerance;
+  kin.residual_scale = k_ref * act.initial_gap();
+  KinsolSolver solver(system, kin);
+  std::vector<Real> state(from.begin(), from.end());
+  for (const Real delta : path) {
+    const Real scale = delta / state[control];
+    for (Index i = 0; i < n; ++i) state[i] *= scale;
+    system.set_target(delta);
+    solver.solve(0.0, state);
+  }
+  return state;
 }
 
 }  // namespace rfmems

@@ -49,9 +49,20 @@ struct QuasiStaticPullIn {
   std::vector<Real> fold_state;     // the solver's state at the fold (structure unknowns first)
 };
 
+// The structure's stiffness scale k_ref: the largest diagonal entry of its K at rest.
+Real stiffness_scale(ParallelPlateActuation& actuation);
+
 // control: the index of y_c. The actuation's voltage function is overwritten.
 QuasiStaticPullIn trace_pull_in(ParallelPlateActuation& actuation, Index control,
                                 const QuasiStaticOptions& options = {});
+
+// Displacement control along a path: from `from` (structure unknowns, then V^2; a solved
+// state, its control unknown at from[control]) through each deflection in `path`, every solve
+// starting from the last one scaled to the new deflection. Returns the last state (structure
+// unknowns, then V^2). SolverError if a solve fails.
+std::vector<Real> follow_displacement(ParallelPlateActuation& actuation, Index control,
+                                      std::span<const Real> from, const std::vector<Real>& path,
+                                      const QuasiStaticOptions& options = {});
 
 // The sampling and fold search on their own, for any equilibrium solver under displacement
 // control (the Laplace-coupled one in laplace_pull_in.hpp): `solve(delta, from)` returns the

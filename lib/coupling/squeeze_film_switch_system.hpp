@@ -44,6 +44,7 @@ class SqueezeFilmSwitchSystem : public SwitchSystem {
   }
   Real gas_force(std::span<const Real> y) const override;
   ParallelPlateActuation& actuation() override { return actuation_; }
+  const ParallelPlateActuation& actuation() const override { return actuation_; }
 
  private:
   void film_inputs(std::span<const Real> y, std::span<const Real> yp);

@@ -119,6 +119,16 @@ SwitchScene build_switch_scene(const CaseNode& root, const std::string& case_dir
   act.require(!elements.empty(), "electrode", "no part of the structure lies over the electrode");
   s.actuation = std::make_unique<ParallelPlateActuation>(s.structure->structure(),
                                                          std::move(elements), s.gap, law);
+  if (act.has("contact")) {
+    const CaseNode c = act.child("contact");
+    act.require(s.electrostatics == ElectrostaticsModel::ParallelPlate, "contact",
+                "contact is modelled with the parallel-plate law only");
+    s.contact.gap = c.get_quantity("gap", Dimension::Length, 0.02 * s.gap,
+                                   Range::open(0.0, s.gap));
+    s.contact.penetration = c.get_quantity("penetration", Dimension::Length, 0.1 * s.contact.gap,
+                                           Range{0.0, 0.2 * s.contact.gap, true, false});
+    s.actuation->set_contact(s.contact);
+  }
   s.film = read_gas(root, s);
   return s;
 }

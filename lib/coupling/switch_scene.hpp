@@ -11,6 +11,10 @@
 //     dielectric: {thickness: 0.1 um, permittivity: 7.6}   # parallel_plate, optional
 //     fringing: 0.65                  # parallel_plate, optional first-order fringing factor
 //                                     # (plates: width = the mesh's extent in y)
+//     contact:                        # optional: the structure can rest on the dielectric
+//       gap: 75 nm                    # air gap at which the surfaces touch (default 2 % of gap)
+//       penetration: 7.5 nm           # penalty's penetration tolerance (default 10 %, at most
+//                                     # 20 % of the contact gap; contact_penalty.hpp)
 //     laplace: {gap_cells: 16}        # laplace: cells across the gap mesh
 //
 //   gas:                              # optional (default none): the squeeze film under a plate
@@ -49,6 +53,7 @@ struct SwitchScene {
   Vec3 control_point = Vec3::Zero();
   Index control = -1;             // the controlled unknown
   int laplace_gap_cells = 16;
+  ContactPenalty contact;         // actuation.contact (penetration 0: none)
   std::unique_ptr<ParallelPlateActuation> actuation;  // parallel_plate (also built for laplace
                                                      // scenes: the dynamic model)
   std::unique_ptr<ReynoldsFilm> film;                 // gas: reynolds

@@ -27,6 +27,13 @@ class SwitchSystem : public SystemOperator {
   virtual Real electrostatic_force(Real t, std::span<const Real> y) const = 0;
   virtual Real gas_force(std::span<const Real> /*y*/) const { return 0.0; }
   virtual ParallelPlateActuation& actuation() = 0;
+  virtual const ParallelPlateActuation& actuation() const = 0;
+  // The dielectric's contact force (positive: opening; contact_penalty.hpp) and the fraction
+  // of the electrode's area in contact.
+  Real contact_force(Real t, std::span<const Real> y) const {
+    return actuation().contact_force(actuation().voltage_squared(t), y);
+  }
+  Real contact_fraction(std::span<const Real> y) const { return actuation().contact_fraction(y); }
 };
 
 class ActuatedStructureSystem : public SwitchSystem {
@@ -55,6 +62,7 @@ class ActuatedStructureSystem : public SwitchSystem {
     return actuation_.total_force(actuation_.voltage_squared(t), y);
   }
   ParallelPlateActuation& actuation() override { return actuation_; }
+  const ParallelPlateActuation& actuation() const override { return actuation_; }
 
  private:
   ParallelPlateActuation& actuation_;

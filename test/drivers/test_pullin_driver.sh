@@ -95,6 +95,18 @@ expect_input_error electrode_off "actuation.electrode" "$PLATE" --set "actuation
 expect_input_error gas_plane "gas.model" "$PLANE" --set "gas={model: reynolds, pressure: 1 atm}"
 expect_input_error bad_mode "pull_in.mode" "$PLATE" --set pull_in.mode=static
 expect_input_error ramp_without_rise "rise_time" "$PLATE" --set "pull_in.dynamic.waveform={type: ramp}"
+# Contact and release keys (actuation.contact, pull_in.release): validated before any solve.
+CONTACT="actuation.contact={gap: 75 nm}"
+expect_input_error release_without_contact "pull_in.release" "$PLATE" --set "pull_in.release={hold_voltage: 10 V}"
+expect_input_error contact_laplace "actuation.contact" "$PLANE" --set "$CONTACT"
+expect_input_error contact_gap_too_large "actuation.contact.gap" "$PLATE" --set "actuation.contact={gap: 4 um}"
+expect_input_error penetration_too_large "actuation.contact.penetration" "$PLATE" --set "actuation.contact={gap: 75 nm, penetration: 20 nm}"
+expect_input_error contact_gap_twice "pull_in.dynamic.contact_gap" "$PLATE" --set "$CONTACT" --set "pull_in.dynamic.contact_gap=0.1 um"
+expect_input_error release_missing_hold "pull_in.release.hold_voltage" "$PLATE" --set "$CONTACT" --set "pull_in.release={delay: 1 us}"
+expect_input_error release_unit "pull_in.release.hold_voltage" "$PLATE" --set "$CONTACT" --set "pull_in.release={hold_voltage: 10 us}"
+expect_input_error release_unknown_key "pull_in.release.hold" "$PLATE" --set "$CONTACT" --set "pull_in.release={hold_voltage: 10 V, hold: 3}"
+expect_input_error release_delay_and_time "pull_in.release.time" "$PLATE" --set "$CONTACT" --set "pull_in.release={hold_voltage: 10 V, delay: 1 us, time: 20 us}"
+expect_input_error release_hold_above "pull_in.release.hold_voltage" "$PLATE" --set "$CONTACT" --set "pull_in.release={hold_voltage: 200 V, voltage: 180 V}"
 expect_input_error control_outside "actuation.control" "$PLATE" --set "actuation.control=[1 m, 0 m]"
 
 echo "$failures failure(s)"

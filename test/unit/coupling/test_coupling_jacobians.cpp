@@ -2,7 +2,9 @@
 // parallel-plate force (static adaptor: K + V^2 A p1'(g) on the diagonal) and the monolithic
 // plate + parallel-plate + Reynolds film system for IDA (dF/dY + c_j dF/dY', including the
 // film's gap and gap-rate columns, which point at the plate's w and its velocity), on a
-// deflected plate with a non-uniform film pressure.
+// deflected plate with a non-uniform film pressure; and both again with the actuated cells
+// pressed into the dielectric's contact penalty, whose entries are also checked on their own
+// scale (there a 0.1 % error in them is caught: PerturbedContact).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -118,4 +120,141 @@ TEST(CouplingJacobian, PlateParallelPlateReynoldsMonolithic) {
                 static_cast<long>(system.size()), static_cast<long>(m), check.max_entry_relative,
                 static_cast<long>(check.worst_entry_row), static_cast<long>(check.worst_entry_col));
   }
+}
+
+namespace {
+
+// The contact penalty (contact_penalty.hpp) at g_c = 0.1 gap, delta = g_c/10, with the
+// actuated cells pressed into it at s = 0.3, 0.7, 1.6, 2.4 (both pieces of phi, away from its
+// kinks at 0 and 1 by more than the difference step).
+constexpr double kContactGap = 0.1 * kGap, kPenetration = 0.1 * kContactGap;
+
+void press(const ParallelPlateActuation& act, std::vector<double>& y) {
+  const double s[] = {0.3, 0.7, 1.6, 2.4};
+  for (std::size_t e = 0; e < act.elements().size(); ++e)
+    y[act.elements()[e].dof] = kContactGap - s[e % 4] * kPenetration - kGap;
+}
+
+// The static system with the contact part of each pressed diagonal entry off by 0.1 %: the
+// check of the contact entries below must see it.
+class PerturbedContact : public SystemOperator {
+ public:
+  PerturbedContact(ParallelPlateActuation& act) : act_(act), base_(act) {}
+  Index size() const override { return base_.size(); }
+  std::vector<Real> differential_components() const override {
+    return base_.differential_components();
+  }
+  void residual(Real t, std::span<const Real> y, std::span<const Real> yp,
+                std::span<Real> r) override {
+    base_.residual(t, y, yp, r);
+  }
+  const CsrPattern& jacobian_pattern() const override { return base_.jacobian_pattern(); }
+  void jacobian(Real t, Real c_j, std::span<const Real> y, std::span<const Real> yp,
+                std::span<Real> values) override {
+    base_.jacobian(t, c_j, y, yp, values);
+    const double p1c = act_.law().pressure_per_volt2(kContactGap);
+    for (const GapElement& e : act_.elements()) {
+      const double g = act_.initial_gap() + y[e.dof];
+      const double contact_part = -act_.voltage_squared(t) * e.area *
+                                  act_.contact().pressure_per_volt2_derivative(g, p1c);
+      values[jacobian_pattern().find(e.dof, e.dof)] += 1e-3 * contact_part;
+    }
+  }
+
+ private:
+  ParallelPlateActuation& act_;
+  StaticSystem base_;
+};
+
+}  // namespace
+
+TEST(CouplingJacobian, ContactPenaltyStiffness) {
+  Fixture f;
+  f.act->set_contact({kContactGap, kPenetration});
+  std::mt19937 rng(5);
+  std::vector<double> y = f.deflection(rng);
+  press(*f.act, y);
+  const std::vector<double> yp(y.size(), 0.0);
+  std::vector<double> steps(y.size());
+  for (std::size_t i = 0; i < y.size(); ++i) steps[i] = i % 3 == 0 ? 1e-6 * kGap : 1e-6;
+  StaticSystem system(*f.act);
+  const auto check = test_support::check_jacobian(system, 1e-6, 0.0, y, yp, steps);
+  const double v2 = f.act->voltage_squared(1e-6);
+  std::printf("contact: entry-relative difference %.2e; the force in contact %.3e N\n",
+              check.max_entry_relative, f.act->contact_force(v2, y));
+  EXPECT_GT(f.act->contact_force(v2, y), 0.0);
+  EXPECT_LT(check.max_row_relative, 1e-7);
+  EXPECT_LT(check.max_entry_relative, 1e-4);
+  // The contact entries on their own scale: |J_fd - J| over the contact part of the entry
+  // (the penalty's stiffness is a few % of the plate's diagonal here, so the whole-entry
+  // measure above would let a 0.1 % error in it pass).
+  auto contact_error = [&](SystemOperator& op) {
+    const std::vector<double> values = test_support::analytic_jacobian(op, 1e-6, 0.0, y, yp);
+    const double p1c = f.act->law().pressure_per_volt2(kContactGap);
+    std::vector<double> part(y.size(), 0.0);
+    for (const GapElement& e : f.act->elements())
+      part[e.dof] -= v2 * e.area *
+                     f.act->contact().pressure_per_volt2_derivative(kGap + y[e.dof], p1c);
+    double worst = 0;
+    test_support::for_each_jacobian_entry(
+        op, 1e-6, 0.0, y, yp, steps, values, [&](Index i, Index j, double fd, double an) {
+          if (i == j && part[i] > 0) worst = std::max(worst, std::abs(fd - an) / part[i]);
+        });
+    return worst;
+  };
+  const double good = contact_error(system);
+  PerturbedContact perturbed(*f.act);
+  const double bad = contact_error(perturbed);
+  std::printf("contact entries: error / contact part %.2e; with a 0.1 %% error in them %.2e\n",
+              good, bad);
+  EXPECT_LT(good, 1e-4);
+  EXPECT_GT(bad, 5e-4);
+}
+
+TEST(CouplingJacobian, PlateReynoldsInContactMonolithic) {
+  Fixture f;
+  f.act->set_contact({kContactGap, kPenetration});
+  GasProperties gas;
+  std::vector<FilmBoundary> bcs;
+  for (const Patch& p : f.plate.mesh->patches())
+    bcs.push_back({p.name == "left" || p.name == "right" ? FilmBoundary::Kind::Wall
+                                                         : FilmBoundary::Kind::Open});
+  ReynoldsFilm film(*f.plate.mesh, gas, bcs);
+  std::vector<Index> w_dof;
+  for (Index c = 0; c < film.size(); ++c) w_dof.push_back(3 * c);
+  SqueezeFilmSwitchSystem system(*f.act, f.plate.quasi_static_components(), film, w_dof);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<double> y, yp;
+  system.initial_state(0.0, y, yp);
+  std::vector<double> w = f.deflection(rng);
+  press(*f.act, w);
+  std::copy(w.begin(), w.end(), y.begin());
+  const Index m = system.size() - film.size();
+  const double ambient = gas.ambient_pressure;
+  std::vector<double> steps(y.size()), scales(y.size());
+  for (Index i = 0; i < system.size(); ++i) {
+    if (i >= m) {
+      y[i] = ambient * (1 + 0.2 * u(rng));
+      yp[i] = ambient * 1e5 * u(rng);
+      steps[i] = 1e-6 * ambient;
+      scales[i] = ambient;
+    } else if (i >= static_cast<Index>(w.size())) {
+      y[i] = 0.1 * u(rng);
+      yp[i] = 1e5 * u(rng);
+      steps[i] = 1e3;
+      scales[i] = 0.1;
+    } else {
+      yp[i] = 0.1 * u(rng);
+      steps[i] = i % 3 == 0 ? 1e-6 * kGap : 1e-6;
+      scales[i] = i % 3 == 0 ? kGap : 0.01;
+    }
+  }
+  const auto check = test_support::check_jacobian(system, 1e-6, 3e6, y, yp, steps, scales);
+  std::printf("film + contact: row-relative %.2e (row %ld), entry-relative %.2e (%ld, %ld), "
+              "film from %ld\n",
+              check.max_row_relative, (long)check.worst_row, check.max_entry_relative,
+              (long)check.worst_entry_row, (long)check.worst_entry_col, (long)m);
+  EXPECT_LT(check.max_row_relative, 1e-5);
+  EXPECT_LT(check.max_entry_relative, 1e-4);
 }
