@@ -8,6 +8,7 @@
 
 #include "coupling/pull_in_study.hpp"
 #include "coupling/switch_scene.hpp"
+#include "physics/creep/creep_case.hpp"
 
 namespace rfmems {
 
@@ -207,6 +208,26 @@ ValidityReport switch_scene_validity(const CaseNode &root,
                                            : SceneDescription::Analysis::Static;
   return check_scene_validity(
       describe_switch_scene(scene, thickness, analysis, &report));
+}
+
+ValidityReport creep_case_validity(const CaseNode &root,
+                                   const CreepCase &creep) {
+  SceneDescription s;
+  s.analysis = SceneDescription::Analysis::Creep;
+  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+  for (const Vec3 &x : creep.plate->mesh->nodes()) {
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  s.length = hi.x() - lo.x();
+  s.width = hi.y() - lo.y();
+  s.thickness =
+      root.child("model").get_quantity("thickness", Dimension::Length, 0.0);
+  if (creep.has_gap) {
+    s.gap = creep.initial_gap;
+    s.fringing_factor = root.child("actuation").get_real("fringing", 0.0);
+  }
+  return check_scene_validity(s);
 }
 
 void print_validity_warnings(const std::string &program,

@@ -57,6 +57,7 @@ namespace rfmems {
 
 struct SwitchScene;
 struct PullInReport;
+struct CreepCase;
 
 struct SceneDescription {
   enum class Analysis { Static, Dynamic, Creep };
@@ -130,6 +131,12 @@ SceneDescription describe_switch_scene(const SwitchScene &scene, Real thickness,
 ValidityReport switch_scene_validity(const CaseNode &root,
                                      const SwitchScene &scene,
                                      const PullInReport &report);
+
+// The creep driver's one call: a creep run's plate (creep slenderness
+// criterion) and, with an actuation, its parallel-plate gap (the rest gap:
+// creep runs record no film).
+ValidityReport creep_case_validity(const CaseNode &root,
+                                   const CreepCase &creep);
 
 // Warnings on stderr, "<program>: warning: <text>" one line each.
 void print_validity_warnings(const std::string &program,

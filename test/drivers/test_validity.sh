@@ -5,9 +5,9 @@
 # the JSON summary's `validity`, with no warning; a film at 10 Pa (Kn 184 at rest, beyond
 # Veijola's 880 at the deepest computed gap) and a 45 um thick plate (L/h = 8.9 < 10) print one
 # "rfmems-pullin: warning: ..." line each on stderr, listed in the JSON too; --quiet silences
-# the stderr lines but not the JSON.
+# the stderr lines but not the JSON. rfmems-creep: the plate creep criterion L/h >= 20.
 #
-# Usage: bash test_validity.sh <directory of rfmems-pullin> <source directory>
+# Usage: bash test_validity.sh <directory of the drivers> <source directory>
 set -uo pipefail
 
 DRIVER="$1/rfmems-pullin"
@@ -63,6 +63,25 @@ if "$DRIVER" "$PLATE" --set pull_in.mode=quasi_static --set gas.pressure=10Pa -o
 else
   fail "--quiet: $(cat "$WORK/q.err")"
 fi
+
+# rfmems-creep: the fixed-fixed creep strip (L = 240 um) at h = 4 um (L/h = 60) has no warning;
+# at h = 16 um (L/h = 15 < 20, where the plate's neglected shear creep is 2.5-15 %) one.
+CREEP="$1/rfmems-creep"
+for h in 4 16; do
+  if "$CREEP" "$SRC/cases/creep_fixed_fixed/case.yaml" --set creep.end_time=10h --set creep.outputs=2 \
+      --set "model.thickness=${h}um" -o "$WORK/creep$h.h5" --json >"$WORK/creep$h.json" 2>"$WORK/creep$h.err"; then
+    want=$([ "$h" = 4 ] && echo 0 || echo 1)
+    if [ "$(grep -c "^rfmems-creep: warning: plate creep: L/h = .* below 20" "$WORK/creep$h.err")" -eq "$want" ] &&
+       $PY -c "import json,sys; v=json.load(open(sys.argv[1]))['validity']
+sys.exit(0 if len(v['warnings']) == $want and v['ranges']['length_over_thickness'][0] == 240 / $h else 1)" "$WORK/creep$h.json"; then
+      pass "creep at h = $h um: $want warning(s)"
+    else
+      fail "creep at h = $h um: stderr $(cat "$WORK/creep$h.err"), $(cat "$WORK/creep$h.json")"
+    fi
+  else
+    fail "creep at h = $h um: $(cat "$WORK/creep$h.err")"
+  fi
+done
 
 echo "$failures failure(s)"
 [ "$failures" -eq 0 ]
