@@ -8,7 +8,9 @@
 
 #include "coupling/pull_in_study.hpp"
 #include "coupling/switch_scene.hpp"
+#include "parallel/communicator.hpp"
 #include "physics/creep/creep_case.hpp"
+#include "physics/gas/kinetic/kinetic_case.hpp"
 
 namespace rfmems {
 
@@ -111,13 +113,14 @@ void check_parallel_plate(const SceneDescription &s, ValidityReport &r) {
 void check_kinetic(const SceneDescription::Kinetic &k, ValidityReport &r) {
   // lambda = mu / p sqrt(pi R T / 2), p = rho R T (Bird's hard-sphere mean free
   // path).
-  auto knudsen = [&](Real rho) {
-    const Real p = rho * k.gas_constant * k.temperature;
-    return k.viscosity / p *
-           std::sqrt(M_PI * k.gas_constant * k.temperature / 2) / k.length;
+  auto knudsen = [&](Real rho, Real T, Real mu) {
+    return mu / (rho * k.gas_constant * T) *
+           std::sqrt(M_PI * k.gas_constant * T / 2) / k.length;
   };
   r.ranges.push_back(
-      {"kinetic_knudsen", knudsen(k.density_max), knudsen(k.density_min)});
+      {"kinetic_knudsen",
+       knudsen(k.density_max, k.temperature_min, k.viscosity_min),
+       knudsen(k.density_min, k.temperature_max, k.viscosity_max)});
   const Real needed =
       k.wall_speed + C::kVelocityGridThermalSpeeds *
                          std::sqrt(2 * k.gas_constant * k.wall_temperature);
@@ -227,6 +230,43 @@ ValidityReport creep_case_validity(const CaseNode &root,
     s.gap = creep.initial_gap;
     s.fringing_factor = root.child("actuation").get_real("fringing", 0.0);
   }
+  return check_scene_validity(s);
+}
+
+ValidityReport kinetic_scene_validity(const KineticScene &scene,
+                                      const Communicator &comm) {
+  const KineticOperator &op = *scene.op;
+  SceneDescription s;
+  auto &k = s.kinetic;
+  k.present = true;
+  Real rho_lo = 1e300, rho_hi = 0, t_lo = 1e300, t_hi = 0;
+  for (Index c = 0; c < op.n_owned_cells(); ++c) {
+    const MacroState &m = op.macro(c);
+    rho_lo = std::min(rho_lo, m.rho);
+    rho_hi = std::max(rho_hi, m.rho);
+    t_lo = std::min(t_lo, m.T);
+    t_hi = std::max(t_hi, m.T);
+  }
+  k.density_min = comm.min(rho_lo);
+  k.density_max = comm.max(rho_hi);
+  k.temperature_min = comm.min(t_lo);
+  k.temperature_max = comm.max(t_hi);
+  k.viscosity_min = op.gas().viscosity(k.temperature_min);
+  k.viscosity_max = op.gas().viscosity(k.temperature_max);
+  k.gas_constant = op.gas().R;
+  k.length = scene.reference_length;
+  k.velocity_extent = op.grid().extent.minCoeff();
+  k.wall_temperature =
+      scene.initial.T; // the grid's thermal speed is the initial state's
+  for (const KineticBoundary &b : op.boundaries())
+    if (b.kind == KineticBoundaryKind::DiffuseWall ||
+        b.kind == KineticBoundaryKind::Pressure) {
+      // Both send in a Maxwellian at their temperature (a pressure boundary at
+      // rest).
+      if (b.kind == KineticBoundaryKind::DiffuseWall)
+        k.wall_speed = std::max(k.wall_speed, b.velocity.cwiseAbs().maxCoeff());
+      k.wall_temperature = std::max(k.wall_temperature, b.temperature);
+    }
   return check_scene_validity(s);
 }
 

@@ -58,6 +58,8 @@ namespace rfmems {
 struct SwitchScene;
 struct PullInReport;
 struct CreepCase;
+struct KineticScene;
+class Communicator;
 
 struct SceneDescription {
   enum class Analysis { Static, Dynamic, Creep };
@@ -80,12 +82,14 @@ struct SceneDescription {
   struct Kinetic {
     bool present = false;
     Real density_min = 0, density_max = 0; // [kg/m^3] over the computed field
-    Real temperature = 0;                  // [K] of the mean free path
-    Real gas_constant = 0;                 // R [J/(kg K)]
-    Real viscosity = 0;                    // mu(T) [Pa s]
-    Real length = 0;                       // the gap or domain length [m]
+    Real temperature_min = 0,
+         temperature_max = 0; // [K] over the computed field
+    Real viscosity_min = 0,
+         viscosity_max = 0;    // mu at temperature_min / _max [Pa s]
+    Real gas_constant = 0;     // R [J/(kg K)]
+    Real length = 0;           // the gap or domain length [m]
     Real velocity_extent = 0;  // the grid's smallest half-extent [m/s]
-    Real wall_speed = 0;       // the largest wall speed [m/s]
+    Real wall_speed = 0;       // the largest wall velocity component [m/s]
     Real wall_temperature = 0; // the hottest wall [K]
   } kinetic;
 };
@@ -137,6 +141,13 @@ ValidityReport switch_scene_validity(const CaseNode &root,
 // creep runs record no film).
 ValidityReport creep_case_validity(const CaseNode &root,
                                    const CreepCase &creep);
+
+// The gas driver's one call: the computed field's density and temperature range
+// (over every rank's owned cells; call on every rank), the reference length,
+// the velocity grid against the diffuse walls (update the operator's macros
+// from the final state first).
+ValidityReport kinetic_scene_validity(const KineticScene &scene,
+                                      const Communicator &comm);
 
 // Warnings on stderr, "<program>: warning: <text>" one line each.
 void print_validity_warnings(const std::string &program,

@@ -5,7 +5,8 @@
 # the JSON summary's `validity`, with no warning; a film at 10 Pa (Kn 184 at rest, beyond
 # Veijola's 880 at the deepest computed gap) and a 45 um thick plate (L/h = 8.9 < 10) print one
 # "rfmems-pullin: warning: ..." line each on stderr, listed in the JSON too; --quiet silences
-# the stderr lines but not the JSON. rfmems-creep: the plate creep criterion L/h >= 20.
+# the stderr lines but not the JSON. rfmems-creep: the plate creep criterion L/h >= 20;
+# rfmems-gas: the kinetic Kn range and the velocity grid's cover of the walls.
 #
 # Usage: bash test_validity.sh <directory of the drivers> <source directory>
 set -uo pipefail
@@ -80,6 +81,27 @@ sys.exit(0 if len(v['warnings']) == $want and v['ranges']['length_over_thickness
     fi
   else
     fail "creep at h = $h um: $(cat "$WORK/creep$h.err")"
+  fi
+done
+
+# rfmems-gas: Couette flow at Kn = 0.1 reports the computed field's Kn range (0.1 within
+# 0.1 %: the density and temperature barely move at 10 m/s) and no warning with the case's
+# 3.5 thermal speeds; a grid of 2 thermal speeds (< 3 + the wall's 10 m/s) warns once.
+GAS="$1/rfmems-gas"
+for extent in 3.5 2; do
+  if "$GAS" "$SRC/cases/gas_couette/case.yaml" --set "mesh.cells=[1, 20]" \
+      --set "velocity_grid.extent=$extent" -o "$WORK/gas$extent.h5" --json >"$WORK/gas$extent.json" \
+      2>"$WORK/gas$extent.err"; then
+    want=$([ "$extent" = 2 ] && echo 1 || echo 0)
+    if [ "$(grep -c "^rfmems-gas: warning: kinetic gas: velocity grid half-extent" "$WORK/gas$extent.err")" -eq "$want" ] &&
+       $PY -c "import json,sys; v=json.load(open(sys.argv[1]))['validity']; kn=v['ranges']['kinetic_knudsen']
+sys.exit(0 if len(v['warnings']) == $want and abs(kn[0] - 0.1) < 1e-4 and abs(kn[1] - 0.1) < 1e-4 else 1)" "$WORK/gas$extent.json"; then
+      pass "gas couette, velocity extent $extent: $want warning(s)"
+    else
+      fail "gas couette, velocity extent $extent: stderr $(cat "$WORK/gas$extent.err"), $(cat "$WORK/gas$extent.json")"
+    fi
+  else
+    fail "gas couette, velocity extent $extent: $(cat "$WORK/gas$extent.err")"
   fi
 done
 

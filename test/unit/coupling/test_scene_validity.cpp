@@ -154,18 +154,18 @@ TEST(SceneValidity, KineticKnudsenRangeAndVelocityGridCover) {
   s.kinetic.present = true;
   auto &k = s.kinetic;
   k.gas_constant = 208.13;
-  k.temperature = 273.15;
-  k.viscosity = 2.117e-5;
+  k.temperature_min = k.temperature_max = 273.15;
+  k.viscosity_min = k.viscosity_max = 2.117e-5;
   k.length = 1;
-  const Real rt = k.gas_constant * k.temperature;
+  const Real rt = k.gas_constant * k.temperature_min;
   auto density_of = [&](Real kn) {
-    return k.viscosity * std::sqrt(M_PI * rt / 2) / (kn * rt * k.length);
+    return k.viscosity_min * std::sqrt(M_PI * rt / 2) / (kn * rt * k.length);
   };
   k.density_min = density_of(1.0);
   k.density_max = density_of(0.1);
   const Real c = std::sqrt(2 * rt);
   k.velocity_extent = 3.5 * c;
-  k.wall_temperature = k.temperature;
+  k.wall_temperature = k.temperature_min;
   ValidityReport r = check_scene_validity(s);
   EXPECT_TRUE(r.warnings.empty());
   EXPECT_NEAR(r.find("kinetic_knudsen")->min, 0.1, 1e-12);
@@ -177,7 +177,8 @@ TEST(SceneValidity, KineticKnudsenRangeAndVelocityGridCover) {
   EXPECT_EQ(count_containing(r, "velocity grid half-extent"), 1);
   k.wall_speed = 0.4 * c;
   EXPECT_TRUE(check_scene_validity(s).warnings.empty());
-  k.wall_temperature = 2 * k.temperature; // needs 3 sqrt(2) c + 0.4 c = 4.64 c
+  k.wall_temperature =
+      2 * k.temperature_min; // needs 3 sqrt(2) c + 0.4 c = 4.64 c
   EXPECT_EQ(check_scene_validity(s).warnings.size(), 1u);
 }
 
