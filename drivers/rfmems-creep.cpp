@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "coupling/scene_validity.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint.hpp"
 #include "io/driver_main.hpp"
@@ -80,6 +81,8 @@ int run(const DriverOptions& options) {
   const CaseFile& case_file = run_case.file;
   CreepCase creep = read_creep_case(run_case.root, run_case.dir);
   case_file.check_all_used();  // a typo stops the run here, before any solving
+  const ValidityReport validity = creep_case_validity(run_case.root, creep);
+  if (!options.quiet) print_validity_warnings("rfmems-creep", validity);
 
   CreepRunSettings& settings = creep.settings;
   settings.checkpoint_path = checkpoint_path_for(run_case.output);
@@ -151,6 +154,7 @@ int run(const DriverOptions& options) {
   summary["checkpoints_written"] = result.checkpoints_written;
   summary["checkpoint"] = settings.checkpoint_path;
   summary["output"] = {{"h5", writer.path()}, {"xdmf", writer.xdmf_path()}};
+  summary["validity"] = validity.to_json();
   summary["wall_time_s"] = run_case.elapsed();
   writer.write_metadata({{"case_file", case_file.path()},
                          {"case_name", run_case.name},

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "coupling/scene_validity.hpp"
 #include "io/atomic_file.hpp"
 #include "io/case_file.hpp"
 #include "io/driver_main.hpp"
@@ -101,6 +102,8 @@ int run(const DriverOptions& options) {
   const KineticSolveResult result =
       kinetic_solvers().at(scene.solver.type)(op, f, scene.solver, monitor);
   op.update_collision(f);  // macros of the final state
+  const ValidityReport validity = kinetic_scene_validity(scene, world);
+  if (!quiet) print_validity_warnings("rfmems-gas", validity);
 
   write_fields(writer.get(), scene);
   std::vector<double> its;
@@ -152,6 +155,7 @@ int run(const DriverOptions& options) {
   summary["total_mass"] = op.total_mass(f);
   summary["output"] = {{"h5", output},
                        {"xdmf", output.substr(0, output.rfind('.')) + ".xdmf"}};
+  summary["validity"] = validity.to_json();
   summary["wall_time_s"] = elapsed();
   if (!result.converged)
     throw SolverError("rfmems-gas: no convergence after " + std::to_string(result.iterations) +

@@ -24,6 +24,7 @@
 #include <string>
 
 #include "coupling/pull_in_study.hpp"
+#include "coupling/scene_validity.hpp"
 #include "coupling/switch_scene.hpp"
 #include "io/atomic_file.hpp"
 #include "io/case_file.hpp"
@@ -59,6 +60,9 @@ int run(const DriverOptions& options) {
   summary["mesh"] = {{"cells", scene.structure->structure_mesh().n_cells()}};
   summary["output"] = {{"h5", writer.path()}, {"xdmf", writer.xdmf_path()}};
   summary["pull_in"] = pull_in_summary(scene, report);
+  const ValidityReport validity = switch_scene_validity(root, scene, report);
+  if (!options.quiet) print_validity_warnings("rfmems-pullin", validity);
+  summary["validity"] = validity.to_json();
   summary["wall_time_s"] = elapsed();
   writer.write_metadata({{"case_file", case_file.path()},
                          {"case_name", name},

@@ -1,0 +1,109 @@
+#!/usr/bin/env bash
+# The scene validity report end to end (coupling/scene_validity.hpp) through rfmems-pullin:
+# the default switch_plate run states its film Knudsen range (lambda/g from the rest gap,
+# 68 nm / 3.75 um = 0.0181, to the contact gap, 68 nm / 75 nm = 0.907) and L/h = 100 in
+# the JSON summary's `validity`, with no warning; a film at 10 Pa (Kn 184 at rest, beyond
+# Veijola's 880 at the deepest computed gap) and a 45 um thick plate (L/h = 8.9 < 10) print one
+# "rfmems-pullin: warning: ..." line each on stderr, listed in the JSON too; --quiet silences
+# the stderr lines but not the JSON. rfmems-creep: the plate creep criterion L/h >= 20;
+# rfmems-gas: the kinetic Kn range and the velocity grid's cover of the walls.
+#
+# Usage: bash test_validity.sh <directory of the drivers> <source directory>
+set -uo pipefail
+
+DRIVER="$1/rfmems-pullin"
+SRC="$2"
+PY=/usr/bin/python3
+PLATE="$SRC/cases/switch_plate/case.yaml"
+
+WORK=$(mktemp -d)
+trap 'rm -rf "$WORK"' EXIT
+source "$SRC/test/drivers/common.sh"
+
+# run NAME ARGS...: the driver with --json; stdout to NAME.json, stderr to NAME.err.
+run() {
+  local name="$1"
+  shift
+  if "$DRIVER" "$PLATE" "$@" -o "$WORK/$name.h5" --json >"$WORK/$name.json" 2>"$WORK/$name.err"; then
+    pass "$name exits 0"
+  else
+    fail "$name: $(cat "$WORK/$name.err")"
+  fi
+}
+
+# check NAME WARNINGS TEXT PYTHON-CONDITION: NAME.err has exactly WARNINGS warning lines (each
+# containing TEXT), the JSON lists the same number, and the condition on v (the validity object)
+# holds.
+check() {
+  local name="$1" count="$2" text="$3" condition="$4"
+  local lines
+  lines=$(grep -c "^rfmems-pullin: warning: .*$text" "$WORK/$name.err")
+  local all
+  all=$(grep -c "warning" "$WORK/$name.err")
+  if [ "$lines" -eq "$count" ] && [ "$all" -eq "$count" ] &&
+     $PY -c "import json,sys; v=json.load(open(sys.argv[1]))['validity']; r=v['ranges']
+sys.exit(0 if len(v['warnings']) == $count and ($condition) else 1)" "$WORK/$name.json"; then
+    pass "$name: $count warning(s) $(head -c 300 "$WORK/$name.err")"
+  else
+    fail "$name: $lines/$all warning lines (want $count), stderr: $(cat "$WORK/$name.err"), validity: $($PY -c "import json,sys; print(json.load(open(sys.argv[1])).get('validity'))" "$WORK/$name.json" 2>&1)"
+  fi
+}
+
+run default
+check default 0 "" "abs(r['film_knudsen'][0] - 68/3750) < 1e-9 and abs(r['film_knudsen'][1] - 68/75) < 1e-3 and r['length_over_thickness'] == [100, 100]"
+
+run low_pressure --set pull_in.mode=quasi_static --set gas.pressure=10Pa
+check low_pressure 1 "Veijola's fit range Kn <= 880" "r['film_knudsen'][0] > 180 and r['film_knudsen'][1] > 880"
+
+run thick_plate --set pull_in.mode=quasi_static --set model.thickness=45um
+check thick_plate 1 "plate: L/h = 8.89 below 10" "abs(r['length_over_thickness'][0] - 400/45) < 1e-9"
+
+if "$DRIVER" "$PLATE" --set pull_in.mode=quasi_static --set gas.pressure=10Pa -o "$WORK/q.h5" \
+    --quiet 2>"$WORK/q.err" >/dev/null && [ ! -s "$WORK/q.err" ]; then
+  pass "--quiet prints no warning"
+else
+  fail "--quiet: $(cat "$WORK/q.err")"
+fi
+
+# rfmems-creep: the fixed-fixed creep strip (L = 240 um) at h = 4 um (L/h = 60) has no warning;
+# at h = 16 um (L/h = 15 < 20, where the plate's neglected shear creep is 2.5-15 %) one.
+CREEP="$1/rfmems-creep"
+for h in 4 16; do
+  if "$CREEP" "$SRC/cases/creep_fixed_fixed/case.yaml" --set creep.end_time=10h --set creep.outputs=2 \
+      --set "model.thickness=${h}um" -o "$WORK/creep$h.h5" --json >"$WORK/creep$h.json" 2>"$WORK/creep$h.err"; then
+    want=$([ "$h" = 4 ] && echo 0 || echo 1)
+    if [ "$(grep -c "^rfmems-creep: warning: plate creep: L/h = .* below 20" "$WORK/creep$h.err")" -eq "$want" ] &&
+       $PY -c "import json,sys; v=json.load(open(sys.argv[1]))['validity']
+sys.exit(0 if len(v['warnings']) == $want and v['ranges']['length_over_thickness'][0] == 240 / $h else 1)" "$WORK/creep$h.json"; then
+      pass "creep at h = $h um: $want warning(s)"
+    else
+      fail "creep at h = $h um: stderr $(cat "$WORK/creep$h.err"), $(cat "$WORK/creep$h.json")"
+    fi
+  else
+    fail "creep at h = $h um: $(cat "$WORK/creep$h.err")"
+  fi
+done
+
+# rfmems-gas: Couette flow at Kn = 0.1 reports the computed field's Kn range (0.1 within
+# 0.1 %: the density and temperature barely move at 10 m/s) and no warning with the case's
+# 3.5 thermal speeds; a grid of 2 thermal speeds (< 3 + the wall's 10 m/s) warns once.
+GAS="$1/rfmems-gas"
+for extent in 3.5 2; do
+  if "$GAS" "$SRC/cases/gas_couette/case.yaml" --set "mesh.cells=[1, 20]" \
+      --set "velocity_grid.extent=$extent" -o "$WORK/gas$extent.h5" --json >"$WORK/gas$extent.json" \
+      2>"$WORK/gas$extent.err"; then
+    want=$([ "$extent" = 2 ] && echo 1 || echo 0)
+    if [ "$(grep -c "^rfmems-gas: warning: kinetic gas: velocity grid half-extent" "$WORK/gas$extent.err")" -eq "$want" ] &&
+       $PY -c "import json,sys; v=json.load(open(sys.argv[1]))['validity']; kn=v['ranges']['kinetic_knudsen']
+sys.exit(0 if len(v['warnings']) == $want and abs(kn[0] - 0.1) < 1e-4 and abs(kn[1] - 0.1) < 1e-4 else 1)" "$WORK/gas$extent.json"; then
+      pass "gas couette, velocity extent $extent: $want warning(s)"
+    else
+      fail "gas couette, velocity extent $extent: stderr $(cat "$WORK/gas$extent.err"), $(cat "$WORK/gas$extent.json")"
+    fi
+  else
+    fail "gas couette, velocity extent $extent: $(cat "$WORK/gas$extent.err")"
+  fi
+done
+
+echo "$failures failure(s)"
+[ "$failures" -eq 0 ]
