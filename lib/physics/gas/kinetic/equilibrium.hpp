@@ -57,6 +57,12 @@ struct EquilibriumCoefficients {
   // matrix of the next warm-started solve while it contracts (chord steps; refreshed when not).
   std::array<Real, 100> jacobian{};
   bool has_jacobian = false;
+  // Tensor-product grids: the moments sum w phi f_eq of these coefficients, with `jacobian`
+  // evaluated at them too, so that the next warm start takes its first Newton step without
+  // an evaluation. Valid while moments_at == a.
+  std::array<Real, 10> moments{};
+  std::array<Real, 10> moments_at{};
+  bool has_moments = false;
 };
 
 // The coefficients of the continuous Maxwellian (BGK) / Gaussian (ESBGK) with the target's
@@ -66,7 +72,8 @@ EquilibriumCoefficients continuous_coefficients(const EquilibriumTarget& target,
 
 struct EquilibriumSolveInfo {
   int iterations = 0;
-  Real residual = 0;  // max |G| / rho at exit
+  Real residual = 0;            // max |G| / rho at exit
+  bool values_written = false;  // the f_eq overload: f_eq was (re)written
 };
 
 // Newton for the discrete-conservative coefficients. Warm-starts from `coefficients` if it is
@@ -75,6 +82,13 @@ struct EquilibriumSolveInfo {
 EquilibriumSolveInfo solve_equilibrium(const EquilibriumTarget& target, CollisionModel model,
                                        const VelocityGrid& grid,
                                        EquilibriumCoefficients& coefficients);
+// The same, and f_eq,k = exp(a . phi(xi_k)) of the result without a separate evaluation.
+// f_eq must hold the values of `coefficients` on entry if those are valid (as a cache of the
+// last solve's output does): when the coefficients do not change it is left as it is
+// (info.values_written says which).
+EquilibriumSolveInfo solve_equilibrium(const EquilibriumTarget& target, CollisionModel model,
+                                       const VelocityGrid& grid,
+                                       EquilibriumCoefficients& coefficients, std::span<Real> f_eq);
 // The same from the continuous start.
 EquilibriumCoefficients equilibrium(const EquilibriumTarget& target, CollisionModel model,
                                     const VelocityGrid& grid);
