@@ -69,15 +69,26 @@ EquilibriumMomentDerivative::EquilibriumMomentDerivative(CollisionModel model,
 }
 
 template <int P>
+Eigen::Matrix<Real, P, 5> EquilibriumMomentDerivative::basis_coefficients(
+    const Eigen::Matrix<Real, P, 1>& G, const Eigen::Matrix<Real, P, P>& J) {
+  const Eigen::LDLT<Eigen::Matrix<Real, P, P>> ldlt(J);
+  if (ldlt.info() != Eigen::Success)
+    throw RecoverableError("equilibrium_conserved_derivative: moment matrix not positive definite");
+  return ldlt.solve(target_derivative<P>(G));
+}
+
+template Eigen::Matrix<Real, 5, 5> EquilibriumMomentDerivative::basis_coefficients<5>(
+    const Eigen::Matrix<Real, 5, 1>&, const Eigen::Matrix<Real, 5, 5>&);
+template Eigen::Matrix<Real, 10, 5> EquilibriumMomentDerivative::basis_coefficients<10>(
+    const Eigen::Matrix<Real, 10, 1>&, const Eigen::Matrix<Real, 10, 10>&);
+
+template <int P>
 void EquilibriumMomentDerivative::evaluate_tensor(std::span<const Real> f_eq, std::span<Real> df_dU,
                                                   Real scale) {
   Eigen::Matrix<Real, P, 1> G;
   Eigen::Matrix<Real, P, P> J;
   kernel_.basis_moments<P>(f_eq.data(), G, &J);
-  const Eigen::LDLT<Eigen::Matrix<Real, P, P>> ldlt(J);
-  if (ldlt.info() != Eigen::Success)
-    throw RecoverableError("equilibrium_conserved_derivative: moment matrix not positive definite");
-  const Eigen::Matrix<Real, P, 5> Y = scale * ldlt.solve(target_derivative<P>(G));
+  const Eigen::Matrix<Real, P, 5> Y = scale * basis_coefficients<P>(G, J);
   kernel_.basis_combination<P, 5>(f_eq.data(), Y, df_dU.data());
 }
 

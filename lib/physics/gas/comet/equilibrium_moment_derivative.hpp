@@ -47,6 +47,16 @@ class EquilibriumMomentDerivative {
   // df_dU[5 k + j] = scale * d f_eq,k / dU_j (scale: COMET's -V nu, folded in for free).
   void evaluate(std::span<const Real> f_eq, std::span<Real> df_dU, Real scale = 1.0);
 
+  // The compact form: d f_eq,k / dU = f_eq,k phi_k^T Y with Y = J^-1 dm/dU (P x 5, P = 5 BGK
+  // or 10 ESBGK), from the moments G = sum w phi f_eq and the Gram matrix
+  // J = sum w phi phi^T f_eq of f_eq (the equilibrium's tensor Newton stores both with the
+  // coefficients). RecoverableError if J is not positive definite.
+  template <int P>
+  static Eigen::Matrix<Real, P, 5> basis_coefficients(const Eigen::Matrix<Real, P, 1>& G,
+                                                      const Eigen::Matrix<Real, P, P>& J);
+  // The grid's tensor-product kernel (valid() false if the grid is not one).
+  const EquilibriumTensorKernel& kernel() const { return kernel_; }
+
  private:
   template <int P>
   void evaluate_tensor(std::span<const Real> f_eq, std::span<Real> df_dU, Real scale);

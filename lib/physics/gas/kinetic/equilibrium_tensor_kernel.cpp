@@ -162,6 +162,25 @@ void EquilibriumTensorKernel::basis_moments(const Real* g, Eigen::Matrix<Real, M
     }
 }
 
+template <int M>
+void EquilibriumTensorKernel::conserved_product_moments(const Real* g,
+                                                        Eigen::Matrix<Real, 5, M>& H) const {
+  MonomialMoments mu;
+  monomial_moments<4>(g, mu);
+  for (int b = 0; b < 5; ++b)
+    for (int c = 0; c < M; ++c) {
+      const Terms tb = basis_terms(5, b), tc = basis_terms(M, c);
+      Real sum = 0;
+      for (int s = 0; s < tb.n; ++s)
+        for (int t = 0; t < tc.n; ++t) {
+          const int* e1 = kExponents[tb.index[s]];
+          const int* e2 = kExponents[tc.index[t]];
+          sum += mu[monomial(e1[0] + e2[0], e1[1] + e2[1], e1[2] + e2[2])];
+        }
+      H(b, c) = sum;
+    }
+}
+
 template <int M, int K>
 void EquilibriumTensorKernel::basis_combination(const Real* g, const Eigen::Matrix<Real, M, K>& Y,
                                                 Real* out) const {
@@ -202,6 +221,16 @@ template void EquilibriumTensorKernel::basis_moments<5>(const Real*, Eigen::Matr
                                                         Eigen::Matrix<Real, 5, 5>*) const;
 template void EquilibriumTensorKernel::basis_moments<10>(const Real*, Eigen::Matrix<Real, 10, 1>&,
                                                          Eigen::Matrix<Real, 10, 10>*) const;
+template void EquilibriumTensorKernel::conserved_product_moments<5>(
+    const Real*, Eigen::Matrix<Real, 5, 5>&) const;
+template void EquilibriumTensorKernel::conserved_product_moments<10>(
+    const Real*, Eigen::Matrix<Real, 5, 10>&) const;
+template void EquilibriumTensorKernel::basis_combination<5, 1>(const Real*,
+                                                               const Eigen::Matrix<Real, 5, 1>&,
+                                                               Real*) const;
+template void EquilibriumTensorKernel::basis_combination<10, 1>(const Real*,
+                                                                const Eigen::Matrix<Real, 10, 1>&,
+                                                                Real*) const;
 template void EquilibriumTensorKernel::basis_combination<5, 3>(const Real*,
                                                                const Eigen::Matrix<Real, 5, 3>&,
                                                                Real*) const;

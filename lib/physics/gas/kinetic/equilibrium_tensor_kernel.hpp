@@ -55,6 +55,11 @@ class EquilibriumTensorKernel {
   void basis_moments(const Real* g, Eigen::Matrix<Real, M, 1>& G,
                      Eigen::Matrix<Real, M, M>* J) const;
 
+  // H = w sum_k g_k phi5_k phi_k^T with phi5 the 5-function basis (1, xi, |xi|^2), phi the
+  // M-function one (M = 5 or 10).
+  template <int M>
+  void conserved_product_moments(const Real* g, Eigen::Matrix<Real, 5, M>& H) const;
+
   // out[K k + j] = g_k phi_k^T Y(:, j) (row-major N x K), M = 5 or 10.
   template <int M, int K>
   void basis_combination(const Real* g, const Eigen::Matrix<Real, M, K>& Y, Real* out) const;
