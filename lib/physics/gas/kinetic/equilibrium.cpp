@@ -565,6 +565,27 @@ void equilibrium_velocity_derivative(const EquilibriumCoefficients& coefficients
     velocity_derivative<10>(coefficients, target, grid, f_eq, df_du);
 }
 
+MacroState cell_moments(std::span<const Real> f_cell, const VelocityGrid& grid,
+                        const KineticGas& gas) {
+  const TensorKernelCache& T = tensor_kernel(grid);
+  if (!T.kernel.valid()) return moments(f_cell, grid, gas);
+  MacroState m;
+  Real rho;
+  Vec3 u, q;
+  Mat3 P;
+  T.kernel.central_moments(f_cell.data(), rho, u, P, q);
+  if (!(rho > 0)) throw RecoverableError("kinetic moments: non-positive density");
+  const Real s = grid.reference_speed;
+  m.rho = rho;
+  m.u = s * u;
+  m.pressure_tensor = (s * s) * P;
+  m.p = m.pressure_tensor.trace() / 3;
+  m.T = m.p / (rho * gas.R);
+  m.stress = -(m.pressure_tensor - m.p * Mat3::Identity());
+  m.heat_flux = (s * s * s) * q;
+  return m;
+}
+
 void sample_maxwellian(Real rho, const Vec3& u, Real T, const KineticGas& gas,
                        const VelocityGrid& grid, std::span<Real> f) {
   const Real two_RT = 2 * gas.R * T;

@@ -68,6 +68,11 @@ EquilibriumTensorKernel::EquilibriumTensorKernel(const VelocityGrid& grid) {
   powers(x_, xp_);
   powers(y_, yp_);
   powers(z_, zp_);
+  for (int p = 0; p < 5; ++p) {
+    xs_[p].resize(n1_);
+    ys_[p].resize(n2_);
+    zs_[p].resize(n3_);
+  }
   ea_.resize(Index(n1_) * n2_);
   eb_.resize(Index(n1_) * n3_);
   ec_.resize(Index(n2_) * n3_);
@@ -101,7 +106,11 @@ void EquilibriumTensorKernel::exponential(const Real* a, int n_coefficients, Rea
 }
 
 template <int D>
-void EquilibriumTensorKernel::monomial_moments(const Real* g, MonomialMoments& mu) const {
+void EquilibriumTensorKernel::nested_moments(const Real* g,
+                                             const std::array<std::vector<Real>, 5>& xp,
+                                             const std::array<std::vector<Real>, 5>& yp,
+                                             const std::array<std::vector<Real>, 5>& zp,
+                                             MonomialMoments& mu) const {
   constexpr int P = D + 1;
   for (int p = 0; p < P; ++p)
     for (int q = 0; p + q < P; ++q)
@@ -114,22 +123,66 @@ void EquilibriumTensorKernel::monomial_moments(const Real* g, MonomialMoments& m
       for (int l = 0; l < n3_; ++l) {
         const Real v = gl[l];
         t[0] += v;
-        for (int r = 1; r < P; ++r) t[r] += v * zp_[r][l];
+        for (int r = 1; r < P; ++r) t[r] += v * zp[r][l];
       }
       for (int q = 0; q < P; ++q) {
-        const Real yq = yp_[q][j];
+        const Real yq = yp[q][j];
         for (int r = 0; q + r < P; ++r) s[q][r] += yq * t[r];
       }
     }
     for (int p = 0; p < P; ++p) {
-      const Real xp = xp_[p][i];
+      const Real x = xp[p][i];
       for (int q = 0; p + q < P; ++q)
-        for (int r = 0; p + q + r < P; ++r) mu[monomial(p, q, r)] += xp * s[q][r];
+        for (int r = 0; p + q + r < P; ++r) mu[monomial(p, q, r)] += x * s[q][r];
     }
   }
   for (int p = 0; p < P; ++p)
     for (int q = 0; p + q < P; ++q)
       for (int r = 0; p + q + r < P; ++r) mu[monomial(p, q, r)] *= w_;
+}
+
+template <int D>
+void EquilibriumTensorKernel::monomial_moments(const Real* g, MonomialMoments& mu) const {
+  nested_moments<D>(g, xp_, yp_, zp_, mu);
+}
+
+void EquilibriumTensorKernel::central_moments(const Real* g, Real& rho, Vec3& u, Mat3& P,
+                                              Vec3& q) const {
+  MonomialMoments mu;
+  nested_moments<1>(g, xp_, yp_, zp_, mu);
+  rho = mu[monomial(0, 0, 0)];
+  u = Vec3(mu[monomial(1, 0, 0)], mu[monomial(0, 1, 0)], mu[monomial(0, 0, 1)]) / rho;
+  auto shifted = [](const std::vector<Real>& axis, Real shift,
+                    std::array<std::vector<Real>, 5>& p) {
+    for (std::size_t i = 0; i < axis.size(); ++i) {
+      const Real v = axis[i] - shift;
+      p[0][i] = 1.0;
+      p[1][i] = v;
+      p[2][i] = v * v;
+      p[3][i] = p[2][i] * v;
+    }
+  };
+  shifted(x_, u[0], xs_);
+  shifted(y_, u[1], ys_);
+  shifted(z_, u[2], zs_);
+  nested_moments<3>(g, xs_, ys_, zs_, mu);
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) {
+      int e[3] = {0, 0, 0};
+      ++e[a];
+      ++e[b];
+      P(a, b) = mu[monomial(e[0], e[1], e[2])];
+    }
+  for (int a = 0; a < 3; ++a) {
+    Real sum = 0;
+    for (int b = 0; b < 3; ++b) {
+      int e[3] = {0, 0, 0};
+      ++e[a];
+      e[b] += 2;
+      sum += mu[monomial(e[0], e[1], e[2])];
+    }
+    q[a] = 0.5 * sum;
+  }
 }
 
 template <int M>

@@ -49,6 +49,11 @@ class EquilibriumTensorKernel {
   template <int D>
   void monomial_moments(const Real* g, MonomialMoments& mu) const;
 
+  // The moments of macroscopic_state.hpp's moments() (scaled velocities): rho = w sum g,
+  // u = w sum g xi / rho, and the central ones about u, P = w sum g C C^T and
+  // q = w sum g |C|^2 C / 2 with C = xi - u (the nested sums on shifted axes: no cancellation).
+  void central_moments(const Real* g, Real& rho, Vec3& u, Mat3& P, Vec3& q) const;
+
   // G = w sum_k g_k phi_k and, if J is given, J = w sum_k g_k phi_k phi_k^T (M
   // = 5 or 10).
   template <int M>
@@ -69,9 +74,15 @@ class EquilibriumTensorKernel {
   Index n_ = 0;
   int n1_ = 0, n2_ = 0, n3_ = 0;
   Real w_ = 0;
-  std::vector<Real> x_, y_, z_;                    // scaled axes
-  std::array<std::vector<Real>, 5> xp_, yp_, zp_;  // their powers 0..4
-  mutable std::vector<Real> ea_, eb_, ec_;         // exponential tables (scratch)
+  std::vector<Real> x_, y_, z_;                            // scaled axes
+  std::array<std::vector<Real>, 5> xp_, yp_, zp_;          // their powers 0..4
+  mutable std::vector<Real> ea_, eb_, ec_;                 // exponential tables (scratch)
+  mutable std::array<std::vector<Real>, 5> xs_, ys_, zs_;  // shifted axes' powers (scratch)
+
+  template <int D>
+  void nested_moments(const Real* g, const std::array<std::vector<Real>, 5>& xp,
+                      const std::array<std::vector<Real>, 5>& yp,
+                      const std::array<std::vector<Real>, 5>& zp, MonomialMoments& mu) const;
 };
 
 }  // namespace rfmems

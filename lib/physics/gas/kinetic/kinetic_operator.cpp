@@ -55,7 +55,7 @@ void KineticOperator::initialize(std::span<Real> f,
 }
 
 void KineticOperator::update_collision(Index c, std::span<const Real> f_cell) {
-  macro_[c] = moments(f_cell, grid_, gas_);
+  macro_[c] = cell_moments(f_cell, grid_, gas_);
   target_[c] = equilibrium_target(macro_[c], gas_);
   // f_eq_ of cell c always holds the values of coefficients_[c] (or nothing yet), which
   // solve_equilibrium refreshes only if they changed.
