@@ -110,8 +110,11 @@ void EquilibriumMomentDerivative::evaluate(std::span<const Real> f_eq, std::span
   const Eigen::VectorXd G = weighted_.colwise().sum().transpose();
   // dm/dU (P x 5): identity for BGK (phi = psi); for ESBGK the second moments
   // Q = m m^T / rho + p I + A with A held fixed.
-  const Eigen::MatrixXd dm = P == 5 ? Eigen::MatrixXd(target_derivative<5>(G.head<5>()))
-                                    : Eigen::MatrixXd(target_derivative<10>(G.head<10>()));
+  Eigen::MatrixXd dm;
+  if (P == 5)
+    dm = target_derivative<5>(Eigen::Matrix<Real, 5, 1>(G));
+  else
+    dm = target_derivative<10>(Eigen::Matrix<Real, 10, 1>(G));
   const Eigen::LDLT<Eigen::MatrixXd> ldlt(J);
   if (ldlt.info() != Eigen::Success)
     throw RecoverableError("equilibrium_conserved_derivative: moment matrix not positive definite");

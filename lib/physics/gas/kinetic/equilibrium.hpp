@@ -53,8 +53,9 @@ struct EquilibriumCoefficients {
   std::array<Real, 10> a{};  // BGK uses a[0..4]
   int size = 0;              // 5 (BGK), 10 (ESBGK), 0 = not yet computed
   bool valid() const { return size > 0; }
-  // The last Newton Jacobian dG/da (size x size, column-major), reused as the iteration
-  // matrix of the next warm-started solve while it contracts (chord steps; refreshed when not).
+  // The last Newton Jacobian dG/da (size x size, column-major): on a tensor-product grid J at
+  // a (see moments below); otherwise reused as the iteration matrix of the next warm-started
+  // solve while it contracts (chord steps; refreshed when not).
   std::array<Real, 100> jacobian{};
   bool has_jacobian = false;
   // Tensor-product grids: the moments sum w phi f_eq of these coefficients, with `jacobian`
