@@ -20,6 +20,7 @@
 #pragma once
 #include <span>
 
+#include "physics/gas/kinetic/equilibrium_tensor_kernel.hpp"
 #include "physics/gas/kinetic/kinetic_gas.hpp"
 #include "physics/gas/kinetic/velocity_grid.hpp"
 
@@ -36,20 +37,35 @@ inline Eigen::Matrix<Real, 5, 1> conserved_basis(const VelocityGrid& grid, Index
 // U = sum_k w_k psi_k f_k.
 Eigen::Matrix<Real, 5, 1> conserved_moments(const VelocityGrid& grid, std::span<const Real> f);
 
-// The derivative for one grid and model, with the basis matrices precomputed (COMET evaluates
-// it once per cell visit: two small dense products over the N ordinates).
+// The derivative for one grid and model (COMET evaluates it once per cell visit). On a
+// tensor-product grid J and the moments come from nested sums and the N x 5 block from
+// polynomials in z per (x, y) (equilibrium_tensor_kernel.hpp): ~20 operations per ordinate;
+// otherwise two dense products with the basis matrix (~160).
 class EquilibriumMomentDerivative {
  public:
   EquilibriumMomentDerivative(CollisionModel model, const VelocityGrid& grid);
   // df_dU[5 k + j] = scale * d f_eq,k / dU_j (scale: COMET's -V nu, folded in for free).
   void evaluate(std::span<const Real> f_eq, std::span<Real> df_dU, Real scale = 1.0);
 
+  // The compact form: d f_eq,k / dU = f_eq,k phi_k^T Y with Y = J^-1 dm/dU (P x 5, P = 5 BGK
+  // or 10 ESBGK), from the moments G = sum w phi f_eq and the Gram matrix
+  // J = sum w phi phi^T f_eq of f_eq (the equilibrium's tensor Newton stores both with the
+  // coefficients). RecoverableError if J is not positive definite.
+  template <int P>
+  static Eigen::Matrix<Real, P, 5> basis_coefficients(const Eigen::Matrix<Real, P, 1>& G,
+                                                      const Eigen::Matrix<Real, P, P>& J);
+  // The grid's tensor-product kernel (valid() false if the grid is not one).
+  const EquilibriumTensorKernel& kernel() const { return kernel_; }
+
  private:
-  using RowMatrix = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  template <int P>
+  void evaluate_tensor(std::span<const Real> f_eq, std::span<Real> df_dU, Real scale);
+
   CollisionModel model_;
-  Eigen::MatrixXd phi_;        // N x P basis of the equilibrium's exponent (P = 5 or 10)
-  Eigen::VectorXd w_;          // weights
-  Eigen::MatrixXd weighted_;   // scratch N x P
+  EquilibriumTensorKernel kernel_;
+  Eigen::MatrixXd phi_;       // N x P basis of the equilibrium's exponent (P = 5 or 10)
+  Eigen::VectorXd w_;         // weights
+  Eigen::MatrixXd weighted_;  // scratch N x P
 };
 
 // df_dU[5 k + j] = d f_eq,k / dU_j for the model's discrete equilibrium with values f_eq

@@ -1,6 +1,7 @@
 #include "physics/gas/comet/point_coupled_smoother.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/error.hpp"
 #include "physics/gas/comet/equilibrium_moment_derivative.hpp"
@@ -58,8 +59,12 @@ void PointCoupledSmoother::solve_cell(Index c, std::span<Real> f, std::span<cons
       if (g.is_boundary(g.cell_faces[i])) op_.update_boundary_values(g.cell_faces[i], f);
     if (coupling_ == CometCoupling::Velocity)
       newton_step<3>(c, f, source, velocity_system_);
-    else
+    else if (!conserved_derivative_.kernel().valid())
       newton_step<5>(c, f, source, conserved_system_);
+    else if (op_.gas().model == CollisionModel::Bgk)
+      conserved_tensor_step<5>(c, f, source);
+    else
+      conserved_tensor_step<10>(c, f, source);
     const Index n = op_.n_ordinates();
     op_.update_collision(c, f.subspan(c * n, n));
     ++cell_updates_;
@@ -97,7 +102,63 @@ void PointCoupledSmoother::newton_step(Index c, std::span<Real> f, std::span<con
   }
   typename ArrowheadSystem<M>::VecM dx;
   a.solve(step_, ArrowheadSystem<M>::VecM::Zero(), step_, dx);
+  apply_step(fc);
+}
 
+template <int P>
+void PointCoupledSmoother::conserved_tensor_step(Index c, std::span<Real> f,
+                                                 std::span<const Real> source) {
+  using Vec5 = Eigen::Matrix<Real, 5, 1>;
+  using Mat5 = Eigen::Matrix<Real, 5, 5>;
+  const EquilibriumTensorKernel& kernel = conserved_derivative_.kernel();
+  const Index n = op_.n_ordinates();
+  const std::span<Real> fc = f.subspan(c * n, n);
+  const std::span<const Real> feq = op_.equilibrium(c);
+  const Real* out = &outgoing_[c * n];
+  const Real vnu = op_.graph().cell_volume[c] * op_.collision_frequency(c);
+  op_.incoming_flux(c, f, in_);
+
+  // G and J of f_eq: stored by the equilibrium's Newton when they are those of its
+  // coefficients (then f_eq holds exactly their values), else summed here.
+  const EquilibriumCoefficients& a = op_.coefficients(c);
+  Eigen::Matrix<Real, P, 1> G;
+  Eigen::Matrix<Real, P, P> J;
+  if (a.size == P && a.has_moments && a.moments_at == a.a) {
+    G = Eigen::Map<const Eigen::Matrix<Real, P, 1>>(a.moments.data());
+    J = Eigen::Map<const Eigen::Matrix<Real, P, P>>(a.jacobian.data());
+  } else {
+    kernel.basis_moments<P>(feq.data(), G, &J);
+  }
+  const Eigen::Matrix<Real, P, 5> Y = EquilibriumMomentDerivative::basis_coefficients<P>(G, J);
+
+  // y = D^-1 (-r), u = D^-1 f_eq (dfeq_ as scratch).
+  Real* y = step_.data();
+  Real* u = dfeq_.data();
+  for (Index k = 0; k < n; ++k) {
+    Real r = out[k] * fc[k] + in_[k] - vnu * (feq[k] - fc[k]);
+    if (!source.empty()) r -= source[c * n + k];
+    const Real inv_d = 1.0 / (out[k] + vnu);
+    y[k] = -r * inv_d;
+    u[k] = feq[k] * inv_d;
+  }
+  Vec5 g;
+  kernel.basis_moments<5>(y, g, nullptr);
+  Eigen::Matrix<Real, 5, P> H;
+  kernel.conserved_product_moments<P>(u, H);
+  const Mat5 S = Mat5::Identity() - vnu * (H * Y);
+  const Eigen::FullPivLU<Mat5> lu(S);
+  if (!std::isfinite(S.sum()) || !lu.isInvertible())
+    throw SolverError("COMET point solve: singular Schur complement");
+  const Vec5 dU = lu.solve(g);
+  const Eigen::Matrix<Real, P, 1> z = vnu * (Y * dU);
+  Real* correction = dfeq_.data() + n;
+  kernel.basis_combination<P, 1>(u, z, correction);
+  for (Index k = 0; k < n; ++k) y[k] += correction[k];
+  apply_step(fc);
+}
+
+void PointCoupledSmoother::apply_step(std::span<Real> fc) {
+  const Index n = op_.n_ordinates();
   // Positivity: damp the step so that no ordinate falls below a tenth of its value.
   Real theta = 1.0;
   for (Index k = 0; k < n; ++k)

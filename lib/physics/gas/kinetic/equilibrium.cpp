@@ -1,10 +1,12 @@
 #include "physics/gas/kinetic/equilibrium.hpp"
 
 #include <cmath>
+#include <algorithm>
 #include <numbers>
 #include <string>
 
 #include "core/error.hpp"
+#include "physics/gas/kinetic/equilibrium_tensor_kernel.hpp"
 
 namespace rfmems {
 namespace {
@@ -34,27 +36,43 @@ VecM<M> basis(const Vec3& xi) {
   return phi;
 }
 
-// The basis evaluated at every ordinate, Phi (N x M), and the weights: G, J and f_eq become
-// matrix-vector products (vectorised exp, GEMM-like J = Phi^T diag(v) Phi). Cached per thread
-// for the last grid seen (identified by its ordinates), since every cell of a solve uses the
-// same grid.
-template <int M>
-struct BasisMatrix {
-  Eigen::Matrix<Real, Eigen::Dynamic, M> phi;
-  Eigen::ArrayXd w;
+// Identifies the grid a per-thread cache was built for (its ordinates' storage, size, scale
+// and end points): every cell of a solve uses the same grid.
+struct GridKey {
   const Vec3* key = nullptr;
   Index n = 0;
   Vec3 first = Vec3::Zero(), last = Vec3::Zero();
   Real s = 0;
+  bool matches(const VelocityGrid& grid) const {
+    return key == grid.c.data() && n == grid.size() && s == grid.reference_speed && n > 0 &&
+           first == grid.c.front() && last == grid.c.back();
+  }
+  void set(const VelocityGrid& grid) {
+    key = grid.c.data();
+    n = grid.size();
+    s = grid.reference_speed;
+    if (n > 0) {
+      first = grid.c.front();
+      last = grid.c.back();
+    }
+  }
+};
+
+// The basis evaluated at every ordinate, Phi (N x M), and the weights: G, J and f_eq become
+// matrix-vector products (vectorised exp, GEMM-like J = Phi^T diag(v) Phi). The path for
+// grids that are not a tensor product (the uniform grid takes equilibrium_tensor_kernel.hpp).
+template <int M>
+struct BasisMatrix {
+  Eigen::Matrix<Real, Eigen::Dynamic, M> phi;
+  Eigen::ArrayXd w;
+  GridKey key;
 };
 
 template <int M>
 const BasisMatrix<M>& basis_matrix(const VelocityGrid& grid) {
   thread_local BasisMatrix<M> cache;
+  if (cache.key.matches(grid)) return cache;
   const Index n = grid.size();
-  if (cache.key == grid.c.data() && cache.n == n && cache.s == grid.reference_speed &&
-      n > 0 && cache.first == grid.c.front() && cache.last == grid.c.back())
-    return cache;
   cache.phi.resize(n, M);
   cache.w.resize(n);
   const Real inv_s = 1.0 / grid.reference_speed;
@@ -62,13 +80,26 @@ const BasisMatrix<M>& basis_matrix(const VelocityGrid& grid) {
     cache.phi.row(k) = basis<M>(grid.c[k] * inv_s).transpose();
     cache.w[k] = grid.w[k];
   }
-  cache.key = grid.c.data();
-  cache.n = n;
-  cache.s = grid.reference_speed;
-  if (n > 0) {
-    cache.first = grid.c.front();
-    cache.last = grid.c.back();
-  }
+  cache.key.set(grid);
+  return cache;
+}
+
+// The tensor-product kernel of the grid (valid() false if the grid is not one) and scratch
+// vectors of N values, per thread.
+struct TensorKernelCache {
+  EquilibriumTensorKernel kernel;
+  std::vector<Real> values;    // exp(a . phi) at the last point evaluated
+  std::vector<Real> accepted;  // ... at the current Newton iterate (tensor_newton)
+  GridKey key;
+};
+
+TensorKernelCache& tensor_kernel(const VelocityGrid& grid) {
+  thread_local TensorKernelCache cache;
+  if (cache.key.matches(grid)) return cache;
+  cache.kernel = EquilibriumTensorKernel(grid);
+  cache.values.assign(grid.size(), 0.0);
+  cache.accepted.assign(grid.size(), 0.0);
+  cache.key.set(grid);
   return cache;
 }
 
@@ -120,8 +151,14 @@ Eigen::Matrix<Real, M, 3> target_velocity_derivative(const EquilibriumTarget& t,
 
 // G(a) = sum w phi exp(a . phi) - m, and optionally J = sum w phi phi^T exp(a . phi).
 template <int M>
-VecM<M> newton_residual(const VecM<M>& a, const VecM<M>& m, const VelocityGrid& grid,
-                        MatM<M>* J) {
+VecM<M> newton_residual(const VecM<M>& a, const VecM<M>& m, const VelocityGrid& grid, MatM<M>* J) {
+  TensorKernelCache& T = tensor_kernel(grid);
+  if (T.kernel.valid()) {
+    T.kernel.exponential(a.data(), M, T.values.data());
+    VecM<M> G;
+    T.kernel.basis_moments<M>(T.values.data(), G, J);
+    return G - m;
+  }
   const BasisMatrix<M>& B = basis_matrix<M>(grid);
   const Eigen::ArrayXd v = B.w * (B.phi * a).array().exp();
   if (J) J->noalias() = B.phi.transpose() * (B.phi.array().colwise() * v).matrix();
@@ -160,6 +197,12 @@ VecM<M> continuous_start(const EquilibriumTarget& t, Real s) {
 // dual of the discrete entropy minimisation, Mieussens 2000). Returns false if it did not.
 template <int M>
 Real dual_objective(const VecM<M>& a, const VecM<M>& m, const VelocityGrid& grid) {
+  TensorKernelCache& T = tensor_kernel(grid);
+  if (T.kernel.valid()) {
+    T.kernel.exponential(a.data(), M, T.values.data());
+    const Eigen::Map<const Eigen::ArrayXd> v(T.values.data(), grid.size());
+    return T.kernel.weight() * v.sum() - a.dot(m);
+  }
   const BasisMatrix<M>& B = basis_matrix<M>(grid);
   return (B.w * (B.phi * a).array().exp()).sum() - a.dot(m);
 }
@@ -240,6 +283,133 @@ bool newton(VecM<M>& a, const VecM<M>& m, const VelocityGrid& grid, EquilibriumS
   return norm < 1e-11;
 }
 
+// Newton on a tensor-product grid (equilibrium_tensor_kernel.hpp), where the Jacobian costs
+// little more than G (5 against 3 operations per ordinate, one exponential table either way):
+// full Newton, each evaluation gives G and J at the same point, so the iteration converges
+// quadratically (the chord steps above only linearly: 4-6 evaluations per warm-started solve in
+// a COMET sweep). State at the iterate a: its moments Ma = sum w phi exp(a . phi), J(a) and the
+// values exp(a . phi) (T.accepted, values_current). With have_state the caller supplies Ma and
+// J at a (stored with the coefficients by the last solve), so a warm start takes its first step
+// without an evaluation: G(a) = Ma - m. The stopping rules are those of newton().
+template <int M>
+bool tensor_newton(VecM<M>& a, const VecM<M>& m, TensorKernelCache& T, const VelocityGrid& grid,
+                   EquilibriumSolveInfo& info, MatM<M>& J, VecM<M>& Ma, bool have_state,
+                   bool& values_current) {
+  constexpr int max_iterations = 100;
+  const Real scale = 1.0 / m[0];
+  auto evaluate = [&](const VecM<M>& point, VecM<M>& moments, MatM<M>& jacobian) {
+    T.kernel.exponential(point.data(), M, T.values.data());
+    T.kernel.basis_moments<M>(T.values.data(), moments, &jacobian);
+  };
+  values_current = false;
+  if (!have_state) {
+    evaluate(a, Ma, J);
+    std::swap(T.values, T.accepted);
+    values_current = true;
+  }
+  VecM<M> G = Ma - m;
+  Real norm = G.cwiseAbs().maxCoeff() * scale;
+  Eigen::LDLT<MatM<M>> ldlt;
+  VecM<M> M_trial;
+  MatM<M> J_trial;
+  auto accept = [&](const VecM<M>& trial, const VecM<M>& G_trial, Real trial_norm) {
+    a = trial;
+    G = G_trial;
+    Ma = M_trial;
+    J = J_trial;
+    std::swap(T.values, T.accepted);
+    values_current = true;
+    norm = trial_norm;
+  };
+  for (int it = 0; it < max_iterations; ++it) {
+    info.iterations = it;
+    info.residual = norm;
+    if (!std::isfinite(norm)) return false;
+    if (norm < 1e-14) return true;
+    ldlt.compute(J);
+    if (ldlt.info() != Eigen::Success) return false;
+    const VecM<M> step = ldlt.solve(G);
+    VecM<M> trial = a - step;
+    evaluate(trial, M_trial, J_trial);
+    VecM<M> G_trial = M_trial - m;
+    Real trial_norm = G_trial.cwiseAbs().maxCoeff() * scale;
+    if (std::isfinite(trial_norm) && trial_norm < norm) {
+      accept(trial, G_trial, trial_norm);
+      // A full Newton step this small leaves |G| ~ step^2: round-off.
+      if (step.cwiseAbs().maxCoeff() < 1e-10) {
+        info.iterations = it + 1;
+        info.residual = norm;
+        return norm < 1e-11;
+      }
+      continue;
+    }
+    // No decrease from a point already at |G| ~ round-off: that is the floor.
+    if (norm < 1e-12) return true;
+    // Far from the root: backtracking on the convex Phi along the Newton direction.
+    const Real phi0 = dual_objective<M>(a, m, grid);
+    const Real slope = G.dot(step);
+    Real t = 0.5;
+    for (int ls = 0; ls < 40; ++ls, t *= 0.5) {
+      trial = a - t * step;
+      const Real phi = dual_objective<M>(trial, m, grid);
+      if (std::isfinite(phi) && phi <= phi0 - 1e-4 * t * slope) break;
+    }
+    evaluate(trial, M_trial, J_trial);
+    G_trial = M_trial - m;
+    trial_norm = G_trial.cwiseAbs().maxCoeff() * scale;
+    if (!std::isfinite(trial_norm)) return false;
+    accept(trial, G_trial, trial_norm);
+  }
+  info.iterations = max_iterations;
+  info.residual = norm;
+  return norm < 1e-11;
+}
+
+// The tensor-grid solve: warm start from the coefficients with their stored moments and
+// Jacobian (while those are still of a), else the continuous start. f_eq (if not empty): the
+// values of the new coefficients, written only if they changed.
+template <int M>
+EquilibriumSolveInfo solve_tensor(const EquilibriumTarget& target, const VelocityGrid& grid,
+                                  TensorKernelCache& T, EquilibriumCoefficients& coefficients,
+                                  std::span<Real> f_eq) {
+  const Real s = grid.reference_speed;
+  const VecM<M> m = target_moments<M>(target, s);
+  EquilibriumSolveInfo info;
+  VecM<M> a, Ma;
+  MatM<M> J;
+  bool values_current = false;
+  bool warm = coefficients.size == M;
+  if (warm) {
+    for (int i = 0; i < M; ++i) a[i] = coefficients.a[i];
+    const bool have_state = coefficients.has_moments && coefficients.moments_at == coefficients.a;
+    if (have_state) {
+      J = Eigen::Map<const MatM<M>>(coefficients.jacobian.data());
+      for (int i = 0; i < M; ++i) Ma[i] = coefficients.moments[i];
+    }
+    if (!tensor_newton<M>(a, m, T, grid, info, J, Ma, have_state, values_current)) warm = false;
+  }
+  if (!warm) {
+    a = continuous_start<M>(target, s);
+    if (!tensor_newton<M>(a, m, T, grid, info, J, Ma, false, values_current))
+      throw SolverError(
+          "discrete equilibrium: Newton did not converge (rho = " + std::to_string(target.rho) +
+          ", |G|/rho = " + std::to_string(info.residual) + ")");
+  }
+  coefficients.size = M;
+  coefficients.a.fill(0);
+  for (int i = 0; i < M; ++i) coefficients.a[i] = a[i];
+  coefficients.has_jacobian = true;
+  Eigen::Map<MatM<M>>(coefficients.jacobian.data()) = J;
+  coefficients.moments.fill(0);
+  for (int i = 0; i < M; ++i) coefficients.moments[i] = Ma[i];
+  coefficients.moments_at = coefficients.a;
+  coefficients.has_moments = true;
+  if (!f_eq.empty() && values_current)
+    std::copy(T.accepted.begin(), T.accepted.end(), f_eq.begin());
+  info.values_written = values_current;
+  return info;
+}
+
 template <int M>
 EquilibriumSolveInfo solve(const EquilibriumTarget& target, const VelocityGrid& grid,
                            EquilibriumCoefficients& coefficients) {
@@ -259,15 +429,16 @@ EquilibriumSolveInfo solve(const EquilibriumTarget& target, const VelocityGrid& 
     a = continuous_start<M>(target, s);
     have_jacobian = false;
     if (!newton<M>(a, m, grid, info, J, have_jacobian))
-      throw SolverError("discrete equilibrium: Newton did not converge (rho = " +
-                        std::to_string(target.rho) + ", |G|/rho = " +
-                        std::to_string(info.residual) + ")");
+      throw SolverError(
+          "discrete equilibrium: Newton did not converge (rho = " + std::to_string(target.rho) +
+          ", |G|/rho = " + std::to_string(info.residual) + ")");
   }
   coefficients.size = M;
   coefficients.a.fill(0);
   for (int i = 0; i < M; ++i) coefficients.a[i] = a[i];
   coefficients.has_jacobian = have_jacobian;
   if (have_jacobian) Eigen::Map<MatM<M>>(coefficients.jacobian.data()) = J;
+  coefficients.has_moments = false;
   return info;
 }
 
@@ -275,6 +446,17 @@ template <int M>
 void velocity_derivative(const EquilibriumCoefficients& coefficients,
                          const EquilibriumTarget& target, const VelocityGrid& grid,
                          std::span<const Real> f_eq, std::span<Real> df_du) {
+  (void)coefficients;
+  const TensorKernelCache& T = tensor_kernel(grid);
+  if (T.kernel.valid()) {
+    VecM<M> G;
+    MatM<M> J;
+    T.kernel.basis_moments<M>(f_eq.data(), G, &J);
+    const Eigen::Matrix<Real, M, 3> da_du =
+        Eigen::LDLT<MatM<M>>(J).solve(target_velocity_derivative<M>(target, grid.reference_speed));
+    T.kernel.basis_combination<M, 3>(f_eq.data(), da_du, df_du.data());
+    return;
+  }
   const Real inv_s = 1.0 / grid.reference_speed;
   MatM<M> J = MatM<M>::Zero();
   for (Index k = 0; k < grid.size(); ++k) {
@@ -284,7 +466,6 @@ void velocity_derivative(const EquilibriumCoefficients& coefficients,
   J = J.template selfadjointView<Eigen::Lower>();
   const Eigen::Matrix<Real, M, 3> da_du =
       Eigen::LDLT<MatM<M>>(J).solve(target_velocity_derivative<M>(target, grid.reference_speed));
-  (void)coefficients;
   for (Index k = 0; k < grid.size(); ++k) {
     const VecM<M> phi = basis<M>(grid.c[k] * inv_s);
     const Eigen::RowVector3d d = f_eq[k] * (phi.transpose() * da_du);
@@ -313,8 +494,7 @@ EquilibriumTarget maxwellian_target(Real rho, const Vec3& u, Real T, const Kinet
 }
 
 EquilibriumCoefficients continuous_coefficients(const EquilibriumTarget& target,
-                                                CollisionModel model,
-                                                const VelocityGrid& grid) {
+                                                CollisionModel model, const VelocityGrid& grid) {
   EquilibriumCoefficients c;
   if (model == CollisionModel::Bgk) {
     const VecM<5> a = continuous_start<5>(target, grid.reference_speed);
@@ -331,9 +511,25 @@ EquilibriumCoefficients continuous_coefficients(const EquilibriumTarget& target,
 EquilibriumSolveInfo solve_equilibrium(const EquilibriumTarget& target, CollisionModel model,
                                        const VelocityGrid& grid,
                                        EquilibriumCoefficients& coefficients) {
+  return solve_equilibrium(target, model, grid, coefficients, std::span<Real>());
+}
+
+EquilibriumSolveInfo solve_equilibrium(const EquilibriumTarget& target, CollisionModel model,
+                                       const VelocityGrid& grid,
+                                       EquilibriumCoefficients& coefficients,
+                                       std::span<Real> f_eq) {
   if (!(target.rho > 0)) throw RecoverableError("discrete equilibrium: non-positive density");
-  return model == CollisionModel::Bgk ? solve<5>(target, grid, coefficients)
-                                      : solve<10>(target, grid, coefficients);
+  TensorKernelCache& T = tensor_kernel(grid);
+  if (T.kernel.valid())
+    return model == CollisionModel::Bgk ? solve_tensor<5>(target, grid, T, coefficients, f_eq)
+                                        : solve_tensor<10>(target, grid, T, coefficients, f_eq);
+  EquilibriumSolveInfo info = model == CollisionModel::Bgk ? solve<5>(target, grid, coefficients)
+                                                           : solve<10>(target, grid, coefficients);
+  if (!f_eq.empty()) {
+    evaluate_equilibrium(coefficients, grid, f_eq);
+    info.values_written = true;
+  }
+  return info;
 }
 
 EquilibriumCoefficients equilibrium(const EquilibriumTarget& target, CollisionModel model,
@@ -345,6 +541,11 @@ EquilibriumCoefficients equilibrium(const EquilibriumTarget& target, CollisionMo
 
 void evaluate_equilibrium(const EquilibriumCoefficients& coefficients, const VelocityGrid& grid,
                           std::span<Real> f_eq) {
+  const TensorKernelCache& T = tensor_kernel(grid);
+  if (T.kernel.valid()) {
+    T.kernel.exponential(coefficients.a.data(), coefficients.size, f_eq.data());
+    return;
+  }
   Eigen::Map<Eigen::VectorXd> out(f_eq.data(), grid.size());
   if (coefficients.size == 5) {
     const VecM<5> a = Eigen::Map<const VecM<5>>(coefficients.a.data());
@@ -362,6 +563,27 @@ void equilibrium_velocity_derivative(const EquilibriumCoefficients& coefficients
     velocity_derivative<5>(coefficients, target, grid, f_eq, df_du);
   else
     velocity_derivative<10>(coefficients, target, grid, f_eq, df_du);
+}
+
+MacroState cell_moments(std::span<const Real> f_cell, const VelocityGrid& grid,
+                        const KineticGas& gas) {
+  const TensorKernelCache& T = tensor_kernel(grid);
+  if (!T.kernel.valid()) return moments(f_cell, grid, gas);
+  MacroState m;
+  Real rho;
+  Vec3 u, q;
+  Mat3 P;
+  T.kernel.central_moments(f_cell.data(), rho, u, P, q);
+  if (!(rho > 0)) throw RecoverableError("kinetic moments: non-positive density");
+  const Real s = grid.reference_speed;
+  m.rho = rho;
+  m.u = s * u;
+  m.pressure_tensor = (s * s) * P;
+  m.p = m.pressure_tensor.trace() / 3;
+  m.T = m.p / (rho * gas.R);
+  m.stress = -(m.pressure_tensor - m.p * Mat3::Identity());
+  m.heat_flux = (s * s * s) * q;
+  return m;
 }
 
 void sample_maxwellian(Real rho, const Vec3& u, Real T, const KineticGas& gas,

@@ -55,13 +55,14 @@ void KineticOperator::initialize(std::span<Real> f,
 }
 
 void KineticOperator::update_collision(Index c, std::span<const Real> f_cell) {
-  macro_[c] = moments(f_cell, grid_, gas_);
+  macro_[c] = cell_moments(f_cell, grid_, gas_);
   target_[c] = equilibrium_target(macro_[c], gas_);
-  const EquilibriumSolveInfo info =
-      solve_equilibrium(target_[c], gas_.model, grid_, coefficients_[c]);
-  equilibrium_iterations_ += info.iterations;
+  // f_eq_ of cell c always holds the values of coefficients_[c] (or nothing yet), which
+  // solve_equilibrium refreshes only if they changed.
   const Index N = n_ordinates();
-  evaluate_equilibrium(coefficients_[c], grid_, std::span<Real>(f_eq_.data() + c * N, N));
+  const EquilibriumSolveInfo info = solve_equilibrium(
+      target_[c], gas_.model, grid_, coefficients_[c], std::span<Real>(f_eq_.data() + c * N, N));
+  equilibrium_iterations_ += info.iterations;
   nu_[c] = gas_.collision_frequency(macro_[c].rho, macro_[c].T);
 }
 
