@@ -3,18 +3,22 @@
 // Lengths in micrometres here, written in metres (Mesh.ScalingFactor). Origin at the plate
 // centre; x along the plate's length lp, y along its width wp.
 //
-//            anchor                                                   anchor
-//   y = 110   +----+ . . . . . . . . . . . . . . . . . . . . . . . +----+
-//             |    |----------------------------------------------|    |
-//             |shin|                 plate lp x wp                 |shin|    thigh: l1 x wb
-//             |    |                 300 x 220                     |    |    shin:  wb x l2
-//   foot  ----+    |                                               |    +----  foot: l3 x wb
-//   anchor|___|____|        (mirror image in y below)              |____|___|anchor
+// One quarter, x > 0 and y > 0 (um; the other three are its mirror images in x = 0, y = 0):
 //
-// One quarter (x > 0, y > 0; the others are its mirror images in x = 0 and y = 0):
+//   y = 110  -------------+-------+-----+
+//                         | thigh |knee |
+//   y =  90               +-------+     |
+//              plate      |  gap  |shin |
+//                         |       |     |
+//   y =  40               |       |     +--------+
+//                         |       |     |  foot  |  <- anchor (x = 220, clamped)
+//   y =  20               |       +-----+--------+
+//   y =   0  .............|
+//                     x = 150    170   190      220
+//
 //   plate   [0, 150] x [0, 110]                       (lp / 2, wp / 2)
 //   thigh   [150, 190] x [90, 110]   l1 = 40 along x from the plate's short edge, flush with
-//                                    its long edge, wb = 20 wide
+//                                    its long edge, wb = 20 wide (the knee square included)
 //   shin    [170, 190] x [20, 110]   l2 = 90 along -y (folded back along the short edge)
 //   foot    [190, 220] x [20, 40]    l3 = 30 along x; its end x = 220 is the anchor (clamped)
 // The table's l1, l2, l3 are read as the outer lengths of the three segments; the extracted
@@ -25,8 +29,8 @@
 // straddles an electrode edge (the parallel-plate areas are then exact).
 //
 // Mesh: structured quadrilaterals of side h on every rectangle (every length is a multiple of
-// 10 um, so h = 10, 5, 2.5 ... fit exactly): h = 5 um gives 3152 cells (the thesis: 3226),
-// h = 2.5 um 12608 (thesis: 12904). From the command line:
+// 10 um, so h = 10, 5, 2.5 ... fit exactly): h = 10 um gives 772 cells, h = 5 um 3088 (the
+// thesis: 3226), h = 2.5 um 12352 (thesis: 12904). From the command line:
 //   gmsh -setnumber h 5 -2 -format msh41 frogleg_varactor.geo -o frogleg.msh
 // Patches: "anchor" (the four foot ends, clamped) and "edge" (every other edge, free).
 
