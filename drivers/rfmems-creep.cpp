@@ -6,13 +6,20 @@
 //
 //   rfmems-creep CASE.yaml [--set KEY=VALUE]... [-o RESULT.h5] [--json] [--quiet]
 //                [--restart CHECKPOINT.h5] [--checkpoint-every-steps N]
-//                [--checkpoint-every-seconds T]
+//                [--checkpoint-every-seconds T] [--hold-voltage-for-gap GAP]
 //
 // Sample runs:
 //   rfmems-creep cases/creep_fixed_fixed/case.yaml          # 500 h, Table 4.1 plate
 //   rfmems-creep cases/creep_switch_hold/case.yaml --json   # creep life of a held switch
 //   rfmems-creep cases/creep_switch_hold/case.yaml --set actuation.voltage=60V
 //   rfmems-creep CASE --checkpoint-every-seconds 60; after a crash: same + --restart FILE
+//   rfmems-creep cases/frogleg_varactor/case.yaml --hold-voltage-for-gap 1.43um --json
+//
+// --hold-voltage-for-gap GAP solves no creep: it finds the hold voltage whose elastic
+// equilibrium at t = 0 has the gap g0 + w = GAP at the case's first probe
+// (physics/creep/hold_voltage_search.hpp; the case's actuation.voltage, if any, is the first
+// trial), prints it (JSON with --json: voltage_V, gap_m, probe, trials) and exits; a GAP not
+// below g0, or beyond the pull-in fold, is bad input (exit 2).
 //
 // Checkpoints go to <result without .h5>.checkpoint.h5 (atomically replaced) at output times
 // when a trigger is due; --restart resumes from one and gives bit for bit the result of the
@@ -23,12 +30,14 @@
 // Exit codes as the other drivers: 0 success; 2 bad input (one line on stderr, no result
 // file); 1 other failures.
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -44,6 +53,7 @@
 #include "io/units.hpp"
 #include "physics/creep/creep_case.hpp"
 #include "physics/creep/creep_plate_model.hpp"
+#include "physics/creep/hold_voltage_search.hpp"
 
 namespace {
 
@@ -56,6 +66,7 @@ struct CreepOptions {
   std::string restart;
   long every_steps = -1;      // -1: the case's value
   double every_seconds = -1;
+  std::string hold_voltage_for_gap;  // a length: find the hold voltage and exit
 };
 CreepOptions creep_options;
 
@@ -76,11 +87,57 @@ std::string checkpoint_path_for(const std::string& output) {
 
 Json nullable(Real x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
 
+// --hold-voltage-for-gap: the voltage whose elastic gap at the first probe is the given one.
+int print_hold_voltage_for_gap(const CreepCase& creep, const DriverOptions& options) {
+  const std::string option = "--hold-voltage-for-gap";
+  auto bad = [&](const std::string& what) {
+    return InputError(
+        fmt::format("option '{}' = '{}': {}", option, creep_options.hold_voltage_for_gap, what));
+  };
+  Real target = 0;
+  try {
+    target = parse_quantity(creep_options.hold_voltage_for_gap, Dimension::Length);
+  } catch (const std::invalid_argument& e) {
+    throw bad(e.what());
+  }
+  if (!creep.has_gap) throw bad("the case has no actuation section (no gap)");
+  if (creep.probes.empty()) throw bad("the case has no probe to measure the gap at");
+  if (!(target > 0 && target < creep.initial_gap))
+    throw bad(fmt::format("must be in (0, actuation.gap = {:.6g} m)", creep.initial_gap));
+  HoldVoltageSearchResult r;
+  try {
+    HoldVoltageSearchOptions search;
+    if (creep.hold) search.first_voltage = creep.hold->voltage;  // the case's value: a guess
+    r = find_hold_voltage(case_probe_gap(creep, 0), target, search);
+  } catch (const SolverError& e) {
+    throw bad(e.what());
+  }
+  if (options.json) {
+    Json trials = Json::array();
+    for (const HoldVoltageTrial& t : r.trials)
+      trials.push_back({{"voltage_V", t.voltage}, {"gap_m", t.gap ? Json(*t.gap) : Json(nullptr)}});
+    Json out;
+    out["voltage_V"] = r.voltage;
+    out["gap_m"] = r.gap;
+    out["target_gap_m"] = target;
+    out["initial_gap_m"] = creep.initial_gap;
+    out["probe"] = creep.probes[0].name;
+    out["trials"] = trials;
+    std::cout << json_text(out) << std::flush;
+  } else {
+    std::printf("hold voltage %.9g V: gap %.9g m at probe %s (%zu trials)\n", r.voltage, r.gap,
+                creep.probes[0].name.c_str(), r.trials.size());
+  }
+  return 0;
+}
+
 int run(const DriverOptions& options) {
   const DriverCase run_case(options);
   const CaseFile& case_file = run_case.file;
   CreepCase creep = read_creep_case(run_case.root, run_case.dir);
   case_file.check_all_used();  // a typo stops the run here, before any solving
+  if (!creep_options.hold_voltage_for_gap.empty())
+    return print_hold_voltage_for_gap(creep, options);
   const ValidityReport validity = creep_case_validity(run_case.root, creep);
   if (!options.quiet) print_validity_warnings("rfmems-creep", validity);
 
@@ -137,6 +194,8 @@ int run(const DriverOptions& options) {
   summary["lifetime_h"] = nullable(result.lifetime / 3600);
   if (!result.message.empty()) summary["solver_message"] = result.message;
   summary["hold_voltage_V"] = creep.hold ? creep.hold->voltage : 0.0;
+  if (creep.has_gap) summary["gap_m"] = creep.initial_gap;
+  summary["plate_thickness_m"] = creep.plate->section.thickness;
   Json probes = Json::object();
   const std::vector<double>& first = result.series.front();
   const std::vector<double>& last = result.series.back();
@@ -195,6 +254,9 @@ int main(int argc, char** argv) {
     app.add_option("--checkpoint-every-seconds", creep_options.every_seconds,
                    "write a checkpoint at the first output time after every T wall seconds")
         ->check(CLI::NonNegativeNumber);
+    app.add_option("--hold-voltage-for-gap", creep_options.hold_voltage_for_gap,
+                   "print the hold voltage whose elastic gap at the first probe is GAP "
+                   "(e.g. 1.43um) and exit");
   };
   return driver_main(kProgram,
                      "rfmems-creep: creep of a plate (pressure, hold voltage), creep life, "

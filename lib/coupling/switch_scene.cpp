@@ -19,6 +19,37 @@ void read_interval(const CaseNode& node, const std::string& key, Real& lo, Real&
   hi = v[1];
 }
 
+ElectrodeExtent read_electrode(const CaseNode& e, bool plate) {
+  ElectrodeExtent extent;
+  read_interval(e, "x", extent.x_min, extent.x_max);
+  read_interval(e, "y", extent.y_min, extent.y_max);
+  e.require(plate || !e.has("y"), "y", "only a plate has an electrode extent in y");
+  return extent;
+}
+
+bool overlap(const ElectrodeExtent& a, const ElectrodeExtent& b) {
+  return a.x_min < b.x_max && b.x_min < a.x_max && a.y_min < b.y_max && b.y_min < a.y_max;
+}
+
+// `electrode` (one, default: everywhere) or `electrodes` (a list of non-overlapping ones).
+std::vector<ElectrodeExtent> read_electrodes(const CaseNode& act, bool plate) {
+  if (act.has("electrode")) {
+    act.require(!act.has("electrodes"), "electrodes", "give either electrode or electrodes");
+    return {read_electrode(act.child("electrode"), plate)};
+  }
+  if (!act.has("electrodes")) return {ElectrodeExtent{}};
+  const CaseNode list = act.child("electrodes");
+  act.require(list.size() >= 1, "electrodes", "expected a list of at least one electrode");
+  std::vector<ElectrodeExtent> out;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    out.push_back(read_electrode(list.item(i), plate));
+    for (std::size_t j = 0; j < i; ++j)
+      if (overlap(out[j], out[i]))
+        list.item(i).fail(fmt::format("overlaps electrode {} (an area would count twice)", j + 1));
+  }
+  return out;
+}
+
 // The squeeze film under a plate (see the header); null without one.
 std::unique_ptr<ReynoldsFilm> read_gas(const CaseNode& root, const SwitchScene& s) {
   if (!root.has("gas")) return nullptr;
@@ -78,12 +109,10 @@ SwitchScene build_switch_scene(const CaseNode& root, const std::string& case_dir
                          : ElectrostaticsModel::ParallelPlate;
   act.require(!(plate && s.electrostatics == ElectrostaticsModel::Laplace), "electrostatics",
               "laplace needs a plane beam (model.structure: plane); a plate uses parallel_plate");
-  if (act.has("electrode")) {
-    const CaseNode e = act.child("electrode");
-    read_interval(e, "x", s.electrode.x_min, s.electrode.x_max);
-    read_interval(e, "y", s.electrode.y_min, s.electrode.y_max);
-    e.require(plate || !e.has("y"), "y", "only a plate has an electrode extent in y");
-  }
+  s.electrodes = read_electrodes(act, plate);
+  s.electrode = s.electrodes.front();
+  act.require(s.electrodes.size() == 1 || s.electrostatics == ElectrostaticsModel::ParallelPlate,
+              "electrodes", "laplace electrostatics take one electrode");
   if (!plate) {
     s.facing_patch = act.get_string("facing_patch", "bottom");
     act.require(mesh.find_patch(s.facing_patch) >= 0, "facing_patch", "the mesh has no such patch");
@@ -114,8 +143,12 @@ SwitchScene build_switch_scene(const CaseNode& root, const std::string& case_dir
   s.control_point = point;
   s.control = plate ? 3 * cell : 2 * cell + 1;  // w, or u_y
 
-  std::vector<GapElement> elements = elements_over_electrode(
-      s.structure->gap_elements(s.facing_patch), s.electrode, plate);
+  const std::vector<GapElement> facing = s.structure->gap_elements(s.facing_patch);
+  std::vector<GapElement> elements;
+  for (const ElectrodeExtent& electrode : s.electrodes) {
+    const std::vector<GapElement> over = elements_over_electrode(facing, electrode, plate);
+    elements.insert(elements.end(), over.begin(), over.end());
+  }
   act.require(!elements.empty(), "electrode", "no part of the structure lies over the electrode");
   s.actuation = std::make_unique<ParallelPlateActuation>(s.structure->structure(),
                                                          std::move(elements), s.gap, law);

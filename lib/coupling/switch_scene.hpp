@@ -6,6 +6,9 @@
 //     gap: 3.75 um                    # air gap at rest, between the structure and the electrode
 //     electrostatics: parallel_plate  # parallel_plate (default) | laplace (plane structures)
 //     electrode: {x: [160 um, 240 um], y: [0 um, 40 um]}   # optional; default: everywhere
+//     electrodes:                     # or several (parallel_plate): the electrodes at the
+//       - {x: [0 um, 40 um]}          # voltage, e.g. the two actuation electrodes of a
+//       - {x: [260 um, 300 um]}       # varactor; they must not overlap
 //     facing_patch: bottom            # plane structures: the beam face over the electrode
 //     control: [200 um, 20 um]        # the point whose deflection is controlled and reported
 //     dielectric: {thickness: 0.1 um, permittivity: 7.6}   # parallel_plate, optional
@@ -48,7 +51,8 @@ struct SwitchScene {
   std::unique_ptr<StructuralModel> structure;
   ElectrostaticsModel electrostatics = ElectrostaticsModel::ParallelPlate;
   Real gap = 0;
-  ElectrodeExtent electrode;
+  ElectrodeExtent electrode;                // the first of `electrodes` (laplace: the only one)
+  std::vector<ElectrodeExtent> electrodes;  // at least one
   std::string facing_patch;       // plane structures
   Vec3 control_point = Vec3::Zero();
   Index control = -1;             // the controlled unknown

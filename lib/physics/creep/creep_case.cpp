@@ -94,6 +94,7 @@ CreepCase read_creep_case(const CaseNode& root, const std::string& case_dir) {
     c.has_gap = true;
     c.gap_elements = scene.actuation->elements();
     c.initial_gap = scene.gap;
+    c.gap_law = scene.actuation->law();
     const CaseNode act = root.child("actuation");
     const Real voltage = act.get_quantity("voltage", Dimension::Voltage, 0.0, Range::non_negative());
     if (voltage > 0) c.hold = CreepHoldVoltage{c.gap_elements, c.initial_gap, scene.actuation->law(), voltage};

@@ -50,6 +50,7 @@ struct CreepCase {
   bool has_gap = false;
   std::vector<GapElement> gap_elements;
   Real initial_gap = 0;
+  ParallelPlateLaw gap_law;              // the actuation's parallel-plate law
   std::optional<CreepHoldVoltage> hold;  // voltage > 0
   std::vector<Probe> probes;
   CreepRunSettings settings;  // without checkpoint path and hash (the driver's)

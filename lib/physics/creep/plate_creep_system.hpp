@@ -161,7 +161,7 @@ class PlateCreepSystem : public CreepSystem {
   std::vector<Real> structural_values_;  // the constant y rows, in pattern order
   Index structural_nnz_ = 0;             // y rows occupy values [0, structural_nnz_)
   std::vector<Real> plate_stiffness_;
-  std::unique_ptr<KluFactorization> plate_lu_;  // dR_plate/dy, factorised once (linear)
+  std::unique_ptr<KluFactorization> plate_lu_;  // dR_plate/dy, factorised once (linear), lazily
   std::optional<CreepHoldVoltage> hold_;
   std::vector<Index> hold_diagonal_;  // per element: value index of (dof, dof) in pattern_
   std::vector<Index> hold_plate_diagonal_;  // ... and in the plate's stiffness pattern
