@@ -45,6 +45,7 @@
 #include <vector>
 
 #include "fv/agglomeration.hpp"
+#include "parallel/communication_counters.hpp"
 #include "physics/gas/comet/point_coupled_smoother.hpp"
 #include "physics/gas/kinetic/kinetic_operator.hpp"
 
@@ -77,12 +78,13 @@ struct CometResult {
   Real residual_ratio = 0;       // ||r||_2 / ||r_0||_2 at exit
   std::vector<Real> history;     // residual ratio after each cycle
   int levels = 1;                // including the fine level
-  std::vector<Index> level_cells;
-  long cell_updates = 0;         // cell point solves, all levels
+  std::vector<Index> level_cells;  // summed over the ranks
+  long cell_updates = 0;         // cell point solves, all levels (all ranks)
   Real fine_sweep_equivalents = 0;  // sum over levels of passes x (cells / fine cells)
   long damped_steps = 0;
   bool mass_rescaled = false;    // conserve_mass applied (closed domain)
   double wall_seconds = 0;
+  CommunicationCounters communication;  // sent by this rank during the solve (COMET path)
 };
 
 class CometSolver {
