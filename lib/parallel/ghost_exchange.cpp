@@ -102,7 +102,10 @@ void GhostExchange::exchange_blocks(std::span<T> values, int block, void* mpi_ty
   }
   detail::count_exchange();
   detail::count_messages(static_cast<std::int64_t>(send_rank_.size()), bytes);
-  MPI_Waitall(static_cast<int>(pending.size()), pending.data(), MPI_STATUSES_IGNORE);
+  {
+    const detail::WaitTimer timer;
+    MPI_Waitall(static_cast<int>(pending.size()), pending.data(), MPI_STATUSES_IGNORE);
+  }
   for (std::size_t i = 0; i < recv_rank_.size(); ++i)
     for (std::size_t j = 0; j < recv_cells_[i].size(); ++j)
       std::copy(in[i].begin() + j * block, in[i].begin() + (j + 1) * block,
