@@ -158,6 +158,68 @@ void expect_serial_answer(const Comparison& c, Real growth = 1.5) {
   EXPECT_LE(c.parallel_cycles, growth * c.serial_cycles + 2);
 }
 
+// The coarse levels of a distributed mesh (fv/agglomeration.hpp): on every level and rank each
+// owned coarse cell is closed (its outward face areas sum to 0, so no face across a part
+// boundary is missing), the owned volumes add up to the domain's area, the level count and
+// global cell counts are the same as seen from every rank, and every coarse ghost carries the
+// volume its owner has, and every fine cell (ghosts too) lies inside its coarse cell (the
+// coarse numbers sent to the ghosts name the right cells).
+TEST(CometDistributed, CoarseLevelsAreClosedAndConsistentAcrossRanks) {
+  const Communicator comm = Communicator::world();
+  BoxSpec spec;
+  spec.n[0] = spec.n[1] = 16;
+  const Mesh global = make_structured_mesh(spec, [](const Vec3& x) {
+    return Vec3(x.x() + 0.05 * std::sin(3 * x.y()), x.y() + 0.04 * std::sin(2 * x.x()), 0);
+  });
+  const DistributedMesh d = distribute_mesh(global, comm, 1);
+  const FaceGraph fine = face_graph_of(d.local.mesh);
+  const std::vector<Agglomeration> levels =
+      agglomeration_hierarchy(fine, 4, 30, comm, comm.is_serial() ? nullptr : &d.exchange);
+  const Index n_levels = static_cast<Index>(levels.size());
+  EXPECT_EQ(comm.max(n_levels), comm.sum(n_levels) / comm.size());
+  EXPECT_GE(n_levels, 3);
+  Real area = 0;
+  for (Index c = 0; c < global.n_cells(); ++c) area += global.cell_volume(c);
+  Index n_fine = global.n_cells();
+  const FaceGraph* finer = &fine;
+  for (const Agglomeration& a : levels) {
+    const FaceGraph& g = a.coarse;
+    // Every fine cell, ghosts too, lies inside its coarse cell: a ghost given the wrong coarse
+    // number would sit far from that cell's centroid.
+    Real misplaced = 0;
+    for (Index c = 0; c < finer->n_cells(); ++c) {
+      const Index k = a.coarse_of_fine[c];
+      const Real reach = 2 * std::sqrt(g.cell_volume[k]);
+      misplaced =
+          std::max(misplaced, (finer->cell_centroid[c] - g.cell_centroid[k]).norm() / reach);
+      EXPECT_LE(finer->cell_volume[c], g.cell_volume[k] * (1 + 1e-12));
+    }
+    EXPECT_LT(comm.max(misplaced), 1.0);
+    finer = &g;
+    Real closure = 0, volume = 0;
+    for (Index k = 0; k < g.n_owned_cells; ++k) {
+      Vec3 sum = Vec3::Zero();
+      for (Index i = g.cell_face_offsets[k]; i < g.cell_face_offsets[k + 1]; ++i) {
+        const Index f = g.cell_faces[i];
+        sum += g.face_owner[f] == k ? Vec3(g.face_area[f]) : Vec3(-g.face_area[f]);
+      }
+      closure = std::max(closure, sum.norm() / std::sqrt(g.cell_volume[k]));
+      volume += g.cell_volume[k];
+    }
+    EXPECT_LT(comm.max(closure), 1e-12);
+    EXPECT_NEAR(comm.sum(volume), area, 1e-12 * area);
+    const Index n_coarse = comm.sum(g.n_owned_cells);
+    EXPECT_LT(n_coarse, n_fine);
+    n_fine = n_coarse;
+    if (!comm.is_serial()) {
+      std::vector<Real> v(g.cell_volume.begin(), g.cell_volume.end());
+      for (Index k = g.n_owned_cells; k < g.n_cells(); ++k) v[k] = -1;
+      a.coarse_exchange.exchange(v, 1);
+      for (Index k = 0; k < g.n_cells(); ++k) EXPECT_EQ(v[k], g.cell_volume[k]);
+    }
+  }
+}
+
 TEST(CometDistributed, HeatTransferKn001EqualsSerial) {
   const Comparison c = compare(Case::HeatTransfer, 0.01);
   expect_serial_answer(c);
