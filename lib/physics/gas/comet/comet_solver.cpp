@@ -180,7 +180,7 @@ CometResult CometSolver::solve(std::span<Real> f) {
     r.initial_residual = rs.initial_residual;
     r.residual_ratio = rs.residual_ratio;
     r.history = rs.history;
-    r.level_cells = {fine_.graph().n_cells()};
+    r.level_cells = {fine_.communicator().sum(fine_.graph().n_owned_cells)};
     r.mass_rescaled = fine_.is_closed();
     r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;
