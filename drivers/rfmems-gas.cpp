@@ -1,7 +1,7 @@
 // rfmems-gas: steady rarefied gas flow by the discrete-velocity BGK / ESBGK model
 // (lib/physics/gas/kinetic): reads a case file (mesh, gas, initial state, velocity grid,
 // boundaries, solver; physics/gas/kinetic/kinetic_case.hpp), iterates to the steady state with
-// the solver named in `solver.type` (sequential; COMET when registered), writes the cell fields
+// the solver named in `solver.type` (sequential or comet), writes the cell fields
 // and the residual history to HDF5 + XDMF, and reports iterations, residuals and the forces and
 // heat flows on the walls.
 //
@@ -9,6 +9,8 @@
 //   rfmems-gas cases/gas_couette/case.yaml                  # -> out/gas_couette.h5, .xdmf
 //   rfmems-gas cases/gas_heat_transfer/case.yaml --json --quiet
 //   rfmems-gas cases/gas_cavity/case.yaml --set initial.knudsen=1 -o out/cavity_kn1.h5
+//   mpirun -np 2 rfmems-gas cases/gas_heat_transfer/case.yaml --set solver.type=comet
+//       # METIS parts, one ghost layer; COMET's coarse levels agglomerated per part
 //
 // Fields (step 0): density (kg/m^3), velocity (m/s), temperature (K), pressure (Pa),
 // heat_flux (W/m^2), stress (viscous, Pa, Voigt xx yy zz yz xz xy). /solver/residual: the
@@ -29,6 +31,7 @@
 #include "io/interrupt_cleanup.hpp"
 #include "io/json_summary.hpp"
 #include "io/result_writer.hpp"
+#include "parallel/communication_counters.hpp"
 #include "parallel/communicator.hpp"
 #include "physics/gas/kinetic/kinetic_case.hpp"
 
@@ -120,10 +123,17 @@ int run(const DriverOptions& options) {
   summary["case"] = name;
   summary["collision"] = collision_model_name(op.gas().model);
   summary["mesh"] = {{"dim", g.dim}, {"cells", scene.mesh->n_cells()}};
-  if (scene.distributed)
+  if (scene.distributed) {
     summary["partition"] = {{"ranks", world.size()},
                             {"edge_cut", scene.distributed->partition.edge_cut},
                             {"imbalance", scene.distributed->partition.imbalance}};
+    // What the root sent during the whole run (parallel/communication_counters.hpp).
+    const CommunicationCounters sent = communication_counters();
+    summary["communication_rank0"] = {{"messages", sent.messages},
+                                      {"bytes", sent.bytes},
+                                      {"ghost_exchanges", sent.exchanges},
+                                      {"reductions", sent.reductions}};
+  }
   summary["velocity_grid"] = {{"points", op.grid().n}, {"ordinates", op.grid().size()},
                               {"extent_m_per_s", op.grid().extent.maxCoeff()}};
   summary["initial"] = {{"density", scene.initial.rho}, {"temperature", scene.initial.T},

@@ -18,28 +18,56 @@
 // volume and every patch's area vector exactly; it is exact for the upwind flux c.S of a
 // state that is uniform on the merged face, which is what first-order upwind assumes anyway.
 //
-// Serial only for now: ghost cells (n_owned_cells < n_cells) are rejected (InputError); the
-// MPI issue will agglomerate owned cells and exchange coarse indices (thesis sec. 5.4 step 6).
+// Distributed meshes (thesis sec. 5.4 steps 5-7): a rank's FaceGraph holds its owned cells
+// and one ghost layer. Each rank pairs only its owned cells with owned neighbours, so a coarse
+// cell never crosses ranks and a coarse level is again "owned coarse cells, then ghosts":
+//   - owned coarse cells are numbered rank by rank (global number = the rank's offset, an
+//     exclusive sum of the owned coarse counts, + local index);
+//   - the coarse global number and owner rank of every owned fine cell go to the ranks that
+//     hold it as a ghost through the fine level's GhostExchange (step 6), so every fine
+//     ghost knows its coarse cell; the distinct coarse cells of the fine ghosts are the coarse
+//     ghosts, with a GhostExchange of their own;
+//   - coarse connectivity is rebuilt from the fine faces with at least one owned side (step
+//     7): since the fine ghost layer holds every neighbour of an owned fine cell, every face of
+//     an owned coarse cell is complete, and the coarse ghosts are again one full layer, so the
+//     next level agglomerates the same way. Faces between two ghosts are dropped; ghosts' volume
+//     and centroid come from their owners.
+// Invariant the grid transfers use (comet/fas_transfer.hpp): a fine cell is owned exactly when
+// its coarse cell is (coarse_of_fine[c] < coarse.n_owned_cells). On one rank everything
+// reduces to the serial agglomeration. The level count is decided on global cell counts, so
+// every rank (also one with no cells) builds the same number of levels.
 #pragma once
 #include <vector>
 
 #include "fv/face_graph.hpp"
+#include "parallel/ghost_exchange.hpp"
 
 namespace rfmems {
 
 struct Agglomeration {
   FaceGraph coarse;
-  std::vector<Index> coarse_of_fine;  // coarse cell of each fine cell
+  std::vector<Index> coarse_of_fine;  // coarse cell (local index) of each fine cell, ghosts too
+  // Distributed levels only (empty / serial otherwise): per coarse cell its global number and
+  // owning rank, and the exchange that refreshes the coarse ghosts.
+  std::vector<Index> coarse_global;
+  std::vector<int> coarse_owner;
+  GhostExchange coarse_exchange;
 };
 
-// One coarsening step.
+// One coarsening step of a serial graph (InputError if it has ghost cells).
 Agglomeration agglomerate(const FaceGraph& fine);
+// One coarsening step of a rank's part: `fine_exchange` refreshes the fine ghosts (null: the
+// serial step). Collective over comm.
+Agglomeration agglomerate(const FaceGraph& fine, const Communicator& comm,
+                          const GhostExchange* fine_exchange);
 
 // Successive coarsenings of `fine`: levels[0] maps fine -> level 1, levels[i] maps level i ->
 // level i + 1 (levels[i].coarse is level i + 1). Coarsening stops before a level would have
 // fewer than `min_cells` cells, when it no longer reduces the count by at least 1/4, or after
-// `max_levels` coarse levels.
-std::vector<Agglomeration> agglomeration_hierarchy(const FaceGraph& fine, Index min_cells,
-                                                   int max_levels = 30);
+// `max_levels` coarse levels (cell counts summed over comm's ranks).
+std::vector<Agglomeration> agglomeration_hierarchy(
+    const FaceGraph& fine, Index min_cells, int max_levels = 30,
+    const Communicator& comm = Communicator::serial(),
+    const GhostExchange* fine_exchange = nullptr);
 
 }  // namespace rfmems

@@ -2,6 +2,8 @@
 
 #include <mpi.h>
 
+#include "parallel/communication_counters.hpp"
+
 namespace rfmems {
 
 namespace {
@@ -11,6 +13,8 @@ MPI_Comm comm_of(void* handle) { return static_cast<MPI_Comm>(handle); }
 template <class T>
 T all_reduce(void* handle, bool serial, T x, MPI_Datatype type, MPI_Op op) {
   if (serial) return x;
+  detail::count_reduction();
+  const detail::WaitTimer timer;
   T out{};
   MPI_Allreduce(&x, &out, 1, type, op, comm_of(handle));
   return out;
@@ -55,8 +59,19 @@ Real Communicator::min(Real x) const { return all_reduce(handle_, is_serial(), x
 
 void Communicator::sum_in_place(std::span<Real> values) const {
   if (is_serial() || values.empty()) return;
+  detail::count_reduction();
+  const detail::WaitTimer timer;
   MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM,
                 comm_of(handle_));
+}
+
+Index Communicator::exclusive_sum(Index x) const {
+  if (is_serial()) return 0;
+  detail::count_reduction();
+  const detail::WaitTimer timer;
+  Index out = 0;
+  MPI_Exscan(&x, &out, 1, MPI_INT64_T, MPI_SUM, comm_of(handle_));
+  return rank_ == 0 ? 0 : out;  // MPI leaves rank 0's result undefined
 }
 
 void Communicator::broadcast(std::vector<int>& values, int root) const {

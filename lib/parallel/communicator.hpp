@@ -38,6 +38,9 @@ class Communicator {
   Real max(Real x) const;
   Index max(Index x) const;
   Real min(Real x) const;
+  // Sum of x over the ranks below this one (rank 0: 0): the first global number of this
+  // rank's items when each rank numbers its own consecutively.
+  Index exclusive_sum(Index x) const;
   // Element-wise sum across ranks, in place.
   void sum_in_place(std::span<Real> values) const;
   void broadcast(std::vector<int>& values, int root = 0) const;

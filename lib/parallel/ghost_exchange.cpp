@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "mesh/partition.hpp"
+#include "parallel/communication_counters.hpp"
 
 namespace rfmems {
 
@@ -19,16 +20,20 @@ MPI_Comm comm_of(const Communicator& comm) { return static_cast<MPI_Comm>(comm.h
 
 }  // namespace
 
-GhostExchange::GhostExchange(const Communicator& comm, const LocalMesh& local) : comm_(comm) {
-  const Index n_owned = local.mesh.n_owned_cells();
-  const Index n_cells = local.mesh.n_cells();
+GhostExchange::GhostExchange(const Communicator& comm, const LocalMesh& local)
+    : GhostExchange(comm, local.mesh.n_owned_cells(), local.global_cell, local.owner_part) {}
+
+GhostExchange::GhostExchange(const Communicator& comm, Index n_owned,
+                             std::span<const Index> global_cell, std::span<const int> owner_rank)
+    : comm_(comm) {
+  const Index n_cells = static_cast<Index>(global_cell.size());
   if (comm.is_serial()) {
     if (n_cells != n_owned) throw SolverError("GhostExchange: ghost cells in a serial run");
     return;
   }
   // Ghosts grouped by owner, in local order (the order both sides keep).
   std::map<int, std::vector<Index>> ghosts_of;
-  for (Index c = n_owned; c < n_cells; ++c) ghosts_of[local.owner_part[c]].push_back(c);
+  for (Index c = n_owned; c < n_cells; ++c) ghosts_of[owner_rank[c]].push_back(c);
 
   const int p = comm.size();
   std::vector<int> n_request(p, 0), n_requested(p, 0);
@@ -42,7 +47,7 @@ GhostExchange::GhostExchange(const Communicator& comm, const LocalMesh& local) :
     recv_rank_.push_back(owner);
     recv_cells_.push_back(cells);
     std::vector<Index> ids;
-    for (Index c : cells) ids.push_back(local.global_cell[c]);
+    for (Index c : cells) ids.push_back(global_cell[c]);
     requests_out.push_back(std::move(ids));
   }
   for (int r = 0; r < p; ++r)
@@ -61,7 +66,7 @@ GhostExchange::GhostExchange(const Communicator& comm, const LocalMesh& local) :
   MPI_Waitall(static_cast<int>(pending.size()), pending.data(), MPI_STATUSES_IGNORE);
 
   std::unordered_map<Index, Index> local_of_global;
-  for (Index c = 0; c < n_owned; ++c) local_of_global.emplace(local.global_cell[c], c);
+  for (Index c = 0; c < n_owned; ++c) local_of_global.emplace(global_cell[c], c);
   for (const auto& ids : requests_in) {
     std::vector<Index> cells;
     for (Index g : ids) {
@@ -74,28 +79,45 @@ GhostExchange::GhostExchange(const Communicator& comm, const LocalMesh& local) :
   }
 }
 
-void GhostExchange::exchange(std::span<Real> values, int block) const {
+template <class T>
+void GhostExchange::exchange_blocks(std::span<T> values, int block, void* mpi_type) const {
   if (comm_.is_serial()) return;
-  std::vector<std::vector<Real>> out(send_rank_.size()), in(recv_rank_.size());
+  const MPI_Datatype type = static_cast<MPI_Datatype>(mpi_type);
+  std::vector<std::vector<T>> out(send_rank_.size()), in(recv_rank_.size());
   std::vector<MPI_Request> pending(send_rank_.size() + recv_rank_.size());
   std::size_t k = 0;
   for (std::size_t i = 0; i < recv_rank_.size(); ++i) {
     in[i].resize(recv_cells_[i].size() * block);
-    MPI_Irecv(in[i].data(), static_cast<int>(in[i].size()), MPI_DOUBLE, recv_rank_[i], kValuesTag,
+    MPI_Irecv(in[i].data(), static_cast<int>(in[i].size()), type, recv_rank_[i], kValuesTag,
               comm_of(comm_), &pending[k++]);
   }
+  std::int64_t bytes = 0;
   for (std::size_t i = 0; i < send_rank_.size(); ++i) {
     out[i].reserve(send_cells_[i].size() * block);
     for (Index c : send_cells_[i])
       out[i].insert(out[i].end(), values.begin() + c * block, values.begin() + (c + 1) * block);
-    MPI_Isend(out[i].data(), static_cast<int>(out[i].size()), MPI_DOUBLE, send_rank_[i],
-              kValuesTag, comm_of(comm_), &pending[k++]);
+    bytes += static_cast<std::int64_t>(out[i].size() * sizeof(T));
+    MPI_Isend(out[i].data(), static_cast<int>(out[i].size()), type, send_rank_[i], kValuesTag,
+              comm_of(comm_), &pending[k++]);
   }
-  MPI_Waitall(static_cast<int>(pending.size()), pending.data(), MPI_STATUSES_IGNORE);
+  detail::count_exchange();
+  detail::count_messages(static_cast<std::int64_t>(send_rank_.size()), bytes);
+  {
+    const detail::WaitTimer timer;
+    MPI_Waitall(static_cast<int>(pending.size()), pending.data(), MPI_STATUSES_IGNORE);
+  }
   for (std::size_t i = 0; i < recv_rank_.size(); ++i)
     for (std::size_t j = 0; j < recv_cells_[i].size(); ++j)
       std::copy(in[i].begin() + j * block, in[i].begin() + (j + 1) * block,
                 values.begin() + recv_cells_[i][j] * block);
+}
+
+void GhostExchange::exchange(std::span<Real> values, int block) const {
+  exchange_blocks(values, block, static_cast<void*>(MPI_DOUBLE));
+}
+
+void GhostExchange::exchange(std::span<Index> values, int block) const {
+  exchange_blocks(values, block, static_cast<void*>(MPI_INT64_T));
 }
 
 Index GhostExchange::n_sent_cells() const {

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/error.hpp"
+#include "parallel/communication_counters.hpp"
 #include "physics/gas/comet/fas_transfer.hpp"
 #include "physics/gas/kinetic/sequential_solver.hpp"
 
@@ -32,7 +33,8 @@ CometSolver::CometSolver(KineticOperator& fine, const CometOptions& options)
   if (!(options.tolerance > 0)) throw InputError("COMET: tolerance must be > 0");
   if (options.multigrid)
     hierarchy_ = agglomeration_hierarchy(fine.graph(), std::max<Index>(options.min_coarse_cells, 1),
-                                         options.max_levels);
+                                         options.max_levels, fine.communicator(),
+                                         fine.ghost_exchange());
   auto fine_level = std::make_unique<Level>();
   fine_level->graph = &fine.graph();
   fine_level->op = &fine;
@@ -43,6 +45,7 @@ CometSolver::CometSolver(KineticOperator& fine, const CometOptions& options)
     level->own_operator = std::make_unique<KineticOperator>(a.coarse, fine.grid(), fine.gas(),
                                                             fine.boundaries());
     level->op = level->own_operator.get();
+    if (fine.ghost_exchange()) level->op->set_parallel(fine.communicator(), &a.coarse_exchange);
     const Index size = level->op->size();
     level->f.resize(size);
     level->source.resize(size);
@@ -69,11 +72,15 @@ void CometSolver::smooth(int l, int sweeps) {
   Level& level = *levels_[l];
   const std::span<Real> f = level_f(l);
   if (!level.collision_current) level.op->update_collision(f);
+  // Gauss-Seidel within a rank's part, the ghosts refreshed after every pass (thesis sec. 5.4
+  // step 12): block Jacobi between parts, one exchange per pass.
   for (int s = 0; s < sweeps; ++s) {
     level.smoother->sweep(f, level.source, true);
+    level.op->exchange_ghosts(f);
     ++level.passes;
     if (options_.symmetric) {
       level.smoother->sweep(f, level.source, false);
+      level.op->exchange_ghosts(f);
       ++level.passes;
     }
   }
@@ -103,6 +110,7 @@ void CometSolver::cycle(int l) {
 
   // Coarse state and FAS source s_c = A_c(R f) + R' r.
   restrict_solution(*fine.graph, agg, n, f, coarse.f);
+  coarse.op->exchange_ghosts(coarse.f);  // the coarse residual reads its ghosts
   coarse.restricted = coarse.f;
   coarse.op->residual(coarse.f, coarse.residual);
   coarse.collision_current = true;
@@ -113,7 +121,7 @@ void CometSolver::cycle(int l) {
 
   // Correction by injection, damped per fine cell so that f stays positive.
   for (std::size_t i = 0; i < coarse.f.size(); ++i) coarse.restricted[i] = coarse.f[i] - coarse.restricted[i];
-  const Index nc = fine.graph->n_cells();
+  const Index nc = fine.graph->n_owned_cells;
   for (Index c = 0; c < nc; ++c) {
     const Real* e = &coarse.restricted[agg.coarse_of_fine[c] * n];
     Real* fc = &f[c * n];
@@ -123,6 +131,7 @@ void CometSolver::cycle(int l) {
     if (theta < 1.0) ++damped_prolongations_;
     for (Index k = 0; k < n; ++k) fc[k] += theta * e[k];
   }
+  fine.op->exchange_ghosts(f);
   fine.collision_current = false;
   smooth(l, options_.post_sweeps);
 }
@@ -142,7 +151,13 @@ Real CometSolver::domain_knudsen(std::span<const Real> f) const {
     lo = lo.cwiseMin(x);
     hi = hi.cwiseMax(x);
   }
-  const Real extent = (hi - lo).maxCoeff();
+  // Over every rank's part, so all ranks take the same regime decision.
+  const Communicator& comm = fine_.communicator();
+  volume = comm.sum(volume);
+  mass = comm.sum(mass);
+  thermal = comm.sum(thermal);
+  Real extent = 0;
+  for (int d = 0; d < 3; ++d) extent = std::max(extent, comm.max(hi[d]) - comm.min(lo[d]));
   return fine_.gas().knudsen(mass / volume, thermal / volume, extent);
 }
 
@@ -165,12 +180,14 @@ CometResult CometSolver::solve(std::span<Real> f) {
     r.initial_residual = rs.initial_residual;
     r.residual_ratio = rs.residual_ratio;
     r.history = rs.history;
-    r.level_cells = {fine_.graph().n_cells()};
+    r.level_cells = {fine_.communicator().sum(fine_.graph().n_owned_cells)};
     r.mass_rescaled = fine_.is_closed();
     r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;
   }
   fine_f_ = f;
+  fine_.exchange_ghosts(f);
+  const CommunicationCounters sent0 = communication_counters();
   for (auto& level : levels_) {
     level->passes = 0;
     level->collision_current = false;
@@ -188,7 +205,8 @@ CometResult CometSolver::solve(std::span<Real> f) {
   result.knudsen = knudsen;
   result.levels = n_levels();
   result.mass_rescaled = rescale;
-  for (auto& level : levels_) result.level_cells.push_back(level->graph->n_cells());
+  const Communicator& comm = fine_.communicator();
+  for (auto& level : levels_) result.level_cells.push_back(comm.sum(level->graph->n_owned_cells));
   result.initial_residual = fine_.residual_norm(f);
   levels_[0]->collision_current = true;
   Real ratio = 1.0;
@@ -215,14 +233,16 @@ CometResult CometSolver::solve(std::span<Real> f) {
     }
   }
   result.residual_ratio = result.converged && result.cycles == 0 ? 0.0 : ratio;
-  const Real fine_cells = Real(levels_[0]->graph->n_cells());
+  const Real fine_cells = Real(comm.sum(levels_[0]->graph->n_owned_cells));
   for (auto& level : levels_) {
     result.cell_updates += level->smoother->cell_updates();
     result.damped_steps += level->smoother->damped_steps();
-    result.fine_sweep_equivalents += Real(level->passes) * Real(level->graph->n_cells()) / fine_cells;
+    result.fine_sweep_equivalents +=
+        Real(level->passes) * Real(comm.sum(level->graph->n_owned_cells)) / fine_cells;
   }
-  result.cell_updates -= updates0;
-  result.damped_steps += damped_prolongations_ - damped0;
+  result.cell_updates = comm.sum(Index(result.cell_updates - updates0));
+  result.damped_steps = comm.sum(Index(result.damped_steps + damped_prolongations_ - damped0));
+  result.communication = communication_counters() - sent0;
   result.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

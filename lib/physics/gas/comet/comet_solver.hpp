@@ -34,6 +34,18 @@
 // volume-mean density and temperature of the initial state over the largest extent of the
 // mesh's bounding box (domain_knudsen()).
 //
+// Distributed runs (issue 7, thesis sec. 5.4; the operator set_parallel on a rank's part with
+// one ghost layer): the coarse levels are agglomerated per part (fv/agglomeration.hpp: coarse
+// cells never cross ranks, coarse ghost numbers exchanged, coarse connectivity rebuilt per
+// level), each coarse operator gets its level's ghost exchange; a smoothing pass is
+// Gauss-Seidel over the rank's owned cells and is followed by a ghost exchange (block Jacobi
+// between parts); restriction and prolongation act on owned cells (fas_transfer.hpp) and are
+// followed by a ghost exchange of the level they wrote; residual norms, masses, the domain
+// Knudsen number and the level sizes are global. A rank without cells takes part in every
+// collective. On one rank this is the serial algorithm, bit for bit; on P ranks it converges
+// to the serial steady state (to the tolerance) in a few more cycles
+// (test/mpi/test_comet_distributed.cpp).
+//
 // Convergence (shared with the sequential solver, kinetic_operator.hpp): ||r(f)||_2 /
 // ||r(f_0)||_2 <= tolerance on the fine level, checked after every cycle. With
 // multigrid = false the same loop runs the smoother alone (single-level COMET; an iteration is
@@ -45,6 +57,7 @@
 #include <vector>
 
 #include "fv/agglomeration.hpp"
+#include "parallel/communication_counters.hpp"
 #include "physics/gas/comet/point_coupled_smoother.hpp"
 #include "physics/gas/kinetic/kinetic_operator.hpp"
 
@@ -77,12 +90,13 @@ struct CometResult {
   Real residual_ratio = 0;       // ||r||_2 / ||r_0||_2 at exit
   std::vector<Real> history;     // residual ratio after each cycle
   int levels = 1;                // including the fine level
-  std::vector<Index> level_cells;
-  long cell_updates = 0;         // cell point solves, all levels
+  std::vector<Index> level_cells;  // summed over the ranks
+  long cell_updates = 0;         // cell point solves, all levels (all ranks)
   Real fine_sweep_equivalents = 0;  // sum over levels of passes x (cells / fine cells)
   long damped_steps = 0;
   bool mass_rescaled = false;    // conserve_mass applied (closed domain)
   double wall_seconds = 0;
+  CommunicationCounters communication;  // sent by this rank during the solve (COMET path)
 };
 
 class CometSolver {

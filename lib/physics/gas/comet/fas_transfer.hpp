@@ -10,6 +10,9 @@
 //   prolong_correction: f_c += e_C(c)                     (injection, piecewise constant: the
 //                       thesis's choice; first-order upwind has no smoother interpolant to
 //                       honour, and injection keeps R_sol P = identity)
+// Distributed levels (fv/agglomeration.hpp): all three act on owned cells only (a fine cell is
+// owned exactly when its coarse cell is); the caller refreshes the ghosts afterwards with the
+// level's exchange (coarse ghosts after a restriction, fine ghosts after a correction).
 #pragma once
 #include <span>
 

@@ -87,9 +87,6 @@ KineticScene build_kinetic_scene(const CaseNode& root, const std::string& case_d
       kinetic_boundaries_from_case(root.child("boundaries"), *scene.graph);
   const CaseNode solver = root.child_or_empty("solver");
   scene.solver = read_kinetic_solver_settings(solver);
-  // COMET's multigrid and cell-coupled smoother are serial (issue 7 leaves them to do).
-  if (scene.solver.type == "comet" && !comm.is_serial())
-    solver.fail("type", "'comet' runs on one process; use 'sequential' under mpirun");
 
   const CaseNode output = root.child_or_empty("output");
   if (output.has("forces")) {

@@ -78,6 +78,8 @@ class KineticOperator {
   // --- distribution over ranks (serial: a no-op) ---
   void set_parallel(const Communicator& comm, const GhostExchange* exchange);
   const Communicator& communicator() const { return comm_; }
+  // The exchange of set_parallel (null in a serial run): COMET builds its coarse levels on it.
+  const GhostExchange* ghost_exchange() const { return exchange_; }
   // Refreshes the ghost cells' distributions from their owners.
   void exchange_ghosts(std::span<Real> f) const;
   // ||r||_2 over the owned rows of every rank.
