@@ -52,7 +52,45 @@ struct Fixture {
       y[i] = i % 3 == 0 ? -0.15 * kGap * (1 + u(rng)) : 0.01 * u(rng);
     return y;
   }
+  // The film's edges: walls at the clamped ends, open along the free sides.
+  std::vector<FilmBoundary> film_boundaries() const {
+    std::vector<FilmBoundary> bcs;
+    for (const Patch& p : plate.mesh->patches())
+      bcs.push_back({p.name == "left" || p.name == "right" ? FilmBoundary::Kind::Wall
+                                                           : FilmBoundary::Kind::Open});
+    return bcs;
+  }
 };
+
+// Random film pressures about `ambient` (entries from m on), velocities and rates (from n_w to
+// m) and deflection rates (below n_w) of their typical sizes, with the finite-difference steps
+// and column scales that go with each kind of unknown.
+void randomise_film_state(Index m, Index n_w, double ambient, std::mt19937& rng,
+                          std::vector<double>& y, std::vector<double>& yp,
+                          std::vector<double>& steps, std::vector<double>& scales) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  steps.assign(y.size(), 0.0);
+  scales.assign(y.size(), 0.0);
+  for (Index i = 0; i < static_cast<Index>(y.size()); ++i) {
+    if (i >= m) {  // film pressure and its rate
+      y[i] = ambient * (1 + 0.2 * u(rng));
+      yp[i] = ambient * 1e5 * u(rng);
+      steps[i] = 1e-6 * ambient;
+      scales[i] = ambient;
+    } else if (i >= n_w) {  // velocities [m/s]
+      y[i] = 0.1 * u(rng);
+      yp[i] = 1e5 * u(rng);
+      // F is linear in v and v': a large step has no truncation error and keeps the tiny
+      // inertia entries c_j M above the round-off of the differences.
+      steps[i] = 1e3;
+      scales[i] = 0.1;
+    } else {
+      yp[i] = 0.1 * u(rng);
+      steps[i] = i % 3 == 0 ? 1e-6 * kGap : 1e-6;
+      scales[i] = i % 3 == 0 ? kGap : 0.01;
+    }
+  }
+}
 
 }  // namespace
 
@@ -73,43 +111,20 @@ TEST(CouplingJacobian, PlateParallelPlateReynoldsMonolithic) {
     Fixture f;
     GasProperties gas;
     gas.ambient_pressure = ambient;
-    std::vector<FilmBoundary> bcs;
-    for (const Patch& p : f.plate.mesh->patches())
-      bcs.push_back({p.name == "left" || p.name == "right" ? FilmBoundary::Kind::Wall
-                                                           : FilmBoundary::Kind::Open});
-    ReynoldsFilm film(*f.plate.mesh, gas, bcs);
+    ReynoldsFilm film(*f.plate.mesh, gas, f.film_boundaries());
     std::vector<Index> w_dof;
     for (Index c = 0; c < film.size(); ++c) w_dof.push_back(3 * c);
     SqueezeFilmSwitchSystem system(*f.act, f.plate.quasi_static_components(), film, w_dof);
 
     std::mt19937 rng(7);
-    std::uniform_real_distribution<double> u(-1, 1);
     std::vector<double> y, yp;
     system.initial_state(0.0, y, yp);
     const std::vector<double> w = f.deflection(rng);
     std::copy(w.begin(), w.end(), y.begin());
     const Index m = system.size() - film.size();
     // Steps for the differences; scales (typical sizes) to weigh the columns.
-    std::vector<double> steps(y.size()), scales(y.size());
-    for (Index i = 0; i < system.size(); ++i) {
-      if (i >= m) {  // film pressure and its rate
-        y[i] = ambient * (1 + 0.2 * u(rng));
-        yp[i] = ambient * 1e5 * u(rng);
-        steps[i] = 1e-6 * ambient;
-        scales[i] = ambient;
-      } else if (i >= static_cast<Index>(w.size())) {  // velocities [m/s]
-        y[i] = 0.1 * u(rng);
-        yp[i] = 1e5 * u(rng);
-        // F is linear in v and v': a large step has no truncation error and keeps the tiny
-        // inertia entries c_j M above the round-off of the differences.
-        steps[i] = 1e3;
-        scales[i] = 0.1;
-      } else {
-        yp[i] = 0.1 * u(rng);
-        steps[i] = i % 3 == 0 ? 1e-6 * kGap : 1e-6;
-        scales[i] = i % 3 == 0 ? kGap : 0.01;
-      }
-    }
+    std::vector<double> steps, scales;
+    randomise_film_state(m, static_cast<Index>(w.size()), ambient, rng, y, yp, steps, scales);
     const auto check = test_support::check_jacobian(system, 1e-6, 3e6, y, yp, steps, scales);
     // Round-off of the y' differences in the rows y' - v (c_j eps |y'| / step): ~2e-6.
     EXPECT_LT(check.max_row_relative, 1e-5) << "ambient " << ambient;
@@ -215,41 +230,20 @@ TEST(CouplingJacobian, PlateReynoldsInContactMonolithic) {
   Fixture f;
   f.act->set_contact({kContactGap, kPenetration});
   GasProperties gas;
-  std::vector<FilmBoundary> bcs;
-  for (const Patch& p : f.plate.mesh->patches())
-    bcs.push_back({p.name == "left" || p.name == "right" ? FilmBoundary::Kind::Wall
-                                                         : FilmBoundary::Kind::Open});
-  ReynoldsFilm film(*f.plate.mesh, gas, bcs);
+  ReynoldsFilm film(*f.plate.mesh, gas, f.film_boundaries());
   std::vector<Index> w_dof;
   for (Index c = 0; c < film.size(); ++c) w_dof.push_back(3 * c);
   SqueezeFilmSwitchSystem system(*f.act, f.plate.quasi_static_components(), film, w_dof);
   std::mt19937 rng(11);
-  std::uniform_real_distribution<double> u(-1, 1);
   std::vector<double> y, yp;
   system.initial_state(0.0, y, yp);
   std::vector<double> w = f.deflection(rng);
   press(*f.act, w);
   std::copy(w.begin(), w.end(), y.begin());
   const Index m = system.size() - film.size();
-  const double ambient = gas.ambient_pressure;
-  std::vector<double> steps(y.size()), scales(y.size());
-  for (Index i = 0; i < system.size(); ++i) {
-    if (i >= m) {
-      y[i] = ambient * (1 + 0.2 * u(rng));
-      yp[i] = ambient * 1e5 * u(rng);
-      steps[i] = 1e-6 * ambient;
-      scales[i] = ambient;
-    } else if (i >= static_cast<Index>(w.size())) {
-      y[i] = 0.1 * u(rng);
-      yp[i] = 1e5 * u(rng);
-      steps[i] = 1e3;
-      scales[i] = 0.1;
-    } else {
-      yp[i] = 0.1 * u(rng);
-      steps[i] = i % 3 == 0 ? 1e-6 * kGap : 1e-6;
-      scales[i] = i % 3 == 0 ? kGap : 0.01;
-    }
-  }
+  std::vector<double> steps, scales;
+  randomise_film_state(m, static_cast<Index>(w.size()), gas.ambient_pressure, rng, y, yp, steps,
+                       scales);
   const auto check = test_support::check_jacobian(system, 1e-6, 3e6, y, yp, steps, scales);
   std::printf("film + contact: row-relative %.2e (row %ld), entry-relative %.2e (%ld, %ld), "
               "film from %ld\n",
