@@ -24,21 +24,19 @@ void check_film(const SceneDescription &s, ValidityReport &r) {
   const Real kn_min = s.gas.knudsen(p, s.gap), kn_max = s.gas.knudsen(p, g_min);
   r.ranges.push_back({"film_knudsen", kn_min, kn_max});
   const bool veijola = s.gas.rarefaction == Rarefaction::Veijola;
-  const Real kn_limit =
-      veijola ? C::kVeijolaMaxKnudsen : C::kContinuumMaxKnudsen;
+  const Real kn_limit = veijola ? C::kVeijolaMaxKnudsen : C::kContinuumMaxKnudsen;
   if (kn_max > kn_limit)
-    r.warnings.push_back(
-        veijola
-            ? fmt::format("Reynolds film: Kn of the local gap reaches {:.3g} "
-                          "(gap {:.3g} um at "
-                          "{:.3g} Pa), beyond Veijola's fit range Kn <= {:g}",
-                          kn_max, g_min * 1e6, p, kn_limit)
-            : fmt::format("Reynolds film without rarefaction: Kn of the local "
-                          "gap reaches "
-                          "{:.3g}, beyond the continuum film's Kn <= {:g} (use "
-                          "rarefaction: "
-                          "veijola)",
-                          kn_max, kn_limit));
+    r.warnings.push_back(veijola
+                             ? fmt::format("Reynolds film: Kn of the local gap reaches {:.3g} "
+                                           "(gap {:.3g} um at "
+                                           "{:.3g} Pa), beyond Veijola's fit range Kn <= {:g}",
+                                           kn_max, g_min * 1e6, p, kn_limit)
+                             : fmt::format("Reynolds film without rarefaction: Kn of the local "
+                                           "gap reaches "
+                                           "{:.3g}, beyond the continuum film's Kn <= {:g} (use "
+                                           "rarefaction: "
+                                           "veijola)",
+                                           kn_max, kn_limit));
   const Real fraction = s.equilibrium_displacement / s.gap;
   r.ranges.push_back({"film_displacement_over_gap", 0, fraction});
   if (fraction > C::kFilmMaxDisplacementFraction)
@@ -48,8 +46,7 @@ void check_film(const SceneDescription &s, ValidityReport &r) {
                     fraction, C::kFilmMaxDisplacementFraction));
   if (s.width > 0) {
     const Real g_over_b = s.gap / s.width;
-    if (!r.find("gap_over_width"))
-      r.ranges.push_back({"gap_over_width", g_over_b, g_over_b});
+    if (!r.find("gap_over_width")) r.ranges.push_back({"gap_over_width", g_over_b, g_over_b});
     if (g_over_b > C::kFilmMaxGapOverWidth)
       r.warnings.push_back(
           fmt::format("Reynolds film: gap / width = {:.3g} beyond {:g} (the "
@@ -59,95 +56,80 @@ void check_film(const SceneDescription &s, ValidityReport &r) {
 }
 
 void check_plate(const SceneDescription &s, ValidityReport &r) {
-  if (s.thickness <= 0 || s.length <= 0)
-    return;
+  if (s.thickness <= 0 || s.length <= 0) return;
   const Real slenderness = s.length / s.thickness;
   r.ranges.push_back({"length_over_thickness", slenderness, slenderness});
   if (s.width > 0)
-    r.ranges.push_back(
-        {"width_over_thickness", s.width / s.thickness, s.width / s.thickness});
-  if (!s.plate)
-    return;
+    r.ranges.push_back({"width_over_thickness", s.width / s.thickness, s.width / s.thickness});
+  if (!s.plate) return;
   const bool creep = s.analysis == SceneDescription::Analysis::Creep;
-  const Real limit =
-      creep ? C::kCreepPlateMinSlenderness : C::kPlateMinSlenderness;
+  const Real limit = creep ? C::kCreepPlateMinSlenderness : C::kPlateMinSlenderness;
   if (slenderness < limit)
-    r.warnings.push_back(
-        creep ? fmt::format("plate creep: L/h = {:.3g} below {:g} (the plate "
-                            "neglects shear "
-                            "creep: 15 % at L/h = 10, 2.5 % at 30, "
-                            "docs/BENCHMARKS.md sec. 9)",
-                            slenderness, limit)
-              : fmt::format("plate: L/h = {:.3g} below {:g} (thick plate: "
-                            "through-thickness "
-                            "stresses the Mindlin plate neglects)",
-                            slenderness, limit));
+    r.warnings.push_back(creep ? fmt::format("plate creep: L/h = {:.3g} below {:g} (the plate "
+                                             "neglects shear "
+                                             "creep: 15 % at L/h = 10, 2.5 % at 30, "
+                                             "docs/BENCHMARKS.md sec. 9)",
+                                             slenderness, limit)
+                               : fmt::format("plate: L/h = {:.3g} below {:g} (thick plate: "
+                                             "through-thickness "
+                                             "stresses the Mindlin plate neglects)",
+                                             slenderness, limit));
 }
 
 void check_parallel_plate(const SceneDescription &s, ValidityReport &r) {
   const Real g_over_l = s.gap / s.length;
   r.ranges.push_back({"gap_over_length", g_over_l, g_over_l});
   const Real g_over_b = s.width > 0 ? s.gap / s.width : 0;
-  if (s.width > 0)
-    r.ranges.push_back({"gap_over_width", g_over_b, g_over_b});
+  if (s.width > 0) r.ranges.push_back({"gap_over_width", g_over_b, g_over_b});
   if (s.fringing_factor > 0) {
     if (g_over_b > C::kFringingCorrectionMaxGapOverWidth)
-      r.warnings.push_back(fmt::format(
-          "parallel-plate electrostatics: gap / width = {:.3g} "
-          "beyond {:g}, the first-order fringing correction's range",
-          g_over_b, C::kFringingCorrectionMaxGapOverWidth));
+      r.warnings.push_back(
+          fmt::format("parallel-plate electrostatics: gap / width = {:.3g} "
+                      "beyond {:g}, the first-order fringing correction's range",
+                      g_over_b, C::kFringingCorrectionMaxGapOverWidth));
     return;
   }
   const Real limit = C::kFringingMaxForceError / C::kFringingFactor;
-  for (const auto &[ratio, what] :
-       {std::pair{g_over_b, "width"}, std::pair{g_over_l, "length"}})
+  for (const auto &[ratio, what] : {std::pair{g_over_b, "width"}, std::pair{g_over_l, "length"}})
     if (ratio > limit)
-      r.warnings.push_back(fmt::format(
-          "parallel-plate electrostatics without fringing: gap / {} "
-          "= {:.3g} beyond {:.3g} (fringing adds {:.0f} % to the "
-          "force; set actuation.fringing: {:g})",
-          what, ratio, limit, 100 * C::kFringingFactor * ratio,
-          C::kFringingFactor));
+      r.warnings.push_back(
+          fmt::format("parallel-plate electrostatics without fringing: gap / {} "
+                      "= {:.3g} beyond {:.3g} (fringing adds {:.0f} % to the "
+                      "force; set actuation.fringing: {:g})",
+                      what, ratio, limit, 100 * C::kFringingFactor * ratio, C::kFringingFactor));
 }
 
 void check_kinetic(const SceneDescription::Kinetic &k, ValidityReport &r) {
-  // lambda = mu / p sqrt(pi R T / 2), p = rho R T (Bird's hard-sphere mean free
-  // path).
+  // lambda = mu / p sqrt(pi R T / 2), p = rho R T (Bird's hard-sphere mean free path).
   auto knudsen = [&](Real rho, Real T, Real mu) {
-    return mu / (rho * k.gas_constant * T) *
-           std::sqrt(M_PI * k.gas_constant * T / 2) / k.length;
+    return mu / (rho * k.gas_constant * T) * std::sqrt(M_PI * k.gas_constant * T / 2) / k.length;
   };
+  r.ranges.push_back({"kinetic_knudsen", knudsen(k.density_max, k.temperature_min, k.viscosity_min),
+                      knudsen(k.density_min, k.temperature_max, k.viscosity_max)});
+  const Real needed = k.wall_speed + C::kVelocityGridThermalSpeeds *
+                                         std::sqrt(2 * k.gas_constant * k.wall_temperature);
   r.ranges.push_back(
-      {"kinetic_knudsen",
-       knudsen(k.density_max, k.temperature_min, k.viscosity_min),
-       knudsen(k.density_min, k.temperature_max, k.viscosity_max)});
-  const Real needed =
-      k.wall_speed + C::kVelocityGridThermalSpeeds *
-                         std::sqrt(2 * k.gas_constant * k.wall_temperature);
-  r.ranges.push_back({"velocity_extent_over_needed", k.velocity_extent / needed,
-                      k.velocity_extent / needed});
+      {"velocity_extent_over_needed", k.velocity_extent / needed, k.velocity_extent / needed});
   if (k.velocity_extent < needed)
-    r.warnings.push_back(fmt::format(
-        "kinetic gas: velocity grid half-extent {:.4g} m/s below the "
-        "wall speed + {:g} thermal speeds at the hottest wall "
-        "({:.4g} m/s)",
-        k.velocity_extent, C::kVelocityGridThermalSpeeds, needed));
+    r.warnings.push_back(
+        fmt::format("kinetic gas: velocity grid half-extent {:.4g} m/s below the "
+                    "wall speed + {:g} thermal speeds at the hottest wall "
+                    "({:.4g} m/s)",
+                    k.velocity_extent, C::kVelocityGridThermalSpeeds, needed));
 }
 
-} // namespace
+}  // namespace
 
 const ValidityRange *ValidityReport::find(const std::string &name) const {
   for (const ValidityRange &range : ranges)
-    if (range.name == name)
-      return &range;
+    if (range.name == name) return &range;
   return nullptr;
 }
 
 Json ValidityReport::to_json() const {
   Json j;
   j["ranges"] = Json::object();
-  for (const ValidityRange &range : ranges)
-    j["ranges"][range.name] = {range.min, range.max};
+  for (const ValidityRange &range : ranges) j["ranges"][range.name] = {range.min, range.max};
   j["warnings"] = warnings;
   return j;
 }
@@ -155,12 +137,9 @@ Json ValidityReport::to_json() const {
 ValidityReport check_scene_validity(const SceneDescription &s) {
   ValidityReport r;
   check_plate(s, r);
-  if (s.gap > 0 && s.length > 0 && s.parallel_plate)
-    check_parallel_plate(s, r);
-  if (s.reynolds && s.gap > 0)
-    check_film(s, r);
-  if (s.kinetic.present)
-    check_kinetic(s.kinetic, r);
+  if (s.gap > 0 && s.length > 0 && s.parallel_plate) check_parallel_plate(s, r);
+  if (s.reynolds && s.gap > 0) check_film(s, r);
+  if (s.kinetic.present) check_kinetic(s.kinetic, r);
   return r;
 }
 
@@ -176,45 +155,37 @@ SceneDescription describe_switch_scene(const SwitchScene &scene, Real thickness,
     hi = hi.cwiseMax(x);
   }
   s.length = hi.x() - lo.x();
-  // A plate spans x and y with the thickness given; a plane beam's thickness is
-  // its y extent (its width is not modelled).
+  // A plate spans x and y with the thickness given; a plane beam's thickness is its y extent
+  // (its width is not modelled).
   s.width = s.plate ? hi.y() - lo.y() : 0;
   s.thickness = s.plate ? thickness : hi.y() - lo.y();
   s.gap = scene.gap;
   s.parallel_plate = scene.electrostatics == ElectrostaticsModel::ParallelPlate;
-  s.fringing_factor =
-      scene.actuation ? scene.actuation->law().fringing_factor : 0;
+  s.fringing_factor = scene.actuation ? scene.actuation->law().fringing_factor : 0;
   if (scene.film) {
     s.reynolds = true;
     s.gas = scene.film->gas();
   }
   if (report) {
     Real g_min = scene.gap;
-    for (const PullInPoint &p : report->quasi_static.curve)
-      g_min = std::min(g_min, p.min_gap);
+    for (const PullInPoint &p : report->quasi_static.curve) g_min = std::min(g_min, p.min_gap);
     for (const auto &[voltage, run] : report->histories)
-      for (const DynamicSample &sample : run.history)
-        g_min = std::min(g_min, sample.min_gap);
+      for (const DynamicSample &sample : run.history) g_min = std::min(g_min, sample.min_gap);
     s.min_gap = g_min;
-    s.equilibrium_displacement =
-        std::abs(report->quasi_static.pull_in_displacement);
+    s.equilibrium_displacement = std::abs(report->quasi_static.pull_in_displacement);
   }
   return s;
 }
 
-ValidityReport switch_scene_validity(const CaseNode &root,
-                                     const SwitchScene &scene,
+ValidityReport switch_scene_validity(const CaseNode &root, const SwitchScene &scene,
                                      const PullInReport &report) {
-  const Real thickness =
-      root.child("model").get_quantity("thickness", Dimension::Length, 0.0);
-  const auto analysis = report.has_dynamic ? SceneDescription::Analysis::Dynamic
-                                           : SceneDescription::Analysis::Static;
-  return check_scene_validity(
-      describe_switch_scene(scene, thickness, analysis, &report));
+  const Real thickness = root.child("model").get_quantity("thickness", Dimension::Length, 0.0);
+  const auto analysis =
+      report.has_dynamic ? SceneDescription::Analysis::Dynamic : SceneDescription::Analysis::Static;
+  return check_scene_validity(describe_switch_scene(scene, thickness, analysis, &report));
 }
 
-ValidityReport creep_case_validity(const CaseNode &root,
-                                   const CreepCase &creep) {
+ValidityReport creep_case_validity(const CaseNode &root, const CreepCase &creep) {
   SceneDescription s;
   s.analysis = SceneDescription::Analysis::Creep;
   Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
@@ -224,8 +195,7 @@ ValidityReport creep_case_validity(const CaseNode &root,
   }
   s.length = hi.x() - lo.x();
   s.width = hi.y() - lo.y();
-  s.thickness =
-      root.child("model").get_quantity("thickness", Dimension::Length, 0.0);
+  s.thickness = root.child("model").get_quantity("thickness", Dimension::Length, 0.0);
   if (creep.has_gap) {
     s.gap = creep.initial_gap;
     s.fringing_factor = root.child("actuation").get_real("fringing", 0.0);
@@ -233,8 +203,7 @@ ValidityReport creep_case_validity(const CaseNode &root,
   return check_scene_validity(s);
 }
 
-ValidityReport kinetic_scene_validity(const KineticScene &scene,
-                                      const Communicator &comm) {
+ValidityReport kinetic_scene_validity(const KineticScene &scene, const Communicator &comm) {
   const KineticOperator &op = *scene.op;
   SceneDescription s;
   auto &k = s.kinetic;
@@ -256,13 +225,10 @@ ValidityReport kinetic_scene_validity(const KineticScene &scene,
   k.gas_constant = op.gas().R;
   k.length = scene.reference_length;
   k.velocity_extent = op.grid().extent.minCoeff();
-  k.wall_temperature =
-      scene.initial.T; // the grid's thermal speed is the initial state's
+  k.wall_temperature = scene.initial.T;  // the grid's thermal speed is the initial state's
   for (const KineticBoundary &b : op.boundaries())
-    if (b.kind == KineticBoundaryKind::DiffuseWall ||
-        b.kind == KineticBoundaryKind::Pressure) {
-      // Both send in a Maxwellian at their temperature (a pressure boundary at
-      // rest).
+    if (b.kind == KineticBoundaryKind::DiffuseWall || b.kind == KineticBoundaryKind::Pressure) {
+      // Both send in a Maxwellian at their temperature (a pressure boundary at rest).
       if (b.kind == KineticBoundaryKind::DiffuseWall)
         k.wall_speed = std::max(k.wall_speed, b.velocity.cwiseAbs().maxCoeff());
       k.wall_temperature = std::max(k.wall_temperature, b.temperature);
@@ -270,10 +236,9 @@ ValidityReport kinetic_scene_validity(const KineticScene &scene,
   return check_scene_validity(s);
 }
 
-void print_validity_warnings(const std::string &program,
-                             const ValidityReport &report) {
+void print_validity_warnings(const std::string &program, const ValidityReport &report) {
   for (const std::string &w : report.warnings)
     std::fprintf(stderr, "%s: warning: %s\n", program.c_str(), w.c_str());
 }
 
-} // namespace rfmems
+}  // namespace rfmems

@@ -1,48 +1,36 @@
-// The scene validity report: the ranges a run saw (Knudsen number, aspect
-// ratios) and a warning wherever the chosen models leave their range of
-// validity. A pure function of a plain description of the scene, so each
-// criterion is unit tested without a solve
-// (test/unit/coupling/test_scene_validity.cpp); describe_switch_scene fills the
-// description from a switch scene and what its run computed.
+// The scene validity report: the ranges a run saw (Knudsen number, aspect ratios) and a
+// warning wherever the chosen models leave their range of validity. A pure function of a plain
+// description of the scene, so each criterion is unit tested without a solve
+// (test/unit/coupling/test_scene_validity.cpp); describe_switch_scene fills the description
+// from a switch scene and what its run computed.
 //
 // Criteria (each warning names its criterion and the value seen):
-//  - Reynolds film, Kn = lambda(p)/g of the local gap over the gaps the run saw
-//  (rest gap down
+//  - Reynolds film, Kn = lambda(p)/g of the local gap over the gaps the run saw (rest gap down
 //    to the smallest computed gap):
-//      rarefaction veijola: Kn <= 880, the range of Veijola's fit (Veijola et
-//      al., Sensors and
-//        Actuators A 48 (1995) 239, within 5 % of the Fukui-Kaneko flow rate
-//        for 0..880);
+//      rarefaction veijola: Kn <= 880, the range of Veijola's fit (Veijola et al., Sensors and
+//        Actuators A 48 (1995) 239, within 5 % of the Fukui-Kaneko flow rate for 0..880);
 //      rarefaction none: Kn <= 0.01 (no-slip continuum film);
-//    large displacement: the deepest equilibrium the run computed (the
-//    quasi-static fold)
-//      beyond displacement/gap = 0.5: the film's lubrication flux goes as g^3,
-//      so at half the gap the damping is 8x its value at rest and set by the
-//      thinnest region, whose slope the small-slope lubrication limit neglects;
-//    thin film: g/b <= 0.1 (b the plate's width across the open edges): the
-//    open-edge
-//      (elongation) correction, of order the gap per open edge (Veijola 2004),
-//      is left out.
+//    large displacement: the deepest equilibrium the run computed (the quasi-static fold)
+//      beyond displacement/gap = 0.5: the film's lubrication flux goes as g^3, so at half the
+//      gap the damping is 8x its value at rest and set by the thinnest region, whose slope the
+//      small-slope lubrication limit neglects (a criterion of this project, not a paper's);
+//    thin film: g/b <= 0.1 (b the plate's width across the open edges): the open-edge
+//      (elongation) correction, of order the gap per open edge (Veijola 2004), is left out.
 //  - Plate (Mindlin-Reissner; length L along x, thickness h):
-//      creep: L/h >= 20. The plate lets only the bending stress creep (shear
-//      creep neglected):
-//        docs/BENCHMARKS.md sec. 9 measured the centre deflection off by 15 %
-//        at L/h = 10, 2.5 % at 30, 0.75 % at 60 against the continuum;
-//      static / dynamic: L/h >= 10. Mindlin's first-order shear deformation is
-//      in the plate;
-//        below L/h ~ 10 the through-thickness (3D, thick-plate) stresses it
-//        neglects matter.
-//  - Parallel-plate electrostatics: fringing adds f g/b (f = 0.65, Palmer 1937;
-//  Osterberg &
-//    Senturia 1997) to the force. Without the correction: warn where f g/b or f
-//    g/L exceeds 0.1 (g/b or g/L > 0.154), a 10 % force error. With it: warn
-//    where g/b > 0.5, beyond which the first-order (linear in g/b) correction
-//    is not claimed here (the higher-order Palmer terms grow with g/b).
-//  - Kinetic gas: Kn = lambda/L over the computed density range (lambda =
-//  mu(T)/p sqrt(pi R T/2)
-//    with p = rho R T), reported; the velocity grid's half-extent must cover
-//    every wall's speed plus 3 thermal speeds sqrt(2 R T_wall) (a Maxwellian
-//    keeps exp(-9) ~ 1e-4 of its mass beyond 3 thermal speeds).
+//      creep: L/h >= 20. The plate lets only the bending stress creep (shear creep neglected):
+//        docs/BENCHMARKS.md sec. 9 measured the centre deflection off by 15 % at L/h = 10,
+//        2.5 % at 30, 0.75 % at 60 against the continuum;
+//      static / dynamic: L/h >= 10. Mindlin's first-order shear deformation is in the plate;
+//        below L/h ~ 10 the through-thickness (3D, thick-plate) stresses it neglects matter.
+//  - Parallel-plate electrostatics: fringing adds f g/b (f = 0.65, Palmer 1937; Osterberg &
+//    Senturia 1997) to the force. Without the correction: warn where f g/b or f g/L exceeds 0.1
+//    (g/b or g/L > 0.154), a 10 % force error. With it: warn where g/b > 0.5, beyond which the
+//    first-order (linear in g/b) correction is not claimed here (the higher-order Palmer terms
+//    grow with g/b).
+//  - Kinetic gas: Kn = lambda/L over the computed density range (lambda = mu(T)/p
+//    sqrt(pi R T/2) with p = rho R T), reported; the velocity grid's half-extent must cover
+//    every wall's speed plus 3 thermal speeds sqrt(2 R T_wall) (a Maxwellian keeps
+//    exp(-9) ~ 1e-4 of its mass beyond 3 thermal speeds).
 #pragma once
 #include <limits>
 #include <string>
@@ -64,46 +52,45 @@ class Communicator;
 struct SceneDescription {
   enum class Analysis { Static, Dynamic, Creep };
   Analysis analysis = Analysis::Static;
-  bool plate = true; // Mindlin-Reissner plate (else a plane beam: no L/h check)
-  Real length = 0;   // L [m]: the structure's extent along x
-  Real width = 0;    // b [m]: the extent in y (plates; 0: not modelled)
-  Real thickness = 0; // h [m]
-  Real gap = 0;       // g0 [m] at rest
+  bool plate = true;   // Mindlin-Reissner plate (else a plane beam: no L/h check)
+  Real length = 0;     // L [m]: the structure's extent along x
+  Real width = 0;      // b [m]: the extent in y (plates; 0: not modelled)
+  Real thickness = 0;  // h [m]
+  Real gap = 0;        // g0 [m] at rest
 
   bool parallel_plate = true;
-  Real fringing_factor = 0; // 0: no fringing correction
+  Real fringing_factor = 0;  // 0: no fringing correction
 
   bool reynolds = false;
   GasProperties gas;
-  Real min_gap = 0; // the smallest gap the run computed (0: the rest gap)
-  Real equilibrium_displacement =
-      0; // |deflection| of the deepest equilibrium [m]
+  Real min_gap = 0;                   // the smallest gap the run computed (0: the rest gap)
+  Real equilibrium_displacement = 0;  // |deflection| of the deepest equilibrium [m]
 
   struct Kinetic {
     bool present = false;
-    Real density_min = 0, density_max = 0; // [kg/m^3] over the computed field
+    Real density_min = 0, density_max = 0;  // [kg/m^3] over the computed field
     Real temperature_min = 0,
-         temperature_max = 0; // [K] over the computed field
+         temperature_max = 0;  // [K] over the computed field
     Real viscosity_min = 0,
-         viscosity_max = 0;    // mu at temperature_min / _max [Pa s]
-    Real gas_constant = 0;     // R [J/(kg K)]
-    Real length = 0;           // the gap or domain length [m]
-    Real velocity_extent = 0;  // the grid's smallest half-extent [m/s]
-    Real wall_speed = 0;       // the largest wall velocity component [m/s]
-    Real wall_temperature = 0; // the hottest wall [K]
+         viscosity_max = 0;     // mu at temperature_min / _max [Pa s]
+    Real gas_constant = 0;      // R [J/(kg K)]
+    Real length = 0;            // the gap or domain length [m]
+    Real velocity_extent = 0;   // the grid's smallest half-extent [m/s]
+    Real wall_speed = 0;        // the largest wall velocity component [m/s]
+    Real wall_temperature = 0;  // the hottest wall [K]
   } kinetic;
 };
 
 struct ValidityRange {
-  std::string name; // e.g. "film_knudsen", "plate_length_over_thickness"
+  std::string name;  // e.g. "film_knudsen", "plate_length_over_thickness"
   Real min = 0, max = 0;
 };
 
 struct ValidityReport {
   std::vector<ValidityRange> ranges;
-  std::vector<std::string> warnings; // one sentence each, no program prefix
+  std::vector<std::string> warnings;  // one sentence each, no program prefix
   const ValidityRange *find(const std::string &name) const;
-  Json to_json() const; // {ranges: {name: [min, max]}, warnings: [...]}
+  Json to_json() const;  // {ranges: {name: [min, max]}, warnings: [...]}
 };
 
 // The thresholds above, for the tests and the README.
@@ -132,25 +119,21 @@ SceneDescription describe_switch_scene(const SwitchScene &scene, Real thickness,
 // The pull-in driver's one call: describe_switch_scene with the plate thickness
 // from the case (model.thickness) and the analysis the run did, then
 // check_scene_validity.
-ValidityReport switch_scene_validity(const CaseNode &root,
-                                     const SwitchScene &scene,
+ValidityReport switch_scene_validity(const CaseNode &root, const SwitchScene &scene,
                                      const PullInReport &report);
 
 // The creep driver's one call: a creep run's plate (creep slenderness
 // criterion) and, with an actuation, its parallel-plate gap (the rest gap:
 // creep runs record no film).
-ValidityReport creep_case_validity(const CaseNode &root,
-                                   const CreepCase &creep);
+ValidityReport creep_case_validity(const CaseNode &root, const CreepCase &creep);
 
 // The gas driver's one call: the computed field's density and temperature range
 // (over every rank's owned cells; call on every rank), the reference length,
 // the velocity grid against the diffuse walls (update the operator's macros
 // from the final state first).
-ValidityReport kinetic_scene_validity(const KineticScene &scene,
-                                      const Communicator &comm);
+ValidityReport kinetic_scene_validity(const KineticScene &scene, const Communicator &comm);
 
 // Warnings on stderr, "<program>: warning: <text>" one line each.
-void print_validity_warnings(const std::string &program,
-                             const ValidityReport &report);
+void print_validity_warnings(const std::string &program, const ValidityReport &report);
 
-} // namespace rfmems
+}  // namespace rfmems

@@ -32,8 +32,7 @@ SceneDescription switch_plate() {
 
 int count_containing(const ValidityReport &r, const std::string &text) {
   int n = 0;
-  for (const std::string &w : r.warnings)
-    n += w.find(text) != std::string::npos;
+  for (const std::string &w : r.warnings) n += w.find(text) != std::string::npos;
   return n;
 }
 
@@ -70,11 +69,11 @@ TEST(SceneValidity, ReynoldsFilmBeyondVeijolasFitAtLowPressure) {
 TEST(SceneValidity, ContinuumFilmNeedsSmallKnudsen) {
   SceneDescription s = switch_plate();
   s.gas.rarefaction = Rarefaction::None;
-  s.min_gap = 0; // the rest gap only: Kn = 0.0181 > 0.01
+  s.min_gap = 0;  // the rest gap only: Kn = 0.0181 > 0.01
   ValidityReport r = check_scene_validity(s);
   ASSERT_EQ(r.warnings.size(), 1u);
   EXPECT_EQ(count_containing(r, "continuum film's Kn <= 0.01"), 1);
-  s.gas.ambient_pressure = 2 * 101325; // Kn = 0.00907
+  s.gas.ambient_pressure = 2 * 101325;  // Kn = 0.00907
   EXPECT_TRUE(check_scene_validity(s).warnings.empty());
 }
 
@@ -90,21 +89,21 @@ TEST(SceneValidity, LargeDisplacementFilm) {
 
 TEST(SceneValidity, GapNotThinAgainstWidthAndFringing) {
   SceneDescription s = switch_plate();
-  s.width = 30e-6; // g/b = 0.125: the film's edge correction, fringing still
-                   // below 10 %
+  s.width = 30e-6;  // g/b = 0.125: the film's edge correction, fringing still
+                    // below 10 %
   ValidityReport r = check_scene_validity(s);
   ASSERT_EQ(r.warnings.size(), 1u);
   EXPECT_EQ(count_containing(r, "open-edge correction"), 1);
-  s.width = 20e-6; // g/b = 0.1875 > 0.1/0.65: fringing adds 12 % to the force
+  s.width = 20e-6;  // g/b = 0.1875 > 0.1/0.65: fringing adds 12 % to the force
   r = check_scene_validity(s);
   ASSERT_EQ(r.warnings.size(), 2u);
   EXPECT_EQ(count_containing(r, "without fringing: gap / width"), 1);
   EXPECT_EQ(count_containing(r, "adds 12 %"), 1);
-  s.fringing_factor = 0.65; // corrected, inside the correction's range
+  s.fringing_factor = 0.65;  // corrected, inside the correction's range
   r = check_scene_validity(s);
   ASSERT_EQ(r.warnings.size(), 1u);
   EXPECT_EQ(count_containing(r, "open-edge correction"), 1);
-  s.width = 6e-6; // g/b = 0.625 > 0.5: beyond the first-order correction
+  s.width = 6e-6;  // g/b = 0.625 > 0.5: beyond the first-order correction
   r = check_scene_validity(s);
   ASSERT_EQ(r.warnings.size(), 2u);
   EXPECT_EQ(count_containing(r, "first-order fringing correction's range"), 1);
@@ -113,9 +112,9 @@ TEST(SceneValidity, GapNotThinAgainstWidthAndFringing) {
 TEST(SceneValidity, FringingAlongTheLength) {
   SceneDescription s = switch_plate();
   s.reynolds = false;
-  s.width = 0; // a plane beam's width is not modelled
+  s.width = 0;  // a plane beam's width is not modelled
   s.plate = false;
-  s.length = 20e-6; // g/L = 0.1875
+  s.length = 20e-6;  // g/L = 0.1875
   s.thickness = 2e-6;
   const ValidityReport r = check_scene_validity(s);
   ASSERT_EQ(r.warnings.size(), 1u);
@@ -126,20 +125,20 @@ TEST(SceneValidity, FringingAlongTheLength) {
 
 TEST(SceneValidity, PlateSlendernessForStaticDynamicAndCreep) {
   SceneDescription s = switch_plate();
-  s.thickness = 30e-6; // L/h = 13.3: a Mindlin plate, not for creep
+  s.thickness = 30e-6;  // L/h = 13.3: a Mindlin plate, not for creep
   EXPECT_TRUE(check_scene_validity(s).warnings.empty());
   s.analysis = SceneDescription::Analysis::Creep;
   ValidityReport r = check_scene_validity(s);
   ASSERT_EQ(r.warnings.size(), 1u);
   EXPECT_EQ(count_containing(r, "plate creep: L/h = 13.3 below 20"), 1);
-  s.thickness = 19e-6; // L/h = 21
+  s.thickness = 19e-6;  // L/h = 21
   EXPECT_TRUE(check_scene_validity(s).warnings.empty());
   s.analysis = SceneDescription::Analysis::Static;
-  s.thickness = 45e-6; // L/h = 8.9
+  s.thickness = 45e-6;  // L/h = 8.9
   r = check_scene_validity(s);
   ASSERT_EQ(r.warnings.size(), 1u);
   EXPECT_EQ(count_containing(r, "plate: L/h = 8.89 below 10"), 1);
-  s.plate = false; // a plane (2D continuum) beam has no thin-plate assumption
+  s.plate = false;  // a plane (2D continuum) beam has no thin-plate assumption
   s.width = 0;
   s.reynolds = false;
   r = check_scene_validity(s);
@@ -171,16 +170,15 @@ TEST(SceneValidity, KineticKnudsenRangeAndVelocityGridCover) {
   EXPECT_NEAR(r.find("kinetic_knudsen")->min, 0.1, 1e-12);
   EXPECT_NEAR(r.find("kinetic_knudsen")->max, 1.0, 1e-12);
   EXPECT_NEAR(r.find("velocity_extent_over_needed")->min, 3.5 / 3, 1e-12);
-  k.wall_speed = 0.6 * c; // needs 3.6 c
+  k.wall_speed = 0.6 * c;  // needs 3.6 c
   r = check_scene_validity(s);
   ASSERT_EQ(r.warnings.size(), 1u);
   EXPECT_EQ(count_containing(r, "velocity grid half-extent"), 1);
   k.wall_speed = 0.4 * c;
   EXPECT_TRUE(check_scene_validity(s).warnings.empty());
-  k.wall_temperature =
-      2 * k.temperature_min; // needs 3 sqrt(2) c + 0.4 c = 4.64 c
+  k.wall_temperature = 2 * k.temperature_min;  // needs 3 sqrt(2) c + 0.4 c = 4.64 c
   EXPECT_EQ(check_scene_validity(s).warnings.size(), 1u);
 }
 
-} // namespace
-} // namespace rfmems
+}  // namespace
+}  // namespace rfmems
