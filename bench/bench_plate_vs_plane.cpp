@@ -195,13 +195,22 @@ class PlateStrip : public Model {
 // The plane-stress section [0, L] x [-h/2, h/2], nx x ny cells (nx even).
 class PlaneSection : public Model {
  public:
-  PlaneSection(int nx, int ny) {
+  // grading_x, grading_y in [0, 1): the plate strip's sinusoidal grading, along the span
+  // (towards the clamped ends) and through the thickness (towards the faces).
+  PlaneSection(int nx, int ny, double grading_x = 0, double grading_y = 0) {
     BoxSpec spec;
     spec.lower = Vec3(0, -kThickness / 2, 0);
     spec.upper = Vec3(kLength, kThickness / 2, 0);
     spec.n[0] = nx;
     spec.n[1] = ny;
-    mesh_ = make_structured_mesh(spec);
+    auto graded = [](double xi, double g) { return xi - g * std::sin(2 * M_PI * xi) / (2 * M_PI); };
+    mesh_ = grading_x == 0 && grading_y == 0
+                ? make_structured_mesh(spec)
+                : make_structured_mesh(spec, [&](const Vec3& x) {
+                    const double eta = (x.y() + kThickness / 2) / kThickness;
+                    return Vec3(kLength * graded(x.x() / kLength, grading_x),
+                                kThickness * (graded(eta, grading_y) - 0.5), 0);
+                  });
     std::vector<ElasticityBoundary> bcs(mesh_.patches().size());
     for (std::size_t p = 0; p < bcs.size(); ++p) {
       const std::string& name = mesh_.patches()[p].name;
@@ -216,15 +225,32 @@ class PlaneSection : public Model {
     op_ = std::make_unique<ElasticityOperator>(
         mesh_, LinearElastic{kE, kNu, kRho, Hypothesis::PlaneStress}, bcs);
     if (nx % 2 != 0 || nx < 4) throw InputError("plane section: nx must be even and >= 4");
-    // Section mean of u_y in the four columns around L/2 (x = L/2 + (k - 3/2) dx), then the
-    // cubic Lagrange interpolant at L/2: (-1, 9, 9, -1)/16.
-    const double dx = kLength / nx, column_weight[4] = {-1.0 / 16, 9.0 / 16, 9.0 / 16, -1.0 / 16};
-    for (Index c = 0; c < mesh_.n_cells(); ++c) {
-      const double k = (mesh_.cell_centroid(c).x() - kLength / 2) / dx + 1.5;
-      const long column = std::lround(k);
-      if (column >= 0 && column <= 3 && std::abs(k - column) < 1e-6)
-        weights_.emplace_back(2 * c + 1, column_weight[column] / ny);
+    // Section mean of u_y (cell-volume weighted, so graded thickness cells count by their
+    // share) in the four columns around L/2, then the cubic Lagrange interpolant at L/2 through
+    // the columns' x (uniform columns: (-1, 9, 9, -1)/16).
+    std::set<double> xs;
+    for (Index c = 0; c < mesh_.n_cells(); ++c) xs.insert(mesh_.cell_centroid(c).x());
+    std::vector<double> below, above;
+    for (double x : xs) (x < kLength / 2 ? below : above).push_back(x);
+    if (below.size() < 2 || above.size() < 2)
+      throw InputError("plane section: mid-span columns not found");
+    const double column_x[4] = {below[below.size() - 2], below.back(), above[0], above[1]};
+    double column_weight[4];
+    for (int k = 0; k < 4; ++k) {
+      column_weight[k] = 1;
+      for (int j = 0; j < 4; ++j)
+        if (j != k) column_weight[k] *= (kLength / 2 - column_x[j]) / (column_x[k] - column_x[j]);
     }
+    double column_volume[4] = {0, 0, 0, 0};
+    std::vector<std::pair<Index, int>> members;
+    for (Index c = 0; c < mesh_.n_cells(); ++c)
+      for (int k = 0; k < 4; ++k)
+        if (std::abs(mesh_.cell_centroid(c).x() - column_x[k]) <= 1e-12 * kLength) {
+          members.emplace_back(c, k);
+          column_volume[k] += mesh_.cell_volume(c);
+        }
+    for (auto [c, k] : members)
+      weights_.emplace_back(2 * c + 1, column_weight[k] * mesh_.cell_volume(c) / column_volume[k]);
     if (static_cast<int>(weights_.size()) != 4 * ny)
       throw InputError("plane section: mid-span columns not found");
   }
@@ -273,10 +299,12 @@ struct Config {
 // --plate-grading (PlateStrip's grading; 0: uniform meshes) and --plate-degree.
 double plate_grading = 0;
 int plate_degree = 3;
+// --plane-grading, --plane-grading-y (PlaneSection's grading; 0: uniform meshes).
+double plane_grading = 0, plane_grading_y = 0;
 
 std::unique_ptr<Model> make_model(const std::string& model, MeshSize m, double width) {
   if (model == "plate") return std::make_unique<PlateStrip>(m.nx, m.ny, width, plate_grading, plate_degree);
-  return std::make_unique<PlaneSection>(m.nx, m.ny);
+  return std::make_unique<PlaneSection>(m.nx, m.ny, plane_grading, plane_grading_y);
 }
 
 struct Measurement {
@@ -434,6 +462,13 @@ int main(int argc, char** argv) {
   app.add_option("--plate-grading", plate_grading,
                  "plate meshes graded towards the clamped ends and the free edges: end cells "
                  "(1 - g) times the uniform size (0: uniform)")
+      ->check(CLI::Range(0.0, 0.95));
+  app.add_option("--plane-grading", plane_grading,
+                 "plane meshes graded along the span towards the clamped ends, as the plate's "
+                 "(0: uniform)")
+      ->check(CLI::Range(0.0, 0.95));
+  app.add_option("--plane-grading-y", plane_grading_y,
+                 "plane meshes graded through the thickness towards the faces (0: uniform)")
       ->check(CLI::Range(0.0, 0.95));
   app.add_option("--plate-degree", plate_degree,
                  "plate reconstruction degree: 1 (linear, the thesis's), 2, 3 (cubic, default)")
