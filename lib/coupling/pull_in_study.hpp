@@ -22,8 +22,7 @@
 //                                     # recorded to end_time: damping ratio and frequency of
 //                                     # the free response (0: none; default 0.3)
 //     release:                        # optional, needs actuation.contact: after touch-down the
-//                                     # voltage drops to a hold value
-//                                     (coupling/dynamic_release.hpp)
+//                                     # voltage drops to a hold value (dynamic_release.hpp)
 //       hold_voltage: 10 V            # the hold whose history is recorded
 //       voltage: 180 V                # the step that pulls in (default 1.03 x the dynamic V_PI)
 //       delay: 2 us                   # the drop, after touch-down (default 2 us), or
