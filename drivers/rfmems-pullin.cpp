@@ -6,6 +6,9 @@
 //   dynamic:      a step voltage from rest under IDA with contact and turning-point roots;
 //                 the dynamic pull-in voltage by bisection, the pull-in time, and the
 //                 histories at voltages around it;
+//   transient:    one step voltage from rest to an end time or touch-down, integrated by the
+//                 case's coupling scheme (coupling: monolithic | staggered | strongly_coupled,
+//                 coupling/coupling_settings.hpp): the centre-deflection history;
 //   with actuation.contact: the quasi-static pull-out voltage, and (pull_in.release) the drop
 //                 to a hold voltage after touch-down, the release time, and the dynamic
 //                 pull-out voltage by bisection on the hold.
@@ -14,6 +17,9 @@
 //   rfmems-pullin cases/switch_plate/case.yaml                  # dynamic, prints V_PI and t_PI
 //   rfmems-pullin cases/switch_plane_laplace/case.yaml --json   # quasi-static, Laplace
 //   rfmems-pullin cases/switch_plate/case.yaml --set pull_in.mode=quasi_static
+//   rfmems-pullin cases/switch_plate/case.yaml --set pull_in.mode=transient
+//       --set pull_in.transient.voltage=180V --set pull_in.transient.end_time=5us
+//       --set coupling.scheme=strongly_coupled --set coupling.macro_step=0.1us
 //
 // Output: out/<name>.h5 (+ .xdmf): the structure's fields at the fold (step 0),
 // /pull_in/curve, /dynamic/V<k> (see coupling/pull_in_study.hpp). Exit codes as rfmems-solid:
@@ -23,6 +29,7 @@
 #include <map>
 #include <string>
 
+#include "coupling/coupling_settings.hpp"
 #include "coupling/pull_in_study.hpp"
 #include "coupling/scene_validity.hpp"
 #include "coupling/switch_scene.hpp"
@@ -44,9 +51,10 @@ int run(const DriverOptions& options) {
   const std::string& name = run_case.name;
   const std::string& output = run_case.output;
   auto elapsed = [&] { return run_case.elapsed(); };
-  const bool dynamic = root.child("pull_in").get_choice("mode", {"quasi_static", "dynamic"}) == "dynamic";
-  SwitchScene scene = build_switch_scene(root, run_case.dir,
-                                         dynamic ? AnalysisType::Transient : AnalysisType::Static);
+  const std::string mode =
+      root.child("pull_in").get_choice("mode", {"quasi_static", "dynamic", "transient"});
+  SwitchScene scene = build_switch_scene(
+      root, run_case.dir, mode == "quasi_static" ? AnalysisType::Static : AnalysisType::Transient);
   const PullInSettings settings = read_pull_in_settings(root, scene);
   case_file.check_all_used();  // a typo stops the run here, before any solving
 
@@ -60,6 +68,16 @@ int run(const DriverOptions& options) {
   summary["mesh"] = {{"cells", scene.structure->structure_mesh().n_cells()}};
   summary["output"] = {{"h5", writer.path()}, {"xdmf", writer.xdmf_path()}};
   summary["pull_in"] = pull_in_summary(scene, report);
+  summary["coupling"] = {{"scheme", coupling_scheme_name(settings.coupling.scheme)}};
+  if (settings.coupling.scheme != CouplingScheme::Monolithic) {
+    summary["coupling"]["macro_step"] = settings.coupling.macro_step;
+    summary["coupling"]["macro_steps"] = report.macro_steps;
+    summary["coupling"]["coupling_iterations"] = report.coupling_iterations;
+    if (settings.coupling.scheme == CouplingScheme::StronglyCoupled) {
+      summary["coupling"]["tolerance"] = settings.coupling.tolerance;
+      summary["coupling"]["max_iterations"] = settings.coupling.max_iterations;
+    }
+  }
   const ValidityReport validity = switch_scene_validity(root, scene, report);
   if (!options.quiet) print_validity_warnings("rfmems-pullin", validity);
   summary["validity"] = validity.to_json();
@@ -75,6 +93,19 @@ int run(const DriverOptions& options) {
 
   if (options.json) {
     std::cout << json_text(summary) << std::flush;
+  } else if (!options.quiet && report.has_transient) {
+    const DynamicRun& r = report.transient;
+    std::printf(
+        "%s (%s, %s coupling): %.2f V step, centre deflection %.4f um at %.3f us%s; "
+        "%ld steps, %ld residual evaluations",
+        name.c_str(), scene.structure->kind().c_str(),
+        coupling_scheme_name(settings.coupling.scheme).c_str(), settings.transient_voltage,
+        r.history.empty() ? 0.0 : r.history.back().control * 1e6, r.final_time * 1e6,
+        r.pulled_in ? " (touch-down)" : "", r.stats.steps, r.stats.residual_evals);
+    if (settings.coupling.scheme != CouplingScheme::Monolithic)
+      std::printf(", %ld coupling passes over %ld macro steps", report.coupling_iterations,
+                  report.macro_steps);
+    std::printf("\nwrote %s (%.1f s)\n", writer.path().c_str(), elapsed());
   } else if (!options.quiet) {
     const QuasiStaticPullIn& qs = report.quasi_static;
     std::printf("%s (%s, %s): quasi-static pull-in at %.2f V, control deflection %.3f um "

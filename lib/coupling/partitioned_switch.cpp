@@ -227,6 +227,12 @@ PartitionedRun run_partitioned(ParallelPlateActuation& act, std::vector<bool> qu
     }
   }
   run.final_time = t;
+  // The monolithic layout (structure, then film) so callers read either scheme alike.
+  run.final_state.t = t;
+  run.final_state.y = s;
+  run.final_state.y.insert(run.final_state.y.end(), p.begin(), p.end());
+  run.final_state.yp = sp;
+  run.final_state.yp.insert(run.final_state.yp.end(), pp.begin(), pp.end());
   return out;
 }
 

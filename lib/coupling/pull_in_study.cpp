@@ -3,9 +3,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <ctime>
 
 #include "core/error.hpp"
+#include "coupling/coupling_settings.hpp"
 #include "coupling/laplace_pull_in.hpp"
 #include "physics/elasticity/elasticity_scene.hpp"
 
@@ -14,12 +17,41 @@ namespace rfmems {
 PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& scene) {
   PullInSettings s;
   const CaseNode node = root.child("pull_in");
-  s.dynamic = node.get_choice("mode", {"quasi_static", "dynamic"}) == "dynamic";
+  const std::string mode = node.get_choice("mode", {"quasi_static", "dynamic", "transient"});
+  s.dynamic = mode == "dynamic";
+  s.transient = mode == "transient";
+  s.coupling = read_coupling_options(root, scene, s.transient);
   const CaseNode qs = node.child_or_empty("quasi_static");
   s.quasi_static.n_points = static_cast<int>(qs.get_int("points", 40, Range::closed(4, 100000)));
   s.quasi_static.max_fraction = qs.get_real("max_fraction", 0.9, Range{0.0, 1.0, true, true});
   s.quasi_static.voltage_tolerance =
       qs.get_quantity("voltage_tolerance", Dimension::Voltage, 0.01, Range::positive());
+  // IDA settings of every transient run (read here: the transient mode returns early).
+  const CaseNode solver = root.child_or_empty("solver");
+  s.run.ida.rtol = solver.get_real("rtol", 1e-3, Range::open(0.0, 1.0));
+  s.run.ida.atol =
+      solver.get_quantity("atol", Dimension::Length, 1e-4 * scene.gap, Range::positive());
+  s.run.ida.max_order = static_cast<int>(solver.get_int("max_order", 2, Range::closed(1, 5)));
+  s.run.ida.max_steps = 10000000;
+  if (s.transient || node.has("transient")) {
+    const CaseNode tr = node.child("transient");
+    s.transient_voltage = tr.get_quantity("voltage", Dimension::Voltage, Range::positive());
+    DynamicOptions& o = s.transient_run;
+    o.end_time = tr.get_quantity("end_time", Dimension::Time, Range::positive());
+    o.output_interval =
+        tr.get_quantity("output_interval", Dimension::Time, o.end_time / 500, Range::positive());
+    if (scene.contact.enabled()) {
+      tr.require(!tr.has("contact_gap"), "contact_gap",
+                 "with actuation.contact the touch-down is at actuation.contact.gap");
+      o.contact_gap = scene.contact.gap;
+    } else {
+      o.contact_gap = tr.get_quantity("contact_gap", Dimension::Length, 0.02 * scene.gap,
+                                      Range{0.0, scene.gap, false, true});
+    }
+    o.stop_at_turning = false;  // the whole history, to end_time or touch-down
+    o.stop_at_contact = true;
+    o.ida = s.run.ida;
+  }
   // The dynamic settings are checked even when the mode does not use them (a case switched
   // between modes with --set keeps both sections valid).
   if (!s.dynamic && !node.has("dynamic")) return s;
@@ -86,11 +118,6 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
               "the hold must be below the voltage that pulls in");
   }
 
-  const CaseNode solver = root.child_or_empty("solver");
-  s.run.ida.rtol = solver.get_real("rtol", 1e-3, Range::open(0.0, 1.0));
-  s.run.ida.atol = solver.get_quantity("atol", Dimension::Length, 1e-4 * scene.gap, Range::positive());
-  s.run.ida.max_order = static_cast<int>(solver.get_int("max_order", 2, Range::closed(1, 5)));
-  s.run.ida.max_steps = 10000000;
   return s;
 }
 
@@ -124,6 +151,32 @@ void write_history(ResultWriter& writer, const std::string& name, const DynamicR
                             "contact_force", "voltage"});
 }
 
+// Mode transient: the step voltage from rest by the case's coupling scheme.
+void run_transient(SwitchScene& scene, const PullInSettings& settings, PullInReport& report) {
+  const Real v = settings.transient_voltage;
+  const auto wall0 = std::chrono::steady_clock::now();
+  const std::clock_t cpu0 = std::clock();
+  if (settings.coupling.scheme == CouplingScheme::Monolithic) {
+    const std::unique_ptr<SwitchSystem> system = scene.make_transient_system();
+    report.transient = run_dynamic(
+        *system, scene.control, [v](Real) { return v; }, settings.transient_run);
+  } else {
+    std::vector<Index> w_dof;  // the plate's w over film cell c (the plate's unknowns 3c..3c+2)
+    for (Index c = 0; c < scene.film->size(); ++c) w_dof.push_back(3 * c);
+    PartitionedRun r = run_partitioned(
+        *scene.actuation, scene.structure->quasi_static_components(), *scene.film, std::move(w_dof),
+        scene.control, [v](Real) { return v; }, settings.transient_run, settings.coupling);
+    report.transient = std::move(r.run);
+    report.coupling_iterations = r.coupling_iterations;
+    report.macro_steps = r.macro_steps;
+  }
+  report.transient_cpu_s = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
+  report.transient_wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  report.coupling = settings.coupling;
+  report.has_transient = true;
+}
+
 }  // namespace
 
 PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& settings,
@@ -131,6 +184,15 @@ PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& setting
   PullInReport report;
   StructuralModel& model = *scene.structure;
   const Index n = model.structure().size();
+  if (settings.transient) {
+    run_transient(scene, settings, report);
+    const DynamicState& end = report.transient.final_state;
+    if (end.y.size() >= static_cast<std::size_t>(n))
+      model.write_fields(writer, 0, end.t, std::vector<Real>(end.y.begin(), end.y.begin() + n), {});
+    write_history(writer, "transient", report.transient);
+    report.histories.emplace_back(settings.transient_voltage, report.transient);  // validity
+    return report;
+  }
 
   report.quasi_static = quasi_static(scene, settings, report.laplace_solves);
   const QuasiStaticPullIn& qs = report.quasi_static;
@@ -225,6 +287,24 @@ Json pull_in_summary(const SwitchScene& scene, const PullInReport& report) {
   const QuasiStaticPullIn& qs = report.quasi_static;
   j["electrostatics"] = scene.electrostatics == ElectrostaticsModel::Laplace ? "laplace" : "parallel_plate";
   j["gap"] = scene.gap;
+  if (report.has_transient) {
+    const DynamicRun& r = report.transient;
+    const Real v = report.histories.empty() ? 0.0 : report.histories.front().first;
+    j["transient"] = {{"voltage", v},
+                      {"gas", scene.film ? "reynolds" : "none"},
+                      {"final_time", r.final_time},
+                      {"final_control", r.history.empty() ? 0.0 : r.history.back().control},
+                      {"extreme_control", r.extreme_control},
+                      {"pulled_in", r.pulled_in},
+                      {"pull_in_time", r.pull_in_time},
+                      {"samples", r.history.size()},
+                      {"steps", r.stats.steps},
+                      {"residual_evals", r.stats.residual_evals},
+                      {"newton_iterations", r.stats.newton_iters},
+                      {"wall_time_s", report.transient_wall_s},
+                      {"cpu_time_s", report.transient_cpu_s}};
+    return j;
+  }
   j["quasi_static"] = {{"pull_in_voltage", qs.pull_in_voltage},
                        {"pull_in_displacement", qs.pull_in_displacement},
                        {"pull_in_fraction_of_gap", -qs.pull_in_displacement / scene.gap},

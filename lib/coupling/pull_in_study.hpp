@@ -1,12 +1,13 @@
 // A pull-in study of a switch scene (switch_scene.hpp), as the case file asks:
 //
 //   pull_in:
-//     mode: quasi_static              # quasi_static | dynamic
+//     mode: quasi_static              # quasi_static | dynamic | transient
 //     quasi_static:
 //       points: 40                    # samples of the control deflection in (0, max_fraction g0]
 //       max_fraction: 0.9
 //       voltage_tolerance: 0.01 V     # on the fold voltage
-//     dynamic:                        # a voltage waveform from rest, IDA with contact/turning roots
+//     dynamic:                        # a voltage waveform from rest, IDA with contact/turning
+//     roots
 //       waveform: {type: step}        # step (default) | ramp {rise_time} | pulse {rise_time,
 //                                     # release_time, hold: fraction of the amplitude}
 //       end_time: 50 us               # a run that has not touched down by then did not pull in
@@ -21,7 +22,7 @@
 //                                     # recorded to end_time: damping ratio and frequency of
 //                                     # the free response (0: none; default 0.3)
 //     release:                        # optional, needs actuation.contact: after touch-down the
-//                                     # voltage drops to a hold value (coupling/dynamic_release.hpp)
+//                                     # voltage drops to a hold value (dynamic_release.hpp)
 //       hold_voltage: 10 V            # the hold whose history is recorded
 //       voltage: 180 V                # the step that pulls in (default 1.03 x the dynamic V_PI)
 //       delay: 2 us                   # the drop, after touch-down (default 2 us), or
@@ -31,6 +32,13 @@
 //                                     # (default 5 % of the gap)
 //       tolerance: 0.5 V              # bisection on the hold: the dynamic pull-out (0: none)
 //       bracket: [0 V, 40 V]          # default [0, min(voltage, 2 x the quasi-static pull-out)]
+//     transient:                      # mode transient: one step voltage from rest, integrated
+//       voltage: 180 V                #   by the coupling scheme (coupling_settings.hpp) to
+//       end_time: 5 us                #   end_time or touch-down; no quasi-static curve
+//       output_interval: 0.1 us       # monolithic sampling (default end_time / 500); the
+//                                     # partitioned schemes sample at their macro steps
+//       contact_gap: 0.1 um           # touch-down (default 2 % of the gap; with
+//                                     # actuation.contact its gap); the run stops there
 //   solver:                           # dynamic runs (IDA): rtol (default 1e-3), atol (default
 //     rtol: 1e-3                      # 1e-4 x the gap) and max_order (default 2)
 //
@@ -47,6 +55,7 @@
 
 #include "coupling/dynamic_pull_in.hpp"
 #include "coupling/dynamic_release.hpp"
+#include "coupling/partitioned_switch.hpp"
 #include "coupling/quasi_static_pull_in.hpp"
 #include "coupling/quasi_static_pull_out.hpp"
 #include "coupling/switch_scene.hpp"
@@ -70,6 +79,11 @@ struct PullInSettings {
   Real hold_voltage = 0;
   Real release_tolerance = 0.5;       // 0: no bisection
   Real release_bracket_low = 0, release_bracket_high = 0;  // high 0: the default
+  // pull_in.mode: transient, and root.coupling
+  bool transient = false;
+  Real transient_voltage = 0;
+  DynamicOptions transient_run;  // end_time, contact_gap, output_interval, ida
+  PartitionedOptions coupling;   // scheme Monolithic unless the case says otherwise
 };
 
 PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& scene);
@@ -91,6 +105,12 @@ struct PullInReport {
   DynamicRun hold;                    // from the drop at hold_voltage
   bool has_dynamic_pull_out = false;
   DynamicPullOut dynamic_pull_out;
+  bool has_transient = false;   // mode transient: only this run (no quasi-static curve)
+  PartitionedOptions coupling;  // the scheme that ran it
+  DynamicRun transient;         // history: monolithic at output_interval, partitioned
+                                // at the macro steps
+  long coupling_iterations = 0, macro_steps = 0;  // partitioned schemes
+  double transient_wall_s = 0, transient_cpu_s = 0;
 };
 
 // Runs the study; writes the fold's fields (index 0), the curve (/pull_in/curve: abscissa
@@ -99,6 +119,7 @@ struct PullInReport {
 // the histories (/dynamic/V<k>: time; control, min_gap, electrostatic_force, gas_force,
 // contact_force, voltage; the small-signal run is /dynamic/small_signal, the release
 // /dynamic/release: the approach and the hold) into `writer`.
+// Mode transient: only the run, /dynamic/transient, and the end state's fields (index 0).
 PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& settings,
                                ResultWriter& writer);
 

@@ -180,8 +180,9 @@ SceneDescription describe_switch_scene(const SwitchScene &scene, Real thickness,
 ValidityReport switch_scene_validity(const CaseNode &root, const SwitchScene &scene,
                                      const PullInReport &report) {
   const Real thickness = root.child("model").get_quantity("thickness", Dimension::Length, 0.0);
-  const auto analysis =
-      report.has_dynamic ? SceneDescription::Analysis::Dynamic : SceneDescription::Analysis::Static;
+  const auto analysis = report.has_dynamic || report.has_transient
+                            ? SceneDescription::Analysis::Dynamic
+                            : SceneDescription::Analysis::Static;
   return check_scene_validity(describe_switch_scene(scene, thickness, analysis, &report));
 }
 
