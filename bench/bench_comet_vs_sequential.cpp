@@ -29,11 +29,10 @@
 //   build/bench/bench_comet_vs_sequential --cells 80 --kn 0.01 --cases heat_transfer
 //   build/bench/bench_comet_vs_sequential --cells 10 --nv 8    # a quick check
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -139,14 +138,16 @@ int main(int argc, char** argv) {
   std::string model_name = "esbgk", coupling_name = "conserved";
   double seq_max_seconds = 3600;
   bool skip_sequential = false, no_multigrid = false;
-  int pre = 1, post = 1, symmetric = 1, coarsest = 4;
+  int pre = 1, post = 1, symmetric = 1, coarsest = 4, min_coarse = 8;
+  std::string cycle_name = "V";
   Real tolerance = 1e-6, sequential_above_knudsen = 0;
   app.add_option("--cells", cells, "cells per side (40; 80 for the issue's fine mesh)");
   app.add_option("--nv", nv, "velocities per direction (10)");
   app.add_option("--kn", kns, "Knudsen numbers");
   app.add_option("--cases", cases, "heat_transfer and/or cavity");
   app.add_option("--model", model_name, "bgk | esbgk");
-  app.add_option("--coupling", coupling_name, "COMET point coupling: conserved | velocity (thesis)");
+  app.add_option("--coupling", coupling_name,
+                 "COMET point coupling: conserved | velocity (thesis)");
   app.add_option("--pre", pre, "COMET pre-smoothing sweeps");
   app.add_option("--post", post, "COMET post-smoothing sweeps");
   app.add_option("--tolerance", tolerance, "both solvers: ||r|| / ||r_0|| to reach (1e-6)");
@@ -155,6 +156,8 @@ int main(int argc, char** argv) {
                  "default is 0.2)");
   app.add_option("--symmetric", symmetric, "COMET sweeps forward + backward (1) or forward (0)");
   app.add_option("--coarsest", coarsest, "COMET sweeps on the coarsest level");
+  app.add_option("--cycle", cycle_name, "COMET cycle: V | W | F");
+  app.add_option("--min-coarse", min_coarse, "COMET: fewest cells on the coarsest level (8)");
   app.add_option("--seq-max-seconds", seq_max_seconds, "stop the sequential solver after this");
   app.add_flag("--skip-sequential", skip_sequential, "COMET only");
   app.add_flag("--no-multigrid", no_multigrid, "single-level COMET");
@@ -165,8 +168,17 @@ int main(int argc, char** argv) {
 
   for (const std::string& name : cases)
     for (Real kn : kns) {
-      json row{{"case", name}, {"kn", kn}, {"cells", cells}, {"nv", nv},
-               {"model", model_name}, {"coupling", coupling_name}};
+      json row{{"case", name},
+               {"kn", kn},
+               {"cells", cells},
+               {"nv", nv},
+               {"model", model_name},
+               {"coupling", coupling_name},
+               {"pre", pre},
+               {"post", post},
+               {"coarsest", coarsest},
+               {"cycle", cycle_name},
+               {"min_coarse", min_coarse}};
       auto p = make_problem(name, kn, cells, nv, model);
       KineticOperator& op = *p->op;
       row["length_m"] = p->length;
@@ -198,6 +210,8 @@ int main(int argc, char** argv) {
       co.tolerance = tolerance;
       co.sequential_above_knudsen = sequential_above_knudsen;
       co.coarsest_sweeps = coarsest;
+      co.cycle_shape = comet_cycle_from_name(cycle_name);
+      co.min_coarse_cells = min_coarse;
       CometSolver comet(op, co);
       const double cpu0 = bench::cpu_now();
       const CometResult rc = comet.solve(f);

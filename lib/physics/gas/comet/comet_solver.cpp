@@ -17,9 +17,9 @@ struct CometSolver::Level {
   std::unique_ptr<KineticOperator> own_operator;  // coarse levels
   KineticOperator* op = nullptr;
   std::unique_ptr<PointCoupledSmoother> smoother;
-  std::vector<Real> f;         // coarse levels: the level's state
-  std::vector<Real> source;    // FAS source (empty on the fine level: 0)
-  std::vector<Real> residual;  // s - A(f)
+  std::vector<Real> f;           // coarse levels: the level's state
+  std::vector<Real> source;      // FAS source (empty on the fine level: 0)
+  std::vector<Real> residual;    // s - A(f)
   std::vector<Real> restricted;  // R f of the finer level, kept for the correction
   bool collision_current = false;
   long passes = 0;
@@ -32,9 +32,9 @@ CometSolver::CometSolver(KineticOperator& fine, const CometOptions& options)
     throw InputError("COMET: sweep counts must be >= 0 (pre, post, their sum >= 1; coarsest >= 1)");
   if (!(options.tolerance > 0)) throw InputError("COMET: tolerance must be > 0");
   if (options.multigrid)
-    hierarchy_ = agglomeration_hierarchy(fine.graph(), std::max<Index>(options.min_coarse_cells, 1),
-                                         options.max_levels, fine.communicator(),
-                                         fine.ghost_exchange());
+    hierarchy_ =
+        agglomeration_hierarchy(fine.graph(), std::max<Index>(options.min_coarse_cells, 1),
+                                options.max_levels, fine.communicator(), fine.ghost_exchange());
   auto fine_level = std::make_unique<Level>();
   fine_level->graph = &fine.graph();
   fine_level->op = &fine;
@@ -42,8 +42,8 @@ CometSolver::CometSolver(KineticOperator& fine, const CometOptions& options)
   for (const Agglomeration& a : hierarchy_) {
     auto level = std::make_unique<Level>();
     level->graph = &a.coarse;
-    level->own_operator = std::make_unique<KineticOperator>(a.coarse, fine.grid(), fine.gas(),
-                                                            fine.boundaries());
+    level->own_operator =
+        std::make_unique<KineticOperator>(a.coarse, fine.grid(), fine.gas(), fine.boundaries());
     level->op = level->own_operator.get();
     if (fine.ghost_exchange()) level->op->set_parallel(fine.communicator(), &a.coarse_exchange);
     const Index size = level->op->size();
@@ -87,7 +87,14 @@ void CometSolver::smooth(int l, int sweeps) {
   level.collision_current = true;
 }
 
-void CometSolver::cycle(int l) {
+CometCycle comet_cycle_from_name(const std::string& name) {
+  if (name == "V") return CometCycle::V;
+  if (name == "W") return CometCycle::W;
+  if (name == "F") return CometCycle::F;
+  throw InputError("COMET: cycle '" + name + "' is not V, W or F");
+}
+
+void CometSolver::cycle(int l, CometCycle shape) {
   if (l + 1 == n_levels()) {
     smooth(l, options_.coarsest_sweeps);
     return;
@@ -117,10 +124,20 @@ void CometSolver::cycle(int l) {
   restrict_residual(agg, n, fine.residual, coarse.source);
   for (std::size_t i = 0; i < coarse.source.size(); ++i) coarse.source[i] += coarse.residual[i];
 
-  cycle(l + 1);
+  // Coarse visits (the FAS equation of level l + 1 keeps its source between them).
+  if (shape == CometCycle::V) {
+    cycle(l + 1, CometCycle::V);
+  } else if (shape == CometCycle::W) {
+    cycle(l + 1, CometCycle::W);
+    cycle(l + 1, CometCycle::W);
+  } else {
+    cycle(l + 1, CometCycle::F);
+    cycle(l + 1, CometCycle::V);
+  }
 
   // Correction by injection, damped per fine cell so that f stays positive.
-  for (std::size_t i = 0; i < coarse.f.size(); ++i) coarse.restricted[i] = coarse.f[i] - coarse.restricted[i];
+  for (std::size_t i = 0; i < coarse.f.size(); ++i)
+    coarse.restricted[i] = coarse.f[i] - coarse.restricted[i];
   const Index nc = fine.graph->n_owned_cells;
   for (Index c = 0; c < nc; ++c) {
     const Real* e = &coarse.restricted[agg.coarse_of_fine[c] * n];
@@ -182,7 +199,8 @@ CometResult CometSolver::solve(std::span<Real> f) {
     r.history = rs.history;
     r.level_cells = {fine_.communicator().sum(fine_.graph().n_owned_cells)};
     r.mass_rescaled = fine_.is_closed();
-    r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    r.wall_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;
   }
   fine_f_ = f;
@@ -215,7 +233,7 @@ CometResult CometSolver::solve(std::span<Real> f) {
   } else {
     for (int it = 0; it < options_.max_cycles; ++it) {
       if (options_.multigrid && n_levels() > 1) {
-        cycle(0);
+        cycle(0, options_.cycle_shape);
       } else {
         smooth(0, options_.pre_sweeps + options_.post_sweeps);
       }

@@ -13,7 +13,8 @@
 //   r_l = s_l - A_l(f_l);
 //   f_{l+1} = R f_l (volume-weighted), s_{l+1} = A_{l+1}(f_{l+1}) + R' r_l (summed)
 //     [the FAS source tau = A_c(R f) - R' A_f(f) + R' s_f of the brief, written with r_l];
-//   V-cycle on level l + 1 (the coarsest level: coarsest_sweeps sweeps);
+//   the cycle on level l + 1 (V: once; W: twice; F: an F- then a V-cycle; the coarsest level:
+//   coarsest_sweeps sweeps);
 //   f_l += P (f_{l+1} - R f_l) (injection; damped per cell to keep every f_k > 0);
 //   post_sweeps smoothing sweeps.
 // A sweep is forward, or forward + backward when `symmetric`.
@@ -54,6 +55,7 @@
 #include <functional>
 #include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "fv/agglomeration.hpp"
@@ -63,6 +65,9 @@
 
 namespace rfmems {
 
+enum class CometCycle { V, W, F };
+CometCycle comet_cycle_from_name(const std::string& name);  // "V" | "W" | "F"
+
 struct CometOptions {
   CometCoupling coupling = CometCoupling::Conserved;
   bool multigrid = true;
@@ -71,11 +76,14 @@ struct CometOptions {
   int pre_sweeps = 1;
   int post_sweeps = 1;
   int coarsest_sweeps = 4;
-  bool symmetric = true;       // a sweep = forward + backward pass
+  // Coarse-level visits per level: V once; W twice (the FAS equation of level l+1 iterated
+  // twice with the same source before the correction); F an F-cycle then a V-cycle.
+  CometCycle cycle_shape = CometCycle::V;
+  bool symmetric = true;  // a sweep = forward + backward pass
   int cell_newton_iterations = 1;
-  bool conserve_mass = true;   // closed domains only (see above)
+  bool conserve_mass = true;            // closed domains only (see above)
   Real sequential_above_knudsen = 0.2;  // <= 0: always COMET
-  Real tolerance = 1e-6;       // on ||r||_2 / ||r_0||_2
+  Real tolerance = 1e-6;                // on ||r||_2 / ||r_0||_2
   int max_cycles = 1000;
   // Called after every cycle with (cycle, residual ratio); return false to stop.
   std::function<bool(int, Real)> monitor;
@@ -86,15 +94,15 @@ struct CometResult {
   Real knudsen = 0;              // domain_knudsen of the initial state
   bool converged = false;
   int cycles = 0;
-  Real initial_residual = 0;     // ||r(f_0)||_2
-  Real residual_ratio = 0;       // ||r||_2 / ||r_0||_2 at exit
-  std::vector<Real> history;     // residual ratio after each cycle
-  int levels = 1;                // including the fine level
-  std::vector<Index> level_cells;  // summed over the ranks
-  long cell_updates = 0;         // cell point solves, all levels (all ranks)
+  Real initial_residual = 0;        // ||r(f_0)||_2
+  Real residual_ratio = 0;          // ||r||_2 / ||r_0||_2 at exit
+  std::vector<Real> history;        // residual ratio after each cycle
+  int levels = 1;                   // including the fine level
+  std::vector<Index> level_cells;   // summed over the ranks
+  long cell_updates = 0;            // cell point solves, all levels (all ranks)
   Real fine_sweep_equivalents = 0;  // sum over levels of passes x (cells / fine cells)
   long damped_steps = 0;
-  bool mass_rescaled = false;    // conserve_mass applied (closed domain)
+  bool mass_rescaled = false;  // conserve_mass applied (closed domain)
   double wall_seconds = 0;
   CommunicationCounters communication;  // sent by this rank during the solve (COMET path)
 };
@@ -117,7 +125,7 @@ class CometSolver {
  private:
   struct Level;
   void smooth(int level, int sweeps);
-  void cycle(int level);
+  void cycle(int level, CometCycle shape);
   std::span<Real> level_f(int level);
 
   KineticOperator& fine_;
