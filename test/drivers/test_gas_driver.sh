@@ -128,6 +128,26 @@ else
   fail "COMET vs sequential: $(cat "$WORK/err")"
 fi
 
+# ---- COMET's F-cycle from the case (solver.cycle): the same state as the V-cycle ------------
+# docs/BENCHMARKS.md section 17: near continuum the F-cycle needs fewer cycles than the V-cycle.
+if "$DRIVER" "${COMET_ARGS[@]}" --set solver.type=comet --set solver.cycle=F \
+     -o "$WORK/comet_f.h5" >"$WORK/comet_f.json" 2>"$WORK/err" &&
+   $PY - "$WORK/comet.json" "$WORK/comet_f.json" <<'PY'
+import json, sys
+v, f = (json.load(open(p)) for p in sys.argv[1:3])
+assert f["solver"]["converged"], f["solver"]
+qv, qf = v["walls"]["bottom"]["heat_flow"], f["walls"]["bottom"]["heat_flow"]
+assert abs(qf / qv - 1) < 1e-4, (qv, qf)
+assert f["solver"]["iterations"] <= v["solver"]["iterations"], (v["solver"], f["solver"])
+print(f"V / F cycles {v['solver']['iterations']} / {f['solver']['iterations']}, heat flow "
+      f"{qv:.6e} / {qf:.6e} W/m")
+PY
+then
+  pass "COMET F-cycle: same heat flow as the V-cycle, no more cycles"
+else
+  fail "COMET F-cycle: $(cat "$WORK/err")"
+fi
+
 # ---- squeeze film, coarse (167 cells, 8^3 velocities), beam at -0.1, +0.1, -0.2 m/s -------
 # Damping opposes the motion, is linear in the velocity and odd in it at these speeds (the
 # film's pressure change is ~1.5 % of p, which bounds the nonlinearity), and the steady state
@@ -175,5 +195,7 @@ expect_input_error comet_key_typo "solver.pre_sweep" "$COUETTE" --set solver.typ
   --set solver.pre_sweep=2
 expect_input_error comet_bad_coupling "solver.coupling" "$COUETTE" --set solver.type=comet \
   --set solver.coupling=momentum
+expect_input_error comet_bad_cycle "solver.cycle" "$COUETTE" --set solver.type=comet \
+  --set solver.cycle=X
 
 exit $((failures > 0))

@@ -7,6 +7,9 @@ CometOptions read_comet_options(const CaseNode& solver) {
   o.coupling = comet_coupling_from_name(
       solver.get_choice("coupling", {"conserved", "velocity"}, "conserved"));
   o.multigrid = solver.has("multigrid") ? solver.get_bool("multigrid") : true;
+  // V (default) | W | F: the F-cycle keeps the near-continuum heat transfer's cycle count flat
+  // in Kn (docs/BENCHMARKS.md section 17) at up to 2x the cost per cycle elsewhere.
+  o.cycle_shape = comet_cycle_from_name(solver.get_choice("cycle", {"V", "W", "F"}, "V"));
   o.pre_sweeps = static_cast<int>(solver.get_int("pre_sweeps", 1, Range::closed(0, 100)));
   o.post_sweeps = static_cast<int>(solver.get_int("post_sweeps", 1, Range::closed(0, 100)));
   if (o.pre_sweeps + o.post_sweeps < 1)

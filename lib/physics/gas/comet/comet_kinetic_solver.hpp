@@ -8,6 +8,7 @@
 //     max_iterations: 1000       # V-cycles (idem)
 //     coupling: conserved        # conserved (default) | velocity (thesis: u, v, w only)
 //     multigrid: true            # false: single-level point Gauss-Seidel
+//     cycle: V                   # V (default) | W | F (F: flat cycle count near continuum)
 //     pre_sweeps: 1              # per level, each a forward + backward pass when symmetric
 //     post_sweeps: 1
 //     coarsest_sweeps: 4
