@@ -6,6 +6,8 @@
 # fields and wall heat flows equal the serial ones to 1e-9 at a 1e-10 residual tolerance.
 # COMET runs distributed too (agglomeration per part, coarse ghosts exchanged): on 2 and 3
 # ranks its fields and heat flows equal the serial COMET run's to 1e-6 at a 1e-8 tolerance.
+# The coarse squeeze film (Gmsh mesh, pressure boundaries, moving wall) on 2, 3, 4 ranks: forces,
+# mass flows and fields equal the serial ones, sequential to 1e-10, COMET to 1e-6.
 #
 # Usage: bash test_mpi_drivers.sh <directory of the drivers> <source directory>
 set -uo pipefail
@@ -107,5 +109,66 @@ print(f"COMET ranks {b['partition']['ranks']}: V-cycles {ia} -> {ib}, max rel. d
       f"rank 0 sent {c['messages']} messages, {c['bytes']} bytes")
 PY
   then pass "rfmems-gas COMET on $n ranks = serial COMET"; else fail "COMET on $n ranks: $(head -3 "$WORK/err")"; fi
+done
+# ---- squeeze film under mpirun (Gmsh mesh, pressure boundaries, moving diffuse wall) ---------
+# The coarse film of test_gas_driver.sh (refine 0.25: 167 cells, 8^3 velocities, beam at
+# -0.1 m/s). Sequential solver at a 1e-10 residual tolerance: on 2, 3 and 4 ranks the beam and
+# substrate forces equal the serial ones to 1e-10 relative (measured 2026-12-01: <= 2.6e-13),
+# the mass flows through the pressure boundaries (top, right) and the fields to 1e-9 (measured
+# <= 1.1e-10 and 7.7e-14). COMET at 1e-8: forces equal the serial COMET run's to 1e-6, flows
+# and fields to 1e-5 (measured <= 1.1e-10 forces, 1.4e-8 flows).
+# On 4 ranks a part touches no pressure boundary (KineticOperator::is_closed is a global answer).
+SQUEEZE_ARGS=("$SRC/cases/gas_squeeze_film/case.yaml" --set mesh.parameters.refine=0.25
+              --set "velocity_grid.points=[8, 8, 8]" --set "boundaries.beam.velocity=[0 m/s, -0.1 m/s]"
+              --json --quiet)
+squeeze_compare() {  # squeeze_compare SERIAL PARALLEL TOLERANCE LABEL
+  $PY - "$1" "$2" "$3" "$4" <<'PY'
+import json, sys
+import h5py, numpy as np
+(a, fa), (b, fb) = ((json.load(open(p + ".json")), h5py.File(p + ".h5", "r")) for p in sys.argv[1:3])
+tol, label = float(sys.argv[3]), sys.argv[4]
+assert a["solver"]["converged"] and b["solver"]["converged"], (a["solver"], b["solver"])
+assert a["solver"]["type"] == b["solver"]["type"], (a["solver"], b["solver"])
+force = flow = field = 0.0
+for wall in ("beam", "substrate"):
+    x, y = np.array(a["walls"][wall]["force"]), np.array(b["walls"][wall]["force"])
+    force = max(force, float(np.max(np.abs(y - x)) / np.max(np.abs(x))))
+for patch in ("top", "right"):
+    qa, qb = a["boundaries"][patch]["mass_flow"], b["boundaries"][patch]["mass_flow"]
+    flow = max(flow, abs(qb / qa - 1))
+step = sorted(k for k in fa["fields"] if k[0].isdigit())[0]
+for name in ("temperature", "density", "pressure"):
+    x, y = fa["fields"][step][name][()], fb["fields"][step][name][()]
+    field = max(field, float(np.max(np.abs(y - x) / np.abs(x))))
+# The net flow through a pressure boundary is a small difference of the in- and outgoing fluxes:
+# on 4 ranks it differs by 1.1e-10 at tolerance 1e-10 and 1.3e-10 at 1e-11 (the summation order,
+# not the iteration error), hence 10 * tol for the mass flows.
+assert force <= tol and flow <= 10 * tol and field <= 10 * tol, (force, flow, field)
+print(f"{label} ranks {b['partition']['ranks']}: iterations {a['solver']['iterations']} -> "
+      f"{b['solver']['iterations']}, edge cut {b['partition']['edge_cut']}, max rel. diff forces "
+      f"{force:.1e}, mass flows {flow:.1e}, fields {field:.1e}")
+PY
+}
+SEQ_SQ=(--set solver.tolerance=1e-10)
+COMET_SQ=(--set solver.type=comet --set solver.sequential_above_knudsen=0 --set solver.tolerance=1e-8)
+"$GAS" "${SQUEEZE_ARGS[@]}" "${SEQ_SQ[@]}" -o "$WORK/sq1.h5" >"$WORK/sq1.json" 2>"$WORK/err" ||
+  fail "squeeze serial: $(cat "$WORK/err")"
+"$GAS" "${SQUEEZE_ARGS[@]}" "${COMET_SQ[@]}" -o "$WORK/sqc1.h5" >"$WORK/sqc1.json" 2>"$WORK/err" ||
+  fail "squeeze COMET serial: $(cat "$WORK/err")"
+for n in 2 3 4; do
+  if mpirun --allow-run-as-root --oversubscribe -np $n "$GAS" "${SQUEEZE_ARGS[@]}" "${SEQ_SQ[@]}" \
+      -o "$WORK/sq$n.h5" >"$WORK/sq$n.json" 2>"$WORK/err" &&
+     squeeze_compare "$WORK/sq1" "$WORK/sq$n" 1e-10 sequential; then
+    pass "squeeze film on $n ranks = serial (forces 1e-10, flows and fields 1e-9)"
+  else
+    fail "squeeze film on $n ranks: $(head -3 "$WORK/err")"
+  fi
+  if mpirun --allow-run-as-root --oversubscribe -np $n "$GAS" "${SQUEEZE_ARGS[@]}" "${COMET_SQ[@]}" \
+      -o "$WORK/sqc$n.h5" >"$WORK/sqc$n.json" 2>"$WORK/err" &&
+     squeeze_compare "$WORK/sqc1" "$WORK/sqc$n" 1e-6 COMET; then
+    pass "squeeze film COMET on $n ranks = serial COMET (forces 1e-6, flows and fields 1e-5)"
+  else
+    fail "squeeze film COMET on $n ranks: $(head -3 "$WORK/err")"
+  fi
 done
 exit $((failures > 0))
