@@ -128,19 +128,29 @@ QuasiStaticPullIn trace_fold(const DeltaSolve& solve, const FoldSample& rest, Re
   return result;
 }
 
+namespace {
+
+// KINSOL on the displacement-controlled system: Newton with line search, converged when
+// ||F||_inf <= tol k_ref g0 (forces small against the stiffness times the gap).
+KinsolOptions displacement_control_kinsol(const ParallelPlateActuation& act, Real k_ref,
+                                          const QuasiStaticOptions& options) {
+  KinsolOptions kin;
+  kin.max_iterations = options.max_newton_iterations;
+  kin.line_search = true;
+  kin.relative_tolerance = options.newton_tolerance;
+  kin.residual_scale = k_ref * act.initial_gap();
+  return kin;
+}
+
+}  // namespace
+
 QuasiStaticPullIn trace_pull_in(ParallelPlateActuation& act, Index control,
                                 const QuasiStaticOptions& options) {
   const Index n = act.size();
   const Real g0 = act.initial_gap();
   const Real k_ref = stiffness_scale(act);
   DisplacementControlSystem system(act, control, k_ref);
-  KinsolOptions kin;
-  kin.max_iterations = options.max_newton_iterations;
-  kin.line_search = true;
-  // Converged when ||F||_inf <= tol k_ref g0: forces small against the stiffness times the gap.
-  kin.relative_tolerance = options.newton_tolerance;
-  kin.residual_scale = k_ref * g0;
-  KinsolSolver solver(system, kin);
+  KinsolSolver solver(system, displacement_control_kinsol(act, k_ref, options));
 
   long newton = 0, solves = 0;
   NonlinearStats last;
@@ -172,22 +182,13 @@ QuasiStaticPullIn trace_pull_in(ParallelPlateActuation& act, Index control,
   return result;
 }
 
-}  // namespace rfmems
-
-namespace rfmems {
-
 std::vector<Real> follow_displacement(ParallelPlateActuation& act, Index control,
                                       std::span<const Real> from, const std::vector<Real>& path,
                                       const QuasiStaticOptions& options) {
   const Index n = act.size();
   const Real k_ref = stiffness_scale(act);
   DisplacementControlSystem system(act, control, k_ref);
-  KinsolOptions kin;
-  kin.max_iterations = options.max_newton_iterations;
-  kin.line_search = true;
-  kin.relative_tolerance = options.newton_tolerance;
-  kin.residual_scale = k_ref * act.initial_gap();
-  KinsolSolver solver(system, kin);
+  KinsolSolver solver(system, displacement_control_kinsol(act, k_ref, options));
   std::vector<Real> state(from.begin(), from.end());
   for (const Real delta : path) {
     const Real scale = delta / state[control];
