@@ -108,6 +108,14 @@ Profile immersed(Real kn, int m, int nv) {
     if (b % columns == 0) p.u.push_back(op.macro(c).u.z());  // column 0, rows in order
   }
   for (const Vec3& F : ibm.segment_forces()) p.plate_shear += F.z();
+  Real worst_factor = 0;
+  for (Real a : ibm.face_values().flux_factors())
+    worst_factor = std::max(worst_factor, std::abs(a - 1));
+  std::printf("   IBM: %lld one-sided of %lld step-(iii) fits, largest |a_i - 1| %.2e\n",
+              static_cast<long long>(ibm.face_values().count_one_sided()),
+              static_cast<long long>(ibm.face_values().n_ordinate_groups() *
+                                     ibm.marking().ib_faces.size()),
+              worst_factor);
   p.fixed_wall_shear = op.wall_force("bottom", ibm.distribution()).z();
   p.iterations = r.iterations;
   p.converged = r.converged;
