@@ -110,6 +110,7 @@ void ImmersedKineticGas::rebuild_graph(const CellMarking& marking) {
   }
   op_ = std::move(op);
   fluid_ = std::move(fluid);
+  f_previous_.clear();  // BDF2 restarts with a backward Euler step on a new graph
   downwind_ = downwind_groups(fluid_->graph, grid_);
 }
 
@@ -151,6 +152,7 @@ void ImmersedKineticGas::set_body(const ImmersedSurface& body, std::vector<Vec3>
 void ImmersedKineticGas::initialize(const GasState& state) {
   if (!op_) throw InputError("immersed gas: initialize needs a body (set_body first)");
   f_.assign(op_->size(), 0.0);
+  f_previous_.clear();
   reference_density_ = state.rho;
   values_->set_reference_density(state.rho);
   op_->initialize(f_, [&](const Vec3&) { return state; });
@@ -164,9 +166,9 @@ KineticSolveResult ImmersedKineticGas::solve_steady(const SequentialOptions& opt
   return r;
 }
 
-// The sequential solver's downwind sweep with the backward Euler term V / dt (f - f^n):
-//   f_ck = (V/dt f^n_ck + V nu f_eq,ck - sum (c.S)^- f_up) / (V/dt + sum (c.S)^+ + V nu).
-void ImmersedKineticGas::sweep(Real dt, std::span<const Real> f_old) {
+// The sequential solver's downwind sweep with the time term b V (f - h) (b = alpha / dt):
+//   f_ck = (b V h_ck + V nu f_eq,ck - sum (c.S)^- f_up) / (b V + sum (c.S)^+ + V nu).
+void ImmersedKineticGas::sweep(Real b, std::span<const Real> h) {
   const FaceGraph& g = fluid_->graph;
   const Index N = grid_.size();
   std::vector<Real> numerator, denominator;
@@ -180,8 +182,8 @@ void ImmersedKineticGas::sweep(Real dt, std::span<const Real> f_old) {
       const std::span<const Real> feq = op_->equilibrium(c);
       for (std::size_t j = 0; j < m; ++j) {
         const Index k = group.ordinates[j];
-        numerator[j] = vnu * feq[k] + V / dt * f_old[c * N + k];
-        denominator[j] = vnu + V / dt;
+        numerator[j] = vnu * feq[k] + b * V * h[c * N + k];
+        denominator[j] = vnu + b * V;
       }
       for (Index i = g.cell_face_offsets[c]; i < g.cell_face_offsets[c + 1]; ++i) {
         const Index face = g.cell_faces[i];
@@ -211,27 +213,37 @@ GasStepReport ImmersedKineticGas::advance(Real dt) {
   const double t0 = cpu_seconds();
   const FaceGraph& g = fluid_->graph;
   const Index N = grid_.size(), nc = g.n_cells();
-  const std::vector<Real> f_old = f_;
   GasStepReport rep;
+  // alpha / dt (f - h) + r(f) / V = 0: backward Euler (alpha = 1, h = f^n) or BDF2
+  // (alpha = 3/2, h = (4 f^n - f^(n-1)) / 3) when the last step had the same dt and graph.
+  const bool bdf2 = options_.bdf2 && !f_previous_.empty() && dt == dt_previous_;
+  rep.order = bdf2 ? 2 : 1;
+  const Real b = (bdf2 ? 1.5 : 1.0) / dt;
+  std::vector<Real> h = f_;
+  if (bdf2)
+    for (std::size_t i = 0; i < h.size(); ++i) h[i] = (4 * f_[i] - f_previous_[i]) / 3;
   rep.mass_before = op_->total_mass(f_);
   Real scale = 0;
   for (Index c = 0; c < nc; ++c)
-    for (Index k = 0; k < N; ++k) scale += std::pow(g.cell_volume[c] / dt * f_old[c * N + k], 2);
+    for (Index k = 0; k < N; ++k) scale += std::pow(b * g.cell_volume[c] * h[c * N + k], 2);
   scale = std::sqrt(scale);
   std::vector<Real> r(op_->size());
+  std::vector<Real> f_start = f_;
   for (;;) {
     op_->residual(f_, r);  // refreshes the IB-face values and the collision from f
     for (Index c = 0; c < nc; ++c)
       for (Index k = 0; k < N; ++k)
-        r[c * N + k] += g.cell_volume[c] / dt * (f_[c * N + k] - f_old[c * N + k]);
+        r[c * N + k] += b * g.cell_volume[c] * (f_[c * N + k] - h[c * N + k]);
     rep.residual_ratio = op_->global_norm(r) / scale;
     rep.converged = rep.residual_ratio <= options_.step_tolerance;
     if (rep.converged || rep.sweeps >= options_.max_step_sweeps ||
         !std::isfinite(rep.residual_ratio))
       break;
-    sweep(dt, f_old);
+    sweep(b, h);
     ++rep.sweeps;
   }
+  f_previous_ = std::move(f_start);
+  dt_previous_ = dt;
   rep.mass_after = op_->total_mass(f_);
   for (int p = 0; p < static_cast<int>(g.patch_names.size()); ++p)
     rep.boundary_mass_flow += op_->boundary_mass_flow(p, f_);

@@ -3,7 +3,7 @@
 //
 // Per coupled step the caller does
 //   gas.set_body(surface, segment_velocity);   // mark, rebuild what changed, interpolate
-//   gas.advance(dt);                           // backward Euler over [t, t + dt]
+//   gas.advance(dt);                           // BDF2 (or backward Euler) over [t, t + dt]
 //   forces = gas.segment_forces();             // gas on the body, per surface segment
 // (solve_steady() instead of advance() for a steady state).
 //
@@ -60,6 +60,7 @@ namespace rfmems {
 struct ImmersedGasOptions {
   IbKineticOptions ib;
   bool conserve_mass_on_remark = true;  // closed domains only
+  bool bdf2 = true;
   Real step_tolerance = 1e-12;
   int max_step_sweeps = 2000;
 };
@@ -77,6 +78,7 @@ struct RemarkReport {
 };
 
 struct GasStepReport {
+  int order = 1;  // 1: backward Euler, 2: BDF2
   int sweeps = 0;
   bool converged = false;
   Real residual_ratio = 0;  // ||R|| / ||V f^n / dt||
@@ -97,7 +99,7 @@ class ImmersedKineticGas {
   void initialize(const GasState& state);
   // Steady state by the sequential solver on the FLUID cells.
   KineticSolveResult solve_steady(const SequentialOptions& options = {});
-  // One backward Euler step of length dt.
+  // One time step of length dt (BDF2 or backward Euler, see above).
   GasStepReport advance(Real dt);
 
   // Gas force on each IB face (marking order) and per surface segment (ForceTransfer).
@@ -121,7 +123,7 @@ class ImmersedKineticGas {
 
  private:
   void rebuild_graph(const CellMarking& marking);
-  void sweep(Real dt, std::span<const Real> f_old);
+  void sweep(Real b, std::span<const Real> h);
 
   const Mesh& background_;
   FaceGraph background_graph_;
@@ -140,6 +142,8 @@ class ImmersedKineticGas {
   std::unique_ptr<IbKineticFaceValues> values_;
   std::vector<DownwindGroup> downwind_;
   std::vector<Real> f_;
+  std::vector<Real> f_previous_;  // f^(n-1) for BDF2 (empty: none on this graph)
+  Real dt_previous_ = 0;
   Real reference_density_ = 0;
   ImmersedGasTimings timings_;
   RemarkReport remark_;
