@@ -14,7 +14,7 @@
 // last line.
 //
 //   build/bench/bench_ibm_gas [--steps 3] [--dt 5e-8] [--nx 150] [--ny 50] [--nv 10]
-//                             [--tolerance 1e-8]
+//                             [--tolerance 1e-8] [--stepper sweeps|ida] [--ida-rtol 1e-6]
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -35,7 +35,11 @@ int main(int argc, char** argv) {
   app.add_option("--ny", ny);
   app.add_option("--nv", nv, "velocities per direction");
   app.add_option("--v-tip", v_tip, "tip speed, m/s (downwards)");
-  app.add_option("--tolerance", tolerance, "backward Euler residual / ||V f^n / dt||");
+  app.add_option("--tolerance", tolerance, "sweeps: step residual / ||alpha V h / dt||");
+  std::string stepper = "sweeps";
+  Real ida_rtol = 1e-6;
+  app.add_option("--stepper", stepper, "sweeps | ida")->check(CLI::IsMember({"sweeps", "ida"}));
+  app.add_option("--ida-rtol", ida_rtol, "IDA relative tolerance");
   CLI11_PARSE(app, argc, argv);
 
   const Real um = 1e-6, L = 45 * um, T0 = 300, p0 = 1.36e4;
@@ -67,6 +71,8 @@ int main(int argc, char** argv) {
   ImmersedGasOptions options;
   options.ib.wall_temperature = T0;
   options.step_tolerance = tolerance;
+  options.stepper = stepper == "ida" ? GasStepper::Ida : GasStepper::Sweeps;
+  options.ida_rtol = ida_rtol;
   ImmersedKineticGas gas(background, bcs,
                          VelocityGrid::uniform(nv, nv, nv, 3.5 * air.thermal_speed(T0)), air,
                          options);
@@ -121,7 +127,12 @@ int main(int argc, char** argv) {
                                {"marking_cpu_s", t.marking - last.marking},
                                {"interpolation_cpu_s", t.interpolation - last.interpolation},
                                {"gas_cpu_s", t.gas - last.gas},
+                               {"stepper", stepper},
+                               {"order", rep.order},
                                {"sweeps", rep.sweeps},
+                               {"newton", rep.newton},
+                               {"krylov", rep.krylov},
+                               {"mass_change", rep.mass_after / rep.mass_before - 1},
                                {"converged", rep.converged},
                                {"residual_ratio", rep.residual_ratio},
                                {"force_y_N_per_m", force.y()},

@@ -57,8 +57,17 @@
 
 namespace rfmems {
 
+// How advance() solves a step: downwind sweeps (BDF2 / backward Euler, to step_tolerance), or
+// IDA over [t, t + dt] (variable-order BDF, error control at ida_rtol, internal steps <= dt,
+// restarted every call) with GMRES and the arrowhead preconditioner of TransientKineticSystem
+// (COMET's point block). IDA's mass conservation is that of its Newton tolerance (measured in
+// test_immersed_kinetic_gas), not round-off.
+enum class GasStepper { Sweeps, Ida };
+
 struct ImmersedGasOptions {
   IbKineticOptions ib;
+  GasStepper stepper = GasStepper::Sweeps;
+  Real ida_rtol = 1e-6;
   bool conserve_mass_on_remark = true;  // closed domains only
   bool bdf2 = true;
   Real step_tolerance = 1e-12;
@@ -78,10 +87,13 @@ struct RemarkReport {
 };
 
 struct GasStepReport {
-  int order = 1;  // 1: backward Euler, 2: BDF2
-  int sweeps = 0;
+  int order = 1;                // 1: backward Euler, 2: BDF2
+  int sweeps = 0;               // sweeps; GasStepper::Ida: IDA's internal steps
+  long newton = 0, krylov = 0;  // GasStepper::Ida
+  // Sweeps: ||R|| / ||alpha V h / dt|| of the step's equation; GasStepper::Ida: 0 (IDA's own
+  // error control).
+  Real residual_ratio = 0;
   bool converged = false;
-  Real residual_ratio = 0;  // ||R|| / ||V f^n / dt||
   Real mass_before = 0, mass_after = 0;
   Real boundary_mass_flow = 0;  // out through every patch (IB included), kg/s per unit depth
 };
@@ -124,6 +136,7 @@ class ImmersedKineticGas {
  private:
   void rebuild_graph(const CellMarking& marking);
   void sweep(Real b, std::span<const Real> h);
+  GasStepReport advance_ida(Real dt);
 
   const Mesh& background_;
   FaceGraph background_graph_;
