@@ -325,6 +325,15 @@ std::vector<Vec3> ImmersedKineticGas::ib_face_forces() const {
   return forces;
 }
 
+std::vector<Vec3> ImmersedKineticGas::step(const ImmersedSurface& surface,
+                                           std::span<const Vec3> segment_velocity, Real dt,
+                                           GasStepReport* report) {
+  set_body(surface, std::vector<Vec3>(segment_velocity.begin(), segment_velocity.end()));
+  const GasStepReport rep = advance(dt);
+  if (report) *report = rep;
+  return segment_forces();
+}
+
 std::vector<Vec3> ImmersedKineticGas::segment_forces() const {
   return transfer_->to_surface(ib_face_forces());
 }

@@ -114,6 +114,11 @@ class ImmersedKineticGas {
   // One time step of length dt (BDF2 or backward Euler, see above).
   GasStepReport advance(Real dt);
 
+  // The coupled step in one call (the shape of lib/coupling's ImmersedGasModel::advance):
+  // set_body(surface, segment_velocity), advance(dt), and the gas force per segment [N/m].
+  std::vector<Vec3> step(const ImmersedSurface& surface, std::span<const Vec3> segment_velocity,
+                         Real dt, GasStepReport* report = nullptr);
+
   // Gas force on each IB face (marking order) and per surface segment (ForceTransfer).
   std::vector<Vec3> ib_face_forces() const;
   std::vector<Vec3> segment_forces() const;

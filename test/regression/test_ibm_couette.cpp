@@ -10,13 +10,17 @@
 // Compared: the velocity u_z of rows 0..m-1 (largest difference / U) and the shear force on the
 // plate (IBM: the sum of the segment forces from ForceTransfer; body-fitted: wall_force).
 //
-// Asserted (numbers printed; docs/ibm.md has the table):
-//  - Kn = 0.1 and Kn = 0.01 (m = 20, 4 columns): profile within 1 % of U, shear force within
-//    1 % of the body-fitted one;
+// Asserted (numbers printed; docs/ibm.md has the table). Both runs are first-order upwind and
+// their wall treatments differ at O(h), so at a fixed spacing they differ at O(h) (measured
+// 1.2 % at m = 40): the 1 % is asserted after first-order Richardson extrapolation.
+//  - Kn = 0.1, m = 10, 20, 40 (10^3 velocities): the IBM - body-fitted shear difference falls
+//    at an observed order in [0.6, 1.5] (measured 0.78, 0.88), the profile difference at
+//    >= 0.4 (0.61, 0.74); at m = 40 both within 1.5 %; extrapolated (m = 20, 40) shear and
+//    profile (y / H = 0.1 .. 0.9) within 1 % (measured 1.7e-4 and 2.4e-3 U);
+//  - Kn = 0.01, m = 10, 20 (8^3 velocities): within 3 % at m = 20; extrapolated within 1 %
+//    (measured 5.0e-3 and 9.0e-3 U);
 //  - the plate's shear equals minus the fixed wall's (momentum balance of the steady state) to
-//    1e-4 relative;
-//  - observed order of the IBM-vs-body-fitted shear difference over m = 10, 20, 40 at Kn = 0.1
-//    within [0.5, 3] (printed).
+//    1e-6 relative (measured <= 3.6e-7).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -111,11 +115,11 @@ Profile immersed(Real kn, int m, int nv) {
   Real worst_factor = 0;
   for (Real a : ibm.face_values().flux_factors())
     worst_factor = std::max(worst_factor, std::abs(a - 1));
-  std::printf("   IBM: %lld one-sided of %lld step-(iii) fits, largest |a_i - 1| %.2e\n",
-              static_cast<long long>(ibm.face_values().count_one_sided()),
-              static_cast<long long>(ibm.face_values().n_ordinate_groups() *
-                                     ibm.marking().ib_faces.size()),
-              worst_factor);
+  std::printf(
+      "   IBM: %lld one-sided of %lld step-(iii) fits, largest |a_i - 1| %.2e\n",
+      static_cast<long long>(ibm.face_values().count_one_sided()),
+      static_cast<long long>(ibm.face_values().n_ordinate_groups() * ibm.marking().ib_faces.size()),
+      worst_factor);
   p.fixed_wall_shear = op.wall_force("bottom", ibm.distribution()).z();
   p.iterations = r.iterations;
   p.converged = r.converged;
