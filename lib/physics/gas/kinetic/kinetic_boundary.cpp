@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "core/error.hpp"
 #include "io/case_file.hpp"
@@ -15,6 +16,7 @@ const char* kinetic_boundary_kind_name(KineticBoundaryKind kind) {
     case KineticBoundaryKind::SpecularWall: return "specular_wall";
     case KineticBoundaryKind::Pressure: return "pressure";
     case KineticBoundaryKind::Symmetry: return "symmetry";
+    case KineticBoundaryKind::External: return "external";
   }
   return "?";
 }
@@ -41,6 +43,12 @@ KineticBoundary KineticBoundary::pressure_outlet(Real p, Real T) {
   b.kind = KineticBoundaryKind::Pressure;
   b.pressure = p;
   b.temperature = T;
+  return b;
+}
+
+KineticBoundary KineticBoundary::external() {
+  KineticBoundary b;
+  b.kind = KineticBoundaryKind::External;
   return b;
 }
 
@@ -110,6 +118,8 @@ void fill_boundary_face(const KineticBoundary& bc, const Vec3& area,
                         std::span<Real> f_face) {
   const Index n = grid.size();
   switch (bc.kind) {
+    case KineticBoundaryKind::External:
+      throw std::logic_error("fill_boundary_face: an external condition has no local rule");
     case KineticBoundaryKind::SpecularWall:
     case KineticBoundaryKind::Symmetry:
       for (Index k = 0; k < n; ++k)

@@ -12,6 +12,8 @@
 //   specular_wall, symmetry:  f_in(c) = f_owner(c') (eq. 5.33), the reflection map of
 //       VelocityGrid (exact for axis-aligned walls).
 //   pressure {p, T}:  f_in = the Maxwellian at rest with rho = p / (R T) (eq. 5.35).
+//   external: face values supplied from outside (external_face_values.hpp; the immersed
+//       boundary's IB faces); not available from case files, fill_boundary_face rejects it.
 // The Maxwellians are the DISCRETE equilibria of the gas's collision model (equilibrium.hpp:
 // exact discrete moments rho, u_w and covariance R T_w I; 10 coefficients for ESBGK, since on
 // an anisotropic grid the 5-coefficient one has a slightly anisotropic discrete covariance),
@@ -32,7 +34,7 @@ namespace rfmems {
 
 class CaseNode;
 
-enum class KineticBoundaryKind { DiffuseWall, SpecularWall, Pressure, Symmetry };
+enum class KineticBoundaryKind { DiffuseWall, SpecularWall, Pressure, Symmetry, External };
 
 const char* kinetic_boundary_kind_name(KineticBoundaryKind kind);
 
@@ -48,6 +50,8 @@ struct KineticBoundary {
   static KineticBoundary specular_wall();
   static KineticBoundary symmetry();
   static KineticBoundary pressure_outlet(Real p, Real T);
+  // Face values from an ExternalFaceValues source set on the operator.
+  static KineticBoundary external();
 
   // Does the condition read the owner's reflected ordinates?
   bool needs_reflection() const;

@@ -1,6 +1,7 @@
 #include "physics/gas/kinetic/kinetic_operator.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "core/error.hpp"
 #include "parallel/ghost_exchange.hpp"
@@ -79,6 +80,11 @@ std::span<const Index> KineticOperator::reflection(Index face) const {
 void KineticOperator::face_values(Index face, std::span<const Real> f, std::span<Real> out) const {
   const FaceGraph& g = *graph_;
   const int p = g.face_patch[face];
+  if (boundaries_[p].kind == KineticBoundaryKind::External) {
+    if (!external_) throw std::logic_error("kinetic operator: external patch without a source");
+    external_->fill(face, f, out);
+    return;
+  }
   fill_boundary_face(boundaries_[p], g.face_area[face], cell(f, g.face_owner[face]), grid_,
                      reflection(face), patch_maxwellian_[p], out);
 }
@@ -88,6 +94,7 @@ void KineticOperator::update_boundary_values(Index face, std::span<const Real> f
 }
 
 void KineticOperator::update_boundary_values(std::span<const Real> f) {
+  if (external_) external_->update(f);
   for (Index face = graph_->n_interior_faces; face < graph_->n_faces(); ++face)
     update_boundary_values(face, f);
 }

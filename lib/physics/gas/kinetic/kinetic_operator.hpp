@@ -39,6 +39,7 @@
 #include "fv/face_graph.hpp"
 #include "parallel/communicator.hpp"
 #include "physics/gas/kinetic/equilibrium.hpp"
+#include "physics/gas/kinetic/external_face_values.hpp"
 #include "physics/gas/kinetic/kinetic_boundary.hpp"
 #include "physics/gas/kinetic/kinetic_gas.hpp"
 #include "physics/gas/kinetic/macroscopic_state.hpp"
@@ -99,6 +100,9 @@ class KineticOperator {
   long equilibrium_iterations() const { return equilibrium_iterations_; }
 
   // --- transport ---
+  // The source of the face values of External patches (external_face_values.hpp); required
+  // before any face value of such a patch is asked for. Null detaches it.
+  void set_external_face_values(ExternalFaceValues* source) { external_ = source; }
   // Refreshes the face values of every boundary face from f.
   void update_boundary_values(std::span<const Real> f);
   // The same for one face.
@@ -156,6 +160,7 @@ class KineticOperator {
   const FaceGraph* graph_;
   Communicator comm_ = Communicator::serial();
   const GhostExchange* exchange_ = nullptr;
+  ExternalFaceValues* external_ = nullptr;
   VelocityGrid grid_;
   KineticGas gas_;
   std::vector<KineticBoundary> boundaries_;

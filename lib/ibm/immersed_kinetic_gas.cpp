@@ -1,0 +1,341 @@
+#include "ibm/immersed_kinetic_gas.hpp"
+
+#include <time.h>
+
+#include <cmath>
+
+#include "core/error.hpp"
+#include "physics/gas/comet/transient_kinetic_system.hpp"
+#include "solvers/ida_integrator.hpp"
+
+namespace rfmems {
+namespace {
+
+double cpu_seconds() {
+  timespec ts;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+}  // namespace
+
+ImmersedKineticGas::ImmersedKineticGas(const Mesh& background, std::vector<KineticBoundary> outer,
+                                       VelocityGrid grid, KineticGas gas,
+                                       ImmersedGasOptions options)
+    : background_(background),
+      background_graph_(face_graph_of(background)),
+      marker_(background),
+      outer_(std::move(outer)),
+      grid_(std::move(grid)),
+      gas_(std::move(gas)),
+      options_(std::move(options)) {
+  if (outer_.size() != background_graph_.patch_names.size())
+    throw InputError("immersed gas: " + std::to_string(outer_.size()) +
+                     " boundary conditions for " +
+                     std::to_string(background_graph_.patch_names.size()) + " patches");
+  outer_.push_back(KineticBoundary::external());
+}
+
+ImmersedKineticGas::~ImmersedKineticGas() = default;
+
+bool ImmersedKineticGas::closed() const {
+  for (const KineticBoundary& b : outer_)
+    if (b.kind == KineticBoundaryKind::Pressure) return false;
+  return true;
+}
+
+void ImmersedKineticGas::rebuild_graph(const CellMarking& marking) {
+  auto fluid = std::make_unique<FluidFaceGraph>(fluid_face_graph(background_graph_, marking));
+  auto op = std::make_unique<KineticOperator>(fluid->graph, grid_, gas_, outer_);
+  remark_ = RemarkReport{};
+  remark_.reclassified = true;
+  if (!f_.empty()) {
+    // Carry the distribution over by background cell (see the header).
+    const Index N = grid_.size();
+    const Index nb = background_graph_.n_cells();
+    remark_.mass_before = op_->total_mass(f_);
+    std::vector<Real> f(fluid->graph.n_cells() * N, 0.0);
+    std::vector<char> has(nb, 0);
+    std::vector<Index> pending;
+    for (Index c = 0; c < fluid->graph.n_cells(); ++c) {
+      const Index b = fluid->background_cell[c];
+      const Index old = fluid_->fluid_cell[b];
+      if (old >= 0) {
+        std::copy_n(f_.data() + old * N, N, f.data() + c * N);
+        has[b] = 1;
+      } else {
+        pending.push_back(c);
+        ++remark_.cells_gained;
+      }
+    }
+    for (Index b = 0; b < nb; ++b)
+      if (fluid_->fluid_cell[b] >= 0 && fluid->fluid_cell[b] < 0) ++remark_.cells_lost;
+    const FaceGraph& g = background_graph_;
+    while (!pending.empty()) {
+      std::vector<Index> still, filled;
+      for (const Index c : pending) {
+        const Index b = fluid->background_cell[c];
+        Real wsum = 0;
+        Real* fc = f.data() + c * N;
+        for (Index i = g.cell_face_offsets[b]; i < g.cell_face_offsets[b + 1]; ++i) {
+          const Index face = g.cell_faces[i];
+          if (g.is_boundary(face)) continue;
+          const Index nbr = g.face_owner[face] == b ? g.face_neighbour[face] : g.face_owner[face];
+          if (!has[nbr]) continue;
+          // Donors: FLUID cells before and after the move, or cells filled in a previous pass.
+          const Real w = 1.0 / (g.cell_centroid[nbr] - g.cell_centroid[b]).norm();
+          const Real* fs = f.data() + fluid->fluid_cell[nbr] * N;
+          for (Index k = 0; k < N; ++k) fc[k] += w * fs[k];
+          wsum += w;
+        }
+        if (wsum > 0) {
+          for (Index k = 0; k < N; ++k) fc[k] /= wsum;
+          filled.push_back(b);
+        } else {
+          still.push_back(c);
+        }
+      }
+      if (filled.empty()) throw MeshError("immersed gas: a new FLUID cell has no fluid donor");
+      for (const Index b : filled) has[b] = 1;
+      pending = std::move(still);
+    }
+    f_ = std::move(f);
+    remark_.mass_carried = op->total_mass(f_);
+    // The gas between the IB faces and the body (not simulated) at rho_ref: the FLUID area
+    // grows by dA, so the FLUID mass grows by rho_ref dA (see the header).
+    Real area_old = 0, area_new = 0;
+    for (Real v : fluid_->graph.cell_volume) area_old += v;
+    for (Real v : fluid->graph.cell_volume) area_new += v;
+    remark_.mass_target = remark_.mass_before + reference_density_ * (area_new - area_old);
+    if (options_.conserve_mass_on_remark && closed()) op->restore_mass(f_, remark_.mass_target);
+    remark_.mass_after = op->total_mass(f_);
+  }
+  op_ = std::move(op);
+  fluid_ = std::move(fluid);
+  f_previous_.clear();  // BDF2 restarts with a backward Euler step on a new graph
+  downwind_ = downwind_groups(fluid_->graph, grid_);
+}
+
+void ImmersedKineticGas::set_body(const ImmersedSurface& body, std::vector<Vec3> segment_velocity) {
+  if (static_cast<Index>(segment_velocity.size()) != body.n_segments())
+    throw InputError("immersed gas: one velocity per surface segment");
+  double t0 = cpu_seconds();
+  CellMarking marking = marker_.mark(body);
+  const bool reclassify = !fluid_ || marking.cell != marking_.cell;
+  if (values_) op_->set_external_face_values(nullptr);
+  values_.reset();
+  if (reclassify) {
+    rebuild_graph(marking);
+  } else {
+    remark_ = RemarkReport{};
+  }
+  // Same classes: the graph (and its IB face numbering) is unchanged, the fits are not.
+  marking_ = std::move(marking);
+  double t1 = cpu_seconds();
+  timings_.marking += t1 - t0;
+
+  body_ = body;
+  segment_velocity_ = std::move(segment_velocity);
+  transfer_ = std::make_unique<ForceTransfer>(background_, marking_, *body_);
+  ib_face_velocity_ = transfer_->to_ib_faces(segment_velocity_);
+  if (!f_.empty() && reference_density_ <= 0)
+    reference_density_ = op_->total_mass(f_) / marking_.area(background_, CellClass::Fluid);
+  values_ = std::make_unique<IbKineticFaceValues>(background_, *fluid_, marking_, *body_,
+                                                  segment_velocity_, ib_face_velocity_, grid_, gas_,
+                                                  reference_density_, options_.ib);
+  op_->set_external_face_values(values_.get());
+  if (!f_.empty()) {
+    op_->update_boundary_values(f_);
+    op_->update_collision(f_);
+  }
+  timings_.interpolation += cpu_seconds() - t1;
+}
+
+void ImmersedKineticGas::initialize(const GasState& state) {
+  if (!op_) throw InputError("immersed gas: initialize needs a body (set_body first)");
+  f_.assign(op_->size(), 0.0);
+  f_previous_.clear();
+  reference_density_ = state.rho;
+  values_->set_reference_density(state.rho);
+  op_->initialize(f_, [&](const Vec3&) { return state; });
+}
+
+KineticSolveResult ImmersedKineticGas::solve_steady(const SequentialOptions& options) {
+  const double t0 = cpu_seconds();
+  KineticSolveResult r = solve_sequential(*op_, f_, options);
+  op_->update_boundary_values(f_);
+  timings_.gas += cpu_seconds() - t0;
+  return r;
+}
+
+// The sequential solver's downwind sweep with the time term b V (f - h) (b = alpha / dt):
+//   f_ck = (b V h_ck + V nu f_eq,ck - sum (c.S)^- f_up) / (b V + sum (c.S)^+ + V nu).
+void ImmersedKineticGas::sweep(Real b, std::span<const Real> h) {
+  const FaceGraph& g = fluid_->graph;
+  const Index N = grid_.size();
+  std::vector<Real> numerator, denominator;
+  for (const DownwindGroup& group : downwind_) {
+    const std::size_t m = group.ordinates.size();
+    numerator.resize(m);
+    denominator.resize(m);
+    for (const Index c : group.cells) {
+      const Real V = g.cell_volume[c];
+      const Real vnu = V * op_->collision_frequency(c);
+      const std::span<const Real> feq = op_->equilibrium(c);
+      for (std::size_t j = 0; j < m; ++j) {
+        const Index k = group.ordinates[j];
+        numerator[j] = vnu * feq[k] + b * V * h[c * N + k];
+        denominator[j] = vnu + b * V;
+      }
+      for (Index i = g.cell_face_offsets[c]; i < g.cell_face_offsets[c + 1]; ++i) {
+        const Index face = g.cell_faces[i];
+        const bool owner = g.face_owner[face] == c;
+        const Vec3 S = owner ? g.face_area[face] : Vec3(-g.face_area[face]);
+        const Real* upwind =
+            g.is_boundary(face)
+                ? op_->boundary_values(face).data()
+                : f_.data() + (owner ? g.face_neighbour[face] : g.face_owner[face]) * N;
+        for (std::size_t j = 0; j < m; ++j) {
+          const Index k = group.ordinates[j];
+          const Real d = grid_.c[k].dot(S);
+          if (d > 0)
+            denominator[j] += d;
+          else
+            numerator[j] -= d * upwind[k];
+        }
+      }
+      Real* fc = f_.data() + c * N;
+      for (std::size_t j = 0; j < m; ++j) fc[group.ordinates[j]] = numerator[j] / denominator[j];
+    }
+  }
+}
+
+GasStepReport ImmersedKineticGas::advance(Real dt) {
+  if (!(dt > 0)) throw InputError("immersed gas: time step must be positive");
+  if (options_.stepper == GasStepper::Ida) return advance_ida(dt);
+  const double t0 = cpu_seconds();
+  const FaceGraph& g = fluid_->graph;
+  const Index N = grid_.size(), nc = g.n_cells();
+  GasStepReport rep;
+  // alpha / dt (f - h) + r(f) / V = 0: backward Euler (alpha = 1, h = f^n) or BDF2
+  // (alpha = 3/2, h = (4 f^n - f^(n-1)) / 3) when the last step had the same dt and graph.
+  const bool bdf2 = options_.bdf2 && !f_previous_.empty() && dt == dt_previous_;
+  rep.order = bdf2 ? 2 : 1;
+  const Real b = (bdf2 ? 1.5 : 1.0) / dt;
+  std::vector<Real> h = f_;
+  if (bdf2)
+    for (std::size_t i = 0; i < h.size(); ++i) h[i] = (4 * f_[i] - f_previous_[i]) / 3;
+  rep.mass_before = op_->total_mass(f_);
+  Real scale = 0;
+  for (Index c = 0; c < nc; ++c)
+    for (Index k = 0; k < N; ++k) scale += std::pow(b * g.cell_volume[c] * h[c * N + k], 2);
+  scale = std::sqrt(scale);
+  std::vector<Real> r(op_->size());
+  std::vector<Real> f_start = f_;
+  for (;;) {
+    op_->residual(f_, r);  // refreshes the IB-face values and the collision from f
+    for (Index c = 0; c < nc; ++c)
+      for (Index k = 0; k < N; ++k)
+        r[c * N + k] += b * g.cell_volume[c] * (f_[c * N + k] - h[c * N + k]);
+    rep.residual_ratio = op_->global_norm(r) / scale;
+    rep.converged = rep.residual_ratio <= options_.step_tolerance;
+    if (rep.converged || rep.sweeps >= options_.max_step_sweeps ||
+        !std::isfinite(rep.residual_ratio))
+      break;
+    sweep(b, h);
+    ++rep.sweeps;
+  }
+  f_previous_ = std::move(f_start);
+  dt_previous_ = dt;
+  rep.mass_after = op_->total_mass(f_);
+  for (int p = 0; p < static_cast<int>(g.patch_names.size()); ++p)
+    rep.boundary_mass_flow += op_->boundary_mass_flow(p, f_);
+  timings_.gas += cpu_seconds() - t0;
+  return rep;
+}
+
+// IDA over [0, dt] (variable order and step, error-controlled at ida_rtol; steps <= dt),
+// Newton-GMRES with the arrowhead preconditioner, restarted at every call (the operator may
+// have changed with set_body, and IDA's history with it). IDA's fixed-step mode is not used:
+// it makes the Newton test vacuous (tolerances 1e10), i.e. an explicit predictor step.
+GasStepReport ImmersedKineticGas::advance_ida(Real dt) {
+  const double t0 = cpu_seconds();
+  const FaceGraph& g = fluid_->graph;
+  const Index N = grid_.size(), nc = g.n_cells();
+  GasStepReport rep;
+  rep.mass_before = op_->total_mass(f_);
+  TransientKineticSystem system(*op_);
+  std::vector<Real> r(op_->size()), fp(op_->size());
+  op_->residual(f_, r);
+  Real f_max = 0;
+  for (Index c = 0; c < nc; ++c)
+    for (Index k = 0; k < N; ++k) {
+      fp[c * N + k] = -r[c * N + k] / g.cell_volume[c];
+      f_max = std::max(f_max, std::abs(f_[c * N + k]));
+    }
+  IdaOptions ida;
+  ida.linear_solver = IdaOptions::LinearSolver::Spgmr;
+  ida.rtol = options_.ida_rtol;
+  ida.atol = options_.ida_rtol * 1e-3 * f_max;
+  ida.max_step = dt;
+  IdaIntegrator integrator(system, ida);
+  integrator.initialize(0, f_, fp);
+  integrator.advance(dt);
+  std::copy(integrator.y().begin(), integrator.y().end(), f_.begin());
+  const IntegratorStats stats = integrator.stats();
+  rep.newton = stats.newton_iters;
+  rep.krylov = stats.linear_iters;
+  rep.sweeps = static_cast<int>(stats.steps);  // IDA's internal steps
+  rep.order = stats.last_order;
+  rep.converged = integrator.time() >= dt;
+  f_previous_.clear();
+  rep.mass_after = op_->total_mass(f_);
+  for (int p = 0; p < static_cast<int>(g.patch_names.size()); ++p)
+    rep.boundary_mass_flow += op_->boundary_mass_flow(p, f_);
+  timings_.gas += cpu_seconds() - t0;
+  return rep;
+}
+
+Real ImmersedKineticGas::fluid_area() const {
+  Real a = 0;
+  for (Real v : fluid_->graph.cell_volume) a += v;
+  return a;
+}
+
+Real ImmersedKineticGas::conserved_mass() const {
+  Real background = 0;
+  for (Real v : background_graph_.cell_volume) background += v;
+  return total_mass() + reference_density_ * (background - body_->area() - fluid_area());
+}
+
+std::vector<Vec3> ImmersedKineticGas::ib_face_forces() const {
+  const FaceGraph& g = fluid_->graph;
+  const Index N = grid_.size();
+  std::vector<Vec3> forces(marking_.ib_faces.size(), Vec3::Zero());
+  std::vector<Real> face(N);
+  for (Index f = g.n_interior_faces; f < g.n_faces(); ++f) {
+    const Index i = fluid_->ib_face[f];
+    if (i < 0) continue;
+    values_->fill(f, f_, face);
+    const Vec3& S = g.face_area[f];
+    Vec3 F = Vec3::Zero();
+    for (Index k = 0; k < N; ++k) F += (grid_.w[k] * grid_.c[k].dot(S) * face[k]) * grid_.c[k];
+    forces[i] = F;
+  }
+  return forces;
+}
+
+std::vector<Vec3> ImmersedKineticGas::step(const ImmersedSurface& surface,
+                                           std::span<const Vec3> segment_velocity, Real dt,
+                                           GasStepReport* report) {
+  set_body(surface, std::vector<Vec3>(segment_velocity.begin(), segment_velocity.end()));
+  const GasStepReport rep = advance(dt);
+  if (report) *report = rep;
+  return segment_forces();
+}
+
+std::vector<Vec3> ImmersedKineticGas::segment_forces() const {
+  return transfer_->to_surface(ib_face_forces());
+}
+
+}  // namespace rfmems

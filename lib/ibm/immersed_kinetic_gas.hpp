@@ -1,0 +1,170 @@
+// The ESBGK (or BGK) gas on the FLUID cells of a fixed background mesh with an immersed body
+// (thesis ch. 6, steps 2-3 of a coupled step): the gas slot of the coupled switch.
+//
+// Per coupled step the caller does
+//   gas.set_body(surface, segment_velocity);   // mark, rebuild what changed, interpolate
+//   gas.advance(dt);                           // BDF2 (or backward Euler) over [t, t + dt]
+//   forces = gas.segment_forces();             // gas on the body, per surface segment
+// (solve_steady() instead of advance() for a steady state).
+//
+// Pieces: CellMarker (FLUID / SOLID / IB); the FluidFaceGraph of the FLUID cells with the IB
+// faces on the patch "immersed" (KineticBoundaryKind::External); IbKineticFaceValues (the
+// thesis's three steps for the IB-face distribution); a KineticOperator on that graph with the
+// background's own conditions on the outer patches; ForceTransfer (IB-face forces to the
+// segments, conserving force and moment; the segments' velocities to the IB faces by its
+// adjoint).
+//
+// Forces: F_i = sum_k w_k c_k (c_k . S_i) f_ik on IB face i (S_i out of the fluid): the
+// momentum the gas gives the body through the face (KineticOperator::wall_force's flux).
+//
+// Time step: backward Euler, V_c (f_c - f_c^n) / dt + r_c(f) = 0 (r the steady residual of
+// KineticOperator), solved by downwind Gauss-Seidel sweeps (the sequential solver's sweep with
+// the extra diagonal V / dt) until ||V (f - f^n) / dt + r(f)||_2 <= step_tolerance ||V f^n /
+// dt||_2. A converged step conserves the FLUID mass up to the IB and outer boundary flows (the
+// collision is discrete-conservative), to the residual left: the mass error of a step is
+// dt sum_ck w_k R_ck, reported.
+//
+// Cells that change class (set_body with a marking whose cell classes differ): the graph, the
+// operator and the interpolations are rebuilt, the distribution is carried over by background
+// cell; a cell that becomes FLUID takes the inverse-distance mean of its FLUID face neighbours
+// from before the move (a degree-0 least-squares extrapolation; cells with no such neighbour
+// take it from the cells filled before them), the gas of a cell that leaves the fluid goes
+// with it. Mass bookkeeping: the gas between the IB faces and the body is not simulated; it is
+// counted at the reference density, so the gas mass of the domain is
+//   M = M_FLUID + rho_ref (A_background - A_body - A_FLUID)        (conserved_mass()).
+// A gas step keeps M_FLUID (the IB faces' net flow is rho_ref sum u_i . S_i = 0 for a rigid
+// motion) and the areas. A re-marking changes A_FLUID by whole cells, dA: the carried-over
+// M_FLUID (RemarkReport::mass_carried) is then scaled to M_before + rho_ref dA (mass_target;
+// conserve_mass_on_remark, closed domains only: no pressure patch), so M is an invariant of
+// every set_body too; the scale factor differs from 1 by O((rho_cell - rho_ref) dA / M).
+#pragma once
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "core/types.hpp"
+#include "fv/face_graph.hpp"
+#include "ibm/cell_marking.hpp"
+#include "ibm/fluid_face_graph.hpp"
+#include "ibm/force_transfer.hpp"
+#include "ibm/ib_kinetic_face_values.hpp"
+#include "ibm/immersed_surface.hpp"
+#include "mesh/mesh.hpp"
+#include "physics/gas/kinetic/downwind_ordering.hpp"
+#include "physics/gas/kinetic/kinetic_operator.hpp"
+#include "physics/gas/kinetic/sequential_solver.hpp"
+
+namespace rfmems {
+
+// How advance() solves a step: downwind sweeps (BDF2 / backward Euler, to step_tolerance), or
+// IDA over [t, t + dt] (variable-order BDF, error control at ida_rtol, internal steps <= dt,
+// restarted every call) with GMRES and the arrowhead preconditioner of TransientKineticSystem
+// (COMET's point block). IDA's mass conservation is that of its Newton tolerance (measured in
+// test_immersed_kinetic_gas), not round-off.
+enum class GasStepper { Sweeps, Ida };
+
+struct ImmersedGasOptions {
+  IbKineticOptions ib;
+  GasStepper stepper = GasStepper::Sweeps;
+  Real ida_rtol = 1e-6;
+  bool conserve_mass_on_remark = true;  // closed domains only
+  bool bdf2 = true;
+  Real step_tolerance = 1e-12;
+  int max_step_sweeps = 2000;
+};
+
+struct ImmersedGasTimings {  // CPU seconds of the process, accumulated
+  double marking = 0;        // CellMarker::mark + fluid graph + carry-over
+  double interpolation = 0;  // IB interpolations, force transfer, wall Maxwellians
+  double gas = 0;            // sweeps, residuals, IB-face updates
+};
+
+struct RemarkReport {
+  bool reclassified = false;
+  Index cells_gained = 0, cells_lost = 0;
+  Real mass_before = 0, mass_carried = 0, mass_target = 0, mass_after = 0;  // FLUID mass
+};
+
+struct GasStepReport {
+  int order = 1;                // 1: backward Euler, 2: BDF2
+  int sweeps = 0;               // sweeps; GasStepper::Ida: IDA's internal steps
+  long newton = 0, krylov = 0;  // GasStepper::Ida
+  // Sweeps: ||R|| / ||alpha V h / dt|| of the step's equation; GasStepper::Ida: 0 (IDA's own
+  // error control).
+  Real residual_ratio = 0;
+  bool converged = false;
+  Real mass_before = 0, mass_after = 0;
+  Real boundary_mass_flow = 0;  // out through every patch (IB included), kg/s per unit depth
+};
+
+class ImmersedKineticGas {
+ public:
+  // outer: one condition per patch of the background mesh. The mesh must outlive this.
+  ImmersedKineticGas(const Mesh& background, std::vector<KineticBoundary> outer, VelocityGrid grid,
+                     KineticGas gas, ImmersedGasOptions options = {});
+  ~ImmersedKineticGas();
+
+  // The body and its velocity per segment (m/s).
+  void set_body(const ImmersedSurface& body, std::vector<Vec3> segment_velocity);
+  // Equilibrium at rest state everywhere in the fluid (needs a body); sets rho_ref = s.rho.
+  void initialize(const GasState& state);
+  // Steady state by the sequential solver on the FLUID cells.
+  KineticSolveResult solve_steady(const SequentialOptions& options = {});
+  // One time step of length dt (BDF2 or backward Euler, see above).
+  GasStepReport advance(Real dt);
+
+  // The coupled step in one call (the shape of lib/coupling's ImmersedGasModel::advance):
+  // set_body(surface, segment_velocity), advance(dt), and the gas force per segment [N/m].
+  std::vector<Vec3> step(const ImmersedSurface& surface, std::span<const Vec3> segment_velocity,
+                         Real dt, GasStepReport* report = nullptr);
+
+  // Gas force on each IB face (marking order) and per surface segment (ForceTransfer).
+  std::vector<Vec3> ib_face_forces() const;
+  std::vector<Vec3> segment_forces() const;
+  // FLUID mass sum_c V_c rho_c, the FLUID area, and the domain's gas mass M (see above).
+  Real total_mass() const { return op_->total_mass(f_); }
+  Real fluid_area() const;
+  Real conserved_mass() const;
+
+  const CellMarking& marking() const { return marking_; }
+  const FluidFaceGraph& fluid() const { return *fluid_; }
+  const KineticOperator& kinetic() const { return *op_; }
+  KineticOperator& kinetic() { return *op_; }
+  const IbKineticFaceValues& face_values() const { return *values_; }
+  std::span<const Real> distribution() const { return f_; }
+  std::span<Real> distribution() { return f_; }
+  const ImmersedGasTimings& timings() const { return timings_; }
+  const RemarkReport& last_remark() const { return remark_; }
+  bool closed() const;
+
+ private:
+  void rebuild_graph(const CellMarking& marking);
+  void sweep(Real b, std::span<const Real> h);
+  GasStepReport advance_ida(Real dt);
+
+  const Mesh& background_;
+  FaceGraph background_graph_;
+  CellMarker marker_;
+  std::vector<KineticBoundary> outer_;
+  VelocityGrid grid_;
+  KineticGas gas_;
+  ImmersedGasOptions options_;
+
+  std::optional<ImmersedSurface> body_;
+  std::vector<Vec3> segment_velocity_, ib_face_velocity_;
+  CellMarking marking_;
+  std::unique_ptr<FluidFaceGraph> fluid_;
+  std::unique_ptr<KineticOperator> op_;
+  std::unique_ptr<ForceTransfer> transfer_;
+  std::unique_ptr<IbKineticFaceValues> values_;
+  std::vector<DownwindGroup> downwind_;
+  std::vector<Real> f_;
+  std::vector<Real> f_previous_;  // f^(n-1) for BDF2 (empty: none on this graph)
+  Real dt_previous_ = 0;
+  Real reference_density_ = 0;
+  ImmersedGasTimings timings_;
+  RemarkReport remark_;
+};
+
+}  // namespace rfmems
