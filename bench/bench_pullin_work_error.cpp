@@ -202,12 +202,16 @@ int main(int argc, char** argv) {
   std::vector<std::string> families{"ida_o2", "ida_o5", "ida_o2_w", "ida_o5_w",
                                     "be",     "bdf2",   "be_cut",   "bdf2_cut"};
   double atol_factor = 1.0, velocity_rate = 0;
+  std::vector<double> rate_factors{1.0};
   bool quick = false;
   app.add_option("--cases", cases, "the repository's cases/ directory");
   app.add_option("--families", families, "integrator families to run (see the header)");
   app.add_option("--w-rtols", w_rtols, "rtols of ida_o2_w");
   app.add_option("--w-o5-rtols", w_o5_rtols, "rtols of ida_o5_w");
   app.add_option("--cut-dts", cut_dts, "fixed steps of be_cut, bdf2_cut [s]");
+  app.add_option("--rate-factors", rate_factors,
+                 "weighted families: velocity rates as multiples of omega_1 (0: velocities out "
+                 "of the error test); methods ida_oK_w, ida_oK_wx10, ida_oK_woff");
   app.add_option("--atol-factor", atol_factor,
                  "weighted families: displacement atol = this x rtol x g0");
   app.add_option(
@@ -328,10 +332,11 @@ int main(int argc, char** argv) {
     }
     const double cell_length = 400e-6 / 40;  // the plate's dx (cases/switch_plate)
     const double p_ambient = scene.film ? scene.film->gas().ambient_pressure : 0.0;
-    auto weighted = [&](double rtol) {
+    auto weighted = [&](double rtol, double rate_factor = 1.0) {
       StateTolerances t;
       t.displacement = atol_factor * rtol * gap;
-      t.velocity_rate = omega_1;
+      // Factor 0: velocities out of the test (an atol 1e13 x d per second: never binding).
+      t.velocity_rate = rate_factor > 0 ? rate_factor * omega_1 : 1e13;
       t.pressure = scene.film ? t.displacement * p_ambient / gap : 0.0;
       t.quasi_static = t.displacement / cell_length;
       t.suppress_quasi_static = true;
@@ -403,18 +408,33 @@ int main(int argc, char** argv) {
                    method.c_str(), params.dump().c_str(), run.t_pi, err, run.stats.residual_evals,
                    run.stats.jacobian_evals, run.stats.steps, run.seconds);
     };
-    for (const std::string method :
-         {"ida_o2", "ida_o5", "ida_o2_w", "ida_o3_w", "ida_o4_w", "ida_o5_w"}) {
-      if (!runs_family(method)) continue;
+    struct AdaptiveFamily {
+      std::string family, method;
+      double rate_factor;
+    };
+    std::vector<AdaptiveFamily> adaptive_families{{"ida_o2", "ida_o2", 0}, {"ida_o5", "ida_o5", 0}};
+    for (const char* f : {"ida_o2_w", "ida_o3_w", "ida_o4_w", "ida_o5_w"})
+      for (double factor : rate_factors) {
+        char suffix[16] = "";
+        if (factor == 0)
+          std::snprintf(suffix, sizeof suffix, "off");
+        else if (factor != 1)
+          std::snprintf(suffix, sizeof suffix, "x%g", factor);
+        adaptive_families.push_back({f, std::string(f) + suffix, factor});
+      }
+    for (const AdaptiveFamily& af : adaptive_families) {
+      if (!runs_family(af.family)) continue;
+      const std::string& method = af.method;
       const int order = method[5] - '0';  // ida_oK...
-      const bool w = method.back() == 'w';
+      const bool w = af.family.back() == 'w';
       const std::vector<double>& list =
           w ? (order == 2 ? w_rtols : w_o5_rtols) : (order == 2 ? rtols : o5_rtols);  // o3-o5 alike
       double last_time = 0, last_steps = 0, before_steps = 0;
       for (double rtol : list) {
         Json params{{"rtol", rtol}, {"max_order", order}};
         if (w) {
-          const StateTolerances t = weighted(rtol);
+          const StateTolerances t = weighted(rtol, af.rate_factor);
+          params["velocity_rate_over_omega_1"] = af.rate_factor;
           params["atol_displacement"] = t.displacement;
           params["atol_velocity"] = t.displacement * t.velocity_rate;
           params["atol_pressure"] = t.pressure;
@@ -435,7 +455,7 @@ int main(int argc, char** argv) {
           continue;
         }
         const Run run = pull_in_run(*system, scene.control, voltage, gap, adaptive(rtol, order),
-                                    w ? weighted(rtol) : StateTolerances{});
+                                    w ? weighted(rtol, af.rate_factor) : StateTolerances{});
         record(method, params, run);
         before_steps = last_steps;
         last_steps = static_cast<double>(run.stats.steps);
@@ -524,16 +544,16 @@ int main(int argc, char** argv) {
                  : Json(nullptr);
       };
       Json per = Json::object();
-      for (const char* m : {"ida_o2", "ida_o5", "ida_o2_w", "ida_o3_w", "ida_o4_w", "ida_o5_w",
-                            "be", "bdf2", "be_cut", "bdf2_cut"}) {
-        const Choice c = choose(points[m], target);
+      for (const auto& [m, runs] : points) {
+        const Choice c = choose(runs, target);
         per[m] = {{"cheapest", describe(c.cheapest)}, {"reliable", describe(c.reliable)}};
       }
       t["per_method"] = per;
       for (const bool reliable : {false, true}) {
-        auto family = [&](std::initializer_list<const char*> members) {
+        auto family = [&](const std::vector<std::string>& members) {
           const Point* best = nullptr;
-          for (const char* m : members) {
+          for (const std::string& m : members) {
+            if (!points.count(m)) continue;
             const Choice c = choose(points[m], target);
             const Point* p = reliable ? c.reliable : c.cheapest;
             if (p && (!best || p->evals < best->evals)) best = p;
@@ -544,16 +564,17 @@ int main(int argc, char** argv) {
         // as before and against the fixed step allowed to cut its last steps.
         struct Comparison {
           const char* name;
-          std::initializer_list<const char*> adaptive, fixed;
+          std::vector<std::string> adaptive, fixed;
         };
+        std::vector<std::string> weighted_methods;  // every ida_oK_w* run
+        for (const auto& [m, runs] : points)
+          if (m.find("_w") != std::string::npos) weighted_methods.push_back(m);
         Json r = Json::object();
         for (const Comparison& c :
              {Comparison{"scalar_vs_fixed", {"ida_o2", "ida_o5"}, {"be", "bdf2"}},
-              Comparison{"weighted_vs_fixed",
-                         {"ida_o2_w", "ida_o3_w", "ida_o4_w", "ida_o5_w"},
-                         {"be", "bdf2"}},
+              Comparison{"weighted_vs_fixed", weighted_methods, {"be", "bdf2"}},
               Comparison{"weighted_vs_fixed_or_cut",
-                         {"ida_o2_w", "ida_o3_w", "ida_o4_w", "ida_o5_w"},
+                         weighted_methods,
                          {"be", "bdf2", "be_cut", "bdf2_cut"}}}) {
           const Point* a = family(c.adaptive);
           const Point* f = family(c.fixed);
