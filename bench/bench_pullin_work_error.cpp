@@ -39,6 +39,8 @@
 //
 // Output: one JSON object per line on stdout; progress on stderr.
 //   bench_pullin_work_error [--quick] [--voltage 180] [--gas none reynolds] [--cap 60]
+//       [--families ...] [--rate-factors 1 10 0] [--t-ref T (exploration: skip the reference)]
+// docs/BENCHMARKS.md sections 6 (scalar atol) and 6e (error weights, cutting fixed steps).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>

@@ -34,7 +34,7 @@ struct StateTolerances {
   bool enabled() const { return displacement > 0; }
 };
 
-// The per-component atols for a system with these kinds (scalar fallbacks from `base`).
+// The per-component atols for a system with these kinds (unset scales: scalar_atol).
 std::vector<Real> absolute_tolerances(const std::vector<StateKind>& kinds,
                                       const StateTolerances& tolerances, Real scalar_atol);
 
