@@ -14,9 +14,17 @@
 //   ida_o2, ida_o5   IDA adaptive, BDF orders <= 2 and <= 5, rtol 1e-2 ... 1e-7,
 //                    atol = 1e-4 x rtol x g0 on every component (the case default at
 //                    rtol 1e-3 is 1e-4 g0: the same scaling).
+//   ida_o2_w, ida_o5_w  the same with error weights per kind of unknown
+//                    (coupling/state_tolerances.hpp): displacements d = --atol-factor x rtol
+//                    x g0, velocities d x omega_1 (omega_1 measured here: the free response
+//                    of a 20 V step, coupling/dynamic_pull_in.hpp free_response), film
+//                    pressures d p_a / g0, the plate's rotations (algebraic) out of the error
+//                    test with d / dx for Newton's test.
 //   be, bdf2         fixed step dt (IdaOptions::fixed_step, max_order 1 and 2): IDA with
 //                    hmin = hmax = dt and an error test that never rejects. The contact root
 //                    is still located by IDA's interpolant within the last step.
+//   be_cut, bdf2_cut the same, but a failed Newton solve (the 1/g^2 touch-down) may cut the
+//                    step (IdaOptions::fixed_step_min = 1e-4 dt), which grows back to dt.
 // The reference: IDA at --ref-rtol (default 1e-9) with max_order 5 and with max_order 2; their
 // difference is reported as the reference's uncertainty, and a Richardson extrapolation of
 // the two finest BDF2 runs as an independent check. Error = |t - t_ref| / t_ref.
@@ -31,6 +39,8 @@
 //
 // Output: one JSON object per line on stdout; progress on stderr.
 //   bench_pullin_work_error [--quick] [--voltage 180] [--gas none reynolds] [--cap 60]
+//       [--families ...] [--rate-factors 1 10 0] [--t-ref T (exploration: skip the reference)]
+// docs/BENCHMARKS.md sections 6 (scalar atol) and 6e (error weights, cutting fixed steps).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -45,12 +55,13 @@
 #include <string>
 #include <vector>
 
-#include "coupling/dynamic_pull_in.hpp"
+#include "bench_support.hpp"
 #include "core/error.hpp"
+#include "coupling/dynamic_pull_in.hpp"
+#include "coupling/state_tolerances.hpp"
 #include "coupling/switch_scene.hpp"
 #include "io/case_file.hpp"
 #include "solvers/ida_integrator.hpp"
-#include "bench_support.hpp"
 
 using namespace rfmems;
 using Json = nlohmann::ordered_json;
@@ -64,9 +75,6 @@ using rfmems::bench::default_cases_dir;
 using rfmems::bench::emit;
 using rfmems::bench::now;
 
-
-
-
 struct Run {
   std::string failure;  // the solver's message if the run failed
   bool pulled_in = false;
@@ -79,7 +87,7 @@ double g_rise_time = 0;
 
 // One step-voltage (or ramped, with --rise-time) run from rest to touch-down (or end_time).
 Run pull_in_run(SwitchSystem& system, Index control, double voltage, double gap,
-                const IdaOptions& ida) {
+                const IdaOptions& ida, const StateTolerances& tolerances = {}) {
   DynamicOptions o;
   o.end_time = 40e-6;
   o.contact_gap = 0.02 * gap;
@@ -87,6 +95,7 @@ Run pull_in_run(SwitchSystem& system, Index control, double voltage, double gap,
   o.output_interval = 0;
   o.ida = ida;
   o.ida.max_steps = 100000000;
+  o.tolerances = tolerances;
   const double t0 = now();
   Run run;
   try {
@@ -110,11 +119,11 @@ Run pull_in_run(SwitchSystem& system, Index control, double voltage, double gap,
 // Where an adaptive run spends its steps: the same run as run_dynamic (rest, IDACalcIC, contact
 // root) with IDA stopped every `window` to read its step count and current step size.
 Json step_profile(SwitchSystem& system, double voltage, double gap, const IdaOptions& options,
-                  double window) {
+                  double window, const StateTolerances& tolerances = {}) {
   system.actuation().set_voltage_squared([voltage](Real) { return voltage * voltage; });
   std::vector<Real> y, yp;
   system.initial_state(0.0, y, yp);
-  IdaOptions o = options;
+  IdaOptions o = with_state_tolerances(options, system, tolerances);
   o.max_steps = 100000000;
   IdaIntegrator ida(system, o);
   ida.initialize(0.0, y, yp);
@@ -180,26 +189,51 @@ Choice choose(const std::vector<Point>& runs, double target) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Work against error of IDA and fixed-step BDF for the dynamic pull-in time of the "
-               "plate switch (JSON lines)"};
+  CLI::App app{
+      "Work against error of IDA and fixed-step BDF for the dynamic pull-in time of the "
+      "plate switch (JSON lines)"};
   std::string cases = default_cases_dir();
   double voltage = 180.0, cap = 40.0, ref_rtol = 1e-9, ref_o2_rtol = 0;
   std::vector<std::string> gases{"none", "reynolds"};
   std::vector<double> rtols{1e-1, 3e-2, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6};
   std::vector<double> o5_rtols{1e-2, 1e-4, 1e-6}, profile_rtols{1e-2, 1e-4};
   std::vector<double> dts{1e-7, 5e-8, 2e-8, 1e-8, 5e-9, 2e-9, 1e-9, 5e-10, 2e-10};
+  std::vector<double> w_rtols{1e-1, 3e-2, 1e-2, 3e-3, 1e-3, 1e-4, 1e-5};
+  std::vector<double> w_o5_rtols{1e-1, 1e-2, 1e-3, 1e-4, 1e-6};
+  std::vector<double> cut_dts{2e-7, 1e-7, 5e-8, 2e-8, 1e-8, 5e-9, 2e-9};
+  std::vector<std::string> families{"ida_o2", "ida_o5", "ida_o2_w", "ida_o5_w",
+                                    "be",     "bdf2",   "be_cut",   "bdf2_cut"};
+  double atol_factor = 1.0, velocity_rate = 0;
+  std::vector<double> rate_factors{1.0};
   bool quick = false;
   app.add_option("--cases", cases, "the repository's cases/ directory");
+  app.add_option("--families", families, "integrator families to run (see the header)");
+  app.add_option("--w-rtols", w_rtols, "rtols of ida_o2_w");
+  app.add_option("--w-o5-rtols", w_o5_rtols, "rtols of ida_o5_w");
+  app.add_option("--cut-dts", cut_dts, "fixed steps of be_cut, bdf2_cut [s]");
+  app.add_option("--rate-factors", rate_factors,
+                 "weighted families: velocity rates as multiples of omega_1 (0: velocities out "
+                 "of the error test); methods ida_oK_w, ida_oK_wx10, ida_oK_woff");
+  app.add_option("--atol-factor", atol_factor,
+                 "weighted families: displacement atol = this x rtol x g0");
+  app.add_option(
+      "--velocity-rate", velocity_rate,
+      "weighted families: velocity atol = displacement atol x this [1/s] (0: measured omega_1)");
   app.add_option("--rise-time", g_rise_time,
                  "linear voltage ramp over this time [s] instead of a step (default 0: step)");
-  app.add_option("--voltage", voltage, "step voltage [V] (dynamic V_PI: ~171 V vacuum, ~174 V at 1 atm)");
+  app.add_option("--voltage", voltage,
+                 "step voltage [V] (dynamic V_PI: ~171 V vacuum, ~174 V at 1 atm)");
   app.add_option("--gas", gases, "gas models to run: none, reynolds");
   app.add_option("--rtols", rtols, "IDA relative tolerances, max_order 2");
   app.add_option("--o5-rtols", o5_rtols, "IDA relative tolerances, max_order 5");
   app.add_option("--profile-rtols", profile_rtols, "step profiles of max_order 2 at these rtols");
   app.add_option("--dts", dts, "fixed steps [s]");
   app.add_option("--ref-rtol", ref_rtol, "tolerance of the reference (max_order 5)");
-  app.add_option("--ref-o2-rtol", ref_o2_rtol, "also check the reference with max_order 2 at this rtol");
+  double given_t_ref = 0;
+  app.add_option("--t-ref", given_t_ref,
+                 "use this reference t_PI [s] instead of computing it (exploration runs only)");
+  app.add_option("--ref-o2-rtol", ref_o2_rtol,
+                 "also check the reference with max_order 2 at this rtol");
   app.add_option("--cap", cap, "skip runs predicted to take longer than this [s]");
   app.add_flag("--quick", quick, "smoke run: few tolerances and steps, reference at 1e-7");
   CLI11_PARSE(app, argc, argv);
@@ -208,6 +242,9 @@ int main(int argc, char** argv) {
     o5_rtols = {1e-2};
     profile_rtols = {1e-2};
     dts = {5e-9, 2e-9};
+    w_rtols = {1e-2, 1e-3};
+    w_o5_rtols = {1e-2};
+    cut_dts = {5e-8, 1e-8};
     ref_rtol = 1e-6;
     cap = 10;
   }
@@ -216,8 +253,8 @@ int main(int argc, char** argv) {
   for (const std::string& gas : gases) {
     const std::string case_path = cases + "/switch_plate/case.yaml";
     const CaseFile cf = CaseFile::load(case_path, {"gas.model=" + gas});
-    SwitchScene scene =
-        build_switch_scene(cf.root(), fs::path(case_path).parent_path().string(), AnalysisType::Transient);
+    SwitchScene scene = build_switch_scene(cf.root(), fs::path(case_path).parent_path().string(),
+                                           AnalysisType::Transient);
     const std::unique_ptr<SwitchSystem> system = scene.make_transient_system();
     const double gap = scene.gap;
     Json common{{"bench", "pullin_work_error"},
@@ -265,6 +302,49 @@ int main(int argc, char** argv) {
       o.max_order = order;
       return o;
     };
+    auto runs_family = [&](const std::string& f) {
+      return std::find(families.begin(), families.end(), f) != families.end();
+    };
+    // omega_1: the damped frequency of the free response to a 20 V step (electrostatic
+    // softening (20/171)^2 ~ 1 %), IDA order <= 5 at rtol 1e-6 with the scalar atol.
+    double omega_1 = velocity_rate;
+    if (omega_1 <= 0) {
+      DynamicOptions o;
+      o.end_time = 30e-6;
+      o.contact_gap = 0.02 * gap;
+      o.stop_at_turning = false;
+      o.output_interval = 0.02e-6;
+      o.ida = adaptive(1e-6, 5);
+      const DynamicRun r = run_dynamic(*system, scene.control, VoltageWaveform{}.at(20.0), o);
+      const FreeResponse fr = free_response(r.history);
+      if (fr.swings < 2) {
+        std::fprintf(stderr, "  no free oscillation at 20 V: give --velocity-rate\n");
+        return 1;
+      }
+      omega_1 = 2 * M_PI * fr.frequency;
+      Json j = common;
+      j["variant"] = "omega_1";
+      j["frequency_hz"] = fr.frequency;
+      j["damping_ratio"] = fr.damping_ratio;
+      j["swings"] = fr.swings;
+      j["omega_1_rad_s"] = omega_1;
+      emit(j);
+      std::fprintf(stderr, "  omega_1 = %.4e rad/s (f = %.1f kHz, zeta %.3g, 20 V)\n", omega_1,
+                   fr.frequency / 1e3, fr.damping_ratio);
+    }
+    const double cell_length = 400e-6 / 40;  // the plate's dx (cases/switch_plate)
+    const double p_ambient = scene.film ? scene.film->gas().ambient_pressure : 0.0;
+    auto weighted = [&](double rtol, double rate_factor = 1.0) {
+      StateTolerances t;
+      t.displacement = atol_factor * rtol * gap;
+      // Factor 0: velocities out of the test (an atol 1e13 x d per second: never binding).
+      t.velocity_rate = rate_factor > 0 ? rate_factor * omega_1 : 1e13;
+      t.pressure = scene.film ? t.displacement * p_ambient / gap : 0.0;
+      t.quasi_static = t.displacement / cell_length;
+      t.suppress_quasi_static = true;
+      return t;
+    };
+
     // The reference (order <= 5 at ref_rtol) and two checks of it: order <= 5 at 10 x
     // ref_rtol, and optionally order <= 2 at --ref-o2-rtol (order 2 needs ~6x the steps of
     // order 5 at the same tolerance here).
@@ -276,9 +356,17 @@ int main(int argc, char** argv) {
     std::vector<RefSpec> specs{{"reference", ref_rtol, 5}, {"reference_loose", 10 * ref_rtol, 5}};
     if (ref_o2_rtol > 0) specs.push_back({"reference_o2", ref_o2_rtol, 2});
     std::vector<Run> refs;
+    if (given_t_ref > 0) {
+      specs.clear();
+      Run given;
+      given.pulled_in = true;
+      given.t_pi = given_t_ref;
+      refs.push_back(given);
+    }
     for (const RefSpec& spec : specs) {
       std::fprintf(stderr, "  %s: order <= %d, rtol %.0e ...\n", spec.name, spec.order, spec.rtol);
-      refs.push_back(pull_in_run(*system, scene.control, voltage, gap, adaptive(spec.rtol, spec.order)));
+      refs.push_back(
+          pull_in_run(*system, scene.control, voltage, gap, adaptive(spec.rtol, spec.order)));
       Json j = common;
       j["variant"] = spec.name;
       j["method"] = spec.order == 5 ? "ida_o5" : "ida_o2";
@@ -312,21 +400,53 @@ int main(int argc, char** argv) {
       j.update(stats_json(run));
       const double err = std::abs(run.t_pi - t_ref) / t_ref;
       if (run.pulled_in) j["error"] = err;
-      const std::string param = params.contains("rtol") ? "rtol " + params["rtol"].dump()
-                                                        : "dt " + params["dt"].dump();
+      const std::string param = method + (params.contains("rtol") ? " rtol " + params["rtol"].dump()
+                                                                  : " dt " + params["dt"].dump());
       points[method].push_back({param, static_cast<double>(run.stats.residual_evals), run.seconds,
                                 run.pulled_in ? err : std::numeric_limits<double>::infinity()});
       emit(j);
-      std::fprintf(stderr, "  %-6s %s: t_PI %.9e s, error %.2e, %ld res, %ld jac, %ld steps, %.3f s\n",
-                   method.c_str(), params.dump().c_str(), run.t_pi, err,
-                   run.stats.residual_evals, run.stats.jacobian_evals, run.stats.steps, run.seconds);
+      std::fprintf(stderr,
+                   "  %-6s %s: t_PI %.9e s, error %.2e, %ld res, %ld jac, %ld steps, %.3f s\n",
+                   method.c_str(), params.dump().c_str(), run.t_pi, err, run.stats.residual_evals,
+                   run.stats.jacobian_evals, run.stats.steps, run.seconds);
     };
-    for (int order : {2, 5}) {
-      const std::string method = order == 2 ? "ida_o2" : "ida_o5";
+    struct AdaptiveFamily {
+      std::string family, method;
+      double rate_factor;
+    };
+    std::vector<AdaptiveFamily> adaptive_families{{"ida_o2", "ida_o2", 0}, {"ida_o5", "ida_o5", 0}};
+    for (const char* f : {"ida_o2_w", "ida_o3_w", "ida_o4_w", "ida_o5_w"})
+      for (double factor : rate_factors) {
+        char suffix[16] = "";
+        if (factor == 0)
+          std::snprintf(suffix, sizeof suffix, "off");
+        else if (factor != 1)
+          std::snprintf(suffix, sizeof suffix, "x%g", factor);
+        adaptive_families.push_back({f, std::string(f) + suffix, factor});
+      }
+    for (const AdaptiveFamily& af : adaptive_families) {
+      if (!runs_family(af.family)) continue;
+      const std::string& method = af.method;
+      const int order = method[5] - '0';  // ida_oK...
+      const bool w = af.family.back() == 'w';
+      const std::vector<double>& list =
+          w ? (order == 2 ? w_rtols : w_o5_rtols) : (order == 2 ? rtols : o5_rtols);  // o3-o5 alike
       double last_time = 0, last_steps = 0, before_steps = 0;
-      for (double rtol : order == 2 ? rtols : o5_rtols) {
-        Json params{{"rtol", rtol}, {"atol", 1e-4 * rtol * gap}, {"max_order", order}};
-        const double predicted = before_steps > 0 ? last_time * last_steps / before_steps : last_time;
+      for (double rtol : list) {
+        Json params{{"rtol", rtol}, {"max_order", order}};
+        if (w) {
+          const StateTolerances t = weighted(rtol, af.rate_factor);
+          params["velocity_rate_over_omega_1"] = af.rate_factor;
+          params["atol_displacement"] = t.displacement;
+          params["atol_velocity"] = t.displacement * t.velocity_rate;
+          params["atol_pressure"] = t.pressure;
+          params["atol_rotation"] = t.quasi_static;
+          params["suppress_rotations"] = true;
+        } else {
+          params["atol"] = 1e-4 * rtol * gap;
+        }
+        const double predicted =
+            before_steps > 0 ? last_time * last_steps / before_steps : last_time;
         if (predicted > cap) {
           Json j = common;
           j["variant"] = "skipped";
@@ -336,7 +456,8 @@ int main(int argc, char** argv) {
           emit(j);
           continue;
         }
-        const Run run = pull_in_run(*system, scene.control, voltage, gap, adaptive(rtol, order));
+        const Run run = pull_in_run(*system, scene.control, voltage, gap, adaptive(rtol, order),
+                                    w ? weighted(rtol, af.rate_factor) : StateTolerances{});
         record(method, params, run);
         before_steps = last_steps;
         last_steps = static_cast<double>(run.stats.steps);
@@ -344,10 +465,12 @@ int main(int argc, char** argv) {
       }
     }
     std::map<int, std::map<double, double>> fixed_t;  // order -> dt -> t_PI
-    for (int order : {1, 2}) {
-      const std::string method = order == 1 ? "be" : "bdf2";
+    for (const std::string method : {"be", "bdf2", "be_cut", "bdf2_cut"}) {
+      if (!runs_family(method)) continue;
+      const int order = method.rfind("be", 0) == 0 ? 1 : 2;
+      const bool cut = method.find("_cut") != std::string::npos;
       double last_time = 0, last_dt = 0;
-      for (double dt : dts) {
+      for (double dt : cut ? cut_dts : dts) {
         Json params{{"dt", dt}, {"max_order", order}};
         const double predicted = last_dt > 0 ? last_time * last_dt / dt : 0;  // cost ~ 1/dt
         if (predicted > cap) {
@@ -361,12 +484,13 @@ int main(int argc, char** argv) {
         }
         IdaOptions o;
         o.fixed_step = dt;
+        o.fixed_step_min = cut ? 1e-4 * dt : 0.0;
         o.max_order = order;
         const Run run = pull_in_run(*system, scene.control, voltage, gap, o);
         record(method, params, run);
         last_time = run.seconds;
         last_dt = dt;
-        if (run.pulled_in) fixed_t[order][dt] = run.t_pi;
+        if (run.pulled_in && !cut) fixed_t[order][dt] = run.t_pi;
       }
     }
     // Richardson check of the reference from the two finest runs of each fixed-step family,
@@ -400,6 +524,12 @@ int main(int argc, char** argv) {
       j["window_s"] = 0.5e-6;
       j["windows"] = step_profile(*system, voltage, gap, adaptive(rtol, 2), 0.5e-6);
       emit(j);
+      if (runs_family("ida_o2_w")) {
+        j["method"] = "ida_o2_w";
+        j["windows"] =
+            step_profile(*system, voltage, gap, adaptive(rtol, 2), 0.5e-6, weighted(rtol));
+        emit(j);
+      }
     }
 
     // ---- work at 1 % and 0.1 % -----------------------------------------------------------
@@ -409,36 +539,59 @@ int main(int argc, char** argv) {
     for (double target : {1e-2, 1e-3}) {
       Json t;
       auto describe = [](const Point* p) {
-        return p ? Json{{"param", p->param}, {"residual_evals", p->evals}, {"wall_s", p->wall},
+        return p ? Json{{"param", p->param},
+                        {"residual_evals", p->evals},
+                        {"wall_s", p->wall},
                         {"error", p->error}}
                  : Json(nullptr);
       };
       Json per = Json::object();
-      for (const char* m : {"ida_o2", "ida_o5", "be", "bdf2"}) {
-        const Choice c = choose(points[m], target);
+      for (const auto& [m, runs] : points) {
+        const Choice c = choose(runs, target);
         per[m] = {{"cheapest", describe(c.cheapest)}, {"reliable", describe(c.reliable)}};
       }
       t["per_method"] = per;
       for (const bool reliable : {false, true}) {
-        auto family = [&](std::initializer_list<const char*> members) {
+        auto family = [&](const std::vector<std::string>& members) {
           const Point* best = nullptr;
-          for (const char* m : members) {
+          for (const std::string& m : members) {
+            if (!points.count(m)) continue;
             const Choice c = choose(points[m], target);
             const Point* p = reliable ? c.reliable : c.cheapest;
             if (p && (!best || p->evals < best->evals)) best = p;
           }
           return best;
         };
-        const Point* a = family({"ida_o2", "ida_o5"});
-        const Point* f = family({"be", "bdf2"});
-        Json r{{"adaptive", describe(a)}, {"fixed", describe(f)}};
-        if (a && f) {
-          r["ratio_fixed_over_adaptive_evals"] = f->evals / a->evals;
-          r["ratio_fixed_over_adaptive_wall"] = f->wall / a->wall;
-          std::fprintf(stderr, "  error %g (%s): adaptive %s %.0f evals / %.3f s, fixed %s %.0f evals / %.3f s: "
-                       "fixed/adaptive %.2f (evals), %.2f (wall)\n",
-                       target, reliable ? "reliable" : "cheapest", a->param.c_str(), a->evals, a->wall,
-                       f->param.c_str(), f->evals, f->wall, f->evals / a->evals, f->wall / a->wall);
+        // Adaptive with the scalar atol and with the state weights, against the fixed step
+        // as before and against the fixed step allowed to cut its last steps.
+        struct Comparison {
+          const char* name;
+          std::vector<std::string> adaptive, fixed;
+        };
+        std::vector<std::string> weighted_methods;  // every ida_oK_w* run
+        for (const auto& [m, runs] : points)
+          if (m.find("_w") != std::string::npos) weighted_methods.push_back(m);
+        Json r = Json::object();
+        for (const Comparison& c :
+             {Comparison{"scalar_vs_fixed", {"ida_o2", "ida_o5"}, {"be", "bdf2"}},
+              Comparison{"weighted_vs_fixed", weighted_methods, {"be", "bdf2"}},
+              Comparison{"weighted_vs_fixed_or_cut",
+                         weighted_methods,
+                         {"be", "bdf2", "be_cut", "bdf2_cut"}}}) {
+          const Point* a = family(c.adaptive);
+          const Point* f = family(c.fixed);
+          Json e{{"adaptive", describe(a)}, {"fixed", describe(f)}};
+          if (a && f) {
+            e["ratio_fixed_over_adaptive_evals"] = f->evals / a->evals;
+            e["ratio_fixed_over_adaptive_wall"] = f->wall / a->wall;
+            std::fprintf(stderr,
+                         "  error %g (%s, %s): adaptive %s %.0f evals / %.3f s, fixed %s %.0f "
+                         "evals / %.3f s: fixed/adaptive %.2f (evals), %.2f (wall)\n",
+                         target, reliable ? "reliable" : "cheapest", c.name, a->param.c_str(),
+                         a->evals, a->wall, f->param.c_str(), f->evals, f->wall,
+                         f->evals / a->evals, f->wall / a->wall);
+          }
+          r[c.name] = e;
         }
         t[reliable ? "reliable" : "cheapest"] = r;
       }

@@ -4,12 +4,13 @@
 Reads the benchmark's JSON lines and draws log-log panels of the relative error of the
 dynamic pull-in time |t_PI - t_ref| / t_ref against residual evaluations (top row) and wall
 time (bottom row), one column per gas setting (none, reynolds). One series per method (IDA
-adaptive orders <= 2 and <= 5, fixed-step backward Euler and BDF2 through IDA's fixed-step
-mode), each point labelled with its tolerance or step. Fixed-step runs that failed (IDA could
+adaptive orders <= 2 and <= 5 with the scalar atol, orders 2-5 with the per-kind error
+weights, fixed-step backward Euler and BDF2 through IDA's fixed-step mode, with and without
+cuts at touch-down), each point labelled with its tolerance or step. Fixed-step runs that failed (IDA could
 not converge at touch-down without shrinking the step) are marked on the bottom edge of the
 top panels at their step count.
 
-Usage: plot_pullin_work_error.py RESULTS.jsonl -o FIGURE.png
+Usage: plot_pullin_work_error.py RESULTS.jsonl -o FIGURE.png [--methods M ...]
 """
 import argparse
 import json
@@ -20,17 +21,29 @@ matplotlib.use("Agg")  # files only, no display needed
 import matplotlib.pyplot as plt  # noqa: E402
 
 STYLE = {
-    "ida_o2": ("IDA adaptive, order <= 2", "o"),
-    "ida_o5": ("IDA adaptive, order <= 5", "*"),
+    "ida_o2": ("IDA adaptive, order <= 2, scalar atol", "o"),
+    "ida_o5": ("IDA adaptive, order <= 5, scalar atol", "*"),
     "be": ("backward Euler, fixed dt", "s"),
     "bdf2": ("BDF2, fixed dt (IDA fixed-step mode)", "^"),
+    "be_cut": ("backward Euler, fixed dt, cuts at touch-down", "D"),
+    "bdf2_cut": ("BDF2, fixed dt, cuts at touch-down", "v"),
 }
+
+
+def style(method):
+    """Label and marker; the weighted families ida_oK_w[x10|off] (state_tolerances.hpp)."""
+    if method in STYLE:
+        return STYLE[method]
+    order, _, rate = method[len("ida_o"):].partition("_w")
+    rate = {"": "omega_1", "off": "off"}.get(rate, rate.lstrip("x") + " omega_1")
+    return (f"IDA order <= {order}, weights, velocity rate {rate}", "o*+x"[min(3, int(order) - 2)])
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("results")
     parser.add_argument("-o", "--output", required=True)
+    parser.add_argument("--methods", nargs="*", help="only these methods (default: all)")
     args = parser.parse_args()
     with open(args.results) as f:
         records = [json.loads(line) for line in f if line.startswith("{")]
@@ -38,7 +51,11 @@ def main():
     gases = sorted({r["gas"] for r in runs})
     fig, axes = plt.subplots(2, len(gases), figsize=(6 * len(gases), 8), squeeze=False)
     for col, gas in enumerate(gases):
-        for method, (label, marker) in STYLE.items():
+        methods = list(dict.fromkeys(r["method"] for r in runs if r["gas"] == gas))
+        if args.methods:
+            methods = [m for m in methods if m in args.methods]
+        for method in methods:
+            label, marker = style(method)
             pts = [r for r in runs if r["gas"] == gas and r["method"] == method and "error" in r]
             if not pts:
                 continue

@@ -24,7 +24,7 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
   } else {
     system.initial_state(0.0, y, yp);
   }
-  IdaIntegrator ida(system, options.ida);
+  IdaIntegrator ida(system, with_state_tolerances(options.ida, system, options.tolerances));
   ida.initialize(t0, y, yp);
   const Real span = options.end_time - t0;
   const Real first_output =

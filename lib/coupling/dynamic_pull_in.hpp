@@ -27,6 +27,7 @@
 #include <functional>
 #include <vector>
 
+#include "coupling/state_tolerances.hpp"
 #include "coupling/switch_system.hpp"
 #include "solvers/ida_integrator.hpp"
 
@@ -42,6 +43,8 @@ struct DynamicOptions {
   Real release_gap = 0;         // > 0: end when the smallest gap rises through this (release)
   Real output_interval = 0;     // > 0: record samples every this much (else only events)
   IdaOptions ida;
+  // Error weights per kind of unknown (state_tolerances.hpp); off: ida.atol on every unknown.
+  StateTolerances tolerances;
 };
 
 struct DynamicSample {

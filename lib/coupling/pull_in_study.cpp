@@ -29,10 +29,33 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
   // IDA settings of every transient run (read here: the transient mode returns early).
   const CaseNode solver = root.child_or_empty("solver");
   s.run.ida.rtol = solver.get_real("rtol", 1e-3, Range::open(0.0, 1.0));
-  s.run.ida.atol =
-      solver.get_quantity("atol", Dimension::Length, 1e-4 * scene.gap, Range::positive());
+  // error_weights: scalar (atol on every unknown) or per_kind (coupling/state_tolerances.hpp:
+  // atol on the displacements, velocity_frequency scales the velocities' atol,
+  // docs/BENCHMARKS.md sec. 6e).
+  const bool per_kind =
+      solver.get_choice("error_weights", {"scalar", "per_kind"}, "scalar") == "per_kind";
+  s.run.ida.atol = solver.get_quantity(
+      "atol", Dimension::Length, (per_kind ? s.run.ida.rtol : 1e-4) * scene.gap, Range::positive());
   s.run.ida.max_order = static_cast<int>(solver.get_int("max_order", 2, Range::closed(1, 5)));
   s.run.ida.max_steps = 10000000;
+  if (per_kind) {
+    StateTolerances& t = s.run.tolerances;
+    t.displacement = s.run.ida.atol;
+    t.velocity_rate =
+        2 * M_PI *
+        solver.get_quantity("velocity_frequency", Dimension::Frequency, Range::positive());
+    // Film: the isothermal p g = const answer to a gap error d; rotations (algebraic, out of
+    // the error test): d over the mean cell size, for Newton's test only.
+    if (scene.film) t.pressure = t.displacement * scene.film->gas().ambient_pressure / scene.gap;
+    const Mesh& mesh = scene.structure->structure_mesh();
+    Real area = 0;
+    for (Index c = 0; c < mesh.n_cells(); ++c) area += mesh.cell_volume(c);
+    t.quasi_static = t.displacement / std::sqrt(area / static_cast<Real>(mesh.n_cells()));
+    t.suppress_quasi_static = true;
+  } else {
+    solver.require(!solver.has("velocity_frequency"), "velocity_frequency",
+                   "only with error_weights: per_kind");
+  }
   if (s.transient || node.has("transient")) {
     const CaseNode tr = node.child("transient");
     s.transient_voltage = tr.get_quantity("voltage", Dimension::Voltage, Range::positive());
@@ -51,6 +74,7 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
     o.stop_at_turning = false;  // the whole history, to end_time or touch-down
     o.stop_at_contact = true;
     o.ida = s.run.ida;
+    o.tolerances = s.run.tolerances;
   }
   // The dynamic settings are checked even when the mode does not use them (a case switched
   // between modes with --set keeps both sections valid).

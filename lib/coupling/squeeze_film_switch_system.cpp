@@ -124,6 +124,12 @@ void SqueezeFilmSwitchSystem::initial_state(Real t0, std::vector<Real>& y, std::
   for (Index c = 0; c < n_cells_; ++c) y[m_ + c] = p_ambient_;  // film at rest, ambient
 }
 
+std::vector<StateKind> SqueezeFilmSwitchSystem::state_kinds() const {
+  std::vector<StateKind> kinds = reduced_inertia_state_kinds(structure_, actuation_.size());
+  kinds.resize(size(), StateKind::Pressure);
+  return kinds;
+}
+
 Real SqueezeFilmSwitchSystem::velocity(std::span<const Real> y, std::span<const Real> yp,
                                        Index i) const {
   const Index v = structure_.velocity_index(i);

@@ -35,6 +35,7 @@ class SqueezeFilmSwitchSystem : public SwitchSystem {
   void jacobian(Real t, Real c_j, std::span<const Real> y, std::span<const Real> yp,
                 std::span<Real> values) override;
 
+  std::vector<StateKind> state_kinds() const override;
   void initial_state(Real t0, std::vector<Real>& y, std::vector<Real>& yp) override;
   Real displacement(std::span<const Real> y, Index i) const override { return y[i]; }
   Real velocity(std::span<const Real> y, std::span<const Real> yp, Index i) const override;

@@ -11,6 +11,17 @@ void ActuatedStructureSystem::initial_state(Real t0, std::vector<Real>& y, std::
   yp = system_.consistent_derivative(t0, y);
 }
 
+std::vector<StateKind> reduced_inertia_state_kinds(const ReducedInertiaSystem& system, Index n) {
+  std::vector<StateKind> kinds(system.size(), StateKind::Velocity);
+  for (Index i = 0; i < n; ++i)
+    kinds[i] = system.velocity_index(i) >= 0 ? StateKind::Displacement : StateKind::QuasiStatic;
+  return kinds;
+}
+
+std::vector<StateKind> ActuatedStructureSystem::state_kinds() const {
+  return reduced_inertia_state_kinds(system_, actuation_.size());
+}
+
 Real ActuatedStructureSystem::velocity(std::span<const Real> y, std::span<const Real> yp,
                                        Index i) const {
   const Index v = system_.velocity_index(i);

@@ -14,8 +14,15 @@
 
 namespace rfmems {
 
+// What each unknown of a switch system is, for its error weight (state_tolerances.hpp):
+// an inertial structural displacement [m], a quasi-static (algebraic) structural unknown (the
+// plate's rotations), the velocity of an inertial displacement [m/s], a film pressure [Pa].
+enum class StateKind { Displacement, QuasiStatic, Velocity, Pressure };
+
 class SwitchSystem : public SystemOperator {
  public:
+  // One kind per unknown (empty: not classified; the scalar tolerance is used).
+  virtual std::vector<StateKind> state_kinds() const { return {}; }
   // The state at rest (zero displacement, ambient gas) and a derivative consistent with it
   // at t0 except for the algebraic components (IDACalcIC completes them).
   virtual void initial_state(Real t0, std::vector<Real>& y, std::vector<Real>& yp) = 0;
@@ -36,6 +43,10 @@ class SwitchSystem : public SystemOperator {
   Real contact_fraction(std::span<const Real> y) const { return actuation().contact_fraction(y); }
 };
 
+// The kinds of a ReducedInertiaSystem's state [y (n); v]: displacement or quasi-static by
+// whether y_i carries inertia, then the velocities.
+std::vector<StateKind> reduced_inertia_state_kinds(const ReducedInertiaSystem& system, Index n);
+
 class ActuatedStructureSystem : public SwitchSystem {
  public:
   ActuatedStructureSystem(ParallelPlateActuation& actuation, std::vector<bool> quasi_static);
@@ -54,6 +65,7 @@ class ActuatedStructureSystem : public SwitchSystem {
     system_.jacobian(t, c_j, y, yp, values);
   }
 
+  std::vector<StateKind> state_kinds() const override;
   void initial_state(Real t0, std::vector<Real>& y, std::vector<Real>& yp) override;
   Real displacement(std::span<const Real> y, Index i) const override { return y[i]; }
   Real velocity(std::span<const Real> y, std::span<const Real> yp, Index i) const override;

@@ -1,11 +1,12 @@
 #include "solvers/ida_integrator.hpp"
 
-#include <algorithm>
-#include <utility>
 #include <fmt/format.h>
 #include <ida/ida.h>
 #include <sunlinsol/sunlinsol_spgmr.h>
 #include <sunmatrix/sunmatrix_sparse.h>
+
+#include <algorithm>
+#include <utility>
 
 #include "core/error.hpp"
 
@@ -61,8 +62,17 @@ void IdaIntegrator::initialize(Real t0, std::span<const Real> y0, std::span<cons
   check(IDASetUserData(mem_, this), "IDASetUserData");
   const bool fixed = options_.fixed_step > 0;
   // In fixed-step mode the local error test is made vacuous by huge tolerances.
-  check(IDASStolerances(mem_, fixed ? 1e10 : options_.rtol, fixed ? 1e10 : options_.atol),
-        "IDASStolerances");
+  if (!fixed && !options_.atols.empty()) {
+    if (static_cast<Index>(options_.atols.size()) != op_.size())
+      throw SolverError(fmt::format("IDA: {} absolute tolerances for {} unknowns",
+                                    options_.atols.size(), op_.size()));
+    auto atol = sundials::make_serial_vector(op_.size(), ctx_.get());
+    std::copy(options_.atols.begin(), options_.atols.end(), sundials::as_span(atol.get()).begin());
+    check(IDASVtolerances(mem_, options_.rtol, atol.get()), "IDASVtolerances");  // IDA copies it
+  } else {
+    check(IDASStolerances(mem_, fixed ? 1e10 : options_.rtol, fixed ? 1e10 : options_.atol),
+          "IDASStolerances");
+  }
   check(IDASetLinearSolver(mem_, solver_.get(), jac_.get()), "IDASetLinearSolver");
   if (jac_) {
     check(IDASetJacFn(mem_, jacobian_trampoline), "IDASetJacFn");
@@ -77,14 +87,19 @@ void IdaIntegrator::initialize(Real t0, std::span<const Real> y0, std::span<cons
   auto components = op_.differential_components();
   std::copy(components.begin(), components.end(), sundials::as_span(id.get()).begin());
   check(IDASetId(mem_, id.get()), "IDASetId");
+  if (options_.suppress_algebraic && !fixed)
+    check(IDASetSuppressAlg(mem_, SUNTRUE), "IDASetSuppressAlg");
   if (fixed) {
     check(IDASetInitStep(mem_, options_.fixed_step), "IDASetInitStep");
     check(IDASetMaxStep(mem_, options_.fixed_step), "IDASetMaxStep");
-    check(IDASetMinStep(mem_, options_.fixed_step), "IDASetMinStep");
+    check(IDASetMinStep(
+              mem_, options_.fixed_step_min > 0 ? options_.fixed_step_min : options_.fixed_step),
+          "IDASetMinStep");
     // Newton on a linear system converges in one iteration; make it exact.
     check(IDASetNonlinConvCoef(mem_, 1e-10), "IDASetNonlinConvCoef");
   } else {
-    if (options_.initial_step > 0) check(IDASetInitStep(mem_, options_.initial_step), "IDASetInitStep");
+    if (options_.initial_step > 0)
+      check(IDASetInitStep(mem_, options_.initial_step), "IDASetInitStep");
     if (options_.max_step > 0) check(IDASetMaxStep(mem_, options_.max_step), "IDASetMaxStep");
   }
   if (n_roots_ > 0) check(IDARootInit(mem_, n_roots_, root_trampoline), "IDARootInit");
@@ -191,9 +206,8 @@ int IdaIntegrator::preconditioner_setup_trampoline(Real t, N_Vector y, N_Vector 
   });
 }
 
-int IdaIntegrator::preconditioner_solve_trampoline(Real, N_Vector, N_Vector, N_Vector,
-                                                   N_Vector rv, N_Vector zv, Real, Real,
-                                                   void* self) {
+int IdaIntegrator::preconditioner_solve_trampoline(Real, N_Vector, N_Vector, N_Vector, N_Vector rv,
+                                                   N_Vector zv, Real, Real, void* self) {
   auto* me = static_cast<IdaIntegrator*>(self);
   return me->guarded([&] {
     if (me->fallback_preconditioner_)
