@@ -50,7 +50,10 @@ struct Case {
 
 struct Row {
   Real plate, plane_coarse, plane, bending;  // w_p [m]
+  Real plate_shear, no_shear;  // plate with shear creep; continuum without shear creep
   Real error() const { return 1 - plate / plane; }
+  Real shear_error() const { return 1 - plate_shear / plane; }
+  Real no_shear_error() const { return 1 - plate / no_shear; }
   Real bending_error() const { return 1 - plate / bending; }
   Real mesh_change() const { return std::abs(plane_coarse / plane - 1); }
 };
@@ -69,15 +72,22 @@ Row compare(const Case& c, const CreepLaw& law) {
   const CreepRunResult plane =
       run_continuum_creep(p, c.fine[0], c.fine[1], options(p, false), kEnd);
   r.plane = plane.w_plastic;
+  p.continuum_creep_stress = FixedFixedCreepProblem::kNoShear;
+  r.no_shear = run_continuum_creep(p, c.fine[0], c.fine[1], options(p, false), kEnd).w_plastic;
   p.continuum_creep_stress = FixedFixedCreepProblem::kBendingOnly;
   r.bending = run_continuum_creep(p, c.fine[0], c.fine[1], options(p, false), kEnd).w_plastic;
+  p.plate_shear_creep = true;
+  const CreepRunResult shear = run_plate_creep(p, 81, 5, 20, options(p, true), kEnd);
+  r.plate_shear = shear.w_plastic;
   std::printf(
       "L/h = %2g  q = %8.3g Pa  w_el plate %.4e plane %.4e  w_p plate %.5e  plane %.5e "
       "(%dx%d; %dx%d: %.2f %% off)  plate error %+6.2f %%  bending-only creep: %.5e "
-      "(plate error %+6.2f %%)  wall plate %.1f s, plane %.1f s\n",
+      "(plate error %+6.2f %%)  no shear creep: %.5e (plate error %+6.2f %%)  plate with shear "
+      "creep %.5e (error %+6.2f %%)  wall plate %.1f s, plane %.1f s, plate+shear %.1f s\n",
       c.slenderness, c.load, plate.w_elastic, plane.w_elastic, r.plate, r.plane, c.fine[0],
       c.fine[1], c.coarse[0], c.coarse[1], 100 * r.mesh_change(), 100 * r.error(), r.bending,
-      100 * r.bending_error(), plate.wall_seconds, plane.wall_seconds);
+      100 * r.bending_error(), r.no_shear, 100 * r.no_shear_error(), r.plate_shear,
+      100 * r.shear_error(), plate.wall_seconds, plane.wall_seconds, shear.wall_seconds);
   std::fflush(stdout);
   return r;
 }
@@ -121,4 +131,9 @@ TEST(CreepPlateVsContinuum, CobleLaw) {
   EXPECT_LT(std::abs(slender.bending_error()), 0.01);
   EXPECT_GT(thick.error(), mid.error());
   EXPECT_GT(mid.error(), slender.error());
+}
+
+// Quick look at one row (the measurement of the shear-creep plate at L/h = 30).
+TEST(CreepPlateVsContinuum, DISABLED_Table41LawAtSlenderness30) {
+  compare(kCases[1], CreepLaw{8.33e-6, 1.8e8, 2, 2, 1e9});
 }
