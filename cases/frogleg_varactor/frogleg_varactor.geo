@@ -35,6 +35,9 @@
 // Patches: "anchor" (the four foot ends, clamped) and "edge" (every other edge, free).
 
 DefineConstant[ h = {5, Name "Parameters/Cell size h [um]"} ];
+DefineConstant[ hl = {h, Name "Parameters/Cell size along the legs [um]"} ];
+DefineConstant[ nb = {0, Name "Parameters/Cells across a leg (0: wb / h)"} ];
+DefineConstant[ bump = {1, Name "Parameters/Bump across a leg (1: uniform)"} ];
 SetFactory("OpenCASCADE");
 
 lp = 300; wp = 220;   // plate
@@ -44,8 +47,12 @@ wa = 40; ws = 120;    // actuation, sensing electrode widths (along x)
 
 // The plate as five strips: actuation | space | sensing | space | actuation.
 cuts[] = {-lp/2, -lp/2 + wa, -ws/2, ws/2, lp/2 - wa, lp/2};
+// Each strip in three rows: the bands y in +-[90, 110] that the thighs continue.
+rows[] = {-wp/2, -wp/2 + wb, wp/2 - wb, wp/2};
 For i In {0:4}
-  Rectangle(newv) = {cuts[i], -wp/2, 0, cuts[i+1] - cuts[i], wp};
+  For j In {0:2}
+    Rectangle(newv) = {cuts[i], rows[j], 0, cuts[i+1] - cuts[i], rows[j+1] - rows[j]};
+  EndFor
 EndFor
 // The legs, quadrant by quadrant (sx, sy: the mirror signs).
 For sx In {-1:1:2}
@@ -55,7 +62,9 @@ For sx In {-1:1:2}
     Rectangle(newv) = {(sx > 0 ? x0 : x0 - l1), (sy > 0 ? wp/2 - wb : -wp/2), 0, l1, wb};
     // shin: at the thigh's far end, back along the short edge towards y = 0
     xs = sx > 0 ? x0 + l1 - wb : x0 - l1;
-    Rectangle(newv) = {xs, (sy > 0 ? wp/2 - l2 : -wp/2), 0, wb, l2};
+    // (in two: the ankle square where the foot leaves, so that its sides match the foot's)
+    Rectangle(newv) = {xs, (sy > 0 ? wp/2 - l2 + wb : -wp/2), 0, wb, l2 - wb};
+    Rectangle(newv) = {xs, (sy > 0 ? wp/2 - l2 : -wp/2 + l2 - wb), 0, wb, wb};
     // foot: from the shin's inner end, along +-x to the anchor
     Rectangle(newv) = {(sx > 0 ? x0 + l1 : x0 - l1 - l3), (sy > 0 ? wp/2 - l2 : -wp/2 + l2 - wb),
                        0, l3, wb};
@@ -66,11 +75,22 @@ BooleanFragments{ Surface{:}; Delete; }{}
 // Structured quads: every curve (axis-parallel) gets length / h cells, every rectangle is a
 // transfinite surface on its four corners (opposite sides then have equal node counts).
 e = 1e-3;
+nacross = nb > 0 ? nb : Floor(wb / h + 0.5);
 curves[] = Curve{:};
 For i In {0:#curves[]-1}
   bb[] = BoundingBox Curve{curves[i]};
-  len = (bb[3] - bb[0]) > (bb[4] - bb[1]) ? (bb[3] - bb[0]) : (bb[4] - bb[1]);
-  Transfinite Curve{curves[i]} = Floor(len / h + 0.5) + 1;
+  horizontal = (bb[3] - bb[0]) > (bb[4] - bb[1]);
+  len = horizontal ? (bb[3] - bb[0]) : (bb[4] - bb[1]);
+  xfar = Fabs(bb[0]) > Fabs(bb[3]) ? Fabs(bb[0]) : Fabs(bb[3]);
+  leg = xfar > lp/2 + e;                                 // beyond the plate's short edges
+  thigh = horizontal && Fabs(Fabs(bb[0] + bb[3]) / 2 - (lp/2 + (l1 - wb)/2)) < e;  // along x
+  If (Fabs(len - wb) < e && !thigh)                      // across a leg (or a thigh's band)
+    Transfinite Curve{curves[i]} = nacross + 1 Using Bump bump;
+  ElseIf (leg)
+    Transfinite Curve{curves[i]} = Floor(len / hl + 0.5) + 1;
+  Else
+    Transfinite Curve{curves[i]} = Floor(len / h + 0.5) + 1;
+  EndIf
 EndFor
 surfaces[] = Surface{:};
 For i In {0:#surfaces[]-1}

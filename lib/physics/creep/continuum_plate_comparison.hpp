@@ -42,6 +42,10 @@ struct FixedFixedCreepProblem {
   // bending-only creep assumption inside the continuum model.
   std::array<bool, 6> continuum_creep_stress{true, true, true, true, true, true};
   static constexpr std::array<bool, 6> kBendingOnly{true, false, true, false, false, false};
+  // ... without the transverse shear xy alone (the through-thickness yy kept).
+  static constexpr std::array<bool, 6> kNoShear{true, true, true, false, true, true};
+  // The plate model with transverse shear creep (PlateCreepSystem shear_creep; run with KLU).
+  bool plate_shear_creep = false;
   Real thickness() const { return length / slenderness; }
 };
 

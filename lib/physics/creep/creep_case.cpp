@@ -43,9 +43,10 @@ CreepLaw read_law(const CaseNode& creep) {
 
 CreepRunSettings read_settings(const CaseNode& creep) {
   CreepRunSettings s;
-  s.integration = creep.get_choice("integration", {"implicit", "explicit"}, "implicit") == "explicit"
-                      ? CreepRunSettings::Integration::Explicit
-                      : CreepRunSettings::Integration::Implicit;
+  s.integration =
+      creep.get_choice("integration", {"implicit", "explicit"}, "implicit") == "explicit"
+          ? CreepRunSettings::Integration::Explicit
+          : CreepRunSettings::Integration::Implicit;
   if (s.integration == CreepRunSettings::Integration::Explicit) {
     s.explicit_dt = read_duration(creep, "dt");
     creep.require(s.explicit_dt > 0, "dt", "must be > 0");
@@ -96,8 +97,10 @@ CreepCase read_creep_case(const CaseNode& root, const std::string& case_dir) {
     c.initial_gap = scene.gap;
     c.gap_law = scene.actuation->law();
     const CaseNode act = root.child("actuation");
-    const Real voltage = act.get_quantity("voltage", Dimension::Voltage, 0.0, Range::non_negative());
-    if (voltage > 0) c.hold = CreepHoldVoltage{c.gap_elements, c.initial_gap, scene.actuation->law(), voltage};
+    const Real voltage =
+        act.get_quantity("voltage", Dimension::Voltage, 0.0, Range::non_negative());
+    if (voltage > 0)
+      c.hold = CreepHoldVoltage{c.gap_elements, c.initial_gap, scene.actuation->law(), voltage};
     if (!root.has("probes")) {
       Probe control;
       control.name = "control";
@@ -117,6 +120,7 @@ CreepCase read_creep_case(const CaseNode& root, const std::string& case_dir) {
   const long points = creep.get_int("thickness_points", 21, Range::closed(3, 401));
   creep.require(points % 2 == 1, "thickness_points", "must be odd (Simpson's rule)");
   c.thickness_intervals = static_cast<int>(points - 1);
+  c.shear_creep = creep.get_bool("shear_creep", false);
   c.settings = read_settings(creep);
 
   const bool lifetime = creep.has("lifetime");
@@ -124,7 +128,8 @@ CreepCase read_creep_case(const CaseNode& root, const std::string& case_dir) {
   if (lifetime) creep.require(c.has_gap, "lifetime", "needs a gap (the actuation section)");
   if (life.has("gap_threshold")) {
     c.settings.gap_threshold_event = true;
-    c.settings.gap_threshold = life.get_quantity("gap_threshold", Dimension::Length, Range::non_negative());
+    c.settings.gap_threshold =
+        life.get_quantity("gap_threshold", Dimension::Length, Range::non_negative());
     life.require(c.settings.gap_threshold < c.initial_gap, "gap_threshold",
                  "must be below the initial gap actuation.gap");
   }

@@ -46,6 +46,7 @@ struct CreepCase {
   PlateScene* plate = nullptr;                 // the same, typed
   CreepLaw law;
   int thickness_intervals = 20;
+  bool shear_creep = false;  // creep.shear_creep: transverse shear creeps too (KLU, no Schur)
   // The gap (actuation present): the gap elements over the electrode and g0.
   bool has_gap = false;
   std::vector<GapElement> gap_elements;

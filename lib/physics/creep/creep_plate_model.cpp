@@ -30,7 +30,8 @@ std::size_t smallest_gap_element(const CreepCase& c, std::span<const Real> state
 CreepRunModel make_plate_creep_model(const CreepCase& c) {
   CreepRunModel m;
   m.make_system = [&c]() -> std::unique_ptr<CreepSystem> {
-    auto system = std::make_unique<PlateCreepSystem>(*c.plate->op, c.law, c.thickness_intervals);
+    auto system = std::make_unique<PlateCreepSystem>(*c.plate->op, c.law, c.thickness_intervals,
+                                                     c.shear_creep);
     if (c.hold) system->set_hold_voltage(*c.hold);
     return system;
   };

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -16,7 +17,7 @@ namespace rfmems {
 using Kind = PlateBoundary::Kind;
 
 PlateCreepSystem::PlateCreepSystem(PlateOperator& plate, const CreepLaw& law,
-                                   int thickness_intervals)
+                                   int thickness_intervals, bool shear_creep)
     : plate_(plate),
       law_(law),
       quadrature_(ThicknessQuadrature::simpson(plate.section().thickness, thickness_intervals)),
@@ -24,6 +25,8 @@ PlateCreepSystem::PlateCreepSystem(PlateOperator& plate, const CreepLaw& law,
   law_.validate();
   const Real E = plate.section().E, nu = plate.section().nu, c = E / (1 - nu * nu);
   C_ << c, c * nu, 0, c * nu, c, 0, 0, 0, E / (1 + nu);
+  shear_modulus_ = E / (2 * (1 + nu));
+  per_point_ = shear_creep ? 6 : kPerPoint;
   moment_rec_ = std::make_unique<PolynomialReconstruction>(
       plate.mesh(), [](Index) { return BoundaryPoint::None; }, 2);
 
@@ -35,6 +38,19 @@ PlateCreepSystem::PlateCreepSystem(PlateOperator& plate, const CreepLaw& law,
       if (!inserted) it->second += w.weight;
     }
     for (const auto& [k, w] : merged) curvature_weights_[cell].push_back({k, w});
+  }
+  if (shear_creep) {
+    rate_stencil_.resize(n_cells_);
+    for (Index cell = 0; cell < n_cells_; ++cell) {
+      std::map<Index, RateStencil> merged;
+      for (const auto& w : curvature_weights_[cell])
+        merged[w.cell] = {w.cell, w.weight, Mat3::Zero()};
+      for (const auto& b : plate.shear_force_weights(cell)) {
+        auto [it, inserted] = merged.try_emplace(b.cell, RateStencil{b.cell, Vec3::Zero(), b.T});
+        if (!inserted) it->second.shear_weight += b.T;
+      }
+      for (const auto& [k, r] : merged) rate_stencil_[cell].push_back(r);
+    }
   }
   build_plastic_source();
   build_pattern();
@@ -65,20 +81,24 @@ void PlateCreepSystem::build_plastic_source() {
     }
     weights.push_back({cell, factor * (1 - sum)});
   };
+  std::map<std::pair<Index, Index>, Eigen::Matrix<Real, 3, 2>> shear_blocks;
   for (Index f = 0; f < mesh.n_faces(); ++f) {
     const Index p = mesh.face_owner(f), n = mesh.face_neighbour(f);
     const Vec3& S = mesh.face_area(f);
     Eigen::Matrix2d projection = Eigen::Matrix2d::Identity();
+    bool moment = true, shear = shear_creep();
     if (n < 0) {
-      const Kind kind = plate_.boundaries()[mesh.face_patch(f)].kind;
-      if (kind == Kind::SimplySupportedHard) {
+      const PlateBoundary& bc = plate_.boundaries()[mesh.face_patch(f)];
+      shear = shear && bc.prescribes_deflection();  // else the total shear force is prescribed
+      if (bc.kind == Kind::SimplySupportedHard) {
         const Vec3 u = S.normalized();
         const Eigen::Vector2d t(-u.y(), u.x());
         projection = t * t.transpose();  // only the twisting moment is a reaction
-      } else if (kind != Kind::Clamped && kind != Kind::Displacement) {
-        continue;  // the total moment is prescribed
+      } else if (bc.kind != Kind::Clamped && bc.kind != Kind::Displacement) {
+        moment = false;  // the total moment is prescribed
       }
     }
+    if (!moment && !shear) continue;
     weights.clear();
     if (n >= 0) {
       add_weights(p, mesh.face_centroid(f), 0.5);
@@ -89,24 +109,47 @@ void PlateCreepSystem::build_plastic_source() {
     Mat23 traction;  // M S for M in Voigt (xx, yy, xy)
     traction << S.x(), 0, S.y(), 0, S.y(), S.x();
     const Mat23 base = projection * traction;
+    // Shear: the plastic face flux F_p = Q_p,f.S_f enters row c as (+F_p, -(x_f - x_c) F_p)
+    // for the owner and (-F_p, +(x_f - x_c) F_p) for the neighbour (outward S).
+    auto shear_map = [&](Index c, Real sign) {
+      const Vec3 lever = mesh.face_centroid(f) - mesh.cell_centroid(c);
+      Eigen::Matrix<Real, 3, 2> m;
+      const Eigen::Vector3d row(1, -lever.x(), -lever.y());
+      m = sign * row * Eigen::RowVector2d(S.x(), S.y());
+      return m;
+    };
     for (const auto& [k, w] : weights) {
       auto add = [&](Index row, Real sign) {
         auto [it, inserted] = blocks.try_emplace({row, k}, sign * w * base);
         if (!inserted) it->second += sign * w * base;
       };
-      add(p, 1.0);
-      if (n >= 0) add(n, -1.0);
+      auto add_shear = [&](Index row, Real sign) {
+        const Eigen::Matrix<Real, 3, 2> b = w * shear_map(row, sign);
+        auto [it, inserted] = shear_blocks.try_emplace({row, k}, b);
+        if (!inserted) it->second += b;
+      };
+      if (moment) {
+        add(p, 1.0);
+        if (n >= 0) add(n, -1.0);
+      }
+      if (shear) {
+        add_shear(p, 1.0);
+        if (n >= 0) add_shear(n, -1.0);
+      }
     }
   }
   source_.clear();
   for (const auto& [key, B] : blocks) source_.push_back({key.first, key.second, B});
+  shear_source_.clear();
+  for (const auto& [key, B] : shear_blocks) shear_source_.push_back({key.first, key.second, B});
 }
 
 void PlateCreepSystem::build_pattern() {
   const CsrPattern& plate_pattern = plate_.stiffness_pattern();
   const Index np = n_points();
-  std::vector<std::vector<Index>> source_cols(n_cells_);
+  std::vector<std::vector<Index>> source_cols(n_cells_), shear_cols(n_cells_);
   for (const SourceBlock& b : source_) source_cols[b.row].push_back(b.col);
+  for (const ShearSourceBlock& b : shear_source_) shear_cols[b.row].push_back(b.col);
 
   pattern_ = CsrPattern{};
   std::vector<Index> cols;
@@ -117,6 +160,9 @@ void PlateCreepSystem::build_pattern() {
       for (Index k : source_cols[row / 3])
         for (Index i = 0; i < np; ++i)
           for (int j = 0; j < 3; ++j) cols.push_back(creep_index(k, i, j));
+    for (Index k : shear_cols[row / 3])
+      for (Index i = 0; i < np; ++i)
+        for (int j = kXZ; j <= kYZ; ++j) cols.push_back(creep_index(k, i, j));
     std::sort(cols.begin(), cols.end());
     cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
     pattern_.col_idx.insert(pattern_.col_idx.end(), cols.begin(), cols.end());
@@ -125,12 +171,17 @@ void PlateCreepSystem::build_pattern() {
   structural_nnz_ = pattern_.nnz();
   for (Index c = 0; c < n_cells_; ++c)
     for (Index i = 0; i < np; ++i)
-      for (int j = 0; j < kPerPoint; ++j) {
-        for (const auto& w : curvature_weights_[c]) {
-          pattern_.col_idx.push_back(3 * w.cell + PlateOperator::kBetaX);
-          pattern_.col_idx.push_back(3 * w.cell + PlateOperator::kBetaY);
+      for (int j = 0; j < per_point_; ++j) {
+        if (shear_creep()) {
+          for (const auto& s : rate_stencil_[c])
+            for (int k = 0; k < 3; ++k) pattern_.col_idx.push_back(3 * s.cell + k);
+        } else {
+          for (const auto& w : curvature_weights_[c]) {
+            pattern_.col_idx.push_back(3 * w.cell + PlateOperator::kBetaX);
+            pattern_.col_idx.push_back(3 * w.cell + PlateOperator::kBetaY);
+          }
         }
-        for (int l = 0; l < kPerPoint; ++l) pattern_.col_idx.push_back(creep_index(c, i, l));
+        for (int l = 0; l < per_point_; ++l) pattern_.col_idx.push_back(creep_index(c, i, l));
         pattern_.row_ptr.push_back(pattern_.nnz());
       }
 
@@ -147,8 +198,16 @@ void PlateCreepSystem::build_pattern() {
       const Mat23 d = b.B * (quadrature_.weight[i] * quadrature_.z[i]) * C_;
       for (int a = 0; a < 2; ++a)
         for (int j = 0; j < 3; ++j)
-          structural_values_[pattern_.find(3 * b.row + 1 + a, creep_index(b.col, i, j))] +=
-              d(a, j);
+          structural_values_[pattern_.find(3 * b.row + 1 + a, creep_index(b.col, i, j))] += d(a, j);
+    }
+  // ... and dR_y/dq of the plastic shear force, Q_p = 2 G sum_i w_i (eps_p,xz, eps_p,yz).
+  for (const ShearSourceBlock& b : shear_source_)
+    for (Index i = 0; i < np; ++i) {
+      const Real factor = 2 * shear_modulus_ * quadrature_.weight[i];
+      for (int r = 0; r < 3; ++r)
+        for (int a = 0; a < 2; ++a)
+          structural_values_[pattern_.find(3 * b.row + r, creep_index(b.col, i, kXZ + a))] +=
+              factor * b.B(r, a);
     }
 }
 
@@ -180,6 +239,34 @@ Vec3 PlateCreepSystem::cell_plastic_moment(std::span<const Real> state, Index c)
   return C_ * integral;
 }
 
+Vec3 PlateCreepSystem::cell_plastic_shear_force(std::span<const Real> state, Index c) const {
+  Vec3 q = Vec3::Zero();
+  if (!shear_creep()) return q;
+  for (Index i = 0; i < n_points(); ++i) {
+    const Index k = creep_index(c, i, 0);
+    q += quadrature_.weight[i] * Vec3(state[k + kXZ], state[k + kYZ], 0);
+  }
+  return 2 * shear_modulus_ * q;
+}
+
+std::vector<Vec3> PlateCreepSystem::plastic_shear_forces(std::span<const Real> state) const {
+  std::vector<Vec3> q(n_cells_);
+  for (Index c = 0; c < n_cells_; ++c) q[c] = cell_plastic_shear_force(state, c);
+  return q;
+}
+
+Mat3 PlateCreepSystem::point_stress_tensor(std::span<const Real> state, Index c, Index i,
+                                           const Vec3& kappa, const Vec3& q_el) const {
+  Mat3 sigma = stress_tensor(point_stress(state, c, i, kappa));
+  if (!shear_creep()) return sigma;
+  const Real h = plate_.section().thickness, z = quadrature_.z[i];
+  const Real phi = 1.5 * (1 - 4 * z * z / (h * h));
+  const Index k = creep_index(c, i, 0);
+  sigma(0, 2) = sigma(2, 0) = phi * q_el.x() / h - 2 * shear_modulus_ * state[k + kXZ];
+  sigma(1, 2) = sigma(2, 1) = phi * q_el.y() / h - 2 * shear_modulus_ * state[k + kYZ];
+  return sigma;
+}
+
 std::vector<Vec3> PlateCreepSystem::plastic_moments(std::span<const Real> state) const {
   std::vector<Vec3> m(n_cells_);
   for (Index c = 0; c < n_cells_; ++c) m[c] = cell_plastic_moment(state, c);
@@ -208,21 +295,34 @@ void PlateCreepSystem::add_plastic_source(std::span<const Real> state, std::span
     r[3 * b.row + PlateOperator::kBetaX] += s[0];
     r[3 * b.row + PlateOperator::kBetaY] += s[1];
   }
+  if (shear_source_.empty()) return;
+  const std::vector<Vec3> q = plastic_shear_forces(state);
+  for (const ShearSourceBlock& b : shear_source_) {
+    const Eigen::Vector3d s = b.B * q[b.col].head<2>();
+    for (int k = 0; k < 3; ++k) r[3 * b.row + k] += s[k];
+  }
 }
 
 void PlateCreepSystem::creep_rates(Real t, std::span<const Real> state, std::span<Real> rates) {
   const std::vector<Mat3> G = plate_.rotation_gradients(t, state.first(structural_size()));
+  std::vector<Vec3> q_el;
+  if (shear_creep()) q_el = plate_.shear_forces(t, state.first(structural_size()));
   for (Index c = 0; c < n_cells_; ++c) {
     const Vec3 kappa = curvature(G[c]);
+    const Vec3 qc = shear_creep() ? q_el[c] : Vec3::Zero();
     for (Index i = 0; i < n_points(); ++i) {
       const Index q = creep_index(c, i, 0);
-      const CreepRate rate = law_.rate(stress_tensor(point_stress(state, c, i, kappa)),
-                                       state[q + kEff]);
+      const CreepRate rate =
+          law_.rate(point_stress_tensor(state, c, i, kappa, qc), state[q + kEff]);
       Real* out = rates.data() + (q - structural_size());
       out[kXX] = rate.strain_rate(0, 0);
       out[kYY] = rate.strain_rate(1, 1);
       out[kXY] = rate.strain_rate(0, 1);
       out[kEff] = rate.effective_rate;
+      if (shear_creep()) {
+        out[kXZ] = rate.strain_rate(0, 2);
+        out[kYZ] = rate.strain_rate(1, 2);
+      }
     }
   }
 }
@@ -250,6 +350,27 @@ void PlateCreepSystem::jacobian(Real t, Real c_j, std::span<const Real> y, std::
     }
   }
   const std::vector<Vec3> kappa = curvatures(t, y);
+  if (shear_creep()) {
+    const std::vector<Vec3> q_el = plate_.shear_forces(t, y.first(structural_size()));
+    for (Index c = 0; c < n_cells_; ++c)
+      for (Index i = 0; i < n_points(); ++i) {
+        const Index q = creep_index(c, i, 0);
+        const ShearPointRateJacobian d = shear_point_rate_jacobian(y, c, i, kappa[c], q_el[c]);
+        for (int j = 0; j < per_point_; ++j) {
+          Real* row = values.data() + pattern_.row_ptr[q + j];
+          for (const RateStencil& s : rate_stencil_[c]) {
+            // kappa = (G_xx, G_yy, (G_xy + G_yx)/2), G = sum_k beta_k w_k^T; Q_el = sum T_k y_k.
+            const Vec3& w = s.curvature_weight;
+            const Eigen::RowVector3d from_q = d.d_shear_force.row(j) * s.shear_weight.topRows<2>();
+            *row++ = -from_q[0];
+            *row++ = -from_q[1] - d.d_kappa.row(j).dot(Vec3(w.x(), 0, 0.5 * w.y()));
+            *row++ = -from_q[2] - d.d_kappa.row(j).dot(Vec3(0, w.y(), 0.5 * w.x()));
+          }
+          for (int l = 0; l < per_point_; ++l) *row++ = (j == l ? c_j : 0.0) - d.d_state(j, l);
+        }
+      }
+    return;
+  }
   for (Index c = 0; c < n_cells_; ++c) {
     const auto& stencil = curvature_weights_[c];
     for (Index i = 0; i < n_points(); ++i) {
@@ -296,8 +417,45 @@ PlateCreepSystem::PointRateJacobian PlateCreepSystem::point_rate_jacobian(
   return out;
 }
 
+PlateCreepSystem::ShearPointRateJacobian PlateCreepSystem::shear_point_rate_jacobian(
+    std::span<const Real> state, Index c, Index i, const Vec3& kappa, const Vec3& q_el) const {
+  // Unit stress directions (Voigt xx, yy, xy, xz, yz; symmetric tensors).
+  static const std::array<Mat3, 5> unit = [] {
+    std::array<Mat3, 5> u;
+    for (auto& m : u) m = Mat3::Zero();
+    u[0](0, 0) = 1;
+    u[1](1, 1) = 1;
+    u[2](0, 1) = u[2](1, 0) = 1;
+    u[3](0, 2) = u[3](2, 0) = 1;
+    u[4](1, 2) = u[4](2, 1) = 1;
+    return u;
+  }();
+  auto as_vector = [](const CreepRate& r) {
+    Vec6 v;
+    v << r.strain_rate(0, 0), r.strain_rate(1, 1), r.strain_rate(0, 1), r.effective_rate,
+        r.strain_rate(0, 2), r.strain_rate(1, 2);
+    return v;
+  };
+  const Mat3 sigma = point_stress_tensor(state, c, i, kappa, q_el);
+  const Real eps = state[creep_index(c, i, kEff)];
+  Eigen::Matrix<Real, 6, 5> d_sigma;
+  for (int d = 0; d < 5; ++d)
+    d_sigma.col(d) = as_vector(law_.rate_stress_derivative(sigma, eps, unit[d]));
+  const Real h = plate_.section().thickness, z = quadrature_.z[i];
+  const Real phi = 1.5 * (1 - 4 * z * z / (h * h));
+  ShearPointRateJacobian out;
+  out.d_state.leftCols<3>() = -d_sigma.leftCols<3>() * C_;
+  out.d_state.col(kEff) = as_vector(law_.rate_hardening_derivative(sigma, eps));
+  out.d_state.rightCols<2>() = -2 * shear_modulus_ * d_sigma.rightCols<2>();
+  out.d_kappa = z * d_sigma.leftCols<3>() * C_;
+  out.d_shear_force = (phi / h) * d_sigma.rightCols<2>();
+  return out;
+}
+
 void PlateCreepSystem::preconditioner_setup(Real t, Real c_j, std::span<const Real> y,
                                             std::span<const Real>) {
+  if (shear_creep())
+    throw std::logic_error("PlateCreepSystem: no preconditioner with shear creep (use KLU)");
   if (!schur_) {
     schur_ = std::make_unique<PlateCreepSchurComplement>(*this);
     schur_->set_refactor_tolerance(schur_refactor_tolerance_);
@@ -307,8 +465,8 @@ void PlateCreepSystem::preconditioner_setup(Real t, Real c_j, std::span<const Re
 
 void PlateCreepSystem::set_schur_refactor_tolerance(Real tolerance) {
   if (!(tolerance >= 0))
-    throw InputError(fmt::format("plate creep: Schur refactor tolerance must be >= 0, got {}",
-                                 tolerance));
+    throw InputError(
+        fmt::format("plate creep: Schur refactor tolerance must be >= 0, got {}", tolerance));
   schur_refactor_tolerance_ = tolerance;
   if (schur_) schur_->set_refactor_tolerance(tolerance);
 }
@@ -364,9 +522,10 @@ void PlateCreepSystem::initial_state(Real t, std::vector<Real>& state,
 
 void PlateCreepSystem::set_hold_voltage(CreepHoldVoltage hold) {
   if (!(hold.initial_gap > 0) || !(hold.voltage >= 0))
-    throw InputError(fmt::format("plate creep hold voltage: need a gap > 0 and V >= 0 (g0 = {}, "
-                                 "V = {})",
-                                 hold.initial_gap, hold.voltage));
+    throw InputError(
+        fmt::format("plate creep hold voltage: need a gap > 0 and V >= 0 (g0 = {}, "
+                    "V = {})",
+                    hold.initial_gap, hold.voltage));
   std::vector<Index> diagonal, plate_diagonal;
   for (const GapElement& e : hold.elements) {
     const Index a = e.dof >= 0 && e.dof < structural_size() ? pattern_.find(e.dof, e.dof) : -1;

@@ -31,6 +31,22 @@
 // assembled once; a q row of point (c, i) depends on its own four states and, through kappa_c
 // (the centroid gradient of the plate's beta reconstruction), on the rotations of c's stencil.
 //
+// Transverse shear creep (optional, shear_creep = true; issue 5 / docs/creep.md "Shear creep").
+// The thesis's plate lets only bending creep; the continuum's von Mises stress also carries
+// the transverse shear stress, which makes the thick-strip difference of Table 4.2. With shear
+// creep each point also holds the tensor plastic shear strains eps_p,xz, eps_p,yz, and
+//   tau_a(z) = phi(z) Q_el,a / h - 2 G eps_p,az(z),   phi(z) = (3/2)(1 - 4 z^2/h^2)
+// (the elastic tau is the parabolic distribution of Q_el = k G h gamma_c, the plate's cell
+// shear force; the kinematic shear strain is k phi(z) gamma_c, so int tau dz = Q_el - Q_p),
+//   Q_p,a = 2 G int eps_p,az dz      (Simpson's rule; a uniform plastic shear gamma_c relaxes Q)
+// tau enters the von Mises stress of the creep law at every point, and the plastic shear force
+// is a source in the shear balances: the face shear force Q_f - Q_p,f on interior faces and
+// edges whose deflection is held (Q is a reaction there), i.e. + sum_f Q_p,f.S_f in the w rows
+// and - sum_f (x_f - x_c)(Q_p,f.S_f) in the beta rows (the plate's Q_c A term). Q_p,f is
+// reconstructed like M_p,f. The Jacobian gains the constant y-q blocks of that source and, in
+// the q rows, dg/dQ_el times the plate's linear map of Q_el (shear_force_weights). No
+// Schur-complement preconditioner in this mode (it assumes 4 states per point): use KLU.
+//
 // Hold voltage (set_hold_voltage, physics/creep/creep_hold_voltage.hpp): the parallel-plate
 // pressure V^2 A_e p1(g0 + w_e) on the gap elements is added to their w rows, so F_y is
 // nonlinear in w: the Jacobian's y rows are the constant ones plus V^2 A_e p1'(g_e) on those
@@ -55,19 +71,23 @@ class PlateCreepSchurComplement;
 
 class PlateCreepSystem : public CreepSystem {
  public:
-  static constexpr int kXX = 0, kYY = 1, kXY = 2, kEff = 3, kPerPoint = 4;
+  // Per point: bending-only creep has kPerPoint = 4 states, shear creep adds kXZ, kYZ.
+  static constexpr int kXX = 0, kYY = 1, kXY = 2, kEff = 3, kPerPoint = 4, kXZ = 4, kYZ = 5;
 
-  PlateCreepSystem(PlateOperator& plate, const CreepLaw& law, int thickness_intervals = 20);
+  PlateCreepSystem(PlateOperator& plate, const CreepLaw& law, int thickness_intervals = 20,
+                   bool shear_creep = false);
   ~PlateCreepSystem() override;
 
   // Layout.
   Index n_cells() const { return n_cells_; }
   Index n_points() const { return quadrature_.size(); }  // per cell
   Index structural_size() const override { return 3 * n_cells_; }
+  bool shear_creep() const { return per_point_ == 6; }
+  int per_point() const { return per_point_; }  // states per point: 4, or 6 with shear creep
   Index creep_index(Index c, Index i, int component) const {
-    return 3 * n_cells_ + kPerPoint * (c * n_points() + i) + component;
+    return 3 * n_cells_ + per_point_ * (c * n_points() + i) + component;
   }
-  Index size() const override { return 3 * n_cells_ + kPerPoint * n_cells_ * n_points(); }
+  Index size() const override { return 3 * n_cells_ + per_point_ * n_cells_ * n_points(); }
 
   std::vector<Real> differential_components() const override;
   void residual(Real t, std::span<const Real> y, std::span<const Real> yp,
@@ -79,7 +99,7 @@ class PlateCreepSystem : public CreepSystem {
   // Preconditioner: the exact Jacobian solve by the Schur complement on the plate unknowns
   // (physics/creep/plate_creep_schur_complement.hpp), so that IDA with SPGMR needs about one
   // Krylov iteration per Newton iteration and no factorisation of the full Jacobian.
-  bool has_preconditioner() const override { return true; }
+  bool has_preconditioner() const override { return !shear_creep(); }
   void preconditioner_setup(Real t, Real c_j, std::span<const Real> y,
                             std::span<const Real> yp) override;
   void preconditioner_solve(std::span<const Real> r, std::span<Real> z) override;
@@ -106,6 +126,8 @@ class PlateCreepSystem : public CreepSystem {
   // Post-processing.
   // Plastic moments (M_p,xx, M_p,yy, M_p,xy) per cell [N m/m].
   std::vector<Vec3> plastic_moments(std::span<const Real> state) const;
+  // Plastic shear forces (Q_p,x, Q_p,y, 0) per cell [N/m]; zero without shear creep.
+  std::vector<Vec3> plastic_shear_forces(std::span<const Real> state) const;
   // In-plane stress (xx, yy, xy) at point i of every cell [Pa].
   std::vector<Vec3> fibre_stress(Real t, std::span<const Real> state, Index i) const;
 
@@ -131,6 +153,31 @@ class PlateCreepSystem : public CreepSystem {
     Index row, col;
     Mat23 B;
   };
+  struct ShearSourceBlock {  // (w, beta_x, beta_y) rows of cell `row` += B Q_p(col)
+    Index row, col;
+    Eigen::Matrix<Real, 3, 2> B;
+  };
+  // Shear creep: the cells a point's rates depend on, with d kappa_c / d beta_k's weight
+  // (zero if k is not in the curvature stencil) and dQ_el,c / dy_k (rows Q_x, Q_y).
+  struct RateStencil {
+    Index cell;
+    Vec3 curvature_weight;
+    Mat3 shear_weight;
+  };
+  using Vec6 = Eigen::Matrix<Real, 6, 1>;
+  using Mat6 = Eigen::Matrix<Real, 6, 6>;
+  // Shear creep: dg/d(own 6 states, storage order), dg/dkappa, dg/dQ_el of point (c, i).
+  struct ShearPointRateJacobian {
+    Mat6 d_state;
+    Eigen::Matrix<Real, 6, 3> d_kappa;
+    Eigen::Matrix<Real, 6, 2> d_shear_force;
+  };
+  ShearPointRateJacobian shear_point_rate_jacobian(std::span<const Real> state, Index c, Index i,
+                                                   const Vec3& kappa, const Vec3& q_el) const;
+  // The full stress tensor of point (c, i) with the transverse shear (shear creep).
+  Mat3 point_stress_tensor(std::span<const Real> state, Index c, Index i, const Vec3& kappa,
+                           const Vec3& q_el) const;
+  Vec3 cell_plastic_shear_force(std::span<const Real> state, Index c) const;
 
   void build_plastic_source();
   void build_pattern();
@@ -155,6 +202,10 @@ class PlateCreepSystem : public CreepSystem {
   Eigen::Matrix3d C_;  // plane-stress stiffness, Voigt (xx, yy, xy tensor)
   std::unique_ptr<PolynomialReconstruction> moment_rec_;
   std::vector<SourceBlock> source_;
+  int per_point_ = kPerPoint;
+  Real shear_modulus_ = 0;
+  std::vector<ShearSourceBlock> shear_source_;          // shear creep only
+  std::vector<std::vector<RateStencil>> rate_stencil_;  // shear creep only
   // Per cell: the cells of its curvature stencil (sorted) and their gradient weights.
   std::vector<std::vector<PlateOperator::CellWeight>> curvature_weights_;
   CsrPattern pattern_;
@@ -163,7 +214,7 @@ class PlateCreepSystem : public CreepSystem {
   std::vector<Real> plate_stiffness_;
   std::unique_ptr<KluFactorization> plate_lu_;  // dR_plate/dy, factorised once (linear), lazily
   std::optional<CreepHoldVoltage> hold_;
-  std::vector<Index> hold_diagonal_;  // per element: value index of (dof, dof) in pattern_
+  std::vector<Index> hold_diagonal_;        // per element: value index of (dof, dof) in pattern_
   std::vector<Index> hold_plate_diagonal_;  // ... and in the plate's stiffness pattern
   std::unique_ptr<KluFactorization> tangent_lu_;  // K + hold tangent, refactorised per use
   std::vector<Real> tangent_values_;

@@ -310,7 +310,8 @@ void PlateOperator::internal_residual(Real t, std::span<const Real> y, std::span
 
 void PlateOperator::add_point_load(Index cell, std::function<Vec3(Real t)> value) {
   if (cell < 0 || cell >= mesh_.n_cells())
-    throw std::out_of_range(fmt::format("plate point load on cell {} of {}", cell, mesh_.n_cells()));
+    throw std::out_of_range(
+        fmt::format("plate point load on cell {} of {}", cell, mesh_.n_cells()));
   point_loads_.emplace_back(cell, std::move(value));
 }
 
@@ -594,6 +595,31 @@ std::vector<PlateOperator::CellWeight> PlateOperator::centroid_gradient_weights(
     if (points[j].kind == StencilPoint::Kind::Cell) out.push_back({points[j].cell, g});
   }
   out.push_back({c, -sum});
+  return out;
+}
+
+std::vector<PlateOperator::CellBlock> PlateOperator::shear_force_weights(Index c) const {
+  // gamma_c = sum_k weight_k g_f over the cell's faces, g_f = sum (a . y_cell) for a face with
+  // a strain (strain_terms), a constant on load/free faces.
+  std::vector<CellBlock> out;
+  std::vector<ScalarTerm> terms;
+  for (Index k = strain_offset_[c]; k < strain_offset_[c + 1]; ++k) {
+    const Index f = strain_weights_[k].face;
+    if (mesh_.is_boundary(f) && !boundaries_[mesh_.face_patch(f)].prescribes_deflection()) continue;
+    terms.clear();
+    strain_terms(f, terms);
+    for (const ScalarTerm& s : terms) {
+      const Mat3 block = kgh_ * strain_weights_[k].weight * s.a.transpose();
+      auto it = std::find_if(out.begin(), out.end(),
+                             [&](const CellBlock& b) { return b.cell == s.cell; });
+      if (it == out.end())
+        out.push_back({s.cell, block});
+      else
+        it->T += block;
+    }
+  }
+  std::sort(out.begin(), out.end(),
+            [](const CellBlock& a, const CellBlock& b) { return a.cell < b.cell; });
   return out;
 }
 

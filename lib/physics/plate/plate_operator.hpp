@@ -128,6 +128,14 @@ class PlateOperator : public SecondOrderOperator {
     Vec3 weight;
   };
   std::vector<CellWeight> centroid_gradient_weights(Index c) const;
+  // The cell shear force of shear_forces() as a linear map of the unknowns:
+  // Q_c = Q_b + sum_k T_k y_k (T_k: rows Q_x, Q_y, 0; columns w, beta_x, beta_y of cell k),
+  // Q_b from prescribed boundary values. For analytic Jacobians of terms that use Q_c.
+  struct CellBlock {
+    Index cell;
+    Mat3 T;
+  };
+  std::vector<CellBlock> shear_force_weights(Index c) const;
 
  private:
   // Evaluation weights of one cell's beta reconstruction at one point.

@@ -98,6 +98,60 @@ TEST(PlateCreepSystem, JacobianMatchesFiniteDifferences) {
   }
 }
 
+// With transverse shear creep (6 states per point): the stress of a point also carries
+// tau(z) = phi(z) Q_el / h - 2 G eps_p,az (Q_el: the plate's cell shear force, a function of
+// the w and beta of the cell's shear stencil), and the plastic shear force is a source in the
+// w and beta rows. A thicker plate (L/h = 10) so that the shear terms are not round-off next
+// to the bending ones; random plastic shear strains of the size of the bending ones.
+TEST(PlateCreepSystem, JacobianWithShearCreepMatchesFiniteDifferences) {
+  const Mesh mesh = distorted_mesh(7, 5, 4);
+  PlateSection thick = section();
+  thick.thickness = 0.2;
+  PlateOperator plate(mesh, thick, mixed_boundaries(mesh),
+                      [](const Vec3& x, Real) { return -1e6 * (1 + x.y()); });
+  PlateCreepSystem system(plate, CreepLaw{1e-3, 3e3, 2.5, 1.5, 1e9}, 6, true);
+  ASSERT_TRUE(system.shear_creep());
+  ASSERT_FALSE(system.has_preconditioner());
+  ASSERT_EQ(system.size(), 3 * mesh.n_cells() + 6 * 7 * mesh.n_cells());
+  const Index ns = system.structural_size();
+
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<Real> u(-1, 1);
+  std::vector<Real> y(system.size()), yp(system.size()), steps(system.size()),
+      scales(system.size());
+  for (Index k = 0; k < system.size(); ++k) {
+    const Real scale = k < ns ? (k % 3 == 0 ? 1e-4 : 2e-4) : 1e-4;
+    y[k] = scale * u(rng);
+    yp[k] = scale * u(rng);
+    if (k >= ns && (k - ns) % 6 == PlateCreepSystem::kEff) y[k] = std::abs(y[k]);
+    steps[k] = 1e-4 * scale;
+    scales[k] = scale;
+  }
+  // The shear stress is a sizeable part of the von Mises stress at this state.
+  Real q_p = 0, m_p = 0;
+  for (const Vec3& q : system.plastic_shear_forces(y)) q_p = std::max(q_p, q.norm());
+  for (const Vec3& m : system.plastic_moments(y)) m_p = std::max(m_p, m.norm());
+  EXPECT_GT(q_p * thick.thickness, 0.1 * m_p);
+  // Steps 1e-4 of the scales (the tiny entries of far stencil cells, ~1e-7 of their row's
+  // largest, are at the round-off of smaller steps: entry-relative 1.7e-2 at 1e-5, 2.5e-3 at
+  // 1e-4, scaling as 1/step; row-relative 4e-8).
+  for (Real c_j : {0.0, 2.5e2}) {
+    const auto check = test_support::check_jacobian(system, 0.3, c_j, y, yp, steps, scales);
+    std::printf("shear creep, c_j %g: row-relative %.2e, entry-relative %.2e\n", c_j,
+                check.max_row_relative, check.max_entry_relative);
+    EXPECT_LT(check.max_entry_relative, 1e-2)
+        << "c_j " << c_j << " row " << check.worst_entry_row << " col " << check.worst_entry_col;
+    EXPECT_LT(check.max_row_relative, 1e-6) << "c_j " << c_j << " row " << check.worst_row;
+  }
+  // initial_state is consistent with the shear source in the balances.
+  std::vector<Real> state, state_dot, r(system.size());
+  system.initial_state(0.0, state, state_dot);
+  system.residual(0.0, state, state_dot, r);
+  Real worst = 0;
+  for (Real v : r) worst = std::max(worst, std::abs(v));
+  EXPECT_LT(worst, 1e-9 * 1e6 * 2.0 * 1.2);
+}
+
 TEST(PlateCreepSystem, InitialStateIsConsistentAndEvenPlasticStrainIsNoSource) {
   const Mesh mesh = distorted_mesh(6, 4, 9);
   PlateOperator plate(mesh, section(), mixed_boundaries(mesh),
@@ -131,8 +185,8 @@ CreepHoldVoltage hold_on_every_cell(const Mesh& mesh, Real gap, Real voltage,
   hold.initial_gap = gap;
   hold.voltage = voltage;
   for (Index c = 0; c < mesh.n_cells(); ++c)
-    hold.elements.push_back({3 * c + PlateOperator::kW, mesh.cell_volume(c), Vec3::Zero(),
-                             Vec3::Zero()});
+    hold.elements.push_back(
+        {3 * c + PlateOperator::kW, mesh.cell_volume(c), Vec3::Zero(), Vec3::Zero()});
   return hold;
 }
 
@@ -213,8 +267,8 @@ TEST(PlateCreepSystem, HoldVoltageEquilibriumSoftensTheStructure) {
   const Real w_hold = run(0.0, true), w_flat = run(-p0, false);
   const Real p_min = voltage * voltage * law.pressure_per_volt2(gap + w_hold);
   const Real w_max = run(-p_min, false);
-  std::printf("max sag: hold %.5e m, constant p(g0) %.5e m, constant p(g_min) %.5e m\n",
-              -w_hold, -w_flat, -w_max);
+  std::printf("max sag: hold %.5e m, constant p(g0) %.5e m, constant p(g_min) %.5e m\n", -w_hold,
+              -w_flat, -w_max);
   EXPECT_LT(w_hold, 1.02 * w_flat);  // at least 2 % more sag (measured below)
   EXPECT_GT(w_hold, w_max);
 }
