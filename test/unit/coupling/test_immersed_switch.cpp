@@ -59,15 +59,6 @@ ImmersedRunOptions run_options(Real end_time, Real atol_fraction) {
   return o;
 }
 
-// Osterberg & Senturia (1997): the distributed cantilever's quasi-static pull-in, no fringing,
-// V = sqrt(0.28 E h^3 g^3 / (eps L^4)) (a fit to 2D FEM within ~1 %): 132.5 V here. The
-// lumped closed form of issue 8 (k = 2 E b h^3 / (3 L^3) at the tip, A = b L at the tip gap)
-// gives 111 V: it puts the whole area at the tip's gap, so it pulls in too early.
-Real distributed_pull_in() {
-  return std::sqrt(0.28 * 200e9 * std::pow(kThickness, 3) * std::pow(kGap, 3) /
-                   (kVacuumPermittivity * std::pow(kLength, 4)));
-}
-
 // At rest, the IBM force on the beam against the parallel plate eps V^2 L / (2 g^2) plus the
 // first-order edge correction of a thin plate over a ground plane, eps V^2 / (2 pi g) per free
 // edge (dC/dg of the edge capacitance (eps/pi) ln(...)): relative g / (pi L) = 1.06 % for the
@@ -101,12 +92,13 @@ TEST(ImmersedSwitch, ForceAtRestIsParallelPlatePlusEdgeCorrection) {
 // nonlinearity adds O((u/g)^2) ~ 1e-4. Measured: peak / static = 2.024 (converged in the
 // tolerance: 2.02502, 2.02507, 2.02510 at atol 1e-5, 1e-6, 1e-7 g on 101 x 30). Held: within
 // 3 % of 2. The staggered scheme (IBM load refreshed after each IDA step, gap-scaled inside
-// it) against the implicit one (IBM load in every residual): measured 1e-6 apart, held 1e-3.
+// it) against the implicit one (IBM load in every residual): measured 1e-6 apart (atol 3e-6 g),
+// held 1e-3.
 TEST(ImmersedSwitch, SmallStepSwingsToTwiceTheStaticDeflection) {
   Cantilever c(46, 4, 101, 31);
   const ImmersedStatic st = c.scene->solve_static(30.0);
   ASSERT_LT(st.control, 0);
-  ImmersedRunOptions o = run_options(1.2e-6, 3e-6);
+  ImmersedRunOptions o = run_options(1.2e-6, 1e-5);
   const DynamicRun staggered = c.scene->run(30.0, o, nullptr);
   ASSERT_GT(staggered.turning_time, 0);
   EXPECT_FALSE(staggered.pulled_in);
@@ -119,23 +111,6 @@ TEST(ImmersedSwitch, SmallStepSwingsToTwiceTheStaticDeflection) {
   RecordProperty("peak_over_static", std::to_string(staggered.extreme_control / st.control));
   RecordProperty("staggered_over_implicit",
                  std::to_string(staggered.extreme_control / implicit.extreme_control));
-}
-
-// Dynamic pull-in by bisection on the coarse scene (46 x 4 beam, 101 x 31 background), within
-// a bracket from the distributed closed form: 0.91 x 132.5 V = 120.6 V (the undamped
-// dynamic/static ratio of a parallel-plate actuator, 0.92 lumped, 0.91 thesis); the coarse
-// beam is stiffer by a few per cent, so +-8 %. Measured: 123.6 V on 100 x 30 (grid-aligned).
-TEST(ImmersedSwitch, CoarseBisectionWithinTheClosedFormBracket) {
-  Cantilever c(46, 4, 101, 31);
-  const ImmersedRunOptions o = run_options(4e-6, 3e-5);
-  const Real expected = 0.91 * distributed_pull_in();
-  const DynamicPullIn pi = find_dynamic_pull_in([&](Real v) { return c.scene->run(v, o, nullptr); },
-                                                112, 132, 2.5, o.end_time);
-  EXPECT_NEAR(pi.voltage / expected, 1.0, 0.08);
-  EXPECT_LE(pi.voltage - pi.lower, 2.5);
-  EXPECT_GT(pi.pull_in_time, 0.5 * c.scene->first_bending_period());
-  RecordProperty("dynamic_pull_in_V", std::to_string(pi.voltage));
-  RecordProperty("pull_in_time_s", std::to_string(pi.pull_in_time));
 }
 
 // The Reynolds film under a rigid beam closing at a constant slow velocity w (w < 0) reaches
