@@ -17,6 +17,8 @@
 //   rfmems-pullin cases/switch_plate/case.yaml                  # dynamic, prints V_PI and t_PI
 //   rfmems-pullin cases/switch_plane_laplace/case.yaml --json   # quasi-static, Laplace
 //   rfmems-pullin cases/switch_plate/case.yaml --set pull_in.mode=quasi_static
+//   rfmems-pullin cases/cantilever_switch/case.yaml   # immersed-boundary cantilever (a case
+//       with an `immersed` block: coupling/immersed_switch_study.hpp): dynamic V_PI by bisection
 //   rfmems-pullin cases/switch_plate/case.yaml --set pull_in.mode=transient
 //       --set pull_in.transient.voltage=180V --set pull_in.transient.end_time=5us
 //       --set coupling.scheme=strongly_coupled --set coupling.macro_step=0.1us
@@ -72,12 +74,13 @@ int run_immersed(const DriverCase& run_case, const DriverOptions& options) {
   } else if (!options.quiet) {
     const Json& j = summary["immersed"];
     if (j.contains("dynamic"))
-      std::printf("%s (immersed, gas %s): dynamic pull-in at %.2f V (%.2f V does not), pull-in "
-                  "time %.3f us; %d runs\n",
-                  run_case.name.c_str(), j["gas"].get<std::string>().c_str(),
-                  j["dynamic"]["pull_in_voltage"].get<double>(),
-                  j["dynamic"]["not_pulling_in"].get<double>(),
-                  1e6 * j["dynamic"]["pull_in_time"].get<double>(), j["dynamic"]["runs"].get<int>());
+      std::printf(
+          "%s (immersed, gas %s): dynamic pull-in at %.2f V (%.2f V does not), pull-in "
+          "time %.3f us; %d runs\n",
+          run_case.name.c_str(), j["gas"].get<std::string>().c_str(),
+          j["dynamic"]["pull_in_voltage"].get<double>(),
+          j["dynamic"]["not_pulling_in"].get<double>(),
+          1e6 * j["dynamic"]["pull_in_time"].get<double>(), j["dynamic"]["runs"].get<int>());
     if (j.contains("transient"))
       std::printf("%s (immersed, gas %s): %.1f V, max tip deflection %.4f um, damping ratio %.4g\n",
                   run_case.name.c_str(), j["gas"].get<std::string>().c_str(),
