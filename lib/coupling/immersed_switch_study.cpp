@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -246,11 +247,12 @@ Json run_immersed_switch_study(ImmersedSwitchCase& c, const CaseNode& root, Resu
     write_displacement(writer, *c.beam, std::span<const Real>(run.final_state.y).subspan(0, n));
   } else {
     DynamicRun last;
-    Real last_voltage = 0;
+    Real last_voltage = 0, max_kn = 0;
     const DynamicPullIn pi = find_dynamic_pull_in(
         [&](Real v) {
           std::unique_ptr<ImmersedGasModel> gas = make_case_gas(root, s, c.geometry);
           DynamicRun r = s.run(v, c.run, gas.get());
+          if (gas) max_kn = std::max(max_kn, gas->max_knudsen());
           if (r.pulled_in && (last_voltage == 0 || v <= last_voltage)) {
             last = r;
             last_voltage = v;
@@ -266,8 +268,29 @@ Json run_immersed_switch_study(ImmersedSwitchCase& c, const CaseNode& root, Resu
                     {"steps", pi.steps},
                     {"tolerance", c.tolerance}};
     write_displacement(writer, *c.beam, std::span<const Real>(last.final_state.y).subspan(0, n));
+    if (c.gas) j["gas_max_knudsen"] = max_kn;
   }
-  if (c.gas) j["gas_max_knudsen"] = c.gas->max_knudsen();
+  if (c.gas && !j.contains("gas_max_knudsen")) j["gas_max_knudsen"] = c.gas->max_knudsen();
+  // Validity (issue 8's scene report): where the chosen models leave their range.
+  Json warnings = Json::array();
+  const Real cell = s.background_cell_height();
+  if (c.run.contact_gap < cell)
+    warnings.push_back(
+        fmt::format("contact gap {:.3g} m is below one background cell ({:.3g} m): "
+                    "the IB layer fills the gap before touch-down",
+                    c.run.contact_gap, cell));
+  if (c.gas && j["gas_max_knudsen"].get<double>() > 1.0)
+    warnings.push_back(
+        fmt::format("Reynolds film at Kn up to {:.3g} (> 1): Veijola's viscosity "
+                    "fit holds, the film's lubrication assumptions weaken",
+                    j["gas_max_knudsen"].get<double>()));
+  if (c.gas && (c.mode == "dynamic" || c.mode == "transient") &&
+      c.run.contact_gap < 0.5 * s.rest_gap())
+    warnings.push_back(
+        "Reynolds film followed to a gap below half the rest gap (large "
+        "displacement: the 1D film takes h from the deformed beam, no edge "
+        "correction at the tip)");
+  j["validity_warnings"] = warnings;
   j["cpu"] = times_json(s.times());
   j["study_wall_s"] = wall();
   return j;
