@@ -140,6 +140,19 @@ IdaIntegrator::Status IdaIntegrator::advance(Real t_out) {
   return flag == IDA_ROOT_RETURN ? Status::Root : Status::Reached;
 }
 
+IdaIntegrator::Status IdaIntegrator::step(Real t_stop) {
+  check(IDASetStopTime(mem_, t_stop), "IDASetStopTime");
+  Real t_ret = t_;
+  const int flag = IDASolve(mem_, t_stop, &t_ret, y_.get(), yp_.get(), IDA_ONE_STEP);
+  t_ = t_ret;
+  if (pending_) std::rethrow_exception(std::exchange(pending_, nullptr));
+  if (flag < 0)
+    throw SolverError(fmt::format("IDA failed at t = {:.6g} with flag {} ({})", t_ret, flag,
+                                  IDAGetReturnFlagName(flag)));
+  if (flag == IDA_ROOT_RETURN) return Status::Root;
+  return flag == IDA_TSTOP_RETURN ? Status::Reached : Status::Stepped;
+}
+
 std::span<const Real> IdaIntegrator::y() const { return sundials::as_span(y_.get()); }
 std::span<const Real> IdaIntegrator::yp() const { return sundials::as_span(yp_.get()); }
 

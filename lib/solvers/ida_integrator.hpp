@@ -70,9 +70,12 @@ class IdaIntegrator {
   void correct_initial_conditions(Real t_first);
   void set_roots(int n_roots, RootFunction g);
 
-  enum class Status { Reached, Root };
+  enum class Status { Reached, Root, Stepped };  // Stepped: step() only
   // Advances to t_out (or to an event before it); returns where it stopped.
   Status advance(Real t_out);
+  // One internal step (IDA_ONE_STEP), never beyond t_stop (IDASetStopTime): for partitioned
+  // schemes that refresh a lagged load after every step IDA accepts. Reached means t_stop.
+  Status step(Real t_stop);
   Real time() const { return t_; }
   std::span<const Real> y() const;
   std::span<const Real> yp() const;

@@ -3,7 +3,8 @@
 //  - IDA root finding: the first zero of u at t = pi / (2 w);
 //  - fixed-step mode with max order 1 is exactly backward Euler (discrete recurrence);
 //  - a RecoverableError in the residual makes IDA retry with a smaller step;
-//  - KINSOL with the exact Jacobian on a nonlinear system, and the one-step linear case.
+//  - KINSOL with the exact Jacobian on a nonlinear system, and the one-step linear case;
+//  - IDA one-step mode (step) to a stop time, and per-unknown absolute tolerances.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -152,4 +153,38 @@ TEST(Kinsol, LinearProblemTakesOneNewtonStep) {
   EXPECT_EQ(s.stats.newton_iters, 1);
   EXPECT_NEAR(s.y[0], 2.0, 1e-12);
   EXPECT_NEAR(s.y[1], -2.0, 1e-12);
+}
+
+// step(): one internal step per call (Stepped), ending exactly at the stop time (Reached), with
+// the same answer as advance(); per-unknown tolerances (atols) are honoured: a loose
+// velocity tolerance takes fewer steps than the uniform tight one.
+TEST(Ida, OneStepModeEndsAtTheStopTime) {
+  auto run = [](std::vector<Real> atols, int& calls) {
+    Oscillators osc({4.0});
+    FirstOrderSystem system(osc);
+    IdaOptions options;
+    options.rtol = 1e-8;
+    options.atol = 1e-12;
+    options.atols = std::move(atols);
+    IdaIntegrator ida(system, options);
+    std::vector<double> y0 = {1, 0}, yp0 = {0, -4};
+    ida.initialize(0.0, y0, yp0);
+    calls = 0;
+    IdaIntegrator::Status status;
+    do {
+      status = ida.step(2.0);
+      ++calls;
+      EXPECT_LE(ida.time(), 2.0);
+    } while (status == IdaIntegrator::Status::Stepped);
+    EXPECT_EQ(status, IdaIntegrator::Status::Reached);
+    EXPECT_DOUBLE_EQ(ida.time(), 2.0);
+    EXPECT_NEAR(ida.y()[0], std::cos(4.0), 1e-5);
+    EXPECT_EQ(calls, ida.stats().steps);
+    return ida.stats().steps;
+  };
+  int a = 0, b = 0;
+  const long uniform = run({}, a);
+  const long loose_velocity = run({1e-12, 1e-4}, b);
+  EXPECT_GT(uniform, 20);
+  EXPECT_LT(loose_velocity, uniform);
 }

@@ -1,0 +1,90 @@
+// Dynamic pull-in of the immersed-boundary cantilever switch (issue 8) by bisection on a coarse
+// scene, against the distributed closed form (the full scene's figures: docs/BENCHMARKS.md 21).
+// Scene helper as in test/unit/coupling/test_immersed_switch.cpp.
+//
+// Backgrounds are 151 x 51 / 101 x 31 rather than 150 x 50 / 100 x 30: with those the beam's
+// top face and tip lie on grid lines at rest, and a deflection of a few nm then cuts slivers
+// off the cells beside them, where lib/ibm gives a spurious force (measured at 50 V: the top
+// of the tip's last 3 um pulled up by 4.3e-3 N/m instead of 1.8e-5 after a 44 nm deflection;
+// the static fixed point did not converge). docs/immersed_switch.md.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "coupling/immersed_switch.hpp"
+#include "mesh/structured_mesh.hpp"
+#include "physics/electrostatics/permittivity.hpp"
+
+namespace rfmems {
+namespace {
+
+constexpr Real um = 1e-6;
+constexpr Real kGap = 1.5 * um, kLength = 45 * um, kThickness = 1.5 * um;
+
+// Beam 45 um x 1.5 um, bottom 1.5 um above the electrode, clamped at x = 0 (the background's
+// left wall); background 75 um x 10 um; electrode [0, electrode_end] on the bottom.
+struct Cantilever {
+  std::unique_ptr<Mesh> mesh;
+  std::unique_ptr<ElasticityOperator> op;
+  std::unique_ptr<ImmersedSwitch> scene;
+  Cantilever(int bx, int by, int gx, int gy, Real electrode_end = kLength) {
+    BoxSpec spec;
+    spec.lower = Vec3(0, kGap, 0);
+    spec.upper = Vec3(kLength, kGap + kThickness, 0);
+    spec.n[0] = bx;
+    spec.n[1] = by;
+    mesh = std::make_unique<Mesh>(make_structured_mesh(spec));
+    const LinearElastic steel{200e9, 0.3, 8912, Hypothesis::PlaneStress};
+    std::vector<ElasticityBoundary> bcs(mesh->patches().size());
+    bcs[mesh->find_patch("left")].kind = ElasticityBoundary::Kind::Fixed;
+    op = std::make_unique<ElasticityOperator>(*mesh, steel, bcs);
+    ImmersedSwitchGeometry g;
+    g.background_upper = Vec3(75 * um, 10 * um, 0);
+    g.background_cells[0] = gx;
+    g.background_cells[1] = gy;
+    g.electrode_begin = 0;
+    g.electrode_end = electrode_end;
+    scene = std::make_unique<ImmersedSwitch>(*op, g, /*tip cell, bottom row*/ bx - 1);
+  }
+};
+
+ImmersedRunOptions run_options(Real end_time, Real atol_fraction) {
+  ImmersedRunOptions o;
+  o.end_time = end_time;
+  o.contact_gap = 0.2 * kGap;
+  o.ida.rtol = 1e-4;
+  o.ida.atol = atol_fraction * kGap;
+  o.ida.max_order = 2;
+  return o;
+}
+
+// Osterberg & Senturia (1997): the distributed cantilever's quasi-static pull-in, no fringing,
+// V = sqrt(0.28 E h^3 g^3 / (eps L^4)) (a fit to 2D FEM within ~1 %): 132.5 V here. The
+// lumped closed form of issue 8 (k = 2 E b h^3 / (3 L^3) at the tip, A = b L at the tip gap)
+// gives 111 V: it puts the whole area at the tip's gap, so it pulls in too early.
+Real distributed_pull_in() {
+  return std::sqrt(0.28 * 200e9 * std::pow(kThickness, 3) * std::pow(kGap, 3) /
+                   (kVacuumPermittivity * std::pow(kLength, 4)));
+}
+
+// Dynamic pull-in by bisection on the coarse scene (46 x 4 beam, 101 x 31 background), within
+// a bracket from the distributed closed form: 0.91 x 132.5 V = 120.6 V (the undamped
+// dynamic/static ratio of a parallel-plate actuator, 0.92 lumped, 0.91 thesis); the coarse
+// beam is stiffer by a few per cent, so +-8 %. Measured: 124.5 V with [112, 132] V to 2.5 V (5
+// runs, 47-129 s at load 7-8); here [116, 128] V to 3 V, 4 runs.
+TEST(ImmersedSwitch, CoarseBisectionWithinTheClosedFormBracket) {
+  Cantilever c(46, 4, 101, 31);
+  const ImmersedRunOptions o = run_options(4e-6, 5e-5);
+  const Real expected = 0.91 * distributed_pull_in();
+  const DynamicPullIn pi = find_dynamic_pull_in([&](Real v) { return c.scene->run(v, o, nullptr); },
+                                                116, 128, 3.0, o.end_time);
+  EXPECT_NEAR(pi.voltage / expected, 1.0, 0.08);
+  EXPECT_LE(pi.voltage - pi.lower, 3.0);
+  EXPECT_GT(pi.pull_in_time, 0.5 * c.scene->first_bending_period());
+  RecordProperty("dynamic_pull_in_V", std::to_string(pi.voltage));
+  RecordProperty("pull_in_time_s", std::to_string(pi.pull_in_time));
+}
+
+}  // namespace
+}  // namespace rfmems
