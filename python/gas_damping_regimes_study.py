@@ -32,7 +32,10 @@ Writes <PREFIX>.jsonl (one JSON object per run) and, with --plot, the figure (vi
 python/plot_gas_damping_regimes.py).
 
 Usage: gas_damping_regimes_study.py [--driver build/drivers/rfmems-gas]
-         [--pressures 0.1,1,10,...] [--points 8] [--continuum 1,2,4,8] [-o out/gas_damping_regimes]
+         [--pressures 0.1,1,10,...] [--points 8] [--continuum 2,4,8] [--refine 2,4]
+         [--velocity-points 12,16] [-o out/gas_damping_regimes]
+(--continuum / --refine run at the highest of --pressures, --velocity-points at the lowest;
+an empty --pressures= with them runs only those at 1e5 / 0.1 Pa)
 """
 import argparse
 import json
@@ -119,17 +122,19 @@ def reynolds(p, edge, rarefied=True):
     return viscosity() / q * width ** 3 / GAP ** 3
 
 
-def run(args, p, gap_refine=1):
+def run(args, p, gap_refine=1, refine=1, points=None):
+    points = points or args.points
     rho = p / (R * T)
     kn = knudsen(p)
     solver = "comet" if kn < 1 else "sequential"
-    out = f"{args.prefix}_p{p:g}_g{gap_refine}.h5"
+    out = f"{args.prefix}_p{p:g}_r{refine}_g{gap_refine}_n{points}.h5"
     cmd = [args.driver, args.case, "--json", "--quiet", "-o", out,
            "--set", f"initial.density={rho!r} kg/m^3",
            "--set", f"boundaries.top.p={p!r} Pa", "--set", f"boundaries.right.p={p!r} Pa",
            "--set", f"boundaries.beam.velocity=[0 m/s, {-V} m/s]",
            "--set", f"mesh.parameters.gap_refine={gap_refine}",
-           "--set", f"velocity_grid.points=[{args.points}, {args.points}, {args.points}]",
+           "--set", f"mesh.parameters.refine={refine}",
+           "--set", f"velocity_grid.points=[{points}, {points}, {points}]",
            "--set", f"solver.type={solver}", "--set", f"solver.tolerance={args.tolerance}"]
     start = time.time()
     proc = subprocess.run(cmd, capture_output=True, text=True)
@@ -139,12 +144,12 @@ def run(args, p, gap_refine=1):
                  f"{proc.stderr.strip()}")
     d = json.loads(proc.stdout)
     c = 2 * d["walls"]["beam"]["force"][1] / V  # the half domain's force, doubled
-    row = {"pressure": p, "knudsen": kn, "gap_refine": gap_refine, "cells": d["mesh"]["cells"],
-           "points": args.points, "solver": solver, "iterations": d["solver"]["iterations"],
+    row = {"pressure": p, "knudsen": kn, "refine": refine, "gap_refine": gap_refine,
+           "cells": d["mesh"]["cells"], "points": points, "solver": solver, "iterations": d["solver"]["iterations"],
            "solver_seconds": d["solver"]["seconds"], "wall_seconds": wall,
            "load_average": os.getloadavg()[0],
            "esbgk": c, "free_molecular": free_molecular_continuous(p),
-           "free_molecular_discrete": free_molecular_discrete(args.points, p),
+           "free_molecular_discrete": free_molecular_discrete(points, p),
            "reynolds_veijola": reynolds(p, edge=False),
            "reynolds_veijola_elongation": reynolds(p, edge=True),
            "reynolds_continuum_elongation": reynolds(p, edge=True, rarefied=False),
@@ -168,6 +173,10 @@ def main():
     ap.add_argument("--tolerance", type=float, default=1e-6)
     ap.add_argument("--continuum", default="",
                     help="gap refinements at the highest pressure, e.g. 2,4,8 (1 is the sweep)")
+    ap.add_argument("--refine", default="",
+                    help="whole-mesh refinements at the highest pressure, e.g. 2,4")
+    ap.add_argument("--velocity-points", default="",
+                    help="velocity grids (N per direction) at the lowest pressure, e.g. 12,16")
     ap.add_argument("-o", dest="prefix", default=os.path.join(root, "out", "gas_damping_regimes"))
     args = ap.parse_args()
     os.makedirs(os.path.dirname(os.path.abspath(args.prefix)), exist_ok=True)
@@ -176,6 +185,10 @@ def main():
         run(args, p)
     for r in [int(x) for x in args.continuum.split(",") if x]:
         run(args, max(pressures) if pressures else 1e5, gap_refine=r)
+    for r in [int(x) for x in args.refine.split(",") if x]:
+        run(args, max(pressures) if pressures else 1e5, refine=r)
+    for n in [int(x) for x in args.velocity_points.split(",") if x]:
+        run(args, min(pressures) if pressures else 0.1, points=n)
 
 
 if __name__ == "__main__":
