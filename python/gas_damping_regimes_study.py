@@ -34,13 +34,14 @@ python/plot_gas_damping_regimes.py).
 Usage: gas_damping_regimes_study.py [--driver build/drivers/rfmems-gas]
          [--pressures 0.1,1,10,...] [--points 8] [--continuum 2,4,8] [--refine 2,4]
          [--velocity-points 12,16] [-o out/gas_damping_regimes]
-(--continuum / --refine run at the highest of --pressures, --velocity-points at the lowest;
-an empty --pressures= with them runs only those at 1e5 / 0.1 Pa)
+(--continuum / --refine run at the highest of --pressures, --velocity-points at the lowest,
+or all at --at P; an empty --pressures= runs only those, at 1e5 / 0.1 Pa or P)
 """
 import argparse
 import json
 import math
 import os
+import resource
 import subprocess
 import sys
 import time
@@ -137,8 +138,11 @@ def run(args, p, gap_refine=1, refine=1, points=None):
            "--set", f"velocity_grid.points=[{points}, {points}, {points}]",
            "--set", f"solver.type={solver}", "--set", f"solver.tolerance={args.tolerance}"]
     start = time.time()
+    used = resource.getrusage(resource.RUSAGE_CHILDREN)
     proc = subprocess.run(cmd, capture_output=True, text=True)
     wall = time.time() - start
+    now = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = now.ru_utime + now.ru_stime - used.ru_utime - used.ru_stime
     if proc.returncode != 0:
         sys.exit(f"gas_damping_regimes_study.py: {' '.join(cmd)}: exit {proc.returncode}: "
                  f"{proc.stderr.strip()}")
@@ -147,6 +151,7 @@ def run(args, p, gap_refine=1, refine=1, points=None):
     row = {"pressure": p, "knudsen": kn, "refine": refine, "gap_refine": gap_refine,
            "cells": d["mesh"]["cells"], "points": points, "solver": solver, "iterations": d["solver"]["iterations"],
            "solver_seconds": d["solver"]["seconds"], "wall_seconds": wall,
+           "cpu_seconds": cpu,
            "load_average": os.getloadavg()[0],
            "esbgk": c, "free_molecular": free_molecular_continuous(p),
            "free_molecular_discrete": free_molecular_discrete(points, p),
@@ -177,18 +182,22 @@ def main():
                     help="whole-mesh refinements at the highest pressure, e.g. 2,4")
     ap.add_argument("--velocity-points", default="",
                     help="velocity grids (N per direction) at the lowest pressure, e.g. 12,16")
+    ap.add_argument("--at", type=float, default=None,
+                    help="pressure of the --continuum/--refine/--velocity-points runs")
     ap.add_argument("-o", dest="prefix", default=os.path.join(root, "out", "gas_damping_regimes"))
     args = ap.parse_args()
     os.makedirs(os.path.dirname(os.path.abspath(args.prefix)), exist_ok=True)
     pressures = [float(p) for p in args.pressures.split(",") if p]
     for p in pressures:
         run(args, p)
+    high = args.at or (max(pressures) if pressures else 1e5)
+    low = args.at or (min(pressures) if pressures else 0.1)
     for r in [int(x) for x in args.continuum.split(",") if x]:
-        run(args, max(pressures) if pressures else 1e5, gap_refine=r)
+        run(args, high, gap_refine=r)
     for r in [int(x) for x in args.refine.split(",") if x]:
-        run(args, max(pressures) if pressures else 1e5, refine=r)
+        run(args, high, refine=r)
     for n in [int(x) for x in args.velocity_points.split(",") if x]:
-        run(args, min(pressures) if pressures else 0.1, points=n)
+        run(args, low, points=n)
 
 
 if __name__ == "__main__":
