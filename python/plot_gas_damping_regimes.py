@@ -71,22 +71,27 @@ def main():
               "C2:", label="continuum Reynolds + elongation (no slip)")
     ax.loglog([r["pressure"] for r in sweep], [r["damping_ratio_esbgk"] for r in sweep], "C0o-",
               label=f"ESBGK, {sweep[0]['cells']} cells, {base}$^3$ velocities")
-    fine = [r for r in top if r["refine"] > 1 or r["gap_refine"] > 1]
-    for r in fine:
-        lab = f"refine {r['refine']}" if r["refine"] > 1 else f"gap x{r['gap_refine']}"
-        ax.loglog([r["pressure"]], [r["damping_ratio_esbgk"]], "C0^" if r["refine"] > 1 else "C0.",
-                  mfc="none")
-        ax.annotate(lab, (r["pressure"], r["damping_ratio_esbgk"]), fontsize=7,
-                    xytext=(4, 0), textcoords="offset points")
+    for r in rows:
+        r.setdefault("refine", 1)
+    meshed = [r for r in rows if r["refine"] > 1 and r["points"] == base]
+    ax.loglog([r["pressure"] for r in meshed], [r["damping_ratio_esbgk"] for r in meshed], "C0^",
+              mfc="none", ls="none", label="ESBGK, whole mesh refined 2, 4, 8, ... (r)")
+    for r in meshed:
+        ax.annotate(f"r={r['refine']}", (r["pressure"], r["damping_ratio_esbgk"]), fontsize=7,
+                    xytext=(-22, -3), textcoords="offset points")
+    gapped = [r for r in rows if r["gap_refine"] > 1 and r["points"] == base]
+    if gapped:
+        ax.loglog([r["pressure"] for r in gapped], [r["damping_ratio_esbgk"] for r in gapped],
+                  "C0.", ls="none", label="ESBGK, gap cells only refined 2, 4, 8")
     if extrapolation:
         ax.loglog([extrapolation["pressure"]], [zeta(extrapolation["extrapolated"])], "C3*",
                   ms=12, label="ESBGK, Richardson h $\\to$ 0 (refine "
                   + ", ".join(str(x) for x in extrapolation["refines"][-2:]) + ")")
     vel = [r for r in rows if r["points"] != base]
-    for r in vel:
-        ax.loglog([r["pressure"]], [r["damping_ratio_esbgk"]], "C4s", mfc="none")
-        ax.annotate(f"{r['points']}$^3$", (r["pressure"], r["damping_ratio_esbgk"]), fontsize=7,
-                    xytext=(4, -8), textcoords="offset points")
+    if vel:
+        ax.loglog([r["pressure"] for r in vel], [r["damping_ratio_esbgk"] for r in vel], "C4s",
+                  mfc="none", ls="none", label="ESBGK, " + ", ".join(
+                      f"{r['points']}$^3$" for r in vel) + " velocities")
     ax.set_xlabel("pressure [Pa] (argon, 273.15 K)")
     ax.set_ylabel("damping ratio $\\zeta = c / (2 m \\omega_0)$")
     ax.set_title("Beam 45 x 1.5 $\\mu$m, 7 $\\mu$m over the substrate, moving at 0.1 m/s", fontsize=10)
