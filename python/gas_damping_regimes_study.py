@@ -31,7 +31,9 @@ unit length were this cross-section's.
 Writes <PREFIX>.jsonl (one JSON object per run) and, with --plot, the figure (via
 python/plot_gas_damping_regimes.py).
 
-Usage: gas_damping_regimes_study.py [--driver build/drivers/rfmems-gas]
+Registered as `ctest -L study` (study.gas_damping_regimes: the sweep, --refine 2,4, --check).
+
+Usage: gas_damping_regimes_study.py [--driver build/drivers/rfmems-gas] [--check]
          [--pressures 0.1,1,10,...] [--points 8] [--continuum 2,4,8] [--refine 2,4]
          [--velocity-points 12,16] [-o out/gas_damping_regimes]
 (--continuum / --refine run at the highest of --pressures, --velocity-points at the lowest,
@@ -184,20 +186,49 @@ def main():
                     help="velocity grids (N per direction) at the lowest pressure, e.g. 12,16")
     ap.add_argument("--at", type=float, default=None,
                     help="pressure of the --continuum/--refine/--velocity-points runs")
+    ap.add_argument("--check", action="store_true",
+                    help="exit 1 unless: c / p constant to 1 %% at Kn >= 90 and above the "
+                         "isolated-beam bound there; at the highest pressure c falls with every "
+                         "--refine level and stays above the continuum reference")
     ap.add_argument("-o", dest="prefix", default=os.path.join(root, "out", "gas_damping_regimes"))
     args = ap.parse_args()
     os.makedirs(os.path.dirname(os.path.abspath(args.prefix)), exist_ok=True)
     pressures = [float(p) for p in args.pressures.split(",") if p]
-    for p in pressures:
-        run(args, p)
+    rows = [run(args, p) for p in pressures]
     high = args.at or (max(pressures) if pressures else 1e5)
     low = args.at or (min(pressures) if pressures else 0.1)
     for r in [int(x) for x in args.continuum.split(",") if x]:
         run(args, high, gap_refine=r)
-    for r in [int(x) for x in args.refine.split(",") if x]:
-        run(args, high, refine=r)
+    refined = [run(args, high, refine=r) for r in [int(x) for x in args.refine.split(",") if x]]
     for n in [int(x) for x in args.velocity_points.split(",") if x]:
         run(args, low, points=n)
+    if args.check:
+        check(rows, refined)
+
+
+def check(rows, refined):
+    failures = []
+    free = [r for r in rows if r["knudsen"] >= 90]
+    if len(free) >= 2:
+        scale = [r["esbgk"] / r["pressure"] for r in free]
+        spread = max(scale) / min(scale) - 1
+        print(f"check: c/p spread at Kn >= 90: {100 * spread:.2f} %")
+        if spread > 0.01:
+            failures.append(f"c/p not constant at Kn >= 90 ({spread:.3g})")
+    for r in free:
+        if r["esbgk"] < r["free_molecular_discrete"]:
+            failures.append(f"c below the isolated-beam bound at {r['pressure']} Pa")
+    top = [r for r in rows if r["pressure"] == max(x["pressure"] for x in rows)]
+    series = top[:1] + refined
+    for a, b in zip(series, series[1:]):
+        if not b["esbgk"] < a["esbgk"]:
+            failures.append(f"c does not fall from refine {a['refine']} to {b['refine']}")
+    for r in series:
+        if r["esbgk"] < r["reynolds_continuum_elongation"]:
+            failures.append(f"c below the continuum reference at refine {r['refine']}")
+    if failures:
+        sys.exit("gas_damping_regimes_study.py --check: " + "; ".join(failures))
+    print("check: passed")
 
 
 if __name__ == "__main__":
