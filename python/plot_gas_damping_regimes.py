@@ -42,6 +42,9 @@ def main():
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("jsonl", nargs="?", default=os.path.join(root, "out", "gas_damping_regimes.jsonl"))
+    ap.add_argument("--tpmc", default=os.path.join(root, "docs", "figures",
+                                                   "gas_damping_regimes_tpmc.jsonl"),
+                    help="free_molecular_beam_tpmc.py output (JSON lines), if present")
     ap.add_argument("-o", dest="png", default=os.path.join(root, "docs", "figures",
                                                            "gas_damping_regimes.png"))
     args = ap.parse_args()
@@ -61,6 +64,14 @@ def main():
     fig, ax = plt.subplots(figsize=(7.5, 5))
     ax.loglog(p, [zeta(study.free_molecular_continuous(x)) for x in p], "k--", lw=1,
               label="free molecular, isolated beam (closed form)")
+    if os.path.exists(args.tpmc):
+        tp = [json.loads(line) for line in open(args.tpmc) if line.strip()]
+        tp = [t for t in tp if t["substrate"]]
+        if tp:
+            t = max(tp, key=lambda t: t["particles"] * t["batches"])
+            low = p[kn >= 10]
+            ax.loglog(low, [zeta(t["c"] / t["pressure"] * x) for x in low], "k-", lw=2.5,
+                      alpha=0.35, label="free molecular, beam over substrate (test-particle MC)")
     ax.loglog(p, [zeta(study.reynolds(x, edge=False)) for x in p], "C1-",
               label="Reynolds film, Veijola $\\mu_{eff}$")
     edge = kn <= 1
