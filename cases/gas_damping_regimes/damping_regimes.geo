@@ -17,7 +17,7 @@
 // Structured quads in 8 transfinite blocks (the squeeze-film case's layout). At refine 1:
 // 15 + 10 cells along x (1.5 um under the beam, 2.1 um outside), 8 across the gap (0.875 um;
 // gap_refine multiplies these only: the numerical viscosity of first-order upwinding acts
-// across the film, mu_num / mu ~ h_y / (2 lambda)), 2 across the beam, 8 above it: 470 cells.
+// across the film, mu_num / mu ~ h_y / (2 lambda)), 2 across the beam, 8 above it: 420 cells.
 //   gmsh -setnumber refine 1 -setnumber gap_refine 2 -2 damping_regimes.geo -o out.msh
 DefineConstant[ refine = {1, Name "Parameters/refinement factor"} ];
 DefineConstant[ gap_refine = {1, Name "Parameters/extra refinement across the gap"} ];
