@@ -102,7 +102,7 @@ def main():
     if vel:
         ax.loglog([r["pressure"] for r in vel], [r["damping_ratio_esbgk"] for r in vel], "C4s",
                   mfc="none", ls="none", label="ESBGK, " + ", ".join(
-                      f"{r['points']}$^3$" for r in vel) + " velocities")
+                      f"{n}$^3$" for n in sorted({r["points"] for r in vel})) + " velocities")
     ax.set_xlabel("pressure [Pa] (argon, 273.15 K)")
     ax.set_ylabel("damping ratio $\\zeta = c / (2 m \\omega_0)$")
     ax.set_title("Beam 45 x 1.5 $\\mu$m, 7 $\\mu$m over the substrate, moving at 0.1 m/s", fontsize=10)
@@ -110,7 +110,7 @@ def main():
                                                  lambda k: study.knudsen(1.0) / np.maximum(k, 1e-30)))
     secax.set_xlabel("Kn = $\\lambda$ / g")
     ax.grid(True, which="major", color="0.85", lw=0.5)
-    ax.legend(fontsize=7, loc="upper left")
+    ax.legend(fontsize=7, loc="lower right")
     fig.tight_layout()
     tmp = args.png + ".tmp.png"
     fig.savefig(tmp, dpi=130)
