@@ -10,7 +10,8 @@
 //   incident flux   N = rho sqrt(R T / 2 pi) [exp(-s^2) + sqrt(pi) s (1 + erf s)]
 //   incident normal momentum  P_i = rho R T [s exp(-s^2) / sqrt(pi) + (1/2 + s^2)(1 + erf s)]
 //   re-emitted normal momentum P_r = N sqrt(pi R T / 2)     (half-Maxwellian at T)
-// (moments of the shifted half-range Maxwellian; Bird 1994, free-molecular flow), so the normal stress
+// (moments of the shifted half-range Maxwellian; Bird 1994, free-molecular flow), so the
+// normal stress
 // is P_i + P_r = p [1 + (4 + pi) / (2 sqrt(pi)) s + O(s^2)]: a face advancing into the gas at
 // U_n feels the excess  dp = p U_n (4 + pi) / (2 sqrt(2 pi R T)),  a receding face the
 // deficit. A wall sliding tangentially at U_t re-emits the incident flux with its tangential
