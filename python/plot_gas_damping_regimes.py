@@ -1,0 +1,123 @@
+#!/usr/bin/python3
+"""One plot, damping ratio vs pressure, all gas models (issue 8; docs/gas_damping.md).
+
+Reads the JSON lines of python/gas_damping_regimes_study.py (ESBGK runs; the references are
+recomputed on a dense pressure grid by the same module's formulas) and writes a PNG.
+
+Usage: plot_gas_damping_regimes.py [out/gas_damping_regimes.jsonl] [-o docs/figures/gas_damping_regimes.png]
+"""
+import argparse
+import json
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import gas_damping_regimes_study as study  # noqa: E402
+
+
+def richardson(rows):
+    """First-order extrapolation of the continuum-end runs refined as a whole (refine r):
+    c(h) = c0 + A h from the two finest, and the observed order from three."""
+    rs = sorted((r for r in rows if r["gap_refine"] == 1 and r["points"] == rows[0]["points"]),
+                key=lambda r: r["refine"])
+    if len(rs) < 2:
+        return None
+    c = [r["esbgk"] for r in rs]
+    ratio = rs[-1]["refine"] / rs[-2]["refine"]
+    extrapolated = (ratio * c[-1] - c[-2]) / (ratio - 1)
+    order = None
+    if len(rs) >= 3 and (c[-2] - c[-1]) != 0:
+        order = np.log(abs((c[-3] - c[-2]) / (c[-2] - c[-1]))) / np.log(ratio)
+    return {"pressure": rs[-1]["pressure"], "extrapolated": extrapolated, "order": order,
+            "refines": [r["refine"] for r in rs], "values": c}
+
+
+def main():
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("jsonl", nargs="?", default=os.path.join(root, "out", "gas_damping_regimes.jsonl"))
+    ap.add_argument("--tpmc", default=os.path.join(root, "docs", "figures",
+                                                   "gas_damping_regimes_tpmc.jsonl"),
+                    help="free_molecular_beam_tpmc.py output (JSON lines), if present")
+    ap.add_argument("-o", dest="png", default=os.path.join(root, "docs", "figures",
+                                                           "gas_damping_regimes.png"))
+    args = ap.parse_args()
+    rows = [json.loads(line) for line in open(args.jsonl) if line.strip()]
+    base = min(r["points"] for r in rows)
+    sweep = sorted((r for r in rows if r.get("refine", 1) == 1 and r["gap_refine"] == 1
+                    and r["points"] == base), key=lambda r: r["pressure"])
+    p_max = max(r["pressure"] for r in sweep)
+    top = [r for r in rows if r["pressure"] == p_max and r["points"] == base]
+    for r in top:
+        r.setdefault("refine", 1)
+    extrapolation = richardson(top)
+
+    p = np.logspace(-1, 5, 200)
+    zeta = study.damping_ratio
+    kn = np.array([study.knudsen(x) for x in p])
+    fig, ax = plt.subplots(figsize=(7.5, 5))
+    ax.loglog(p, [zeta(study.free_molecular_continuous(x)) for x in p], "k--", lw=1,
+              label="free molecular, isolated beam (closed form)")
+    if os.path.exists(args.tpmc):
+        tp = [json.loads(line) for line in open(args.tpmc) if line.strip()]
+        tp = [t for t in tp if t["substrate"]]
+        if tp:
+            t = max(tp, key=lambda t: t["particles"] * t["batches"])
+            low = p[kn >= 10]
+            ax.loglog(low, [zeta(t["c"] / t["pressure"] * x) for x in low], "k-", lw=2.5,
+                      alpha=0.35, label="free molecular, beam over substrate (test-particle MC)")
+    ax.loglog(p, [zeta(study.reynolds(x, edge=False)) for x in p], "C1-",
+              label="Reynolds film, Veijola $\\mu_{eff}$")
+    edge = kn <= 1
+    ax.loglog(p[edge], [zeta(study.reynolds(x, edge=True)) for x in p[edge]], "C2-",
+              label="Reynolds, Veijola $\\mu_{eff}$ + edge elongation (Kn $\\leq$ 1)")
+    cont = kn <= 0.1
+    ax.loglog(p[cont], [zeta(study.reynolds(x, edge=True, rarefied=False)) for x in p[cont]],
+              "C2:", label="continuum Reynolds + elongation (no slip)")
+    ax.loglog([r["pressure"] for r in sweep], [r["damping_ratio_esbgk"] for r in sweep], "C0o-",
+              label=f"ESBGK, {sweep[0]['cells']} cells, {base}$^3$ velocities")
+    for r in rows:
+        r.setdefault("refine", 1)
+    meshed = [r for r in rows if r["refine"] > 1 and r["points"] == base]
+    ax.loglog([r["pressure"] for r in meshed], [r["damping_ratio_esbgk"] for r in meshed], "C0^",
+              mfc="none", ls="none", label="ESBGK, whole mesh refined 2, 4, 8, ... (r)")
+    for r in meshed:
+        ax.annotate(f"r={r['refine']}", (r["pressure"], r["damping_ratio_esbgk"]), fontsize=7,
+                    xytext=(-22, -3), textcoords="offset points")
+    gapped = [r for r in rows if r["gap_refine"] > 1 and r["points"] == base]
+    if gapped:
+        ax.loglog([r["pressure"] for r in gapped], [r["damping_ratio_esbgk"] for r in gapped],
+                  "C0.", ls="none", label="ESBGK, gap cells only refined 2, 4, 8")
+    if extrapolation:
+        ax.loglog([extrapolation["pressure"]], [zeta(extrapolation["extrapolated"])], "C3*",
+                  ms=12, label="ESBGK, Richardson h $\\to$ 0 (refine "
+                  + ", ".join(str(x) for x in extrapolation["refines"][-2:]) + ")")
+    vel = [r for r in rows if r["points"] != base]
+    if vel:
+        ax.loglog([r["pressure"] for r in vel], [r["damping_ratio_esbgk"] for r in vel], "C4s",
+                  mfc="none", ls="none", label="ESBGK, " + ", ".join(
+                      f"{n}$^3$" for n in sorted({r["points"] for r in vel})) + " velocities")
+    ax.set_xlabel("pressure [Pa] (argon, 273.15 K)")
+    ax.set_ylabel("damping ratio $\\zeta = c / (2 m \\omega_0)$")
+    ax.set_title("Beam 45 x 1.5 $\\mu$m, 7 $\\mu$m over the substrate, moving at 0.1 m/s", fontsize=10)
+    secax = ax.secondary_xaxis("top", functions=(lambda x: study.knudsen(1.0) / np.maximum(x, 1e-30),
+                                                 lambda k: study.knudsen(1.0) / np.maximum(k, 1e-30)))
+    secax.set_xlabel("Kn = $\\lambda$ / g")
+    ax.grid(True, which="major", color="0.85", lw=0.5)
+    ax.legend(fontsize=7, loc="lower right")
+    fig.tight_layout()
+    tmp = args.png + ".tmp.png"
+    fig.savefig(tmp, dpi=130)
+    os.replace(tmp, args.png)
+    if extrapolation:
+        print(json.dumps({"richardson": extrapolation}))
+
+
+if __name__ == "__main__":
+    main()
