@@ -1,7 +1,8 @@
 // COMET (thesis sec. 5.3.2-5.3.3): the point-coupled Gauss-Seidel sweep
 // (point_coupled_smoother.hpp) as the smoother of a full-approximation-scheme (FAS) geometric
-// multigrid V-cycle on agglomerated coarse levels (fv/agglomeration.hpp), for the steady
-// discrete-velocity BGK / ESBGK equation r(f) = 0 of a KineticOperator.
+// multigrid cycle (V or F, chosen by regime: below) on agglomerated coarse levels
+// (fv/agglomeration.hpp), for the steady discrete-velocity BGK / ESBGK equation r(f) = 0 of a
+// KineticOperator.
 //
 // Levels: the fine FaceGraph, then pairwise agglomerations down to `min_coarse_cells` cells.
 // Each coarse level re-discretises the same equation on its agglomerated cells and faces: a
