@@ -138,9 +138,9 @@ int main(int argc, char** argv) {
   std::string model_name = "esbgk", coupling_name = "conserved";
   double seq_max_seconds = 3600;
   bool skip_sequential = false, no_multigrid = false;
-  int pre = 1, post = 1, symmetric = 1, coarsest = 4, min_coarse = 8;
-  std::string cycle_name = "V";
-  Real tolerance = 1e-6, sequential_above_knudsen = 0;
+  int pre = 1, post = 1, symmetric = 1, coarse_symmetric = 1, coarsest = 4, min_coarse = 8;
+  std::string cycle_name = "auto";
+  Real tolerance = 1e-6, sequential_above_knudsen = 0, f_below_knudsen = 0.02;
   app.add_option("--cells", cells, "cells per side (40; 80 for the issue's fine mesh)");
   app.add_option("--nv", nv, "velocities per direction (10)");
   app.add_option("--kn", kns, "Knudsen numbers");
@@ -155,8 +155,12 @@ int main(int argc, char** argv) {
                  "COMET's regime switch (0: COMET at every Kn, the default here; the library's "
                  "default is 0.2)");
   app.add_option("--symmetric", symmetric, "COMET sweeps forward + backward (1) or forward (0)");
+  app.add_option("--coarse-symmetric", coarse_symmetric,
+                 "COMET coarse-level sweeps forward + backward (1) or forward (0)");
   app.add_option("--coarsest", coarsest, "COMET sweeps on the coarsest level");
-  app.add_option("--cycle", cycle_name, "COMET cycle: V | W | F");
+  app.add_option("--cycle", cycle_name, "COMET cycle: auto (the library default) | V | W | F");
+  app.add_option("--f-below-knudsen", f_below_knudsen,
+                 "COMET cycle auto: F-cycles (one-pass coarse sweeps) below this Kn (0.02)");
   app.add_option("--min-coarse", min_coarse, "COMET: fewest cells on the coarsest level (8)");
   app.add_option("--seq-max-seconds", seq_max_seconds, "stop the sequential solver after this");
   app.add_flag("--skip-sequential", skip_sequential, "COMET only");
@@ -177,7 +181,9 @@ int main(int argc, char** argv) {
                {"pre", pre},
                {"post", post},
                {"coarsest", coarsest},
+               {"coarse_symmetric", coarse_symmetric},
                {"cycle", cycle_name},
+               {"f_below_knudsen", f_below_knudsen},
                {"min_coarse", min_coarse}};
       auto p = make_problem(name, kn, cells, nv, model);
       KineticOperator& op = *p->op;
@@ -207,11 +213,13 @@ int main(int argc, char** argv) {
       co.pre_sweeps = pre;
       co.post_sweeps = post;
       co.symmetric = symmetric != 0;
+      co.coarse_symmetric = coarse_symmetric != 0;
       co.tolerance = tolerance;
       co.sequential_above_knudsen = sequential_above_knudsen;
       co.coarsest_sweeps = coarsest;
       co.cycle_shape = comet_cycle_from_name(cycle_name);
       co.min_coarse_cells = min_coarse;
+      co.f_cycle_below_knudsen = f_below_knudsen;
       CometSolver comet(op, co);
       const double cpu0 = bench::cpu_now();
       const CometResult rc = comet.solve(f);
@@ -224,6 +232,10 @@ int main(int argc, char** argv) {
       row["comet_levels"] = rc.levels;
       row["comet_fine_sweep_equivalents"] = rc.fine_sweep_equivalents;
       row["comet_damped_steps"] = rc.damped_steps;
+      row["comet_history"] = rc.history;
+      row["comet_cycle_run"] = comet_cycle_name(rc.cycle_shape);
+      row["comet_coarse_symmetric"] = rc.coarse_symmetric;
+      row["comet_level_seconds"] = rc.level_seconds;
       row["comet_mass_error"] = op.total_mass(f) / mass0 - 1;
       if (!skip_sequential) {
         row["speedup"] = row["seq_seconds"].get<double>() / rc.wall_seconds;

@@ -6,10 +6,11 @@
 // its owned cells with the serial cells of the same global number. Both runs stop at
 // ||r|| / ||r_0|| <= 1e-8; asserted: max over cells of |T_P - T_1| / (T_hot - T0) (heat
 // transfer) or / T0 (cavity), |rho_P - rho_1| / rho0, |u_P - u_1| / u_scale <= 1e-6, and the
-// wall forces and heat flows equal to 1e-6 of their scale; the mass held to 1e-12; the V-cycle
+// wall forces and heat flows equal to 1e-6 of their scale; the mass held to 1e-12; the cycle
 // count on P ranks at most 1.5x the serial count + 2 on METIS parts (block Jacobi between
 // parts and coarse levels that stop at the part boundaries cost cycles; printed; measured
-// 14 -> 16, 17, 18 on 2, 3, 4 ranks for the heat transfer at Kn = 0.01, 7 -> 7, 8, 8 for the
+// with V-cycles 14 -> 16, 17, 18 on 2, 3, 4 ranks for the heat transfer at Kn = 0.01; with
+// the default cycle by regime, F there, 11 -> 13, 14 on 2, 3 ranks; 7 -> 7, 8, 8 for the
 // cavity), 3x + 2 on the column partition below (measured 7 -> 15). On one rank the
 // distributed path is the serial solver: the same cycles and bit-identical fields.
 //
@@ -136,7 +137,7 @@ Comparison compare(Case which, Real kn, const std::vector<int>& parts = {}) {
   }
   if (comm.is_root())
     std::printf(
-        "ranks %d, %s Kn %g: V-cycles %d (%d levels) serial -> %d (%d levels); max diff T "
+        "ranks %d, %s Kn %g: cycles %d (%d levels) serial -> %d (%d levels); max diff T "
         "%.1e rho %.1e u %.1e force %.1e heat %.1e mass %.1e; rank 0 sent %lld messages, "
         "%lld bytes, %lld reductions\n",
         comm.size(), which == Case::HeatTransfer ? "heat transfer" : "cavity", kn,

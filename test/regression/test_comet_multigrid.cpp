@@ -2,9 +2,10 @@
 // 8^3 velocities), and mass conservation in closed boxes.
 //
 // Asserted:
-//  - multigrid (4 levels: 100, 50, 25, 12 cells) converges (||r||/||r_0|| <= 1e-6) in at most
-//    a quarter of the iterations of single-level COMET (same sweeps per iteration on the fine
-//    level), and in fewer fine-sweep equivalents (work, coarse levels included);
+//  - multigrid (4 levels: 100, 50, 25, 12 cells; the default cycle, F at this Kn) converges
+//    (||r||/||r_0|| <= 1e-6) in at most a quarter of the iterations of single-level COMET (same
+//    sweeps per iteration on the fine level), and in fewer fine-sweep equivalents (work,
+//    coarse levels included);
 //  - the conserved point coupling beats the thesis's velocity coupling with multigrid by >= 3x
 //    in cycles at this Kn;
 //  - the total mass is held to round-off (1e-12 relative) in the heat-transfer box (diffuse
@@ -39,10 +40,11 @@ CometResult run(Case which, Real kn, bool multigrid, CometCoupling coupling,
   const CometResult r = solver.solve(p->f);
   EXPECT_NEAR(p->op->total_mass(p->f), mass0, 1e-12 * mass0);
   if (final_state) *final_state = p->f;
-  std::printf("%s, %s coupling: %d iterations, ratio %.1e, %d levels, %.1f fine-sweep "
-              "equivalents, %.2f s\n",
-              multigrid ? "multigrid" : "single level", comet_coupling_name(coupling), r.cycles,
-              r.residual_ratio, r.levels, r.fine_sweep_equivalents, r.wall_seconds);
+  std::printf(
+      "%s, %s coupling: %d iterations, ratio %.1e, %d levels, %.1f fine-sweep "
+      "equivalents, %.2f s\n",
+      multigrid ? "multigrid" : "single level", comet_coupling_name(coupling), r.cycles,
+      r.residual_ratio, r.levels, r.fine_sweep_equivalents, r.wall_seconds);
   return r;
 }
 
@@ -82,7 +84,8 @@ TEST(CometMultigrid, SpecularBoxHoldsMassToRoundOff) {
   EXPECT_NEAR(p->op->total_mass(p->f), mass0, 1e-12 * mass0);
   // The steady state of a specular box is uniform gas at rest: check the velocity is gone.
   Real umax = 0;
-  for (Index c = 0; c < p->op->n_owned_cells(); ++c) umax = std::max(umax, p->op->macro(c).u.norm());
+  for (Index c = 0; c < p->op->n_owned_cells(); ++c)
+    umax = std::max(umax, p->op->macro(c).u.norm());
   EXPECT_LT(umax, 1e-3);
 }
 

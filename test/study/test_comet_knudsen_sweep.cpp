@@ -1,11 +1,12 @@
-// Study (label `study`): COMET's V-cycle count against the Knudsen number (issue 6: "nearly
+// Study (label `study`): COMET's cycle count against the Knudsen number (issue 6: "nearly
 // flat in Kn, at Kn = 0.01 within 2x of its count at Kn = 1").
 //
 // Heat transfer and cavity (test/unit/comet/comet_cases.hpp, argon ESBGK), 20 x 20 cells, 8^3
-// velocities, Kn = 1, 0.1, 0.01, COMET forced at every Kn (no regime switch), to
-// ||r|| / ||r_0|| <= 1e-6. Asserted: every run converges; cavity cycles(Kn = 0.01) <=
-// 2 cycles(Kn = 1) (the goal; measured 9 vs 7); heat transfer <= 3x (measured 14 vs 6 = 2.3x:
-// the issue's 2x goal is NOT met there, docs/BENCHMARKS.md section 9).
+// velocities, Kn = 1, 0.1, 0.01, COMET forced at every Kn (no regime switch), the default
+// cycle (by regime: V-cycles at Kn 1 and 0.1, F-cycles with one-pass coarse sweeps at 0.01;
+// comet_solver.hpp), to ||r|| / ||r_0|| <= 1e-6. Asserted: every run converges; cycles(Kn =
+// 0.01) <= 2 cycles(Kn = 1) for both cases (the goal; heat transfer 9 vs 6 measured in
+// test_comet_cycle_shapes; with V-cycles everywhere it was 14 vs 6 = 2.3x, BENCHMARKS 10).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -33,7 +34,7 @@ TEST(CometKnudsenSweep, HeatTransferCyclesNearlyFlat) {
   const int c1 = cycles(Case::HeatTransfer, 1.0);
   cycles(Case::HeatTransfer, 0.1);
   const int c001 = cycles(Case::HeatTransfer, 0.01);
-  EXPECT_LE(c001, 3 * c1);
+  EXPECT_LE(c001, 2 * c1);
 }
 
 TEST(CometKnudsenSweep, CavityCyclesNearlyFlat) {

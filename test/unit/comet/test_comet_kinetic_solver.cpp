@@ -19,7 +19,8 @@ TEST(CometKineticSolver, ReadsEveryKey) {
   const CaseFile file = CaseFile::parse(
       "solver: {type: comet, coupling: velocity, multigrid: false, pre_sweeps: 2, post_sweeps: 3,\n"
       "         coarsest_sweeps: 7, symmetric: false, min_coarse_cells: 16,\n"
-      "         cell_newton_iterations: 2, sequential_above_knudsen: 0.5}\n",
+      "         cell_newton_iterations: 2, sequential_above_knudsen: 0.5, cycle: F,\n"
+      "         f_cycle_below_knudsen: 0.03, coarse_symmetric: false}\n",
       "test.yaml");
   const CaseNode solver = file.root().child("solver");
   solver.get_string("type");
@@ -33,6 +34,9 @@ TEST(CometKineticSolver, ReadsEveryKey) {
   EXPECT_EQ(o.min_coarse_cells, 16);
   EXPECT_EQ(o.cell_newton_iterations, 2);
   EXPECT_EQ(o.sequential_above_knudsen, 0.5);
+  EXPECT_EQ(o.cycle_shape, CometCycle::F);
+  EXPECT_EQ(o.f_cycle_below_knudsen, 0.03);
+  EXPECT_FALSE(o.coarse_symmetric);
   EXPECT_NO_THROW(file.check_all_used());
 
   const CaseFile empty = CaseFile::parse("solver: {type: comet}\n", "test.yaml");
@@ -43,11 +47,15 @@ TEST(CometKineticSolver, ReadsEveryKey) {
   EXPECT_EQ(d.post_sweeps, 1);
   EXPECT_TRUE(d.symmetric);
   EXPECT_EQ(d.sequential_above_knudsen, 0.2);
+  EXPECT_EQ(d.cycle_shape, CometCycle::Auto);  // the cycle by regime (comet_solver.hpp)
+  EXPECT_EQ(d.f_cycle_below_knudsen, 0.02);
+  EXPECT_TRUE(d.coarse_symmetric);
 }
 
 TEST(CometKineticSolver, RejectsBadValues) {
-  for (const char* text : {"solver: {coupling: full}\n", "solver: {pre_sweeps: 0, post_sweeps: 0}\n",
-                           "solver: {coarsest_sweeps: two}\n", "solver: {min_coarse_cells: 0}\n"}) {
+  for (const char* text :
+       {"solver: {coupling: full}\n", "solver: {pre_sweeps: 0, post_sweeps: 0}\n",
+        "solver: {coarsest_sweeps: two}\n", "solver: {min_coarse_cells: 0}\n"}) {
     const CaseFile file = CaseFile::parse(text, "test.yaml");
     EXPECT_THROW(read_comet_options(file.root().child("solver")), InputError) << text;
   }
@@ -56,8 +64,8 @@ TEST(CometKineticSolver, RejectsBadValues) {
 TEST(CometKineticSolver, SolvesAndReports) {
   auto p = comet_test::make_problem(comet_test::Case::Cavity, 0.1, 6, 8);
   int calls = 0;
-  const KineticSolveResult r = solve_comet(*p->op, p->f, CometOptions{}, 1e-6, 100,
-                                           [&](int, Real) { return ++calls > 0; });
+  const KineticSolveResult r =
+      solve_comet(*p->op, p->f, CometOptions{}, 1e-6, 100, [&](int, Real) { return ++calls > 0; });
   EXPECT_TRUE(r.converged);
   EXPECT_LE(r.residual_ratio, 1e-6);
   EXPECT_GT(r.iterations, 0);

@@ -7,14 +7,18 @@ CometOptions read_comet_options(const CaseNode& solver) {
   o.coupling = comet_coupling_from_name(
       solver.get_choice("coupling", {"conserved", "velocity"}, "conserved"));
   o.multigrid = solver.has("multigrid") ? solver.get_bool("multigrid") : true;
-  // V (default) | W | F: the F-cycle keeps the near-continuum heat transfer's cycle count flat
-  // in Kn (docs/BENCHMARKS.md section 17) at up to 2x the cost per cycle elsewhere.
-  o.cycle_shape = comet_cycle_from_name(solver.get_choice("cycle", {"V", "W", "F"}, "V"));
+  // auto (default: F-cycles with one-pass coarse sweeps below f_cycle_below_knudsen, V-cycles
+  // above; comet_solver.hpp, docs/BENCHMARKS.md section 19) | V | W | F.
+  o.cycle_shape =
+      comet_cycle_from_name(solver.get_choice("cycle", {"auto", "V", "W", "F"}, "auto"));
+  o.f_cycle_below_knudsen = solver.get_real("f_cycle_below_knudsen", 0.02, Range::non_negative());
+  o.coarse_symmetric = solver.has("coarse_symmetric") ? solver.get_bool("coarse_symmetric") : true;
   o.pre_sweeps = static_cast<int>(solver.get_int("pre_sweeps", 1, Range::closed(0, 100)));
   o.post_sweeps = static_cast<int>(solver.get_int("post_sweeps", 1, Range::closed(0, 100)));
   if (o.pre_sweeps + o.post_sweeps < 1)
     solver.fail("post_sweeps", "pre_sweeps + post_sweeps must be >= 1");
-  o.coarsest_sweeps = static_cast<int>(solver.get_int("coarsest_sweeps", 4, Range::closed(1, 1000)));
+  o.coarsest_sweeps =
+      static_cast<int>(solver.get_int("coarsest_sweeps", 4, Range::closed(1, 1000)));
   o.symmetric = solver.has("symmetric") ? solver.get_bool("symmetric") : true;
   o.min_coarse_cells = solver.get_int("min_coarse_cells", 8, Range::closed(1, 1e9));
   o.sequential_above_knudsen =

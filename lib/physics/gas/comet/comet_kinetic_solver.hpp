@@ -8,7 +8,10 @@
 //     max_iterations: 1000       # V-cycles (idem)
 //     coupling: conserved        # conserved (default) | velocity (thesis: u, v, w only)
 //     multigrid: true            # false: single-level point Gauss-Seidel
-//     cycle: V                   # V (default) | W | F (F: flat cycle count near continuum)
+//     cycle: auto                # auto (default) | V | W | F
+//     f_cycle_below_knudsen: 0.02  # auto: F-cycles, one-pass coarse sweeps, below this Kn;
+//                                  # V-cycles above (comet_solver.hpp)
+//     coarse_symmetric: true     # V, W, F: false = one-pass sweeps on the coarse levels
 //     pre_sweeps: 1              # per level, each a forward + backward pass when symmetric
 //     post_sweeps: 1
 //     coarsest_sweeps: 4

@@ -23,6 +23,7 @@ struct CometSolver::Level {
   std::vector<Real> restricted;  // R f of the finer level, kept for the correction
   bool collision_current = false;
   long passes = 0;
+  double seconds = 0;
 };
 
 CometSolver::CometSolver(KineticOperator& fine, const CometOptions& options)
@@ -68,30 +69,63 @@ std::span<Real> CometSolver::level_f(int level) {
   return level == 0 ? fine_f_ : std::span<Real>(levels_[level]->f);
 }
 
-void CometSolver::smooth(int l, int sweeps) {
+namespace {
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+}  // namespace
+
+void CometSolver::residual(int l, std::span<const Real> f, std::span<Real> r) {
+  const auto t0 = std::chrono::steady_clock::now();
+  levels_[l]->op->residual(f, r);
+  levels_[l]->seconds += seconds_since(t0);
+}
+
+void CometSolver::smooth(int l, int sweeps, bool post) {
+  const auto t0 = std::chrono::steady_clock::now();
   Level& level = *levels_[l];
   const std::span<Real> f = level_f(l);
   if (!level.collision_current) level.op->update_collision(f);
   // Gauss-Seidel within a rank's part, the ghosts refreshed after every pass (thesis sec. 5.4
   // step 12): block Jacobi between parts, one exchange per pass.
+  // One-pass coarse sweeps: forward before the coarse visit, backward after it (the cycle
+  // stays symmetric); alternating on the coarsest level.
+  const bool one_pass = !options_.symmetric || (l > 0 && !coarse_symmetric_);
   for (int s = 0; s < sweeps; ++s) {
-    level.smoother->sweep(f, level.source, true);
+    const bool forward = !options_.symmetric || !one_pass || (s % 2 == (post ? 1 : 0));
+    level.smoother->sweep(f, level.source, forward);
     level.op->exchange_ghosts(f);
     ++level.passes;
-    if (options_.symmetric) {
+    if (!one_pass) {
       level.smoother->sweep(f, level.source, false);
       level.op->exchange_ghosts(f);
       ++level.passes;
     }
   }
   level.collision_current = true;
+  level.seconds += seconds_since(t0);
 }
 
 CometCycle comet_cycle_from_name(const std::string& name) {
   if (name == "V") return CometCycle::V;
   if (name == "W") return CometCycle::W;
   if (name == "F") return CometCycle::F;
-  throw InputError("COMET: cycle '" + name + "' is not V, W or F");
+  if (name == "auto") return CometCycle::Auto;
+  throw InputError("COMET: cycle '" + name + "' is not V, W, F or auto");
+}
+
+const char* comet_cycle_name(CometCycle shape) {
+  switch (shape) {
+    case CometCycle::V:
+      return "V";
+    case CometCycle::W:
+      return "W";
+    case CometCycle::F:
+      return "F";
+    case CometCycle::Auto:
+      return "auto";
+  }
+  return "?";
 }
 
 void CometSolver::cycle(int l, CometCycle shape) {
@@ -107,7 +141,7 @@ void CometSolver::cycle(int l, CometCycle shape) {
 
   // FAS residual of this level, r = s - A(f).
   const std::span<Real> f = level_f(l);
-  fine.op->residual(f, fine.residual);
+  residual(l, f, fine.residual);
   fine.collision_current = true;
   if (!fine.source.empty())
     for (std::size_t i = 0; i < fine.residual.size(); ++i)
@@ -119,7 +153,7 @@ void CometSolver::cycle(int l, CometCycle shape) {
   restrict_solution(*fine.graph, agg, n, f, coarse.f);
   coarse.op->exchange_ghosts(coarse.f);  // the coarse residual reads its ghosts
   coarse.restricted = coarse.f;
-  coarse.op->residual(coarse.f, coarse.residual);
+  residual(l + 1, coarse.f, coarse.residual);
   coarse.collision_current = true;
   restrict_residual(agg, n, fine.residual, coarse.source);
   for (std::size_t i = 0; i < coarse.source.size(); ++i) coarse.source[i] += coarse.residual[i];
@@ -150,7 +184,7 @@ void CometSolver::cycle(int l, CometCycle shape) {
   }
   fine.op->exchange_ghosts(f);
   fine.collision_current = false;
-  smooth(l, options_.post_sweeps);
+  smooth(l, options_.post_sweeps, true);
 }
 
 Real CometSolver::domain_knudsen(std::span<const Real> f) const {
@@ -208,6 +242,7 @@ CometResult CometSolver::solve(std::span<Real> f) {
   const CommunicationCounters sent0 = communication_counters();
   for (auto& level : levels_) {
     level->passes = 0;
+    level->seconds = 0;
     level->collision_current = false;
   }
   damped_prolongations_ = 0;
@@ -219,7 +254,17 @@ CometResult CometSolver::solve(std::span<Real> f) {
   const bool rescale = options_.conserve_mass && fine_.is_closed();
   const Real mass0 = fine_.total_mass(f);
 
+  // The cycle by regime (header): near continuum F-cycles with one-pass coarse sweeps.
+  CometCycle shape = options_.cycle_shape;
+  coarse_symmetric_ = options_.coarse_symmetric;
+  if (shape == CometCycle::Auto) {
+    const bool dense = knudsen < options_.f_cycle_below_knudsen;
+    shape = dense ? CometCycle::F : CometCycle::V;
+    coarse_symmetric_ = !dense;
+  }
   CometResult result;
+  result.cycle_shape = shape;
+  result.coarse_symmetric = coarse_symmetric_;
   result.knudsen = knudsen;
   result.levels = n_levels();
   result.mass_rescaled = rescale;
@@ -233,7 +278,7 @@ CometResult CometSolver::solve(std::span<Real> f) {
   } else {
     for (int it = 0; it < options_.max_cycles; ++it) {
       if (options_.multigrid && n_levels() > 1) {
-        cycle(0, options_.cycle_shape);
+        cycle(0, shape);
       } else {
         smooth(0, options_.pre_sweeps + options_.post_sweeps);
       }
@@ -257,6 +302,7 @@ CometResult CometSolver::solve(std::span<Real> f) {
     result.damped_steps += level->smoother->damped_steps();
     result.fine_sweep_equivalents +=
         Real(level->passes) * Real(comm.sum(level->graph->n_owned_cells)) / fine_cells;
+    result.level_seconds.push_back(level->seconds);
   }
   result.cell_updates = comm.sum(Index(result.cell_updates - updates0));
   result.damped_steps = comm.sum(Index(result.damped_steps + damped_prolongations_ - damped0));

@@ -1,7 +1,8 @@
 // COMET (thesis sec. 5.3.2-5.3.3): the point-coupled Gauss-Seidel sweep
 // (point_coupled_smoother.hpp) as the smoother of a full-approximation-scheme (FAS) geometric
-// multigrid V-cycle on agglomerated coarse levels (fv/agglomeration.hpp), for the steady
-// discrete-velocity BGK / ESBGK equation r(f) = 0 of a KineticOperator.
+// multigrid cycle (V or F, chosen by regime: below) on agglomerated coarse levels
+// (fv/agglomeration.hpp), for the steady discrete-velocity BGK / ESBGK equation r(f) = 0 of a
+// KineticOperator.
 //
 // Levels: the fine FaceGraph, then pairwise agglomerations down to `min_coarse_cells` cells.
 // Each coarse level re-discretises the same equation on its agglomerated cells and faces: a
@@ -17,7 +18,19 @@
 //   coarsest_sweeps sweeps);
 //   f_l += P (f_{l+1} - R f_l) (injection; damped per cell to keep every f_k > 0);
 //   post_sweeps smoothing sweeps.
-// A sweep is forward, or forward + backward when `symmetric`.
+// A sweep is forward, or forward + backward when `symmetric`; with coarse_symmetric = false a
+// coarse-level sweep is one pass (forward before the coarser visit, backward after it).
+//
+// The cycle by regime (cycle_shape = Auto, the default; docs/BENCHMARKS.md section 19): near
+// continuum the V-cycle's rate decays (40 x 40 heat transfer at Kn 0.01: 0.57 per cycle, 19
+// cycles against 7 at Kn 1) because pairwise agglomeration with injection corrects the smooth
+// error poorly; an F-cycle visits level l about l + 1 times and keeps the count flat (9), but
+// with halving coarsening it costs ~2x a V-cycle in symmetric sweeps. With one-pass coarse
+// sweeps an F-cycle costs ~10 fine-sweep equivalents against the V-cycle's 8, and needs 10 and
+// 9 cycles at Kn 0.01 (heat transfer, cavity): less work than V there, more at Kn >= 0.025
+// where V converges fast. So Auto runs F-cycles with one-pass coarse sweeps when the domain
+// Knudsen number (below) is < f_cycle_below_knudsen (0.02), V-cycles with symmetric sweeps
+// otherwise; explicit V, W, F run as set (coarse_symmetric applies to them).
 //
 // Closed domains (no pressure boundary): the steady equation does not determine the mass
 // (sum_c sum_k w_k r_ck = 0 for every f), and a Gauss-Seidel or source iteration drifts it
@@ -65,8 +78,9 @@
 
 namespace rfmems {
 
-enum class CometCycle { V, W, F };
-CometCycle comet_cycle_from_name(const std::string& name);  // "V" | "W" | "F"
+enum class CometCycle { V, W, F, Auto };
+CometCycle comet_cycle_from_name(const std::string& name);  // "V" | "W" | "F" | "auto"
+const char* comet_cycle_name(CometCycle shape);
 
 struct CometOptions {
   CometCoupling coupling = CometCoupling::Conserved;
@@ -77,9 +91,14 @@ struct CometOptions {
   int post_sweeps = 1;
   int coarsest_sweeps = 4;
   // Coarse-level visits per level: V once; W twice (the FAS equation of level l+1 iterated
-  // twice with the same source before the correction); F an F-cycle then a V-cycle.
-  CometCycle cycle_shape = CometCycle::V;
-  bool symmetric = true;  // a sweep = forward + backward pass
+  // twice with the same source before the correction); F an F-cycle then a V-cycle; Auto by
+  // regime (above).
+  CometCycle cycle_shape = CometCycle::Auto;
+  Real f_cycle_below_knudsen = 0.02;  // Auto: F-cycles below this domain Kn, V-cycles above
+  bool symmetric = true;              // a sweep = forward + backward pass
+  // Coarse levels (V, W, F; Auto chooses): false makes a coarse sweep one pass, forward before
+  // the coarser visit and backward after it (alternating on the coarsest level).
+  bool coarse_symmetric = true;
   int cell_newton_iterations = 1;
   bool conserve_mass = true;            // closed domains only (see above)
   Real sequential_above_knudsen = 0.2;  // <= 0: always COMET
@@ -104,7 +123,10 @@ struct CometResult {
   long damped_steps = 0;
   bool mass_rescaled = false;  // conserve_mass applied (closed domain)
   double wall_seconds = 0;
-  CommunicationCounters communication;  // sent by this rank during the solve (COMET path)
+  CommunicationCounters communication;     // sent by this rank during the solve (COMET path)
+  CometCycle cycle_shape = CometCycle::V;  // the cycle run (Auto resolved)
+  bool coarse_symmetric = true;            // the coarse sweeps run
+  std::vector<double> level_seconds;       // wall seconds in smoothing and residuals, per level
 };
 
 class CometSolver {
@@ -124,7 +146,8 @@ class CometSolver {
 
  private:
   struct Level;
-  void smooth(int level, int sweeps);
+  void residual(int level, std::span<const Real> f, std::span<Real> r);
+  void smooth(int level, int sweeps, bool post = false);
   void cycle(int level, CometCycle shape);
   std::span<Real> level_f(int level);
 
@@ -134,6 +157,7 @@ class CometSolver {
   std::vector<std::unique_ptr<Level>> levels_;
   std::span<Real> fine_f_;
   long damped_prolongations_ = 0;
+  bool coarse_symmetric_ = true;  // of the current solve
 };
 
 }  // namespace rfmems
