@@ -30,6 +30,7 @@
 #include <string>
 
 #include "coupling/coupling_settings.hpp"
+#include "coupling/immersed_switch_study.hpp"
 #include "coupling/pull_in_study.hpp"
 #include "coupling/scene_validity.hpp"
 #include "coupling/switch_scene.hpp"
@@ -44,6 +45,56 @@ namespace {
 
 using namespace rfmems;
 
+// The immersed-boundary switch (an `immersed` block: coupling/immersed_switch_study.hpp).
+int run_immersed(const DriverCase& run_case, const DriverOptions& options) {
+  const CaseFile& case_file = run_case.file;
+  const CaseNode& root = run_case.root;
+  ImmersedSwitchCase c = read_immersed_switch_case(root, run_case.dir);
+  case_file.check_all_used();
+  ResultWriter writer(run_case.output, *c.beam->mesh);
+  remove_on_interrupt(temp_path_for(run_case.output));
+  Json summary;
+  summary["case"] = run_case.name;
+  summary["model"] = "plane_immersed";
+  summary["output"] = {{"h5", writer.path()}, {"xdmf", writer.xdmf_path()}};
+  summary["immersed"] = run_immersed_switch_study(c, root, writer);
+  summary["wall_time_s"] = run_case.elapsed();
+  writer.write_metadata({{"case_file", case_file.path()},
+                         {"case_name", run_case.name},
+                         {"case_text", case_file.text()},
+                         {"case_effective", case_file.effective_text()},
+                         {"model", "plane_immersed"},
+                         {"summary", json_text(summary)}},
+                        {{"wall_time_s", run_case.elapsed()}});
+  writer.finish();
+  if (options.json) {
+    std::cout << json_text(summary) << std::flush;
+  } else if (!options.quiet) {
+    const Json& j = summary["immersed"];
+    if (j.contains("dynamic"))
+      std::printf("%s (immersed, gas %s): dynamic pull-in at %.2f V (%.2f V does not), pull-in "
+                  "time %.3f us; %d runs\n",
+                  run_case.name.c_str(), j["gas"].get<std::string>().c_str(),
+                  j["dynamic"]["pull_in_voltage"].get<double>(),
+                  j["dynamic"]["not_pulling_in"].get<double>(),
+                  1e6 * j["dynamic"]["pull_in_time"].get<double>(), j["dynamic"]["runs"].get<int>());
+    if (j.contains("transient"))
+      std::printf("%s (immersed, gas %s): %.1f V, max tip deflection %.4f um, damping ratio %.4g\n",
+                  run_case.name.c_str(), j["gas"].get<std::string>().c_str(),
+                  j["transient"]["voltage"].get<double>(),
+                  1e6 * j["transient"]["max_deflection"].get<double>(),
+                  j["transient"]["damping_ratio"].get<double>());
+    if (j.contains("static"))
+      std::printf("%s (immersed): %.1f V, static tip deflection %.5f um\n", run_case.name.c_str(),
+                  j["static"]["voltage"].get<double>(), 1e6 * j["static"]["control"].get<double>());
+    if (j.contains("quasi_static"))
+      std::printf("%s (immersed): quasi-static pull-in at %.2f V\n", run_case.name.c_str(),
+                  j["quasi_static"]["pull_in_voltage"].get<double>());
+    std::printf("wrote %s (%.1f s)\n", writer.path().c_str(), run_case.elapsed());
+  }
+  return 0;
+}
+
 int run(const DriverOptions& options) {
   const DriverCase run_case(options);
   const CaseFile& case_file = run_case.file;
@@ -51,6 +102,7 @@ int run(const DriverOptions& options) {
   const std::string& name = run_case.name;
   const std::string& output = run_case.output;
   auto elapsed = [&] { return run_case.elapsed(); };
+  if (root.has("immersed")) return run_immersed(run_case, options);
   const std::string mode =
       root.child("pull_in").get_choice("mode", {"quasi_static", "dynamic", "transient"});
   SwitchScene scene = build_switch_scene(

@@ -61,8 +61,17 @@ void IdaIntegrator::initialize(Real t0, std::span<const Real> y0, std::span<cons
   check(IDASetUserData(mem_, this), "IDASetUserData");
   const bool fixed = options_.fixed_step > 0;
   // In fixed-step mode the local error test is made vacuous by huge tolerances.
-  check(IDASStolerances(mem_, fixed ? 1e10 : options_.rtol, fixed ? 1e10 : options_.atol),
-        "IDASStolerances");
+  if (!fixed && !options_.atol_vector.empty()) {
+    if (static_cast<Index>(options_.atol_vector.size()) != op_.size())
+      throw std::invalid_argument("IdaOptions::atol_vector: one entry per unknown");
+    sundials::Vector atol = sundials::make_serial_vector(op_.size(), ctx_.get());
+    std::copy(options_.atol_vector.begin(), options_.atol_vector.end(),
+              sundials::as_span(atol.get()).begin());
+    check(IDASVtolerances(mem_, options_.rtol, atol.get()), "IDASVtolerances");
+  } else {
+    check(IDASStolerances(mem_, fixed ? 1e10 : options_.rtol, fixed ? 1e10 : options_.atol),
+          "IDASStolerances");
+  }
   check(IDASetLinearSolver(mem_, solver_.get(), jac_.get()), "IDASetLinearSolver");
   if (jac_) {
     check(IDASetJacFn(mem_, jacobian_trampoline), "IDASetJacFn");
@@ -123,6 +132,19 @@ IdaIntegrator::Status IdaIntegrator::advance(Real t_out) {
     throw SolverError(fmt::format("IDA failed at t = {:.6g} with flag {} ({})", t_ret, flag,
                                   IDAGetReturnFlagName(flag)));
   return flag == IDA_ROOT_RETURN ? Status::Root : Status::Reached;
+}
+
+IdaIntegrator::Status IdaIntegrator::step(Real t_stop) {
+  check(IDASetStopTime(mem_, t_stop), "IDASetStopTime");
+  Real t_ret = t_;
+  const int flag = IDASolve(mem_, t_stop, &t_ret, y_.get(), yp_.get(), IDA_ONE_STEP);
+  t_ = t_ret;
+  if (pending_) std::rethrow_exception(std::exchange(pending_, nullptr));
+  if (flag < 0)
+    throw SolverError(fmt::format("IDA failed at t = {:.6g} with flag {} ({})", t_ret, flag,
+                                  IDAGetReturnFlagName(flag)));
+  if (flag == IDA_ROOT_RETURN) return Status::Root;
+  return flag == IDA_TSTOP_RETURN ? Status::Reached : Status::Stepped;
 }
 
 std::span<const Real> IdaIntegrator::y() const { return sundials::as_span(y_.get()); }

@@ -19,6 +19,9 @@ struct IdaOptions {
   int krylov_dimension = 30;
   Real rtol = 1e-6;
   Real atol = 1e-12;
+  // Per-unknown absolute tolerances (IDASVtolerances; empty: atol for all), e.g. a
+  // displacement and a velocity scale for a structure's first-order form.
+  std::vector<Real> atol_vector;
   int max_order = 5;
   Real initial_step = 0;  // 0: IDA chooses
   Real max_step = 0;      // 0: no limit
@@ -59,9 +62,12 @@ class IdaIntegrator {
   void correct_initial_conditions(Real t_first);
   void set_roots(int n_roots, RootFunction g);
 
-  enum class Status { Reached, Root };
+  enum class Status { Reached, Root, Stepped };  // Stepped: step() only
   // Advances to t_out (or to an event before it); returns where it stopped.
   Status advance(Real t_out);
+  // One internal step (IDA_ONE_STEP), never beyond t_stop (IDASetStopTime): for partitioned
+  // schemes that refresh a lagged load after every step IDA accepts. Reached means t_stop.
+  Status step(Real t_stop);
   Real time() const { return t_; }
   std::span<const Real> y() const;
   std::span<const Real> yp() const;

@@ -1,0 +1,123 @@
+// The immersed-boundary cantilever switch (issue 8, cases/cantilever_switch): cost per coupled
+// step split by physics, and the error of the staggered coupling against the implicit one and
+// against a tighter tolerance.
+//
+// For the case (optionally --set overrides, as rfmems-pullin takes them) and a step voltage:
+//   run "staggered"  the case's run (IBM load refreshed after each IDA step)
+//   run "tight"      the same with rtol and atol / 10
+//   run "implicit"   the IBM load inside every residual (--implicit)
+// one JSON line each: max tip deflection, pull-in time (if any), steps, IBM evaluations, CPU
+// seconds per physics (move, marking, interpolation, electrostatics, transfer, gas, structure)
+// and per step, and the ratios to the first run's CPU. Then a line of differences.
+//
+//   build/bench/bench_immersed_switch cases/cantilever_switch/case.yaml --voltage 80
+//       --end-time 2e-6 [--set "mesh.cells=[46, 4]" ...] [--implicit] [--gas reynolds]
+#include <CLI/CLI.hpp>
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+
+#include "bench_support.hpp"
+#include "coupling/immersed_switch_study.hpp"
+#include "io/case_file.hpp"
+
+using namespace rfmems;
+
+int main(int argc, char** argv) {
+  CLI::App app{"immersed cantilever switch: cost split and coupling error"};
+  std::string path;
+  std::vector<std::string> sets;
+  double voltage = 80, end_time = 2e-6;
+  bool implicit = false;
+  std::string gas = "none";
+  app.add_option("case", path)->required();
+  app.add_option("--set", sets, "key=value overrides");
+  app.add_option("--voltage", voltage);
+  app.add_option("--end-time", end_time);
+  app.add_flag("--implicit", implicit, "also the implicit run (IBM in every residual)");
+  app.add_option("--gas", gas, "none | reynolds");
+  CLI11_PARSE(app, argc, argv);
+  sets.push_back("gas.model=" + gas);
+  sets.push_back("pull_in.mode=transient");
+
+  const CaseFile file = CaseFile::load(path, sets);
+  const CaseNode root = file.root();
+  const std::string dir = path.substr(0, path.find_last_of('/') + 1);
+  ImmersedSwitchCase c = read_immersed_switch_case(root, dir.empty() ? "." : dir);
+  c.run.end_time = end_time;
+  c.run.stop_at_turning = false;
+  c.run.output_interval = end_time / 400;
+
+  struct Result {
+    std::string name;
+    DynamicRun run;
+    ImmersedPhysicsTimes times;
+    double wall;
+  };
+  std::vector<Result> results;
+  auto go = [&](const std::string& name, ImmersedRunOptions o) {
+    c.scene->reset_times();
+    std::unique_ptr<ImmersedGasModel> g = make_case_gas(root, *c.scene, c.geometry);
+    const double w0 = bench::now();
+    DynamicRun run = c.scene->run(voltage, o, g.get());
+    results.push_back({name, std::move(run), c.scene->times(), bench::now() - w0});
+    const Result& r = results.back();
+    const ImmersedPhysicsTimes& t = r.times;
+    const double cpu =
+        t.move + t.marking + t.interpolation + t.electrostatics + t.transfer + t.gas + t.structure;
+    nlohmann::json j;
+    j["bench"] = "immersed_switch";
+    j["run"] = name;
+    j["case"] = path;
+    j["overrides"] = sets;
+    j["voltage"] = voltage;
+    j["end_time"] = end_time;
+    j["beam_cells"] = c.beam->mesh->n_cells();
+    j["background_cells"] = {c.geometry.background_cells[0], c.geometry.background_cells[1]};
+    j["max_tip_deflection"] = -r.run.extreme_control;
+    j["pulled_in"] = r.run.pulled_in;
+    j["pull_in_time"] = r.run.pull_in_time;
+    j["damping_ratio"] = free_response(r.run.history).damping_ratio;
+    j["steps"] = r.run.stats.steps;
+    j["ibm_evaluations"] = t.load_evaluations;
+    j["cpu_s"] = {{"move", t.move},
+                  {"marking", t.marking},
+                  {"interpolation", t.interpolation},
+                  {"electrostatics", t.electrostatics},
+                  {"transfer", t.transfer},
+                  {"gas", t.gas},
+                  {"structure", t.structure},
+                  {"total", cpu}};
+    j["cpu_ms_per_step"] = 1e3 * cpu / std::max(1L, r.run.stats.steps);
+    j["cpu_ratio_to_first"] = cpu / std::max(1e-12, [&] {
+                                const ImmersedPhysicsTimes& f = results.front().times;
+                                return f.move + f.marking + f.interpolation + f.electrostatics +
+                                       f.transfer + f.gas + f.structure;
+                              }());
+    j["wall_s"] = r.wall;
+    double load[3] = {0, 0, 0};
+    if (getloadavg(load, 3) < 1) load[0] = -1;
+    j["load_average_1min"] = load[0];
+    bench::emit(j);
+  };
+  go("staggered", c.run);
+  ImmersedRunOptions tight = c.run;
+  tight.ida.rtol /= 10;
+  tight.ida.atol /= 10;
+  go("tight", tight);
+  if (implicit) {
+    ImmersedRunOptions o = c.run;
+    o.coupling = ImmersedCoupling::Implicit;
+    go("implicit", o);
+  }
+  nlohmann::json d;
+  d["bench"] = "immersed_switch_errors";
+  const DynamicRun& a = results[0].run;
+  for (std::size_t i = 1; i < results.size(); ++i) {
+    const DynamicRun& b = results[i].run;
+    d["staggered_vs_" + results[i].name] = {
+        {"max_tip_relative", a.extreme_control / b.extreme_control - 1},
+        {"pull_in_time_relative", b.pull_in_time > 0 ? a.pull_in_time / b.pull_in_time - 1 : 0.0}};
+  }
+  bench::emit(d);
+  return 0;
+}

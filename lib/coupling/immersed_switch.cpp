@@ -1,0 +1,526 @@
+#include "coupling/immersed_switch.hpp"
+
+#include <fmt/format.h>
+#include <time.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "core/error.hpp"
+#include "core/reduced_inertia_system.hpp"
+#include "ibm/force_transfer.hpp"
+#include "solvers/ida_integrator.hpp"
+#include "solvers/klu_factorization.hpp"
+
+namespace rfmems {
+
+namespace {
+
+double cpu_now() {
+  timespec ts;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+// Adds the CPU time of its scope to a counter.
+struct ScopedCpu {
+  double& sink;
+  double start = cpu_now();
+  ~ScopedCpu() { sink += cpu_now() - start; }
+};
+
+Real max_abs(std::span<const Real> v) {
+  Real m = 0;
+  for (Real x : v) m = std::max(m, std::abs(x));
+  return m;
+}
+
+// M u'' + K u - f(u) - f_gas = 0 with the lagged, gap-scaled IBM load (see the header).
+class LaggedLoadStructure : public SecondOrderOperator {
+ public:
+  LaggedLoadStructure(ElasticityOperator& beam, Real gap0) : beam_(beam), gap0_(gap0) {
+    const Index n = beam.size();
+    force_.assign(n, 0.0);
+    gas_.assign(n, 0.0);
+    reference_gap_.assign(n / 2, gap0);
+    const CsrPattern& p = beam.stiffness_pattern();
+    for (Index c = 0; c < n / 2; ++c) diagonal_.push_back(p.find(2 * c + 1, 2 * c + 1));
+  }
+  void set_reference(std::vector<Real> force, std::span<const Real> u) {
+    force_ = std::move(force);
+    for (std::size_t c = 0; c < reference_gap_.size(); ++c)
+      reference_gap_[c] = gap0_ + u[2 * c + 1];
+  }
+  void set_gas(std::vector<Real> gas) { gas_ = std::move(gas); }
+  // Implicit coupling: the exact load at u (replaces the scaled lagged one in the residual).
+  void set_exact(std::function<std::vector<Real>(std::span<const Real>)> exact) {
+    exact_ = std::move(exact);
+  }
+
+  Index size() const override { return beam_.size(); }
+  void internal_residual(Real t, std::span<const Real> u, std::span<Real> r) override {
+    beam_.internal_residual(t, u, r);
+    if (exact_) {
+      const std::vector<Real> f = exact_(u);
+      for (Index i = 0; i < size(); ++i) r[i] -= f[i] + gas_[i];
+      return;
+    }
+    for (std::size_t c = 0; c < reference_gap_.size(); ++c) {
+      r[2 * c] -= force_[2 * c] + gas_[2 * c];
+      r[2 * c + 1] -= force_[2 * c + 1] * scale(c, u) + gas_[2 * c + 1];
+    }
+  }
+  const CsrPattern& stiffness_pattern() const override { return beam_.stiffness_pattern(); }
+  void stiffness(Real t, std::span<const Real> u, std::span<Real> values) override {
+    beam_.stiffness(t, u, values);
+    for (std::size_t c = 0; c < reference_gap_.size(); ++c) {
+      if (force_[2 * c + 1] == 0) continue;
+      const Real g = gap0_ + u[2 * c + 1];
+      // d/du of -F (g_ref/g)^2 = 2 F g_ref^2 / g^3 (F < 0: softening).
+      values[diagonal_[c]] += 2 * force_[2 * c + 1] * scale(c, u) / g;
+    }
+  }
+  std::vector<Real> mass_diagonal() const override { return beam_.mass_diagonal(); }
+
+ private:
+  Real scale(std::size_t c, std::span<const Real> u) const {
+    const Real g = gap0_ + u[2 * c + 1];
+    if (!(g > 0.02 * gap0_))
+      throw RecoverableError(fmt::format("immersed switch: gap {:.3e} m of cell {} closed", g, c));
+    const Real s = reference_gap_[c] / g;
+    return s * s;
+  }
+  ElasticityOperator& beam_;
+  Real gap0_;
+  std::vector<Real> force_, gas_, reference_gap_;
+  std::vector<Index> diagonal_;
+  std::function<std::vector<Real>(std::span<const Real>)> exact_;
+};
+
+}  // namespace
+
+Mesh make_switch_background(const ImmersedSwitchGeometry& g) {
+  const int nx = g.background_cells[0], ny = g.background_cells[1];
+  if (nx < 2 || ny < 2) throw InputError("immersed switch: the background needs >= 2 x 2 cells");
+  const Vec3 lo = g.background_lower, hi = g.background_upper;
+  if (!(hi.x() > lo.x() && hi.y() > lo.y()))
+    throw InputError("immersed switch: the background's upper corner is not above its lower one");
+  MeshBuilder builder(2);
+  auto node = [&](int i, int j) -> Index { return static_cast<Index>(j) * (nx + 1) + i; };
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i)
+      builder.add_node(
+          Vec3(lo.x() + (hi.x() - lo.x()) * i / nx, lo.y() + (hi.y() - lo.y()) * j / ny, 0));
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      builder.add_cell(CellShape::Quad,
+                       {node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)});
+  int n_electrode = 0;
+  for (int i = 0; i < nx; ++i) {
+    const Real mid = lo.x() + (hi.x() - lo.x()) * (i + 0.5) / nx;
+    const bool on = mid >= g.electrode_begin && mid <= g.electrode_end;
+    n_electrode += on;
+    builder.add_boundary_face({node(i, 0), node(i + 1, 0)}, on ? "electrode" : "substrate");
+  }
+  if (n_electrode == 0)
+    throw InputError(
+        fmt::format("immersed switch: no bottom face centre in the electrode [{:g}, {:g}] m",
+                    g.electrode_begin, g.electrode_end));
+  for (int i = 0; i < nx; ++i) builder.add_boundary_face({node(i, ny), node(i + 1, ny)}, "top");
+  for (int j = 0; j < ny; ++j) {
+    builder.add_boundary_face({node(0, j), node(0, j + 1)}, "left");
+    builder.add_boundary_face({node(nx, j), node(nx, j + 1)}, "right");
+  }
+  return builder.build("immersed switch background");
+}
+
+struct ImmersedSwitch::Kernel {
+  CellMarker marker;
+  ImmersedElectrostatics electrostatics;
+  Kernel(const Mesh& bg, std::map<std::string, PotentialBoundary> bcs)
+      : marker(bg), electrostatics(bg, std::move(bcs)) {}
+};
+
+ImmersedSwitch::ImmersedSwitch(ElasticityOperator& beam, const ImmersedSwitchGeometry& geometry,
+                               Index control_cell)
+    : beam_(beam),
+      geometry_(geometry),
+      background_(std::make_unique<Mesh>(make_switch_background(geometry))),
+      rest_surface_(ImmersedSurface::from_mesh_boundary(beam.mesh())),
+      control_cell_(control_cell) {
+  const Mesh& mesh = beam.mesh();
+  if (mesh.dim() != 2) throw InputError("immersed switch: the beam must be a plane (2D) model");
+  const int anchor = mesh.find_patch(geometry.anchor_patch);
+  const int facing = mesh.find_patch(geometry.facing_patch);
+  if (anchor < 0)
+    throw InputError(fmt::format("immersed switch: no beam patch '{}'", geometry.anchor_patch));
+  if (facing < 0)
+    throw InputError(fmt::format("immersed switch: no beam patch '{}'", geometry.facing_patch));
+  if (control_cell < 0 || control_cell >= mesh.n_cells())
+    throw InputError("immersed switch: the control cell is not a beam cell");
+  std::map<std::string, PotentialBoundary> bcs{{"electrode", PotentialBoundary::potential(0.0)},
+                                               {"substrate", PotentialBoundary::zero_flux()},
+                                               {"left", PotentialBoundary::zero_flux()},
+                                               {"right", PotentialBoundary::zero_flux()},
+                                               {"top", PotentialBoundary::zero_flux()}};
+  if (background_->find_patch("substrate") < 0) bcs.erase("substrate");
+  kernel_ = std::make_unique<Kernel>(*background_, std::move(bcs));
+  electrode_y_ = geometry.background_lower.y();
+
+  const Real hx = (geometry.background_upper.x() - geometry.background_lower.x()) /
+                  geometry.background_cells[0];
+  const Real extension = geometry.anchor_extension > 0 ? geometry.anchor_extension : hx;
+  const Real scale = rest_surface_.perimeter();
+  std::vector<Vec3> vertices = rest_surface_.vertices();
+  const Patch& anchor_patch = mesh.patches()[anchor];
+  Real thickness_lo = 1e300, thickness_hi = -1e300;
+  for (Index k = 0; k < rest_surface_.n_segments(); ++k) {
+    const Index f = rest_surface_.source_face(k);
+    Index node = -1;
+    for (Index candidate : mesh.face_nodes(f))
+      if ((mesh.nodes()[candidate] - rest_surface_.start(k)).norm() <= 1e-12 * scale)
+        node = candidate;
+    if (node < 0) throw MeshError("immersed switch: a surface vertex is not a node of its face");
+    vertex_node_.push_back(node);
+    vertex_cell_.push_back(mesh.face_owner(f));
+    segment_cell_.push_back(mesh.face_owner(f));
+    thickness_lo = std::min(thickness_lo, vertices[k].y());
+    thickness_hi = std::max(thickness_hi, vertices[k].y());
+  }
+  // Vertices on the anchored patch: clamped, and moved into the wall.
+  std::vector<bool> on_anchor(mesh.n_nodes(), false);
+  for (Index f = anchor_patch.first_face; f < anchor_patch.first_face + anchor_patch.n_faces; ++f)
+    for (Index node : mesh.face_nodes(f)) on_anchor[node] = true;
+  const Vec3 anchor_normal = mesh.face_area(anchor_patch.first_face).normalized();
+  for (Index k = 0; k < rest_surface_.n_segments(); ++k) {
+    vertex_anchored_.push_back(on_anchor[vertex_node_[k]]);
+    if (vertex_anchored_.back()) vertices[k] += extension * anchor_normal;
+  }
+  rest_surface_.set_vertices(vertices);
+
+  const Patch& facing_patch = mesh.patches()[facing];
+  Real bottom = 1e300;
+  for (Index f = facing_patch.first_face; f < facing_patch.first_face + facing_patch.n_faces; ++f) {
+    facing_cells_.push_back(mesh.face_owner(f));
+    bottom = std::min(bottom, mesh.face_centroid(f).y());
+  }
+  gap0_ = bottom - electrode_y_;
+  if (!(gap0_ > 0))
+    throw InputError("immersed switch: the beam's facing side is not above the electrode");
+
+  // Wall points must stay within the beam's thickness: (rings + 1/2) h < 0.9 thickness.
+  const Real hy = (geometry.background_upper.y() - geometry.background_lower.y()) /
+                  geometry.background_cells[1];
+  const Real h = std::sqrt(hx * hy);
+  const Real thickness = thickness_hi - thickness_lo;
+  Real x_lo = 1e300, x_hi = -1e300;
+  for (const Vec3& x : mesh.nodes()) {
+    x_lo = std::min(x_lo, x.x());
+    x_hi = std::max(x_hi, x.x());
+  }
+  const LinearElastic& m = beam.material();
+  const Real span = x_hi - x_lo;
+  first_period_ =
+      2 * M_PI / (1.875104 * 1.875104 * thickness / (span * span) * std::sqrt(m.E / (12 * m.rho)));
+  interpolation_.max_rings =
+      std::clamp(static_cast<int>(std::floor(0.9 * thickness / h - 0.5)), 1, 3);
+}
+
+ImmersedSwitch::~ImmersedSwitch() = default;
+
+Real ImmersedSwitch::background_cell_height() const {
+  return (geometry_.background_upper.y() - geometry_.background_lower.y()) /
+         geometry_.background_cells[1];
+}
+
+std::span<const Real> ImmersedSwitch::potential() const {
+  return kernel_->electrostatics.potential();
+}
+
+ImmersedSurface ImmersedSwitch::moved_surface(std::span<const Real> u) const {
+  const std::vector<Mat3> gradients = beam_.cell_gradients(0.0, u);
+  std::vector<Vec3> vertices = rest_surface_.vertices();
+  const Mesh& mesh = beam_.mesh();
+  for (std::size_t k = 0; k < vertices.size(); ++k) {
+    if (vertex_anchored_[k]) continue;
+    const Index node = vertex_node_[k];
+    vertices[k] += beam_.displacement_at(vertex_cell_[k], mesh.nodes()[node], u, gradients);
+  }
+  ImmersedSurface moved = rest_surface_;
+  moved.set_vertices(std::move(vertices));
+  return moved;
+}
+
+std::vector<Vec3> ImmersedSwitch::segment_velocities(std::span<const Real> v) const {
+  const std::vector<Mat3> gradients = beam_.cell_gradients(0.0, v);
+  const Mesh& mesh = beam_.mesh();
+  const std::size_t n = vertex_node_.size();
+  std::vector<Vec3> vertex(n, Vec3::Zero());
+  for (std::size_t k = 0; k < n; ++k)
+    if (!vertex_anchored_[k])
+      vertex[k] =
+          beam_.displacement_at(vertex_cell_[k], mesh.nodes()[vertex_node_[k]], v, gradients);
+  std::vector<Vec3> out(n);
+  for (std::size_t k = 0; k < n; ++k) out[k] = 0.5 * (vertex[k] + vertex[(k + 1) % n]);
+  return out;
+}
+
+Real ImmersedSwitch::min_gap(std::span<const Real> u) const {
+  Real g = 1e300;
+  for (Index c : facing_cells_) g = std::min(g, gap0_ + u[2 * c + 1]);
+  return g;
+}
+
+std::vector<Real> ImmersedSwitch::to_structure(std::span<const Vec3> segment_forces) const {
+  std::vector<Real> q(beam_.size(), 0.0);
+  for (std::size_t k = 0; k < segment_forces.size(); ++k) {
+    q[2 * segment_cell_[k]] += segment_forces[k].x();
+    q[2 * segment_cell_[k] + 1] += segment_forces[k].y();
+  }
+  return q;
+}
+
+std::vector<Index> ImmersedSwitch::facing_segments() const {
+  const Mesh& mesh = beam_.mesh();
+  const int facing = mesh.find_patch(geometry_.facing_patch);
+  std::vector<Index> out;
+  for (Index k = 0; k < rest_surface_.n_segments(); ++k)
+    if (mesh.face_patch(rest_surface_.source_face(k)) == facing) out.push_back(k);
+  return out;
+}
+
+ImmersedLoad ImmersedSwitch::electrostatic_load(std::span<const Real> u, Real voltage) {
+  ++times_.load_evaluations;
+  std::unique_ptr<ImmersedSurface> surface;
+  {
+    ScopedCpu t{times_.move};
+    surface = std::make_unique<ImmersedSurface>(moved_surface(u));
+  }
+  CellMarking marking;
+  {
+    ScopedCpu t{times_.marking};
+    marking = kernel_->marker.mark(*surface);
+  }
+  std::unique_ptr<IbInterpolation> ib;
+  {
+    ScopedCpu t{times_.interpolation};
+    ib = std::make_unique<IbInterpolation>(*background_, marking, *surface, interpolation_);
+  }
+  {
+    ScopedCpu t{times_.electrostatics};
+    kernel_->electrostatics.solve(marking, *ib, voltage);
+  }
+  ImmersedLoad load;
+  {
+    ScopedCpu t{times_.transfer};
+    const ForceTransfer transfer(*background_, marking, *surface);
+    const std::vector<Vec3> segment = transfer.to_surface(kernel_->electrostatics.ib_face_forces());
+    for (const Vec3& f : segment) load.total += f;
+    load.force = to_structure(segment);
+  }
+  load.ib_faces = static_cast<Index>(marking.ib_faces.size());
+  load.one_sided = ib->count_one_sided();
+  load.unreached = marking.n_unreached_outside;
+  return load;
+}
+
+ImmersedStatic ImmersedSwitch::solve_static(Real voltage, Real tolerance, int max_iterations) {
+  // Plain fixed point u <- K^-1 f(u): below pull-in it contracts (by about the ratio of the
+  // electrostatic to the elastic stiffness). Not Aitken: on a background where the beam's
+  // faces lie on grid lines the load jumps as slivers get cut (docs/immersed_switch.md), and
+  // Aitken's secant amplified the jumps (measured: omega between -8 and 15, no convergence).
+  // Converged when the control's deflection changes by <= tolerance of itself.
+  const Index n = beam_.size();
+  std::vector<Real> k_values(beam_.stiffness_pattern().nnz()), u(n, 0.0);
+  beam_.stiffness(0.0, u, k_values);
+  KluFactorization stiffness(beam_.stiffness_pattern(), k_values);
+  ImmersedStatic out;
+  for (int it = 0; it < max_iterations; ++it) {
+    ImmersedLoad load = electrostatic_load(u, voltage);
+    out.force_y = load.total.y();
+    stiffness.solve(load.force);
+    const Real change = std::abs(load.force[control()] - u[control()]);
+    u = std::move(load.force);
+    out.iterations = it + 1;
+    if (change <= tolerance * std::abs(u[control()])) {
+      out.u = u;
+      out.control = u[control()];
+      return out;
+    }
+  }
+  throw SolverError(
+      fmt::format("immersed switch: static solve at {:g} V not converged in {} "
+                  "iterations (above the quasi-static pull-in?)",
+                  voltage, max_iterations));
+}
+
+QuasiStaticPullIn ImmersedSwitch::trace_quasi_static(const QuasiStaticOptions& options,
+                                                     Real coupling_tolerance) {
+  const Index n = beam_.size();
+  std::vector<Real> k_values(beam_.stiffness_pattern().nnz()), zero(n, 0.0);
+  beam_.stiffness(0.0, zero, k_values);
+  KluFactorization stiffness(beam_.stiffness_pattern(), k_values);
+  const Index c = control();
+  long solves = 0;
+  auto solve = [&](Real delta, const FoldSample& from) {
+    FoldSample s{{}, from.state};
+    if (from.point.displacement != 0)
+      for (Real& v : s.state) v *= delta / from.point.displacement;
+    std::vector<Real>& u = s.state;
+    std::vector<Real> residual_prev, residual(n);
+    Real omega = 1.0, lambda = 0;
+    int it = 0;
+    for (; it < 200; ++it) {
+      std::vector<Real> z = electrostatic_load(u, 1.0).force;
+      ++solves;
+      stiffness.solve(z);
+      lambda = delta / z[c];
+      for (Index i = 0; i < n; ++i) residual[i] = lambda * z[i] - u[i];
+      if (max_abs(residual) <= coupling_tolerance * std::abs(delta)) {
+        for (Index i = 0; i < n; ++i) u[i] += residual[i];
+        break;
+      }
+      if (!residual_prev.empty()) {
+        Real num = 0, den = 0;
+        for (Index i = 0; i < n; ++i) {
+          const Real dr = residual[i] - residual_prev[i];
+          num += residual_prev[i] * dr;
+          den += dr * dr;
+        }
+        if (den > 0) omega = -omega * num / den;
+      }
+      for (Index i = 0; i < n; ++i) u[i] += omega * residual[i];
+      residual_prev = residual;
+    }
+    if (it == 200 || lambda < 0)
+      throw SolverError(
+          fmt::format("immersed switch: quasi-static coupling failed at delta = {:.4e} m", delta));
+    s.point = {delta, std::sqrt(lambda), min_gap(u), true, it + 1};
+    return s;
+  };
+  FoldSample rest{{0.0, 0.0, gap0_, true, 0}, std::vector<Real>(n, 0.0)};
+  QuasiStaticPullIn out = trace_fold(solve, rest, gap0_, options);
+  out.solves = solves;
+  return out;
+}
+
+DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
+                               ImmersedGasModel* gas) {
+  const Index n = beam_.size();
+  LaggedLoadStructure structure(beam_, gap0_);
+  ReducedInertiaSystem system(structure, {});
+  std::vector<Real> y(system.size(), 0.0);
+  ImmersedLoad load = electrostatic_load(std::span<const Real>(y.data(), n), voltage);
+  structure.set_reference(load.force, std::span<const Real>(y.data(), n));
+  if (options.coupling == ImmersedCoupling::Implicit)
+    structure.set_exact(
+        [&](std::span<const Real> u) { return electrostatic_load(u, voltage).force; });
+  Real gas_force = 0;
+  if (gas) {
+    ScopedCpu t{times_.gas};
+    gas->reset(rest_surface_, 0.0);
+  }
+  std::vector<Real> yp = system.consistent_derivative(0.0, y);
+  IdaOptions ida_options = options.ida;
+  ida_options.atol_vector.assign(system.size(), options.ida.atol);
+  for (Index i = n; i < system.size(); ++i)
+    ida_options.atol_vector[i] = options.ida.atol * 2 * M_PI / first_period_;
+  IdaIntegrator ida(system, ida_options);
+  ida.initialize(0.0, y, yp);
+  const Index vc = system.velocity_index(control());
+  ida.set_roots(2, [&](Real, std::span<const Real> yy, std::span<const Real>, std::span<Real> g) {
+    g[0] = min_gap(yy.subspan(0, n)) - options.contact_gap;
+    g[1] = yy[vc];
+  });
+
+  struct Raw {
+    Real t, u, v, gap, fe, fg;
+  };
+  std::vector<Raw> raw{{0.0, 0.0, 0.0, gap0_, load.total.y(), 0.0}};
+  DynamicRun out;
+  bool moved_down = false;
+  Real t_prev = 0;
+  while (true) {
+    IdaIntegrator::Status status;
+    {
+      ScopedCpu t{times_.structure};
+      status = ida.step(options.end_time);
+    }
+    ++times_.structure_steps;
+    const Real t = ida.time();
+    const std::span<const Real> state = ida.y();
+    const std::span<const Real> u = state.subspan(0, n);
+    out.extreme_control = std::min(out.extreme_control, u[control()]);
+    if (u[control()] < 0 && t >= 0.25 * first_period_) moved_down = true;
+    bool stop = status == IdaIntegrator::Status::Reached;
+    if (status == IdaIntegrator::Status::Root) {
+      const std::vector<int> found = ida.roots_found();
+      if (found[0] < 0) {
+        ++out.touch_downs;
+        out.pulled_in = true;
+        out.pull_in_time = t;
+        stop = true;
+      } else if (found[1] > 0 && moved_down && out.turning_time == 0) {
+        out.turning_time = t;
+        stop = stop || options.stop_at_turning;
+      }
+    }
+    // The coupled step's exchange: the IBM load and the gas at the accepted state.
+    {
+      load = electrostatic_load(u, voltage);
+      structure.set_reference(load.force, u);
+      if (gas && t > t_prev) {
+        ScopedCpu timer{times_.gas};
+        std::vector<Real> v(n);
+        for (Index i = 0; i < n; ++i) v[i] = state[system.velocity_index(i)];
+        const ImmersedSurface surface = moved_surface(u);
+        const std::vector<Vec3> f =
+            gas->advance(surface, segment_velocities(v), t_prev, t - t_prev);
+        ++times_.gas_steps;
+        gas_force = 0;
+        for (const Vec3& x : f) gas_force += x.y();
+        structure.set_gas(to_structure(f));
+      }
+    }
+    raw.push_back({t, u[control()], state[vc], min_gap(u), load.total.y(), gas_force});
+    t_prev = t;
+    if (stop) break;
+  }
+  out.final_time = ida.time();
+  out.final_state = {ida.time(), std::vector<Real>(ida.y().begin(), ida.y().end()),
+                     std::vector<Real>(ida.yp().begin(), ida.yp().end())};
+  out.stats = ida.stats();
+
+  auto sample = [&](const Raw& r) {
+    DynamicSample s{r.t, r.u, r.gap, r.fe, r.fg};
+    s.voltage = voltage;
+    return s;
+  };
+  if (options.output_interval <= 0) {
+    for (const Raw& r : raw) out.history.push_back(sample(r));
+    return out;
+  }
+  // Uniform samples: cubic Hermite in (u, v) of the control; the other columns linear.
+  std::size_t j = 0;
+  for (Real t = 0; t <= out.final_time; t += options.output_interval) {
+    while (j + 2 < raw.size() && raw[j + 1].t < t) ++j;
+    const Raw& a = raw[j];
+    const Raw& b = raw[std::min(j + 1, raw.size() - 1)];
+    const Real h = b.t - a.t;
+    const Real s = h > 0 ? std::clamp((t - a.t) / h, 0.0, 1.0) : 0.0;
+    const Real h00 = 2 * s * s * s - 3 * s * s + 1, h10 = s * s * s - 2 * s * s + s;
+    const Real h01 = -2 * s * s * s + 3 * s * s, h11 = s * s * s - s * s;
+    Raw r{t,
+          h00 * a.u + h10 * h * a.v + h01 * b.u + h11 * h * b.v,
+          0,
+          (1 - s) * a.gap + s * b.gap,
+          (1 - s) * a.fe + s * b.fe,
+          (1 - s) * a.fg + s * b.fg};
+    out.history.push_back(sample(r));
+  }
+  out.history.push_back(sample(raw.back()));
+  return out;
+}
+
+}  // namespace rfmems

@@ -1,0 +1,276 @@
+#include "coupling/immersed_switch_study.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "coupling/immersed_reynolds_film.hpp"
+#include "io/probes.hpp"
+
+namespace rfmems {
+
+namespace {
+
+std::pair<Real, Real> read_pair(const CaseNode& node, const std::string& key, Dimension d) {
+  const std::vector<Real> v = node.get_quantities(key, d);
+  node.require(v.size() == 2 && v[0] < v[1], key, "expected [a, b] with a < b");
+  return {v[0], v[1]};
+}
+
+}  // namespace
+
+std::unique_ptr<ImmersedGasModel> make_case_gas(const CaseNode& root, const ImmersedSwitch& scene,
+                                                const ImmersedSwitchGeometry& geometry,
+                                                Real* mean_free_path) {
+  const CaseNode gas = root.child_or_empty("gas");
+  const std::string model = gas.get_choice("model", {"none", "reynolds"}, "none");
+  // Keys are read (and checked) even for none, so a case toggled by --set stays valid.
+  GasProperties g;
+  g.ambient_pressure = gas.get_quantity("pressure", Dimension::Pressure, 1.36e4, Range::positive());
+  const Real temperature =
+      gas.get_quantity("temperature", Dimension::Temperature, 300.0, Range::positive());
+  const Real mu0 = gas.get_quantity("viscosity", Dimension::Viscosity, 1.712e-5, Range::positive());
+  const Real omega = gas.get_real("omega", 0.74, Range::closed(0.5, 1.0));
+  g.viscosity = mu0 * std::pow(temperature / 273.15, omega);
+  // Mean free path of the thesis's eq. (5.30) family: lambda = mu / p sqrt(pi R T / 2), air.
+  const Real lambda = g.viscosity / g.ambient_pressure * std::sqrt(M_PI * 287.0 * temperature / 2);
+  g.mean_free_path =
+      gas.get_quantity("mean_free_path", Dimension::Length, lambda, Range::positive());
+  g.reference_pressure = g.ambient_pressure;
+  g.rarefaction = gas.get_choice("rarefaction", {"veijola", "none"}, "veijola") == "veijola"
+                      ? Rarefaction::Veijola
+                      : Rarefaction::None;
+  if (mean_free_path) *mean_free_path = g.mean_free_path;
+  if (model == "none") return nullptr;
+  Real tip = -1e300;
+  for (const Vec3& x : scene.rest_surface().vertices()) tip = std::max(tip, x.x());
+  return std::make_unique<ImmersedReynoldsFilm>(g, scene.facing_segments(),
+                                                geometry.background_lower.y(),
+                                                geometry.background_lower.x(), tip);
+}
+
+ImmersedSwitchCase read_immersed_switch_case(const CaseNode& root, const std::string& case_dir) {
+  ImmersedSwitchCase c;
+  c.beam = std::make_unique<ElasticityScene>(
+      build_elasticity_scene(root, case_dir, AnalysisType::Transient));
+  const Mesh& mesh = *c.beam->mesh;
+  root.child("model").require(mesh.dim() == 2, "structure",
+                              "the immersed switch needs a plane beam");
+  const CaseNode im = root.child("immersed");
+  const CaseNode bg = im.child("background");
+  ImmersedSwitchGeometry& g = c.geometry;
+  g.background_lower = bg.get_vec3_quantity("lower", Dimension::Length);
+  g.background_upper = bg.get_vec3_quantity("upper", Dimension::Length);
+  bg.require(g.background_upper.x() > g.background_lower.x() &&
+                 g.background_upper.y() > g.background_lower.y(),
+             "upper", "must lie above and right of lower");
+  const std::vector<Real> cells = bg.get_reals("cells");
+  bg.require(cells.size() == 2 && cells[0] >= 4 && cells[1] >= 4 && cells[0] <= 4000 &&
+                 cells[1] <= 4000 && cells[0] == std::floor(cells[0]) &&
+                 cells[1] == std::floor(cells[1]),
+             "cells", "expected [nx, ny], integers in [4, 4000]");
+  g.background_cells[0] = static_cast<int>(cells[0]);
+  g.background_cells[1] = static_cast<int>(cells[1]);
+  std::tie(g.electrode_begin, g.electrode_end) =
+      read_pair(im.child("electrode"), "x", Dimension::Length);
+  g.anchor_patch = im.get_string("anchor_patch", "left");
+  im.require(mesh.find_patch(g.anchor_patch) >= 0, "anchor_patch",
+             "the beam mesh has no such patch");
+  g.facing_patch = im.get_string("facing_patch", "bottom");
+  im.require(mesh.find_patch(g.facing_patch) >= 0, "facing_patch",
+             "the beam mesh has no such patch");
+  g.anchor_extension =
+      im.get_quantity("anchor_extension", Dimension::Length, 0.0, Range::non_negative());
+  for (const Vec3& x : mesh.nodes())
+    if (!(x.x() >= g.background_lower.x() - 1e-9 && x.x() <= g.background_upper.x() &&
+          x.y() > g.background_lower.y() && x.y() < g.background_upper.y()))
+      bg.fail("lower", fmt::format("the beam (node at [{:g}, {:g}] m) is not inside the background",
+                                   x.x(), x.y()));
+  const CasePointFinder finder(mesh);
+  const Index control_cell = finder.find(im, "control", "the control point").second;
+  c.scene = std::make_unique<ImmersedSwitch>(*c.beam->op, g, control_cell);
+
+  const CaseNode pi = root.child("pull_in");
+  c.mode = pi.get_choice("mode", {"dynamic", "transient", "static", "quasi_static"});
+  const Real gap = c.scene->rest_gap();
+  c.run.contact_gap = pi.get_quantity("contact_gap", Dimension::Length,
+                                      std::min(1.5 * c.scene->background_cell_height(), 0.5 * gap),
+                                      Range::open(0.0, gap));
+  const CaseNode solver = root.child_or_empty("solver");
+  c.run.ida.rtol = solver.get_real("rtol", 1e-4, Range::open(0.0, 1.0));
+  c.run.ida.atol = solver.get_quantity("atol", Dimension::Length, 1e-5 * gap, Range::positive());
+  c.run.ida.max_order = static_cast<int>(solver.get_int("max_order", 2, Range::closed(1, 5)));
+  c.run.coupling =
+      root.child_or_empty("coupling")
+                  .get_choice("scheme", {"staggered", "implicit"}, "staggered") == "implicit"
+          ? ImmersedCoupling::Implicit
+          : ImmersedCoupling::Staggered;
+  // Every block is checked whatever the mode (a case toggled by --set stays valid); the
+  // active mode's block and required keys must be there.
+  auto block = [&](const std::string& name) {
+    return c.mode == name ? pi.child(name) : pi.child_or_empty(name);
+  };
+  const CaseNode d = block("dynamic");
+  if (c.mode == "dynamic" || d.has("bracket")) {
+    std::tie(c.bracket_low, c.bracket_high) = read_pair(d, "bracket", Dimension::Voltage);
+    d.require(c.bracket_low > 0, "bracket", "voltages must be > 0");
+  }
+  c.tolerance = d.get_quantity("tolerance", Dimension::Voltage, 1.0, Range::positive());
+  const Real dynamic_end = d.get_quantity("end_time", Dimension::Time,
+                                          4 * c.scene->first_bending_period(), Range::positive());
+  const CaseNode tr = block("transient");
+  const bool transient = c.mode == "transient";
+  const Real transient_voltage =
+      transient ? tr.get_quantity("voltage", Dimension::Voltage, Range::positive())
+                : tr.get_quantity("voltage", Dimension::Voltage, 1.0, Range::positive());
+  const Real transient_end =
+      transient ? tr.get_quantity("end_time", Dimension::Time, Range::positive())
+                : tr.get_quantity("end_time", Dimension::Time, 1.0, Range::positive());
+  const Real transient_output =
+      tr.get_quantity("output_interval", Dimension::Time, transient_end / 400, Range::positive());
+  const CaseNode st = block("static");
+  const Real static_voltage =
+      c.mode == "static" ? st.get_quantity("voltage", Dimension::Voltage, Range::positive())
+                         : st.get_quantity("voltage", Dimension::Voltage, 1.0, Range::positive());
+  const CaseNode q = block("quasi_static");
+  c.quasi_static.n_points = static_cast<int>(q.get_int("points", 16, Range::closed(4, 1000)));
+  c.quasi_static.max_fraction = q.get_real("max_fraction", 0.6, Range::open(0.0, 1.0));
+  c.quasi_static.voltage_tolerance =
+      q.get_quantity("voltage_tolerance", Dimension::Voltage, 0.05, Range::positive());
+  if (c.mode == "dynamic") {
+    c.run.end_time = dynamic_end;
+  } else if (transient) {
+    c.voltage = transient_voltage;
+    c.run.end_time = transient_end;
+    c.run.output_interval = transient_output;
+    c.run.stop_at_turning = false;
+  } else if (c.mode == "static") {
+    c.voltage = static_voltage;
+  }
+  c.gas = make_case_gas(root, *c.scene, g, &c.mean_free_path);
+  return c;
+}
+
+namespace {
+
+void write_history(ResultWriter& writer, const std::string& name, const DynamicRun& run) {
+  std::vector<double> t;
+  std::vector<std::vector<double>> rows;
+  for (const DynamicSample& s : run.history) {
+    t.push_back(s.t);
+    rows.push_back({s.control, s.min_gap, s.electrostatic_force, s.gas_force});
+  }
+  writer.write_time_series("dynamic", name, t, rows,
+                           {"control", "min_gap", "electrostatic_force", "gas_force"});
+}
+
+Json times_json(const ImmersedPhysicsTimes& t) {
+  return {{"move_s", t.move},
+          {"marking_s", t.marking},
+          {"interpolation_s", t.interpolation},
+          {"electrostatics_s", t.electrostatics},
+          {"transfer_s", t.transfer},
+          {"gas_s", t.gas},
+          {"structure_s", t.structure},
+          {"load_evaluations", t.load_evaluations},
+          {"structure_steps", t.structure_steps},
+          {"gas_steps", t.gas_steps}};
+}
+
+void write_displacement(ResultWriter& writer, const ElasticityScene& beam,
+                        std::span<const Real> u) {
+  std::vector<double> d;
+  for (Index c = 0; c < beam.mesh->n_cells(); ++c) {
+    d.push_back(u[2 * c]);
+    d.push_back(u[2 * c + 1]);
+    d.push_back(0.0);
+  }
+  writer.write_cell_field_at(0, 0.0, "displacement", d, 3);
+}
+
+}  // namespace
+
+Json run_immersed_switch_study(ImmersedSwitchCase& c, const CaseNode& root, ResultWriter& writer) {
+  ImmersedSwitch& s = *c.scene;
+  const auto wall0 = std::chrono::steady_clock::now();
+  auto wall = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  };
+  Json j;
+  j["mode"] = c.mode;
+  j["gap"] = s.rest_gap();
+  j["background_cells"] = {c.geometry.background_cells[0], c.geometry.background_cells[1]};
+  j["beam_cells"] = c.beam->mesh->n_cells();
+  j["surface_segments"] = s.rest_surface().n_segments();
+  j["first_bending_period"] = s.first_bending_period();
+  j["gas"] = c.gas ? c.gas->name() : "none";
+  j["coupling"] = c.run.coupling == ImmersedCoupling::Implicit ? "implicit" : "staggered";
+  j["contact_gap"] = c.run.contact_gap;
+  const std::size_t n = c.beam->op->size();
+  if (c.mode == "static") {
+    const ImmersedStatic st = s.solve_static(c.voltage);
+    j["static"] = {{"voltage", c.voltage},
+                   {"control", st.control},
+                   {"force_y", st.force_y},
+                   {"iterations", st.iterations}};
+    write_displacement(writer, *c.beam, st.u);
+  } else if (c.mode == "quasi_static") {
+    const QuasiStaticPullIn qs = s.trace_quasi_static(c.quasi_static);
+    std::vector<double> delta;
+    std::vector<std::vector<double>> rows;
+    for (const PullInPoint& p : qs.curve) {
+      delta.push_back(p.displacement);
+      rows.push_back({p.voltage, p.min_gap, p.stable ? 1.0 : 0.0});
+    }
+    writer.write_time_series("pull_in", "curve", delta, rows, {"voltage", "min_gap", "stable"},
+                             "control_displacement");
+    j["quasi_static"] = {{"pull_in_voltage", qs.pull_in_voltage},
+                         {"pull_in_displacement", qs.pull_in_displacement},
+                         {"solves", qs.solves}};
+    write_displacement(writer, *c.beam, qs.fold_state);
+  } else if (c.mode == "transient") {
+    const DynamicRun run = s.run(c.voltage, c.run, c.gas.get());
+    write_history(writer, "transient", run);
+    const FreeResponse fr = free_response(run.history);
+    j["transient"] = {{"voltage", c.voltage},
+                      {"pulled_in", run.pulled_in},
+                      {"pull_in_time", run.pull_in_time},
+                      {"max_deflection", -run.extreme_control},
+                      {"damping_ratio", fr.damping_ratio},
+                      {"frequency", fr.frequency},
+                      {"swings", fr.swings},
+                      {"steps", run.stats.steps},
+                      {"final_time", run.final_time}};
+    write_displacement(writer, *c.beam, std::span<const Real>(run.final_state.y).subspan(0, n));
+  } else {
+    DynamicRun last;
+    Real last_voltage = 0;
+    const DynamicPullIn pi = find_dynamic_pull_in(
+        [&](Real v) {
+          std::unique_ptr<ImmersedGasModel> gas = make_case_gas(root, s, c.geometry);
+          DynamicRun r = s.run(v, c.run, gas.get());
+          if (r.pulled_in && (last_voltage == 0 || v <= last_voltage)) {
+            last = r;
+            last_voltage = v;
+          }
+          return r;
+        },
+        c.bracket_low, c.bracket_high, c.tolerance, c.run.end_time);
+    write_history(writer, "pull_in", last);
+    j["dynamic"] = {{"pull_in_voltage", pi.voltage},
+                    {"not_pulling_in", pi.lower},
+                    {"pull_in_time", pi.pull_in_time},
+                    {"runs", pi.runs},
+                    {"steps", pi.steps},
+                    {"tolerance", c.tolerance}};
+    write_displacement(writer, *c.beam, std::span<const Real>(last.final_state.y).subspan(0, n));
+  }
+  if (c.gas) j["gas_max_knudsen"] = c.gas->max_knudsen();
+  j["cpu"] = times_json(s.times());
+  j["study_wall_s"] = wall();
+  return j;
+}
+
+}  // namespace rfmems

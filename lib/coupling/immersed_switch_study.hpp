@@ -1,0 +1,70 @@
+// The immersed-boundary switch as a case file describes it (issue 8; rfmems-pullin runs it
+// when the case has an `immersed` block), and the study it asks for.
+//
+//   mesh / material / model / boundaries   the beam, as for rfmems-solid (model.structure:
+//                                          plane; the anchor patch fixed, the others free)
+//   immersed:
+//     background: {lower: [0 um, 0 um], upper: [75 um, 10 um], cells: [150, 50]}
+//     electrode: {x: [0 um, 45 um]}   # on the background's bottom (potential 0); the rest
+//                                     # of the bottom, the sides and the top: zero flux
+//     anchor_patch: left              # beam patch clamped in the wall (default left)
+//     facing_patch: bottom            # beam patch over the electrode (default bottom)
+//     anchor_extension: 0.5 um        # the anchored face pushed into the wall (default one
+//                                     # background cell)
+//     control: [45 um, 1.5 um]        # the point whose deflection is reported (the tip)
+//   pull_in:
+//     mode: dynamic                   # dynamic | transient | static | quasi_static
+//     contact_gap: 0.3 um             # touch-down gap (default 1.5 background cell heights:
+//                                     # the IB layer cannot resolve a thinner gap)
+//     dynamic: {bracket: [100 V, 140 V], tolerance: 1 V, end_time: 6 us}
+//     transient: {voltage: 80 V, end_time: 4 us, output_interval: 0.01 us}
+//     static: {voltage: 50 V}
+//     quasi_static: {points: 16, max_fraction: 0.6, voltage_tolerance: 0.05 V}
+//   coupling: {scheme: staggered}     # staggered (IBM load refreshed after every IDA step)
+//                                     # | implicit (IBM load inside every residual)
+//   gas:                              # the gas slot: none (default) | reynolds
+//     model: reynolds                 # 1D film under the beam, open at the tip
+//     pressure: 1.36e4 Pa
+//     temperature: 300 K
+//     viscosity: 1.712e-5 Pa*s        # mu0 at 273.15 K, times (T / 273.15)^omega
+//     omega: 0.74
+//     rarefaction: veijola            # veijola (default) | none
+//   solver: {rtol: 1e-4, atol: 1.5e-11 m, max_order: 2}
+#pragma once
+#include <memory>
+#include <string>
+
+#include "coupling/immersed_switch.hpp"
+#include "io/case_file.hpp"
+#include "io/json_summary.hpp"
+#include "io/result_writer.hpp"
+#include "physics/elasticity/elasticity_scene.hpp"
+
+namespace rfmems {
+
+struct ImmersedSwitchCase {
+  std::unique_ptr<ElasticityScene> beam;
+  ImmersedSwitchGeometry geometry;
+  std::unique_ptr<ImmersedSwitch> scene;
+  std::unique_ptr<ImmersedGasModel> gas;  // null: none
+  std::string mode;
+  ImmersedRunOptions run;
+  Real bracket_low = 0, bracket_high = 0, tolerance = 1;
+  Real voltage = 0;  // transient / static
+  QuasiStaticOptions quasi_static;
+  Real mean_free_path = 0;  // gas: at the ambient pressure
+};
+
+ImmersedSwitchCase read_immersed_switch_case(const CaseNode& root, const std::string& case_dir);
+
+// A fresh gas model of the case (each run starts the gas at rest); null for none.
+std::unique_ptr<ImmersedGasModel> make_case_gas(const CaseNode& root, const ImmersedSwitch& scene,
+                                                const ImmersedSwitchGeometry& geometry,
+                                                Real* mean_free_path = nullptr);
+
+// Runs the case's study; writes histories (/dynamic/<name>: time; control, min_gap,
+// electrostatic_force, gas_force) and the beam's displacement at the end (field 0); returns
+// the --json summary part.
+Json run_immersed_switch_study(ImmersedSwitchCase& c, const CaseNode& root, ResultWriter& writer);
+
+}  // namespace rfmems

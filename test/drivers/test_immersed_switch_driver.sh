@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# rfmems-pullin on the immersed-boundary cantilever switch (cases/cantilever_switch, issue 8),
+# on a coarse mesh (46 x 4 beam, 101 x 31 background): a static solve at 50 V exits 0, writes
+# its file and a tip deflection within 10 % of the 185 x 11 scene's (-46.3 nm); the quasi-static
+# pull-in within 8 % of the distributed closed form (132.5 V); and the bad-input contract of
+# the immersed keys (one line naming file, key and value; exit 2; no result file).
+#
+# Usage: bash test_immersed_switch_driver.sh <directory of rfmems-pullin> <source directory>
+set -uo pipefail
+
+DRIVER="$1/rfmems-pullin"
+SRC="$2"
+PY=/usr/bin/python3
+CASE="$SRC/cases/cantilever_switch/case.yaml"
+COARSE=(--set "mesh.cells=[46, 4]" --set "immersed.background.cells=[101, 31]")
+
+WORK=$(mktemp -d)
+trap 'rm -rf "$WORK"' EXIT
+source "$SRC/test/drivers/common.sh"
+
+if "$DRIVER" "$CASE" "${COARSE[@]}" --set pull_in.mode=static -o "$WORK/static.h5" --json \
+    --quiet >"$WORK/static.json" 2>"$WORK/err" && [ -s "$WORK/static.h5" ]; then
+  pass "static 50 V exits 0 and writes its file"
+else
+  fail "static: $(cat "$WORK/err")"
+fi
+if "$DRIVER" "$CASE" "${COARSE[@]}" --set pull_in.mode=quasi_static \
+    --set pull_in.quasi_static.points=10 -o "$WORK/qs.h5" --json --quiet >"$WORK/qs.json" \
+    2>"$WORK/err"; then
+  pass "quasi-static exits 0"
+else
+  fail "quasi-static: $(cat "$WORK/err")"
+fi
+if $PY - "$WORK/static.json" "$WORK/qs.json" <<'PY'
+import json, sys
+st = json.load(open(sys.argv[1]))["immersed"]["static"]
+qs = json.load(open(sys.argv[2]))["immersed"]["quasi_static"]
+assert abs(st["control"] / -46.3e-9 - 1) < 0.10, st
+assert abs(qs["pull_in_voltage"] / 132.5 - 1) < 0.08, qs
+PY
+then pass "static deflection and quasi-static V_PI near their references"
+else fail "static / quasi-static figures"
+fi
+
+expect_input_error bad_cells "cells" "$CASE" --set "immersed.background.cells=[2, 50]"
+expect_input_error bad_electrode "x" "$CASE" --set "immersed.electrode.x=[50 um, 40 um]"
+expect_input_error bad_anchor "anchor_patch" "$CASE" --set immersed.anchor_patch=wall
+expect_input_error bad_gas "model" "$CASE" --set gas.model=esbgk
+expect_input_error bad_scheme "scheme" "$CASE" --set coupling.scheme=monolithic
+expect_input_error bad_bracket "bracket" "$CASE" --set "pull_in.dynamic.bracket=[140 V, 100 V]"
+expect_input_error bad_contact "contact_gap" "$CASE" --set pull_in.contact_gap=2um
+expect_input_error outside "background" "$CASE" --set "immersed.background.upper=[40 um, 10 um]"
+expect_input_error typo "immersed.electrodes" "$CASE" --set "immersed.electrodes={x: [0, 1]}"
+
+exit $((failures > 0))
