@@ -34,7 +34,9 @@
 //     collision: esbgk                # esbgk (default) | bgk
 //     velocities: 10                  # per direction (n^3 grid), extent velocity_extent
 //     velocity_extent: 3.5            # half-width in thermal speeds sqrt(2 R T)
-//     step_tolerance: 1e-6            # the gas step's residual / ||alpha V h / dt||
+//     step_tolerance: 1e-5            # the gas step's residual / ||alpha V h / dt||
+//     smoother: point                 # point (COMET cell solve) | downwind | both
+//     predictor: true                 # start each step from the extrapolated f
 //     max_step_sweeps: 2000
 //   solver: {rtol: 1e-4, atol: 1.5e-11 m, max_order: 2}
 #pragma once
