@@ -15,6 +15,7 @@
 //
 //   build/bench/bench_ibm_gas [--steps 3] [--dt 5e-8] [--nx 150] [--ny 50] [--nv 10]
 //                             [--tolerance 1e-8] [--stepper sweeps|ida] [--ida-rtol 1e-6]
+//                             [--smoother downwind|point|both] [--predictor]
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -40,6 +41,11 @@ int main(int argc, char** argv) {
   Real ida_rtol = 1e-6;
   app.add_option("--stepper", stepper, "sweeps | ida")->check(CLI::IsMember({"sweeps", "ida"}));
   app.add_option("--ida-rtol", ida_rtol, "IDA relative tolerance");
+  std::string smoother = "downwind";
+  bool predictor = false;
+  app.add_option("--smoother", smoother, "sweeps: downwind | point | both")
+      ->check(CLI::IsMember({"downwind", "point", "both"}));
+  app.add_flag("--predictor", predictor, "start each step from the linear extrapolation");
   CLI11_PARSE(app, argc, argv);
 
   const Real um = 1e-6, L = 45 * um, T0 = 300, p0 = 1.36e4;
@@ -73,6 +79,10 @@ int main(int argc, char** argv) {
   options.step_tolerance = tolerance;
   options.stepper = stepper == "ida" ? GasStepper::Ida : GasStepper::Sweeps;
   options.ida_rtol = ida_rtol;
+  options.smoother = smoother == "point"  ? GasSmoother::PointCoupled
+                     : smoother == "both" ? GasSmoother::Both
+                                          : GasSmoother::Downwind;
+  options.predictor = predictor;
   ImmersedKineticGas gas(background, bcs,
                          VelocityGrid::uniform(nv, nv, nv, 3.5 * air.thermal_speed(T0)), air,
                          options);
@@ -128,6 +138,10 @@ int main(int argc, char** argv) {
                                {"interpolation_cpu_s", t.interpolation - last.interpolation},
                                {"gas_cpu_s", t.gas - last.gas},
                                {"stepper", stepper},
+                               {"smoother", smoother},
+                               {"predicted", rep.predicted},
+                               {"tolerance", tolerance},
+                               {"dt", dt},
                                {"order", rep.order},
                                {"sweeps", rep.sweeps},
                                {"newton", rep.newton},

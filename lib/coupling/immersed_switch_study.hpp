@@ -22,13 +22,22 @@
 //     quasi_static: {points: 16, max_fraction: 0.6, voltage_tolerance: 0.05 V}
 //   coupling: {scheme: staggered}     # staggered (IBM load refreshed after every IDA step)
 //                                     # | implicit (IBM load inside every residual)
-//   gas:                              # the gas slot: none (default) | reynolds
+//   gas:                              # the gas slot: none (default) | reynolds | esbgk
 //     model: reynolds                 # 1D film under the beam, open at the tip
 //     pressure: 1.36e4 Pa
 //     temperature: 300 K
 //     viscosity: 1.712e-5 Pa*s        # mu0 at 273.15 K, times (T / 273.15)^omega
 //     omega: 0.74
 //     rarefaction: veijola            # veijola (default) | none
+//     # esbgk (immersed_esbgk_gas.hpp): the kinetic gas on the background; electrode,
+//     # substrate and left diffuse at T, top and right pressure (p, T)
+//     collision: esbgk                # esbgk (default) | bgk
+//     velocities: 10                  # per direction (n^3 grid), extent velocity_extent
+//     velocity_extent: 3.5            # half-width in thermal speeds sqrt(2 R T)
+//     step_tolerance: 1e-5            # the gas step's residual / ||alpha V h / dt||
+//     smoother: point                 # point (COMET cell solve) | downwind | both
+//     predictor: true                 # start each step from the extrapolated f
+//     max_step_sweeps: 2000
 //   solver: {rtol: 1e-4, atol: 1.5e-11 m, max_order: 2}
 #pragma once
 #include <memory>

@@ -44,61 +44,75 @@ bool ImmersedKineticGas::closed() const {
   return true;
 }
 
+// Carries a distribution on the old FLUID graph over to `fluid` by background cell (see the
+// header); report: counts the cells gained and lost.
+std::vector<Real> ImmersedKineticGas::carry_over(const FluidFaceGraph& fluid,
+                                                 const std::vector<Real>& from,
+                                                 RemarkReport* report) const {
+  // Carry the distribution over by background cell (see the header).
+  const Index N = grid_.size();
+  const Index nb = background_graph_.n_cells();
+  std::vector<Real> f(fluid.graph.n_cells() * N, 0.0);
+  std::vector<char> has(nb, 0);
+  std::vector<Index> pending;
+  for (Index c = 0; c < fluid.graph.n_cells(); ++c) {
+    const Index b = fluid.background_cell[c];
+    const Index old = fluid_->fluid_cell[b];
+    if (old >= 0) {
+      std::copy_n(from.data() + old * N, N, f.data() + c * N);
+      has[b] = 1;
+    } else {
+      pending.push_back(c);
+      if (report) ++report->cells_gained;
+    }
+  }
+  for (Index b = 0; b < nb; ++b)
+    if (report && fluid_->fluid_cell[b] >= 0 && fluid.fluid_cell[b] < 0) ++report->cells_lost;
+  const FaceGraph& g = background_graph_;
+  while (!pending.empty()) {
+    std::vector<Index> still, filled;
+    for (const Index c : pending) {
+      const Index b = fluid.background_cell[c];
+      Real wsum = 0;
+      Real* fc = f.data() + c * N;
+      for (Index i = g.cell_face_offsets[b]; i < g.cell_face_offsets[b + 1]; ++i) {
+        const Index face = g.cell_faces[i];
+        if (g.is_boundary(face)) continue;
+        const Index nbr = g.face_owner[face] == b ? g.face_neighbour[face] : g.face_owner[face];
+        if (!has[nbr]) continue;
+        // Donors: FLUID cells before and after the move, or cells filled in a previous pass.
+        const Real w = 1.0 / (g.cell_centroid[nbr] - g.cell_centroid[b]).norm();
+        const Real* fs = f.data() + fluid.fluid_cell[nbr] * N;
+        for (Index k = 0; k < N; ++k) fc[k] += w * fs[k];
+        wsum += w;
+      }
+      if (wsum > 0) {
+        for (Index k = 0; k < N; ++k) fc[k] /= wsum;
+        filled.push_back(b);
+      } else {
+        still.push_back(c);
+      }
+    }
+    if (filled.empty()) throw MeshError("immersed gas: a new FLUID cell has no fluid donor");
+    for (const Index b : filled) has[b] = 1;
+    pending = std::move(still);
+  }
+  return f;
+}
+
 void ImmersedKineticGas::rebuild_graph(const CellMarking& marking) {
   auto fluid = std::make_unique<FluidFaceGraph>(fluid_face_graph(background_graph_, marking));
   auto op = std::make_unique<KineticOperator>(fluid->graph, grid_, gas_, outer_);
   remark_ = RemarkReport{};
   remark_.reclassified = true;
   if (!f_.empty()) {
-    // Carry the distribution over by background cell (see the header).
-    const Index N = grid_.size();
-    const Index nb = background_graph_.n_cells();
     remark_.mass_before = op_->total_mass(f_);
-    std::vector<Real> f(fluid->graph.n_cells() * N, 0.0);
-    std::vector<char> has(nb, 0);
-    std::vector<Index> pending;
-    for (Index c = 0; c < fluid->graph.n_cells(); ++c) {
-      const Index b = fluid->background_cell[c];
-      const Index old = fluid_->fluid_cell[b];
-      if (old >= 0) {
-        std::copy_n(f_.data() + old * N, N, f.data() + c * N);
-        has[b] = 1;
-      } else {
-        pending.push_back(c);
-        ++remark_.cells_gained;
-      }
-    }
-    for (Index b = 0; b < nb; ++b)
-      if (fluid_->fluid_cell[b] >= 0 && fluid->fluid_cell[b] < 0) ++remark_.cells_lost;
-    const FaceGraph& g = background_graph_;
-    while (!pending.empty()) {
-      std::vector<Index> still, filled;
-      for (const Index c : pending) {
-        const Index b = fluid->background_cell[c];
-        Real wsum = 0;
-        Real* fc = f.data() + c * N;
-        for (Index i = g.cell_face_offsets[b]; i < g.cell_face_offsets[b + 1]; ++i) {
-          const Index face = g.cell_faces[i];
-          if (g.is_boundary(face)) continue;
-          const Index nbr = g.face_owner[face] == b ? g.face_neighbour[face] : g.face_owner[face];
-          if (!has[nbr]) continue;
-          // Donors: FLUID cells before and after the move, or cells filled in a previous pass.
-          const Real w = 1.0 / (g.cell_centroid[nbr] - g.cell_centroid[b]).norm();
-          const Real* fs = f.data() + fluid->fluid_cell[nbr] * N;
-          for (Index k = 0; k < N; ++k) fc[k] += w * fs[k];
-          wsum += w;
-        }
-        if (wsum > 0) {
-          for (Index k = 0; k < N; ++k) fc[k] /= wsum;
-          filled.push_back(b);
-        } else {
-          still.push_back(c);
-        }
-      }
-      if (filled.empty()) throw MeshError("immersed gas: a new FLUID cell has no fluid donor");
-      for (const Index b : filled) has[b] = 1;
-      pending = std::move(still);
-    }
+    // The predictor's f^(n-1) goes over the same way (BDF2 itself restarts, below).
+    std::vector<Real> carried_previous;
+    if (options_.predictor && !f_previous_.empty() && dt_previous_ > 0)
+      carried_previous = carry_over(*fluid, f_previous_, nullptr);
+    std::vector<Real> f = carry_over(*fluid, f_, &remark_);
+    predictor_previous_ = std::move(carried_previous);
     f_ = std::move(f);
     remark_.mass_carried = op->total_mass(f_);
     // The gas between the IB faces and the body (not simulated) at rho_ref: the FLUID area
@@ -110,6 +124,7 @@ void ImmersedKineticGas::rebuild_graph(const CellMarking& marking) {
     if (options_.conserve_mass_on_remark && closed()) op->restore_mass(f_, remark_.mass_target);
     remark_.mass_after = op->total_mass(f_);
   }
+  point_.reset();  // its outgoing coefficients are those of the old operator
   op_ = std::move(op);
   fluid_ = std::move(fluid);
   f_previous_.clear();  // BDF2 restarts with a backward Euler step on a new graph
@@ -155,6 +170,7 @@ void ImmersedKineticGas::initialize(const GasState& state) {
   if (!op_) throw InputError("immersed gas: initialize needs a body (set_body first)");
   f_.assign(op_->size(), 0.0);
   f_previous_.clear();
+  predictor_previous_.clear();
   reference_density_ = state.rho;
   values_->set_reference_density(state.rho);
   op_->initialize(f_, [&](const Vec3&) { return state; });
@@ -232,6 +248,24 @@ GasStepReport ImmersedKineticGas::advance(Real dt) {
   scale = std::sqrt(scale);
   std::vector<Real> r(op_->size());
   std::vector<Real> f_start = f_;
+  const std::vector<Real>& previous = f_previous_.empty() ? predictor_previous_ : f_previous_;
+  if (options_.predictor && previous.size() == f_.size() && dt_previous_ > 0) {
+    // Linear extrapolation, kept positive (the equilibrium's Newton needs positive moments).
+    const Real s = dt / dt_previous_;
+    for (std::size_t i = 0; i < f_.size(); ++i)
+      f_[i] = std::max(f_start[i] + s * (f_start[i] - previous[i]), 0.1 * f_start[i]);
+    rep.predicted = true;
+  }
+  predictor_previous_.clear();
+  const bool point = options_.smoother != GasSmoother::Downwind;
+  std::vector<Real> source;
+  if (point) {
+    if (!point_) point_ = std::make_unique<PointCoupledSmoother>(*op_, CometCoupling::Conserved);
+    point_->set_time_coefficient(b);
+    source.resize(h.size());
+    for (Index c = 0; c < nc; ++c)
+      for (Index k = 0; k < N; ++k) source[c * N + k] = b * g.cell_volume[c] * h[c * N + k];
+  }
   for (;;) {
     op_->residual(f_, r);  // refreshes the IB-face values and the collision from f
     for (Index c = 0; c < nc; ++c)
@@ -242,7 +276,12 @@ GasStepReport ImmersedKineticGas::advance(Real dt) {
     if (rep.converged || rep.sweeps >= options_.max_step_sweeps ||
         !std::isfinite(rep.residual_ratio))
       break;
-    sweep(b, h);
+    if (options_.smoother != GasSmoother::PointCoupled) sweep(b, h);
+    if (point) {
+      // The downwind sweep leaves the collision cache stale; the point solve needs it current.
+      if (options_.smoother == GasSmoother::Both) op_->update_collision(f_);
+      point_->sweep(f_, source, rep.sweeps % 2 == 0);
+    }
     ++rep.sweeps;
   }
   f_previous_ = std::move(f_start);

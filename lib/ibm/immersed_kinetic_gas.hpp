@@ -51,6 +51,7 @@
 #include "ibm/ib_kinetic_face_values.hpp"
 #include "ibm/immersed_surface.hpp"
 #include "mesh/mesh.hpp"
+#include "physics/gas/comet/point_coupled_smoother.hpp"
 #include "physics/gas/kinetic/downwind_ordering.hpp"
 #include "physics/gas/kinetic/kinetic_operator.hpp"
 #include "physics/gas/kinetic/sequential_solver.hpp"
@@ -64,6 +65,14 @@ namespace rfmems {
 // test_immersed_kinetic_gas), not round-off.
 enum class GasStepper { Sweeps, Ida };
 
+// The sweep of GasStepper::Sweeps: Downwind, the sequential solver's downwind Gauss-Seidel
+// (ordinate by ordinate, the collision lagged within a sweep); PointCoupled, COMET's
+// point-coupled cell solve (PointCoupledSmoother with the step's b V on the diagonal: all N
+// ordinates of a cell with its conserved moments, so the collision stiffness nu dt is solved
+// per cell), cells in index order, alternately forward and backward; Both: one of each per
+// iteration.
+enum class GasSmoother { Downwind, PointCoupled, Both };
+
 struct ImmersedGasOptions {
   IbKineticOptions ib;
   GasStepper stepper = GasStepper::Sweeps;
@@ -72,6 +81,10 @@ struct ImmersedGasOptions {
   bool bdf2 = true;
   Real step_tolerance = 1e-12;
   int max_step_sweeps = 2000;
+  GasSmoother smoother = GasSmoother::Downwind;
+  // Start the step's iteration from f^n + (dt / dt_prev) (f^n - f^(n-1)) (linear
+  // extrapolation, when f^(n-1) is on the same graph) instead of f^n.
+  bool predictor = false;
 };
 
 struct ImmersedGasTimings {  // CPU seconds of the process, accumulated
@@ -89,6 +102,7 @@ struct RemarkReport {
 struct GasStepReport {
   int order = 1;                // 1: backward Euler, 2: BDF2
   int sweeps = 0;               // sweeps; GasStepper::Ida: IDA's internal steps
+  bool predicted = false;       // started from the extrapolation (options.predictor)
   long newton = 0, krylov = 0;  // GasStepper::Ida
   // Sweeps: ||R|| / ||alpha V h / dt|| of the step's equation; GasStepper::Ida: 0 (IDA's own
   // error control).
@@ -140,6 +154,8 @@ class ImmersedKineticGas {
 
  private:
   void rebuild_graph(const CellMarking& marking);
+  std::vector<Real> carry_over(const FluidFaceGraph& fluid, const std::vector<Real>& from,
+                               RemarkReport* report) const;
   void sweep(Real b, std::span<const Real> h);
   GasStepReport advance_ida(Real dt);
 
@@ -159,9 +175,11 @@ class ImmersedKineticGas {
   std::unique_ptr<ForceTransfer> transfer_;
   std::unique_ptr<IbKineticFaceValues> values_;
   std::vector<DownwindGroup> downwind_;
+  std::unique_ptr<PointCoupledSmoother> point_;  // per graph, made on first use
   std::vector<Real> f_;
   std::vector<Real> f_previous_;  // f^(n-1) for BDF2 (empty: none on this graph)
   Real dt_previous_ = 0;
+  std::vector<Real> predictor_previous_;  // f^(n-1) carried over a re-marking (predictor only)
   Real reference_density_ = 0;
   ImmersedGasTimings timings_;
   RemarkReport remark_;

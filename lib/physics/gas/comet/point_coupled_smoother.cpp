@@ -80,14 +80,15 @@ void PointCoupledSmoother::newton_step(Index c, std::span<Real> f, std::span<con
   const std::span<const Real> feq = op_.equilibrium(c);
   const Real* out = &outgoing_[c * n];
   const Real vnu = op_.graph().cell_volume[c] * op_.collision_frequency(c);
+  const Real bv = time_coefficient_ * op_.graph().cell_volume[c];
   op_.incoming_flux(c, f, in_);
 
   // Residual (right-hand side -R) and the diagonal.
   for (Index k = 0; k < n; ++k) {
-    Real r = out[k] * fc[k] + in_[k] - vnu * (feq[k] - fc[k]);
+    Real r = (out[k] + bv) * fc[k] + in_[k] - vnu * (feq[k] - fc[k]);
     if (!source.empty()) r -= source[c * n + k];
     step_[k] = -r;
-    a.d(k) = out[k] + vnu;
+    a.d(k) = out[k] + bv + vnu;
   }
   // Coupling columns B = -V nu df_eq/dX (the moment rows [C E] are set once, E = rho I for the
   // velocity coupling per cell).
@@ -116,6 +117,7 @@ void PointCoupledSmoother::conserved_tensor_step(Index c, std::span<Real> f,
   const std::span<const Real> feq = op_.equilibrium(c);
   const Real* out = &outgoing_[c * n];
   const Real vnu = op_.graph().cell_volume[c] * op_.collision_frequency(c);
+  const Real bv = time_coefficient_ * op_.graph().cell_volume[c];
   op_.incoming_flux(c, f, in_);
 
   // G and J of f_eq: stored by the equilibrium's Newton when they are those of its
@@ -135,9 +137,9 @@ void PointCoupledSmoother::conserved_tensor_step(Index c, std::span<Real> f,
   Real* y = step_.data();
   Real* u = dfeq_.data();
   for (Index k = 0; k < n; ++k) {
-    Real r = out[k] * fc[k] + in_[k] - vnu * (feq[k] - fc[k]);
+    Real r = (out[k] + bv) * fc[k] + in_[k] - vnu * (feq[k] - fc[k]);
     if (!source.empty()) r -= source[c * n + k];
-    const Real inv_d = 1.0 / (out[k] + vnu);
+    const Real inv_d = 1.0 / (out[k] + bv + vnu);
     y[k] = -r * inv_d;
     u[k] = feq[k] * inv_d;
   }

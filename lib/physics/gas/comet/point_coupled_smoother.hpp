@@ -68,6 +68,12 @@ class PointCoupledSmoother {
   // The point solve of one owned cell (what sweep does per cell).
   void solve_cell(Index c, std::span<Real> f, std::span<const Real> source);
 
+  // An implicit time step's term b V_c f_c on every cell (b = alpha / dt of backward Euler or
+  // BDF2; the history b V h goes in the source): D_k = a_k + V nu + b V, r_ck += b V f_ck.
+  // Default 0 (the steady equation). The arrowhead algebra is unchanged, so the cell's
+  // conservation laws still hold after its step (lib/ibm/immersed_kinetic_gas.hpp).
+  void set_time_coefficient(Real b) { time_coefficient_ = b; }
+
   long cell_updates() const { return cell_updates_; }
   long damped_steps() const { return damped_steps_; }
 
@@ -89,6 +95,7 @@ class PointCoupledSmoother {
   EquilibriumMomentDerivative conserved_derivative_;
   ArrowheadSystem<3> velocity_system_;
   ArrowheadSystem<5> conserved_system_;
+  Real time_coefficient_ = 0;
   long cell_updates_ = 0;
   long damped_steps_ = 0;
 };
