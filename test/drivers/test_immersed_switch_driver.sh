@@ -45,7 +45,7 @@ fi
 expect_input_error bad_cells "cells" "$CASE" --set "immersed.background.cells=[2, 50]"
 expect_input_error bad_electrode "x" "$CASE" --set "immersed.electrode.x=[50 um, 40 um]"
 expect_input_error bad_anchor "anchor_patch" "$CASE" --set immersed.anchor_patch=wall
-expect_input_error bad_gas "model" "$CASE" --set gas.model=esbgk
+expect_input_error bad_gas "model" "$CASE" --set gas.model=dsmc
 expect_input_error bad_scheme "scheme" "$CASE" --set coupling.scheme=monolithic
 expect_input_error bad_bracket "bracket" "$CASE" --set "pull_in.dynamic.bracket=[140 V, 100 V]"
 expect_input_error bad_contact "contact_gap" "$CASE" --set pull_in.contact_gap=2um
