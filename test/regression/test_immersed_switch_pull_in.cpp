@@ -12,52 +12,14 @@
 #include <cmath>
 #include <memory>
 
+#include "../support/cantilever_switch_scene.hpp"
 #include "coupling/immersed_switch.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/electrostatics/permittivity.hpp"
 
 namespace rfmems {
 namespace {
-
-constexpr Real um = 1e-6;
-constexpr Real kGap = 1.5 * um, kLength = 45 * um, kThickness = 1.5 * um;
-
-// Beam 45 um x 1.5 um, bottom 1.5 um above the electrode, clamped at x = 0 (the background's
-// left wall); background 75 um x 10 um; electrode [0, electrode_end] on the bottom.
-struct Cantilever {
-  std::unique_ptr<Mesh> mesh;
-  std::unique_ptr<ElasticityOperator> op;
-  std::unique_ptr<ImmersedSwitch> scene;
-  Cantilever(int bx, int by, int gx, int gy, Real electrode_end = kLength) {
-    BoxSpec spec;
-    spec.lower = Vec3(0, kGap, 0);
-    spec.upper = Vec3(kLength, kGap + kThickness, 0);
-    spec.n[0] = bx;
-    spec.n[1] = by;
-    mesh = std::make_unique<Mesh>(make_structured_mesh(spec));
-    const LinearElastic steel{200e9, 0.3, 8912, Hypothesis::PlaneStress};
-    std::vector<ElasticityBoundary> bcs(mesh->patches().size());
-    bcs[mesh->find_patch("left")].kind = ElasticityBoundary::Kind::Fixed;
-    op = std::make_unique<ElasticityOperator>(*mesh, steel, bcs);
-    ImmersedSwitchGeometry g;
-    g.background_upper = Vec3(75 * um, 10 * um, 0);
-    g.background_cells[0] = gx;
-    g.background_cells[1] = gy;
-    g.electrode_begin = 0;
-    g.electrode_end = electrode_end;
-    scene = std::make_unique<ImmersedSwitch>(*op, g, /*tip cell, bottom row*/ bx - 1);
-  }
-};
-
-ImmersedRunOptions run_options(Real end_time, Real atol_fraction) {
-  ImmersedRunOptions o;
-  o.end_time = end_time;
-  o.contact_gap = 0.2 * kGap;
-  o.ida.rtol = 1e-4;
-  o.ida.atol = atol_fraction * kGap;
-  o.ida.max_order = 2;
-  return o;
-}
+using namespace rfmems::test;
 
 // Osterberg & Senturia (1997): the distributed cantilever's quasi-static pull-in, no fringing,
 // V = sqrt(0.28 E h^3 g^3 / (eps L^4)) (a fit to 2D FEM within ~1 %): 132.5 V here. The

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 
+#include "../../support/cantilever_switch_scene.hpp"
 #include "coupling/immersed_esbgk_gas.hpp"
 #include "coupling/immersed_switch.hpp"
 #include "mesh/structured_mesh.hpp"
@@ -13,32 +14,13 @@
 namespace rfmems {
 namespace {
 
-constexpr Real um = 1e-6;
-constexpr Real kGap = 1.5 * um, kLength = 45 * um, kThickness = 1.5 * um;
+using namespace rfmems::test;
+
 constexpr Real kP0 = 1.36e4, kT0 = 300;
 
-struct CoarseSwitch {
-  std::unique_ptr<Mesh> mesh;
-  std::unique_ptr<ElasticityOperator> op;
-  std::unique_ptr<ImmersedSwitch> scene;
-  CoarseSwitch() {
-    BoxSpec spec;
-    spec.lower = Vec3(0, kGap, 0);
-    spec.upper = Vec3(kLength, kGap + kThickness, 0);
-    spec.n[0] = 45;
-    spec.n[1] = 3;
-    mesh = std::make_unique<Mesh>(make_structured_mesh(spec));
-    const LinearElastic steel{200e9, 0.3, 8912, Hypothesis::PlaneStress};
-    std::vector<ElasticityBoundary> bcs(mesh->patches().size());
-    bcs[mesh->find_patch("left")].kind = ElasticityBoundary::Kind::Fixed;
-    op = std::make_unique<ElasticityOperator>(*mesh, steel, bcs);
-    ImmersedSwitchGeometry g;
-    g.background_upper = Vec3(75 * um, 10 * um, 0);
-    g.background_cells[0] = 76;
-    g.background_cells[1] = 26;
-    g.electrode_end = kLength;
-    scene = std::make_unique<ImmersedSwitch>(*op, g, 44);
-  }
+// The coarse scene: 45 x 3 beam, 76 x 26 background, electrode under the beam.
+struct CoarseSwitch : Cantilever {
+  CoarseSwitch() : Cantilever(45, 3, 76, 26) {}
 };
 
 ImmersedEsbgkSettings air(int velocities, Real tolerance) {
