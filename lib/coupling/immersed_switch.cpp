@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "core/reduced_inertia_system.hpp"
+#include "coupling/aitken_relaxation.hpp"
 #include "ibm/force_transfer.hpp"
 #include "solvers/ida_integrator.hpp"
 #include "solvers/klu_factorization.hpp"
@@ -381,15 +382,7 @@ QuasiStaticPullIn ImmersedSwitch::trace_quasi_static(const QuasiStaticOptions& o
         for (Index i = 0; i < n; ++i) u[i] += residual[i];
         break;
       }
-      if (!residual_prev.empty()) {
-        Real num = 0, den = 0;
-        for (Index i = 0; i < n; ++i) {
-          const Real dr = residual[i] - residual_prev[i];
-          num += residual_prev[i] * dr;
-          den += dr * dr;
-        }
-        if (den > 0) omega = -omega * num / den;
-      }
+      if (!residual_prev.empty()) omega = aitken_factor(omega, residual, residual_prev);
       for (Index i = 0; i < n; ++i) u[i] += omega * residual[i];
       residual_prev = residual;
     }

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "core/error.hpp"
+#include "coupling/aitken_relaxation.hpp"
 #include "physics/electrostatics/electrostatic_solver.hpp"
 #include "physics/electrostatics/gap_mesh.hpp"
 #include "solvers/klu_factorization.hpp"
@@ -27,9 +28,11 @@ LaplacePullIn trace_pull_in_laplace(ElasticityScene& beam, const std::string& bo
                                     Real gap, const ElectrodeExtent& electrode, Index control,
                                     const LaplacePullInOptions& options) {
   const Mesh& beam_mesh = *beam.mesh;
-  if (beam_mesh.dim() != 2) throw InputError("Laplace pull-in: the beam must be a 2D (plane) model");
+  if (beam_mesh.dim() != 2)
+    throw InputError("Laplace pull-in: the beam must be a 2D (plane) model");
   const int bottom = beam_mesh.find_patch(bottom_patch);
-  if (bottom < 0) throw InputError(fmt::format("Laplace pull-in: the beam has no patch '{}'", bottom_patch));
+  if (bottom < 0)
+    throw InputError(fmt::format("Laplace pull-in: the beam has no patch '{}'", bottom_patch));
   const Patch& patch = beam_mesh.patches()[bottom];
   const Real y_bottom = beam_mesh.face_centroid(patch.first_face).y();
 
@@ -72,7 +75,8 @@ LaplacePullIn trace_pull_in_laplace(ElasticityScene& beam, const std::string& bo
   const Patch& top_patch = gap_mesh.patches()[top];
   for (Index f = top_patch.first_face; f < top_patch.first_face + top_patch.n_faces; ++f) {
     const auto it = face_owner_by_x.find(key(gap_mesh.face_centroid(f).x()));
-    if (it == face_owner_by_x.end()) throw MeshError("Laplace pull-in: gap and beam faces do not match");
+    if (it == face_owner_by_x.end())
+      throw MeshError("Laplace pull-in: gap and beam faces do not match");
     top_face_cell.push_back(it->second);
   }
 
@@ -126,21 +130,15 @@ LaplacePullIn trace_pull_in_laplace(ElasticityScene& beam, const std::string& bo
         for (Index i = 0; i < n; ++i) u[i] += residual[i];
         break;
       }
-      if (!residual_prev.empty()) {
-        Real num = 0, den = 0;
-        for (Index i = 0; i < n; ++i) {
-          const Real dr = residual[i] - residual_prev[i];
-          num += residual_prev[i] * dr;
-          den += dr * dr;
-        }
-        if (den > 0) omega = -omega * num / den;
-      }
+      if (!residual_prev.empty()) omega = aitken_factor(omega, residual, residual_prev);
       for (Index i = 0; i < n; ++i) u[i] += omega * residual[i];
       residual_prev = residual;
     }
     if (it == options.max_coupling_iterations)
-      throw SolverError(fmt::format("Laplace pull-in: coupling not converged at delta = {:.4e} m "
-                                    "after {} iterations", delta, it));
+      throw SolverError(
+          fmt::format("Laplace pull-in: coupling not converged at delta = {:.4e} m "
+                      "after {} iterations",
+                      delta, it));
     if (lambda < 0)
       throw SolverError(fmt::format("Laplace pull-in: negative V^2 at delta = {:.4e} m", delta));
     Real min_gap = gap;

@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/reduced_inertia_system.hpp"
+#include "coupling/aitken_relaxation.hpp"
 #include "solvers/ida_integrator.hpp"
 
 namespace rfmems {
@@ -113,8 +114,10 @@ PartitionedRun run_partitioned(ParallelPlateActuation& act, std::vector<bool> qu
   std::vector<Real> s(structure.size(), 0.0), sp = structure.consistent_derivative(0.0, s);
   std::vector<Real> p(nc, pa), pp(nc, 0.0);
   IdaIntegrator structure_ida(structure, options.ida), gas_ida(gas, options.ida);
-  structure_ida.set_roots(1, [&](Real, std::span<const Real> y, std::span<const Real>,
-                                 std::span<Real> g) { g[0] = act.min_gap(y) - options.contact_gap; });
+  structure_ida.set_roots(
+      1, [&](Real, std::span<const Real> y, std::span<const Real>, std::span<Real> g) {
+        g[0] = act.min_gap(y) - options.contact_gap;
+      });
   auto gap_of = [&](std::span<const Real> y, std::vector<Real>& g, std::vector<Real>& gr) {
     g.resize(nc);
     gr.resize(nc);
@@ -131,8 +134,8 @@ PartitionedRun run_partitioned(ParallelPlateActuation& act, std::vector<bool> qu
   PartitionedRun out;
   DynamicRun& run = out.run;
   auto sample = [&](Real t, std::span<const Real> y, std::span<const Real> pressure) {
-    run.history.push_back({t, y[control], act.min_gap(y), act.total_force(act.voltage_squared(t), y),
-                           film.total_force(pressure)});
+    run.history.push_back({t, y[control], act.min_gap(y),
+                           act.total_force(act.voltage_squared(t), y), film.total_force(pressure)});
   };
   sample(0.0, s, p);
   std::vector<Real> g_n, gr_n, f_n, f_end, f_prev, r_prev, g_end, gr_end;
@@ -175,23 +178,14 @@ PartitionedRun run_partitioned(ParallelPlateActuation& act, std::vector<bool> qu
       }
       // Converged when the force stops changing, relative to its size, or below what the film's
       // integration resolves (10 rtol of the ambient pressure on the largest cell).
-      const Real floor = 10 * options.ida.rtol * pa *
-                         *std::max_element(area.begin(), area.end());
+      const Real floor = 10 * options.ida.rtol * pa * *std::max_element(area.begin(), area.end());
       if (k > 0 && change <= part.tolerance * size + floor) converged = true;
       if (part.scheme == CouplingScheme::Staggered || k == 0 || converged) {
         f_end = f_film;
       } else {
         // Aitken from the third pass on (the first pass saw the predicted motion only, its
         // residual says nothing about the fixed point's contraction); kept in [0.05, 1].
-        if (k >= 2) {
-          Real num = 0, den = 0;
-          for (std::size_t c = 0; c < nc; ++c) {
-            const Real dr = residual[c] - r_prev[c];
-            num += r_prev[c] * dr;
-            den += dr * dr;
-          }
-          if (den > 0) omega = std::clamp(-omega * num / den, 0.05, 1.0);
-        }
+        if (k >= 2) omega = std::clamp(aitken_factor(omega, residual, r_prev), 0.05, 1.0);
         for (std::size_t c = 0; c < nc; ++c) f_end[c] += omega * residual[c];
       }
       r_prev = residual;
@@ -209,8 +203,9 @@ PartitionedRun run_partitioned(ParallelPlateActuation& act, std::vector<bool> qu
       gap_of(s_new, g_end, gr_end);
     }
     if (part.scheme == CouplingScheme::StronglyCoupled && !converged && !touched)
-      throw SolverError(fmt::format("strong coupling: no convergence in {} iterations at t = {:.4e} s",
-                                    part.max_iterations, t));
+      throw SolverError(
+          fmt::format("strong coupling: no convergence in {} iterations at t = {:.4e} s",
+                      part.max_iterations, t));
     s = s_new;
     sp = sp_new;
     p = p_new;
