@@ -62,13 +62,14 @@ void check_plate(const SceneDescription &s, ValidityReport &r) {
   if (s.width > 0)
     r.ranges.push_back({"width_over_thickness", s.width / s.thickness, s.width / s.thickness});
   if (!s.plate) return;
-  const bool creep = s.analysis == SceneDescription::Analysis::Creep;
+  const bool creep = s.analysis == SceneDescription::Analysis::Creep && !s.plate_shear_creep;
   const Real limit = creep ? C::kCreepPlateMinSlenderness : C::kPlateMinSlenderness;
   if (slenderness < limit)
     r.warnings.push_back(creep ? fmt::format("plate creep: L/h = {:.3g} below {:g} (the plate "
                                              "neglects shear "
                                              "creep: 15 % at L/h = 10, 2.5 % at 30, "
-                                             "docs/BENCHMARKS.md sec. 9)",
+                                             "docs/BENCHMARKS.md sec. 9; "
+                                             "creep.shear_creep: true includes it)",
                                              slenderness, limit)
                                : fmt::format("plate: L/h = {:.3g} below {:g} (thick plate: "
                                              "through-thickness "
@@ -197,6 +198,7 @@ ValidityReport creep_case_validity(const CaseNode &root, const CreepCase &creep)
   s.length = hi.x() - lo.x();
   s.width = hi.y() - lo.y();
   s.thickness = root.child("model").get_quantity("thickness", Dimension::Length, 0.0);
+  s.plate_shear_creep = creep.shear_creep;
   if (creep.has_gap) {
     s.gap = creep.initial_gap;
     s.fringing_factor = root.child("actuation").get_real("fringing", 0.0);

@@ -131,6 +131,13 @@ TEST(SceneValidity, PlateSlendernessForStaticDynamicAndCreep) {
   ValidityReport r = check_scene_validity(s);
   ASSERT_EQ(r.warnings.size(), 1u);
   EXPECT_EQ(count_containing(r, "plate creep: L/h = 13.3 below 20"), 1);
+  s.plate_shear_creep = true;  // with shear creep the plate's limit is the Mindlin one
+  EXPECT_TRUE(check_scene_validity(s).warnings.empty());
+  s.thickness = 45e-6;  // L/h = 8.9
+  r = check_scene_validity(s);
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_EQ(count_containing(r, "plate: L/h = 8.89 below 10"), 1);
+  s.plate_shear_creep = false;
   s.thickness = 19e-6;  // L/h = 21
   EXPECT_TRUE(check_scene_validity(s).warnings.empty());
   s.analysis = SceneDescription::Analysis::Static;
