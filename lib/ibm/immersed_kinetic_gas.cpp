@@ -187,43 +187,7 @@ KineticSolveResult ImmersedKineticGas::solve_steady(const SequentialOptions& opt
 // The sequential solver's downwind sweep with the time term b V (f - h) (b = alpha / dt):
 //   f_ck = (b V h_ck + V nu f_eq,ck - sum (c.S)^- f_up) / (b V + sum (c.S)^+ + V nu).
 void ImmersedKineticGas::sweep(Real b, std::span<const Real> h) {
-  const FaceGraph& g = fluid_->graph;
-  const Index N = grid_.size();
-  std::vector<Real> numerator, denominator;
-  for (const DownwindGroup& group : downwind_) {
-    const std::size_t m = group.ordinates.size();
-    numerator.resize(m);
-    denominator.resize(m);
-    for (const Index c : group.cells) {
-      const Real V = g.cell_volume[c];
-      const Real vnu = V * op_->collision_frequency(c);
-      const std::span<const Real> feq = op_->equilibrium(c);
-      for (std::size_t j = 0; j < m; ++j) {
-        const Index k = group.ordinates[j];
-        numerator[j] = vnu * feq[k] + b * V * h[c * N + k];
-        denominator[j] = vnu + b * V;
-      }
-      for (Index i = g.cell_face_offsets[c]; i < g.cell_face_offsets[c + 1]; ++i) {
-        const Index face = g.cell_faces[i];
-        const bool owner = g.face_owner[face] == c;
-        const Vec3 S = owner ? g.face_area[face] : Vec3(-g.face_area[face]);
-        const Real* upwind =
-            g.is_boundary(face)
-                ? op_->boundary_values(face).data()
-                : f_.data() + (owner ? g.face_neighbour[face] : g.face_owner[face]) * N;
-        for (std::size_t j = 0; j < m; ++j) {
-          const Index k = group.ordinates[j];
-          const Real d = grid_.c[k].dot(S);
-          if (d > 0)
-            denominator[j] += d;
-          else
-            numerator[j] -= d * upwind[k];
-        }
-      }
-      Real* fc = f_.data() + c * N;
-      for (std::size_t j = 0; j < m; ++j) fc[group.ordinates[j]] = numerator[j] / denominator[j];
-    }
-  }
+  downwind_sweep(*op_, downwind_, f_, b, h);
 }
 
 GasStepReport ImmersedKineticGas::advance(Real dt) {

@@ -6,12 +6,9 @@
 #include "physics/gas/kinetic/downwind_ordering.hpp"
 
 namespace rfmems {
-namespace {
 
-// One sweep over every group: f_ck = (V nu f_eq - sum (c.S)^- f_up) / (sum (c.S)^+ + V nu),
-// cells in downwind order so upwind neighbours already hold this sweep's values.
-void sweep(const KineticOperator& op, const std::vector<DownwindGroup>& groups,
-           std::span<Real> f) {
+void downwind_sweep(const KineticOperator& op, const std::vector<DownwindGroup>& groups,
+                    std::span<Real> f, Real b, std::span<const Real> h) {
   const FaceGraph& g = op.graph();
   const VelocityGrid& grid = op.grid();
   const Index N = op.n_ordinates();
@@ -24,9 +21,11 @@ void sweep(const KineticOperator& op, const std::vector<DownwindGroup>& groups,
       if (c >= op.n_owned_cells()) continue;  // ghosts come from their owners
       const Real vnu = g.cell_volume[c] * op.collision_frequency(c);
       const std::span<const Real> feq = op.equilibrium(c);
+      const Real bv = b * g.cell_volume[c];
       for (std::size_t j = 0; j < m; ++j) {
-        numerator[j] = vnu * feq[group.ordinates[j]];
-        denominator[j] = vnu;
+        const Index k = group.ordinates[j];
+        numerator[j] = vnu * feq[k] + (bv != 0 ? bv * h[c * N + k] : 0.0);
+        denominator[j] = vnu + bv;
       }
       for (Index i = g.cell_face_offsets[c]; i < g.cell_face_offsets[c + 1]; ++i) {
         const Index face = g.cell_faces[i];
@@ -46,13 +45,10 @@ void sweep(const KineticOperator& op, const std::vector<DownwindGroup>& groups,
         }
       }
       Real* fc = f.data() + c * N;
-      for (std::size_t j = 0; j < m; ++j)
-        fc[group.ordinates[j]] = numerator[j] / denominator[j];
+      for (std::size_t j = 0; j < m; ++j) fc[group.ordinates[j]] = numerator[j] / denominator[j];
     }
   }
 }
-
-}  // namespace
 
 KineticSolveResult solve_sequential(KineticOperator& op, std::span<Real> f,
                                     const SequentialOptions& options) {
@@ -69,7 +65,7 @@ KineticSolveResult solve_sequential(KineticOperator& op, std::span<Real> f,
   const bool closed = op.is_closed();
   const Real mass = op.total_mass(f);
   while (!result.converged && result.iterations < options.max_iterations) {
-    sweep(op, groups, f);
+    downwind_sweep(op, groups, f);
     if (closed) op.restore_mass(f, mass);
     op.exchange_ghosts(f);  // ranks: block Jacobi between partitions, Gauss-Seidel within
     op.residual(f, r);
@@ -81,8 +77,7 @@ KineticSolveResult solve_sequential(KineticOperator& op, std::span<Real> f,
     if (!std::isfinite(result.residual_ratio)) break;
     if (options.monitor && !options.monitor(result.iterations, result.residual_ratio)) break;
   }
-  result.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 

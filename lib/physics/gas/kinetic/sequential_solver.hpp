@@ -22,17 +22,27 @@
 #include <span>
 
 #include "core/types.hpp"
+#include "physics/gas/kinetic/downwind_ordering.hpp"
 #include "physics/gas/kinetic/kinetic_operator.hpp"
 #include "physics/gas/kinetic/kinetic_solve_result.hpp"
 
 namespace rfmems {
 
 struct SequentialOptions {
-  Real tolerance = 1e-6;       // on ||r|| / ||r_0||
+  Real tolerance = 1e-6;  // on ||r|| / ||r_0||
   int max_iterations = 200000;
   // Called after every iteration with (iteration, ratio); return false to stop.
   std::function<bool(int, Real)> monitor;
 };
+
+// One sweep over every group, with the collision term lagged (the sequential iteration), and
+// optionally the implicit time term b V (f - h) of a backward-difference step (b = alpha / dt,
+// h the history part; b = 0: the steady equation):
+//   f_ck = (b V h_ck + V nu f_eq,ck - sum (c.S)^- f_up) / (b V + sum (c.S)^+ + V nu),
+// cells in downwind order so upwind neighbours already hold this sweep's values; ghost cells
+// are skipped (they come from their owners).
+void downwind_sweep(const KineticOperator& op, const std::vector<DownwindGroup>& groups,
+                    std::span<Real> f, Real b = 0, std::span<const Real> h = {});
 
 // Iterates f (length op.size(), the initial state on entry) to the steady state.
 KineticSolveResult solve_sequential(KineticOperator& op, std::span<Real> f,
