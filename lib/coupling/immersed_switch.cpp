@@ -9,7 +9,7 @@
 
 #include "core/error.hpp"
 #include "core/reduced_inertia_system.hpp"
-#include "coupling/aitken_relaxation.hpp"
+#include "coupling/displacement_control_fixed_point.hpp"
 #include "ibm/force_transfer.hpp"
 #include "solvers/ida_integrator.hpp"
 #include "solvers/klu_factorization.hpp"
@@ -30,12 +30,6 @@ struct ScopedCpu {
   double start = cpu_now();
   ~ScopedCpu() { sink += cpu_now() - start; }
 };
-
-Real max_abs(std::span<const Real> v) {
-  Real m = 0;
-  for (Real x : v) m = std::max(m, std::abs(x));
-  return m;
-}
 
 // M u'' + K u - f(u) - f_gas = 0 with the lagged, gap-scaled IBM load (see the header).
 class LaggedLoadStructure : public SecondOrderOperator {
@@ -369,27 +363,16 @@ QuasiStaticPullIn ImmersedSwitch::trace_quasi_static(const QuasiStaticOptions& o
     if (from.point.displacement != 0)
       for (Real& v : s.state) v *= delta / from.point.displacement;
     std::vector<Real>& u = s.state;
-    std::vector<Real> residual_prev, residual(n);
-    Real omega = 1.0, lambda = 0;
-    int it = 0;
-    for (; it < 200; ++it) {
-      std::vector<Real> z = electrostatic_load(u, 1.0).force;
+    const auto load_per_volt2 = [&](std::span<const Real> state) {
       ++solves;
-      stiffness.solve(z);
-      lambda = delta / z[c];
-      for (Index i = 0; i < n; ++i) residual[i] = lambda * z[i] - u[i];
-      if (max_abs(residual) <= coupling_tolerance * std::abs(delta)) {
-        for (Index i = 0; i < n; ++i) u[i] += residual[i];
-        break;
-      }
-      if (!residual_prev.empty()) omega = aitken_factor(omega, residual, residual_prev);
-      for (Index i = 0; i < n; ++i) u[i] += omega * residual[i];
-      residual_prev = residual;
-    }
-    if (it == 200 || lambda < 0)
+      return electrostatic_load(state, 1.0).force;
+    };
+    const DisplacementControlResult r =
+        relax_displacement_control(stiffness, load_per_volt2, c, delta, coupling_tolerance, 200, u);
+    if (!r.converged || r.voltage_squared < 0)
       throw SolverError(
           fmt::format("immersed switch: quasi-static coupling failed at delta = {:.4e} m", delta));
-    s.point = {delta, std::sqrt(lambda), min_gap(u), true, it + 1};
+    s.point = {delta, std::sqrt(r.voltage_squared), min_gap(u), true, r.iterations + 1};
     return s;
   };
   FoldSample rest{{0.0, 0.0, gap0_, true, 0}, std::vector<Real>(n, 0.0)};

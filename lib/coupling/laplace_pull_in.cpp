@@ -7,22 +7,12 @@
 #include <map>
 
 #include "core/error.hpp"
-#include "coupling/aitken_relaxation.hpp"
+#include "coupling/displacement_control_fixed_point.hpp"
 #include "physics/electrostatics/electrostatic_solver.hpp"
 #include "physics/electrostatics/gap_mesh.hpp"
 #include "solvers/klu_factorization.hpp"
 
 namespace rfmems {
-
-namespace {
-
-Real max_abs(std::span<const Real> v) {
-  Real m = 0;
-  for (Real x : v) m = std::max(m, std::abs(x));
-  return m;
-}
-
-}  // namespace
 
 LaplacePullIn trace_pull_in_laplace(ElasticityScene& beam, const std::string& bottom_patch,
                                     Real gap, const ElectrodeExtent& electrode, Index control,
@@ -118,23 +108,12 @@ LaplacePullIn trace_pull_in_laplace(ElasticityScene& beam, const std::string& bo
     if (from.point.displacement != 0)
       for (Real& v : s.state) v *= delta / from.point.displacement;
     std::vector<Real>& u = s.state;
-    std::vector<Real> residual_prev, residual(n);
-    Real omega = 1.0, lambda = 0;
-    int it = 0;
-    for (; it < options.max_coupling_iterations; ++it) {
-      std::vector<Real> z = load_per_volt2(u);
-      stiffness.solve(z);
-      lambda = delta / z[control];
-      for (Index i = 0; i < n; ++i) residual[i] = lambda * z[i] - u[i];
-      if (max_abs(residual) <= options.coupling_tolerance * std::abs(delta)) {
-        for (Index i = 0; i < n; ++i) u[i] += residual[i];
-        break;
-      }
-      if (!residual_prev.empty()) omega = aitken_factor(omega, residual, residual_prev);
-      for (Index i = 0; i < n; ++i) u[i] += omega * residual[i];
-      residual_prev = residual;
-    }
-    if (it == options.max_coupling_iterations)
+    const DisplacementControlResult r =
+        relax_displacement_control(stiffness, load_per_volt2, control, delta,
+                                   options.coupling_tolerance, options.max_coupling_iterations, u);
+    const Real lambda = r.voltage_squared;
+    const int it = r.iterations;
+    if (!r.converged)
       throw SolverError(
           fmt::format("Laplace pull-in: coupling not converged at delta = {:.4e} m "
                       "after {} iterations",

@@ -1,0 +1,59 @@
+// Displacement control of an electrostatically loaded structure by a relaxed fixed point (the
+// Laplace pull-in, laplace_pull_in.hpp, and the immersed switch, immersed_switch.hpp): for a
+// prescribed displacement delta of the control unknown, iterate
+//
+//   z = K^-1 q(u)  (q the load per V^2 at u),  lambda = delta / z_control,
+//   u <- u + omega (lambda z - u),  omega by Aitken's Delta^2 (aitken_relaxation.hpp),
+//
+// until ||lambda z - u||_inf <= tolerance |delta|; then u_control = delta and V^2 = lambda.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <span>
+#include <vector>
+
+#include "core/types.hpp"
+#include "coupling/aitken_relaxation.hpp"
+#include "solvers/klu_factorization.hpp"
+
+namespace rfmems {
+
+struct DisplacementControlResult {
+  Real voltage_squared = 0;  // lambda of the last iterate
+  int iterations = 0;        // the index of the last iteration (max_iterations: not converged)
+  bool converged = false;
+};
+
+// u: the start on entry (e.g. the last solved state scaled to delta), the iterate on return.
+// load_per_volt2(u) returns q(u) as a std::vector<Real> of u's length.
+template <class LoadPerVolt2>
+DisplacementControlResult relax_displacement_control(KluFactorization& stiffness,
+                                                     LoadPerVolt2&& load_per_volt2, Index control,
+                                                     Real delta, Real tolerance, int max_iterations,
+                                                     std::vector<Real>& u) {
+  const std::size_t n = u.size();
+  std::vector<Real> residual_prev, residual(n);
+  Real omega = 1.0;
+  DisplacementControlResult out;
+  for (; out.iterations < max_iterations; ++out.iterations) {
+    std::vector<Real> z = load_per_volt2(u);
+    stiffness.solve(z);
+    out.voltage_squared = delta / z[control];
+    Real largest = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      residual[i] = out.voltage_squared * z[i] - u[i];
+      largest = std::max(largest, std::abs(residual[i]));
+    }
+    if (largest <= tolerance * std::abs(delta)) {
+      for (std::size_t i = 0; i < n; ++i) u[i] += residual[i];
+      out.converged = true;
+      break;
+    }
+    if (!residual_prev.empty()) omega = aitken_factor(omega, residual, residual_prev);
+    for (std::size_t i = 0; i < n; ++i) u[i] += omega * residual[i];
+    residual_prev = residual;
+  }
+  return out;
+}
+
+}  // namespace rfmems
