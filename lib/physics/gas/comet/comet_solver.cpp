@@ -178,7 +178,7 @@ void CometSolver::cycle(int l, CometCycle shape) {
     Real* fc = &f[c * n];
     Real theta = 1.0;
     for (Index k = 0; k < n; ++k)
-      if (fc[k] + e[k] < 0.1 * fc[k]) theta = std::min(theta, 0.9 * fc[k] / -e[k]);
+      if (fc[k] > 0 && fc[k] + e[k] < 0.1 * fc[k]) theta = std::min(theta, 0.9 * fc[k] / -e[k]);
     if (theta < 1.0) ++damped_prolongations_;
     for (Index k = 0; k < n; ++k) fc[k] += theta * e[k];
   }

@@ -161,10 +161,12 @@ void PointCoupledSmoother::conserved_tensor_step(Index c, std::span<Real> f,
 
 void PointCoupledSmoother::apply_step(std::span<Real> fc) {
   const Index n = op_.n_ordinates();
-  // Positivity: damp the step so that no ordinate falls below a tenth of its value.
+  // Positivity: damp the step so that no ordinate falls below a tenth of its value (ordinates
+  // already <= 0, possible with the second-order correction, are not damped).
   Real theta = 1.0;
   for (Index k = 0; k < n; ++k)
-    if (fc[k] + step_[k] < 0.1 * fc[k]) theta = std::min(theta, 0.9 * fc[k] / -step_[k]);
+    if (fc[k] > 0 && fc[k] + step_[k] < 0.1 * fc[k])
+      theta = std::min(theta, 0.9 * fc[k] / -step_[k]);
   if (theta < 1.0) ++damped_steps_;
   for (Index k = 0; k < n; ++k) fc[k] += theta * step_[k];
 }

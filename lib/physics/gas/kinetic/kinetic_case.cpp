@@ -41,6 +41,13 @@ KineticSolverSettings read_kinetic_solver_settings(const CaseNode& node) {
   s.tolerance = node.get_real("tolerance", 1e-6, Range::open(0, 1));
   s.max_iterations =
       static_cast<int>(node.get_int("max_iterations", 200000, Range::closed(1, 1e9)));
+  s.transport.order = transport_order_from_name(
+      node.get_choice("transport", {"first_order", "second_order"}, "first_order"));
+  s.transport.limiter = slope_limiter_from_name(node.get_choice(
+      "limiter", {"venkatakrishnan", "barth_jespersen", "none"}, "venkatakrishnan"));
+  s.transport.venkatakrishnan_k = node.get_real("limiter_k", 1.0, Range::positive());
+  s.transport.reconstruct_boundaries =
+      node.has("boundary_reconstruction") ? node.get_bool("boundary_reconstruction") : true;
   s.node = node;
   return s;
 }
@@ -61,10 +68,10 @@ KineticScene build_kinetic_scene(const CaseNode& root, const std::string& case_d
   const bool has_density = initial.has("density"), has_knudsen = initial.has("knudsen");
   if (has_density == has_knudsen)
     initial.fail("density", "give exactly one of 'density' and 'knudsen'");
-  scene.initial.rho =
-      has_density ? initial.get_quantity("density", Dimension::Density, Range::positive())
-                  : gas.density_for_knudsen(initial.get_real("knudsen", Range::positive()),
-                                            scene.initial.T, scene.reference_length);
+  scene.initial.rho = has_density
+                          ? initial.get_quantity("density", Dimension::Density, Range::positive())
+                          : gas.density_for_knudsen(initial.get_real("knudsen", Range::positive()),
+                                                    scene.initial.T, scene.reference_length);
   scene.initial.u = initial.has("velocity")
                         ? initial.get_vec3_quantity("velocity", Dimension::Velocity)
                         : Vec3::Zero();
@@ -104,8 +111,7 @@ KineticScene build_kinetic_scene(const CaseNode& root, const std::string& case_d
   if (!comm.is_serial()) {
     // This rank's part; its patches by name (a part may lack some), and the faces closing
     // its ghost layer ("processor") get a placeholder: only ghost cells touch them.
-    scene.distributed =
-        std::make_unique<DistributedMesh>(distribute_mesh(*scene.mesh, comm, 1));
+    scene.distributed = std::make_unique<DistributedMesh>(distribute_mesh(*scene.mesh, comm, 1));
     const FaceGraph global_graph = std::move(*scene.graph);
     *scene.graph = face_graph_of(scene.distributed->local.mesh);
     std::vector<KineticBoundary> local_bcs;
@@ -115,9 +121,9 @@ KineticScene build_kinetic_scene(const CaseNode& root, const std::string& case_d
     }
     bcs = std::move(local_bcs);
   }
-  scene.op =
-      std::make_unique<KineticOperator>(*scene.graph, std::move(grid), gas, std::move(bcs));
+  scene.op = std::make_unique<KineticOperator>(*scene.graph, std::move(grid), gas, std::move(bcs));
   if (scene.distributed) scene.op->set_parallel(comm, &scene.distributed->exchange);
+  scene.op->set_transport(scene.solver.transport);
   return scene;
 }
 

@@ -23,6 +23,10 @@
 //     type: sequential                   # sequential | comet (registry below)
 //     tolerance: 1e-6                    # on ||r||_2 / ||r_0||_2
 //     max_iterations: 200000
+//     transport: first_order             # | second_order (second_order_transport.hpp)
+//     limiter: venkatakrishnan           # second order: | barth_jespersen | none
+//     limiter_k: 1                       # Venkatakrishnan's K
+//     boundary_reconstruction: true      # second order: reconstructed values at boundaries
 //   output:
 //     forces: [top, bottom]              # patches whose force / heat flow is reported
 //                                        # (default: every wall patch)
@@ -48,6 +52,7 @@ struct KineticSolverSettings {
   std::string type = "sequential";
   Real tolerance = 1e-6;
   int max_iterations = 200000;
+  TransportScheme transport;     // applied to the scene's operator
   std::optional<CaseNode> node;  // the whole `solver:` map, for solver-specific keys
 };
 

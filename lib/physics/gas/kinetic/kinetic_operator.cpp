@@ -85,8 +85,92 @@ void KineticOperator::face_values(Index face, std::span<const Real> f, std::span
     external_->fill(face, f, out);
     return;
   }
-  fill_boundary_face(boundaries_[p], g.face_area[face], cell(f, g.face_owner[face]), grid_,
-                     reflection(face), patch_maxwellian_[p], out);
+  const Index owner = g.face_owner[face];
+  if (!(second_order() && transport_.reconstruct_boundaries && owner < n_owned_cells())) {
+    fill_boundary_face(boundaries_[p], g.face_area[face], cell(f, owner), grid_, reflection(face),
+                       patch_maxwellian_[p], out);
+    return;
+  }
+  // The owner's reconstructed values at the face feed the condition (outgoing ordinates, the
+  // diffuse wall's re-emission, the reflection), from the owner's slopes at this f.
+  const Index N = n_ordinates();
+  const int D = reconstruction_->dim();
+  std::vector<Real> slopes(N * D), owner_face(N);
+  reconstruction_->cell_slopes(owner, f, N, transport_, true, slopes);
+  const Vec3 x = g.face_centroid[face] - g.cell_centroid[owner];
+  const std::span<const Real> fo = cell(f, owner);
+  for (Index k = 0; k < N; ++k) {
+    Real v = fo[k];
+    for (int d = 0; d < D; ++d) v += slopes[k * D + d] * x[d];
+    owner_face[k] = v;
+  }
+  fill_boundary_face(boundaries_[p], g.face_area[face], owner_face, grid_, reflection(face),
+                     patch_maxwellian_[p], out);
+}
+
+void KineticOperator::set_transport(const TransportScheme& scheme) {
+  transport_ = scheme;
+  if (!second_order()) {
+    reconstruction_.reset();
+    correction_.clear();
+    slopes_.clear();
+    return;
+  }
+  reconstruction_ = std::make_unique<LinearReconstruction>(*graph_);
+  correction_.assign(n_cells() * n_ordinates(), 0.0);
+  slopes_.assign(n_cells() * n_ordinates() * reconstruction_->dim(), 0.0);
+}
+
+void KineticOperator::update_transport_correction(std::span<const Real> f) {
+  if (!second_order()) return;
+  const FaceGraph& g = *graph_;
+  const Index N = n_ordinates();
+  const int D = reconstruction_->dim();
+  reconstruction_->limited_slopes(f, N, transport_, transport_.reconstruct_boundaries, slopes_);
+  // Ghost cells' slopes from their owners (their stencils are incomplete here).
+  if (exchange_) exchange_->exchange(slopes_, static_cast<int>(N * D));
+  std::fill(correction_.begin(), correction_.end(), 0.0);
+  // Interior faces: (c.S) times the upwind side's reconstruction increment, + to the owner,
+  // - to the neighbour (conservative).
+  for (Index face = 0; face < g.n_interior_faces; ++face) {
+    const Index o = g.face_owner[face], nb = g.face_neighbour[face];
+    const Vec3& S = g.face_area[face];
+    const Vec3 xo = g.face_centroid[face] - g.cell_centroid[o];
+    const Vec3 xn = g.face_centroid[face] - g.cell_centroid[nb];
+    const Real* so = slopes_.data() + o * N * D;
+    const Real* sn = slopes_.data() + nb * N * D;
+    Real* ro = correction_.data() + o * N;
+    Real* rn = correction_.data() + nb * N;
+    for (Index k = 0; k < N; ++k) {
+      const Real s = grid_.c[k].dot(S);
+      const Real* slope = s > 0 ? so + k * D : sn + k * D;
+      const Vec3& x = s > 0 ? xo : xn;
+      Real delta = 0;
+      for (int d = 0; d < D; ++d) delta += slope[d] * x[d];
+      ro[k] += s * delta;
+      rn[k] -= s * delta;
+    }
+  }
+  // Boundary faces with reconstruction: the incoming values (cached) already are the
+  // second-order ones; the outgoing flux gains (c.S)^+ (f_face - f_c).
+  if (!transport_.reconstruct_boundaries) return;
+  for (Index face = g.n_interior_faces; face < g.n_faces(); ++face) {
+    const Index o = g.face_owner[face];
+    if (o >= n_owned_cells() ||
+        boundaries_[g.face_patch[face]].kind == KineticBoundaryKind::External)
+      continue;
+    const Vec3& S = g.face_area[face];
+    const Vec3 xo = g.face_centroid[face] - g.cell_centroid[o];
+    const Real* so = slopes_.data() + o * N * D;
+    Real* ro = correction_.data() + o * N;
+    for (Index k = 0; k < N; ++k) {
+      const Real s = grid_.c[k].dot(S);
+      if (s <= 0) continue;
+      Real delta = 0;
+      for (int d = 0; d < D; ++d) delta += so[k * D + d] * xo[d];
+      ro[k] += s * delta;
+    }
+  }
 }
 
 void KineticOperator::update_boundary_values(Index face, std::span<const Real> f) {
@@ -135,6 +219,10 @@ void KineticOperator::incoming_flux(Index c, std::span<const Real> f, std::span<
                              : f.data() + (owner ? g.face_neighbour[face] : g.face_owner[face]) * N;
     for (Index k = 0; k < N; ++k) in[k] += std::min(grid_.c[k].dot(S), 0.0) * upwind[k];
   }
+  if (!correction_.empty()) {
+    const Real* d = correction_.data() + c * N;
+    for (Index k = 0; k < N; ++k) in[k] += d[k];
+  }
 }
 
 void KineticOperator::residual_frozen(std::span<const Real> f, std::span<Real> r) const {
@@ -155,6 +243,7 @@ void KineticOperator::residual_frozen(std::span<const Real> f, std::span<Real> r
 void KineticOperator::residual(std::span<const Real> f, std::span<Real> r) {
   update_boundary_values(f);
   update_collision(f);
+  update_transport_correction(f);
   residual_frozen(f, r);
 }
 

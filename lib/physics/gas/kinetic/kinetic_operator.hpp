@@ -26,11 +26,20 @@
 // exchange_ghosts after they change f; norms, masses and wall integrals are summed over the
 // ranks (owned cells and their faces only), so every rank sees the global figures.
 //
+// Second-order transport (second_order_transport.hpp, set_transport): the residual gains the
+// lagged deferred correction D(f) = F_2(f) - F_1(f), refreshed by residual(f, r) (and
+// update_transport_correction) from the state it is evaluated at, and carried by
+// incoming_flux (so every solver that reassembles the residual from the pieces sees it, the
+// downwind sweep through transport_correction). With boundary reconstruction the cached
+// boundary face values (and the wall integrals) are those of the owner's reconstructed values.
+// First order (the default): no correction, the operator is the first-order one above.
+//
 // Residual scaling shared by every kinetic solver: ||r||_2 over all owned (cell, ordinate)
 // pairs, reported as ||r||_2 / ||r_0||_2 with r_0 the residual of the initial state;
 // "converged" means that ratio <= 1e-6.
 #pragma once
 #include <functional>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -43,6 +52,7 @@
 #include "physics/gas/kinetic/kinetic_boundary.hpp"
 #include "physics/gas/kinetic/kinetic_gas.hpp"
 #include "physics/gas/kinetic/macroscopic_state.hpp"
+#include "physics/gas/kinetic/second_order_transport.hpp"
 #include "physics/gas/kinetic/velocity_grid.hpp"
 
 namespace rfmems {
@@ -100,6 +110,19 @@ class KineticOperator {
   long equilibrium_iterations() const { return equilibrium_iterations_; }
 
   // --- transport ---
+  // The face-value scheme (default first order). Second order builds the reconstruction's
+  // geometry; the correction is zero until the next residual / update_transport_correction.
+  void set_transport(const TransportScheme& scheme);
+  const TransportScheme& transport() const { return transport_; }
+  bool second_order() const { return transport_.order == TransportOrder::SecondOrder; }
+  // Recomputes D(f) = F_2(f) - F_1(f) for the owned cells (second order; else a no-op); the
+  // boundary values must be current (update_boundary_values(f)).
+  void update_transport_correction(std::span<const Real> f);
+  // D of cell c (all ordinates), empty with first order.
+  std::span<const Real> transport_correction(Index c) const {
+    if (correction_.empty()) return {};
+    return {correction_.data() + c * n_ordinates(), static_cast<std::size_t>(n_ordinates())};
+  }
   // The source of the face values of External patches (external_face_values.hpp); required
   // before any face value of such a patch is asked for. Null detaches it.
   void set_external_face_values(ExternalFaceValues* source) { external_ = source; }
@@ -113,7 +136,7 @@ class KineticOperator {
   // out_k = sum_f (c_k . S_f)^+ over the faces of cell c (>= 0).
   void outgoing_coefficients(Index c, std::span<Real> out) const;
   // in_k = sum_f (c_k . S_f)^- f_k,upwind (<= 0): neighbours' values from f, boundary faces'
-  // from the cached boundary values.
+  // from the cached boundary values; plus the lagged correction D_ck with second order.
   void incoming_flux(Index c, std::span<const Real> f, std::span<Real> in) const;
   // Reflection map of a boundary face (empty unless its condition needs one).
   std::span<const Index> reflection(Index face) const;
@@ -172,10 +195,15 @@ class KineticOperator {
   std::vector<Real> nu_;
   long equilibrium_iterations_ = 0;
 
-  std::vector<Real> boundary_values_;          // (face - n_interior) * N + k
-  std::vector<Index> reflection_offset_;       // per boundary face, -1 if none
+  std::vector<Real> boundary_values_;     // (face - n_interior) * N + k
+  std::vector<Index> reflection_offset_;  // per boundary face, -1 if none
   std::vector<Index> reflections_;
   std::vector<std::vector<Real>> patch_maxwellian_;  // boundary_maxwellian per patch
+
+  TransportScheme transport_;
+  std::unique_ptr<LinearReconstruction> reconstruction_;  // second order only
+  std::vector<Real> correction_;                          // D, c * N + k (second order only)
+  std::vector<Real> slopes_;                              // limited slopes, (c * N + k) * dim + d
 };
 
 }  // namespace rfmems

@@ -44,6 +44,10 @@ void downwind_sweep(const KineticOperator& op, const std::vector<DownwindGroup>&
             numerator[j] -= d * upwind[k];
         }
       }
+      // Second-order transport: the lagged correction D = F_2 - F_1 on the right-hand side.
+      const std::span<const Real> correction = op.transport_correction(c);
+      if (!correction.empty())
+        for (std::size_t j = 0; j < m; ++j) numerator[j] -= correction[group.ordinates[j]];
       Real* fc = f.data() + c * N;
       for (std::size_t j = 0; j < m; ++j) fc[group.ordinates[j]] = numerator[j] / denominator[j];
     }
