@@ -1,7 +1,8 @@
 // Reynolds-film damping of the gas damping study's beam (issue 8; docs/gas_damping.md): the
 // quasi-static, linearised Reynolds equation with Veijola's effective viscosity on a strip
 // (lib/physics/gas/reynolds_film.hpp, reynolds_quasi_static.hpp), width w = 45 um (and
-// w + 2 dL with Veijola-Pursula-Raback's edge elongation dL = 0.8488 g (1 + 2.676 Kn^0.659)),
+// w + 2 dL with Veijola-Pursula-Raback's edge elongation dL = 0.8488 g (1 + 2.676 Kn^0.659),
+// coefficients unverified: docs/gas_damping.md "Edge correction"),
 // gap 7 um, argon at 273.15 K (mu = 2.117e-5 Pa s, Bird's mean free path), Open long sides,
 // per pressure of the sweep: the damping per unit length c = -F / (g' L), the analytic
 // mu_eff w^3 / g^3 it must equal up to the scheme's factor 1 + 2 (h/w)^2

@@ -22,7 +22,9 @@ coefficient c = F / V:
   Reynolds film, strip, quasi-static incompressible (lib/physics/gas/reynolds_*):
       c = mu_eff w^3 / g^3,  mu_eff = mu / Q(Kn),  Q = 1 + 9.638 Kn^1.159 (Veijola 1995)
     and with the edge elongation for a strip (Veijola, Pursula, Raback 2005), w -> w + 2 dL,
-      dL = 0.8488 g (1 + 2.676 Kn^0.659).
+      dL = 0.8488 g (1 + 2.676 Kn^0.659)
+    (coefficients as recalled; not found in any searchable copy of the paper, 2026-12-02:
+    docs/gas_damping.md "Edge correction").
 Damping ratio zeta = c / (2 m omega0) with m = rho_Ni w t (8912 kg/m^3, per unit depth) and
 omega0 = 3.516 / L^2 sqrt(E t^2 / (12 rho_Ni)), the fundamental of the cantilever switch's
 beam (L = 45 um, t = 1.5 um, E = 200 GPa): the ratio that beam would have if its damping per
@@ -130,7 +132,7 @@ def run(args, p, gap_refine=1, refine=1, points=None):
     rho = p / (R * T)
     kn = knudsen(p)
     solver = "comet" if kn < 1 else "sequential"
-    out = f"{args.prefix}_p{p:g}_r{refine}_g{gap_refine}_n{points}.h5"
+    out = f"{args.prefix}_p{p:g}_r{refine}_g{gap_refine}_n{points}_{args.transport}.h5"
     cmd = [args.driver, args.case, "--json", "--quiet", "-o", out,
            "--set", f"initial.density={rho!r} kg/m^3",
            "--set", f"boundaries.top.p={p!r} Pa", "--set", f"boundaries.right.p={p!r} Pa",
@@ -138,7 +140,10 @@ def run(args, p, gap_refine=1, refine=1, points=None):
            "--set", f"mesh.parameters.gap_refine={gap_refine}",
            "--set", f"mesh.parameters.refine={refine}",
            "--set", f"velocity_grid.points=[{points}, {points}, {points}]",
-           "--set", f"solver.type={solver}", "--set", f"solver.tolerance={args.tolerance}"]
+           "--set", f"solver.type={solver}", "--set", f"solver.tolerance={args.tolerance}",
+           "--set", f"solver.transport={args.transport}"]
+    for extra in args.set:
+        cmd += ["--set", extra]
     start = time.time()
     used = resource.getrusage(resource.RUSAGE_CHILDREN)
     proc = subprocess.run(cmd, capture_output=True, text=True)
@@ -151,7 +156,8 @@ def run(args, p, gap_refine=1, refine=1, points=None):
     d = json.loads(proc.stdout)
     c = 2 * d["walls"]["beam"]["force"][1] / V  # the half domain's force, doubled
     row = {"pressure": p, "knudsen": kn, "refine": refine, "gap_refine": gap_refine,
-           "cells": d["mesh"]["cells"], "points": points, "solver": solver, "iterations": d["solver"]["iterations"],
+           "cells": d["mesh"]["cells"], "points": points, "solver": solver,
+           "transport": args.transport, "extra": args.set, "iterations": d["solver"]["iterations"],
            "solver_seconds": d["solver"]["seconds"], "wall_seconds": wall,
            "cpu_seconds": cpu,
            "load_average": os.getloadavg()[0],
@@ -178,6 +184,10 @@ def main():
     ap.add_argument("--pressures", default="0.1,1,10,100,300,1000,3000,1e4,3e4,1e5")
     ap.add_argument("--points", type=int, default=8, help="velocities per direction")
     ap.add_argument("--tolerance", type=float, default=1e-6)
+    ap.add_argument("--transport", default="first_order", choices=["first_order", "second_order"],
+                    help="solver.transport of every run (kinetic_case.hpp)")
+    ap.add_argument("--set", action="append", default=[],
+                    help="further driver --set KEY=VALUE for every run (repeatable)")
     ap.add_argument("--continuum", default="",
                     help="gap refinements at the highest pressure, e.g. 2,4,8 (1 is the sweep)")
     ap.add_argument("--refine", default="",
