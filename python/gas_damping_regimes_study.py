@@ -184,8 +184,9 @@ def main():
     ap.add_argument("--pressures", default="0.1,1,10,100,300,1000,3000,1e4,3e4,1e5")
     ap.add_argument("--points", type=int, default=8, help="velocities per direction")
     ap.add_argument("--tolerance", type=float, default=1e-6)
-    ap.add_argument("--transport", default="first_order", choices=["first_order", "second_order"],
-                    help="solver.transport of every run (kinetic_case.hpp)")
+    ap.add_argument("--transport", default="second_order", choices=["first_order", "second_order"],
+                    help="solver.transport of every run (kinetic_case.hpp; default: the case "
+                         "file's, second_order)")
     ap.add_argument("--set", action="append", default=[],
                     help="further driver --set KEY=VALUE for every run (repeatable)")
     ap.add_argument("--continuum", default="",

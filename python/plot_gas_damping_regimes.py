@@ -22,19 +22,22 @@ import gas_damping_regimes_study as study  # noqa: E402
 
 
 def richardson(rows):
-    """First-order extrapolation of the continuum-end runs refined as a whole (refine r):
-    c(h) = c0 + A h from the two finest, and the observed order from three."""
+    """Extrapolation of the continuum-end runs refined as a whole (refine r) with the scheme's
+    order (1, or 2 for rows with transport second_order): c(h) = c0 + A h^q from the two
+    finest, and the observed order from three."""
     rs = sorted((r for r in rows if r["gap_refine"] == 1 and r["points"] == rows[0]["points"]),
                 key=lambda r: r["refine"])
     if len(rs) < 2:
         return None
     c = [r["esbgk"] for r in rs]
     ratio = rs[-1]["refine"] / rs[-2]["refine"]
-    extrapolated = (ratio * c[-1] - c[-2]) / (ratio - 1)
+    q = 2 if rs[-1].get("transport") == "second_order" else 1
+    extrapolated = (ratio**q * c[-1] - c[-2]) / (ratio**q - 1)
     order = None
     if len(rs) >= 3 and (c[-2] - c[-1]) != 0:
         order = np.log(abs((c[-3] - c[-2]) / (c[-2] - c[-1]))) / np.log(ratio)
     return {"pressure": rs[-1]["pressure"], "extrapolated": extrapolated, "order": order,
+            "assumed_order": q,
             "refines": [r["refine"] for r in rs], "values": c}
 
 
@@ -81,7 +84,8 @@ def main():
     ax.loglog(p[cont], [zeta(study.reynolds(x, edge=True, rarefied=False)) for x in p[cont]],
               "C2:", label="continuum Reynolds + elongation (no slip)")
     ax.loglog([r["pressure"] for r in sweep], [r["damping_ratio_esbgk"] for r in sweep], "C0o-",
-              label=f"ESBGK, {sweep[0]['cells']} cells, {base}$^3$ velocities")
+              label=f"ESBGK, {sweep[0]['cells']} cells, {base}$^3$ velocities"
+              + (", 2nd-order transport" if sweep[0].get("transport") == "second_order" else ""))
     for r in rows:
         r.setdefault("refine", 1)
     meshed = [r for r in rows if r["refine"] > 1 and r["points"] == base]

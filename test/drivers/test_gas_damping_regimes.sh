@@ -1,18 +1,19 @@
 #!/usr/bin/env bash
 # rfmems-gas on cases/gas_damping_regimes (issue 8, docs/gas_damping.md) at both ends of the
-# pressure range, 420 cells, 8^3 velocities (~20 s):
+# pressure range, 420 cells, 8^3 velocities, the case's second-order transport (~25 s CPU):
 #  - free molecular (1 Pa and 10 Pa, Kn = 904 and 90 on the 7 um gap): the damping is
 #    proportional to p (collisionless: Kn no longer matters) to 1 % (measured 0.2 %), and at
 #    least the isolated-beam closed form on the same velocity grid (a lower bound: the gas
 #    trapped under the beam adds to it; measured 4.2x); the test-particle Monte Carlo
 #    reference (python/free_molecular_beam_tpmc.py) reproduces the isolated-beam closed form
 #    without the substrate (to 1 %, measured +0.07 % +- 0.13 %), and ESBGK on this mesh is
-#    within 15 % of its beam-over-substrate value (measured -12.7 %: first-order upwinding of
-#    a collisionless flow, -7.6 % at 6,720 cells; docs/gas_damping.md);
+#    within 7 % of its beam-over-substrate value (second order: measured -5.4 % at 0.1 Pa,
+#    mostly the 8^3 velocity grid's; first order was -12.7 %; docs/gas_damping.md);
 #  - continuum end (1e5 Pa, Kn = 0.009, COMET): converged; the gas the beam pushes leaves
 #    through the pressure boundaries (mass balance to 1e-3 of the beam's flow); the damping is
-#    above the continuum Reynolds film with edge elongation (upwinding's numerical viscosity,
-#    mu_num / mu ~ h / (2 lambda) = 7 across this gap, only adds dissipation).
+#    above the continuum Reynolds film with edge elongation and within 1.6x of it (second
+#    order, measured 1.49x; first-order upwinding's numerical viscosity, mu_num / mu ~
+#    h / (2 lambda) = 7 across this gap, made it 7.5x).
 #
 # Usage: bash test_gas_damping_regimes.sh <directory of the drivers> <source directory>
 set -uo pipefail
@@ -63,10 +64,10 @@ print(f"test-particle MC: isolated {iso['ratio_to_closed_form']:.4f} of the clos
       f"over the substrate c = {over['c']:.4e} +- {over['standard_error']:.1e}, ESBGK {c1:.4e} "
       f"({100 * (c1 / over['c'] - 1):+.1f} %)")
 assert abs(iso["ratio_to_closed_form"] - 1) < 0.01, iso
-assert abs(c1 / over["c"] - 1) < 0.15, (c1, over)
+assert abs(c1 / over["c"] - 1) < 0.07, (c1, over)
 PY
 then
-  pass "free molecular: damping proportional to p, above the isolated-beam closed form, within 15 % of the test-particle reference"
+  pass "free molecular: damping proportional to p, above the isolated-beam closed form, within 7 % of the test-particle reference"
 else
   fail "free molecular"
 fi
@@ -85,10 +86,10 @@ ref = study.reynolds(1e5, edge=True, rarefied=False)
 print(f"c = {c:.4e} N s/m^2 against continuum Reynolds + elongation {ref:.4e} ({c / ref:.2f}x); "
       f"mass balance {balance:.2e} of beam flow {beam:.2e} kg/(s m)")
 assert beam < 0 and abs(balance) < 1e-3 * abs(beam), b
-assert c > ref, (c, ref)
+assert ref < c < 1.6 * ref, (c, ref)
 PY
 then
-  pass "continuum end: converged, mass balanced, damping above the continuum reference"
+  pass "continuum end: converged, mass balanced, damping within 1.0-1.6x the continuum reference"
 else
   fail "continuum end"
 fi
