@@ -52,6 +52,11 @@ def main():
                                                            "gas_damping_regimes.png"))
     args = ap.parse_args()
     rows = [json.loads(line) for line in open(args.jsonl) if line.strip()]
+    rows = [r for r in rows if not r.get("extra")]  # variants (--set ...) are tables, not curves
+    # Rows of the other transport than the first row's: shown as points only.
+    scheme = rows[0].get("transport", "first_order")
+    other = [r for r in rows if r.get("transport", "first_order") != scheme]
+    rows = [r for r in rows if r.get("transport", "first_order") == scheme]
     base = min(r["points"] for r in rows)
     sweep = sorted((r for r in rows if r.get("refine", 1) == 1 and r["gap_refine"] == 1
                     and r["points"] == base), key=lambda r: r["pressure"])
@@ -107,6 +112,10 @@ def main():
         ax.loglog([r["pressure"] for r in vel], [r["damping_ratio_esbgk"] for r in vel], "C4s",
                   mfc="none", ls="none", label="ESBGK, " + ", ".join(
                       f"{n}$^3$" for n in sorted({r["points"] for r in vel})) + " velocities")
+    if other:
+        ax.loglog([r["pressure"] for r in other], [r["damping_ratio_esbgk"] for r in other], "C7x",
+                  ls="none", label="ESBGK, " + other[0].get("transport", "first_order").replace(
+                      "_", " ") + f", {other[0]['cells']} cells")
     ax.set_xlabel("pressure [Pa] (argon, 273.15 K)")
     ax.set_ylabel("damping ratio $\\zeta = c / (2 m \\omega_0)$")
     ax.set_title("Beam 45 x 1.5 $\\mu$m, 7 $\\mu$m over the substrate, moving at 0.1 m/s", fontsize=10)
