@@ -22,8 +22,7 @@ source "$SRC/test/drivers/common.sh"
 # rtol 1e-4 with this beam's first frequency (~385 kHz), bisection to 2 V.
 COARSE=(--set "mesh.cells=[25,2]" --set actuation.laplace.gap_cells=4 --set pull_in.mode=dynamic
         --set "pull_in.dynamic={end_time: 20 us, tolerance: 2 V, small_signal: 0.2}"
-        --set solver.rtol=1e-4 --set solver.error_weights=per_kind
-        --set solver.velocity_frequency=385kHz)
+        --set "solver={rtol: 1e-4, error_weights: per_kind, velocity_frequency: 385 kHz}")
 if "$DRIVER" "$PLANE" "${COARSE[@]}" -o "$WORK/dyn.h5" --json --quiet >"$WORK/dyn.json" \
     2>"$WORK/err"; then
   pass "switch_plane_laplace 25 x 2, dynamic, exits 0"
