@@ -354,16 +354,9 @@ int main(int argc, char** argv) {
     SwitchScene& s = sc->scene;
     const QuasiStaticPullIn qs = trace_pull_in(*s.actuation, s.control, sampling());
     const double qs_wall = t.wall();
-    // SwitchScene::make_transient_system passes StructuralModel::quasi_static_components(),
-    // which is empty for a plane beam, and ReducedInertiaSystem rejects an empty flag list
-    // ("0 flags for N unknowns"): the plane beam's system is built here with every
-    // component inertial (no gas: a plane scene has no film).
-    std::unique_ptr<SwitchSystem> system;
-    if (s.structure->quasi_static_components().empty())
-      system = std::make_unique<ActuatedStructureSystem>(
-          *s.actuation, std::vector<bool>(static_cast<std::size_t>(s.structure->structure().size()), false));
-    else
-      system = s.make_transient_system();
+    // A plane beam has no quasi-static components: every unknown is inertial (the
+    // ReducedInertiaSystem with no flags, since 018c69b).
+    const std::unique_ptr<SwitchSystem> system = s.make_transient_system();
     const DynamicPullIn d = find_dynamic_pull_in(*system, s.control, 0.8 * qs.pull_in_voltage,
                                                  1.02 * qs.pull_in_voltage, dyn_tolerance,
                                                  dynamic_options(s.gap));

@@ -58,6 +58,22 @@ DynamicOptions options(Real gap, Real rtol) {
   return o;
 }
 
+// The plane beam's parallel-plate transient system (docs/BENCHMARKS.md 7c's "noticed" defect:
+// it used to fail with "reduced inertia: 0 flags for N unknowns"): every unknown inertial,
+// [u (n); v (n)], classified as displacements and velocities.
+TEST(LaplaceDynamicSwitch, PlaneBeamTransientSystemKeepsEveryInertia) {
+  auto b = make_beam(25, 2, 4);
+  const Index n = b->elasticity->op->size();
+  const auto system = b->scene.make_transient_system();
+  ASSERT_EQ(system->size(), 2 * n);
+  const std::vector<StateKind> kinds = system->state_kinds();
+  ASSERT_EQ(static_cast<Index>(kinds.size()), 2 * n);
+  for (Index i = 0; i < n; ++i) {
+    EXPECT_EQ(kinds[i], StateKind::Displacement);
+    EXPECT_EQ(kinds[n + i], StateKind::Velocity);
+  }
+}
+
 // Staggered (the field once per accepted IDA step, gap-scaled lagged load inside it) against
 // implicit (the field in every residual call), a 300 V step (0.54 of the quasi-static V_PI)
 // to the first turning point at rtol 1e-5 (424 steps). The staggering error is first order in
