@@ -478,7 +478,8 @@ int main(int argc, char** argv) {
         std::to_string(nx) + "x" + std::to_string(ny) + "+gap" + std::to_string(gap_cells);
     Timer t;
     auto sc = load_scene(plane_case,
-                         {cells(nx, ny), "actuation.laplace.gap_cells=" + std::to_string(gap_cells)},
+                         {cells(nx, ny),
+                          "actuation.laplace.gap_cells=" + std::to_string(gap_cells)},
                          AnalysisType::Transient);
     SwitchScene& s = sc->scene;
     auto* beam = dynamic_cast<ElasticityScene*>(s.structure.get());

@@ -143,7 +143,8 @@ int run(const DriverOptions& options) {
                          {"case_text", case_file.text()},
                          {"case_effective", case_file.effective_text()},
                          {"model", scene.structure->kind()},
-                         {"electrostatics", summary["pull_in"]["electrostatics"].get<std::string>()},
+                         {"electrostatics",
+                          summary["pull_in"]["electrostatics"].get<std::string>()},
                          {"dynamic_electrostatics",
                           report.has_dynamic
                               ? summary["pull_in"]["dynamic"]["electrostatics"].get<std::string>()

@@ -409,7 +409,8 @@ Json pull_in_summary(const SwitchScene& scene, const PullInReport& report) {
                     {"runs", d.runs},
                     {"steps", d.steps},
                     {"residual_evals", d.residual_evals},
-                    {"electrostatics", report.dynamic_coupling.empty() ? "parallel_plate" : "laplace"},
+                    {"electrostatics",
+                     report.dynamic_coupling.empty() ? "parallel_plate" : "laplace"},
                     {"gas", scene.film ? "reynolds" : "none"},
                     {"waveform", report.waveform}};
     Json histories = Json::array();
