@@ -22,6 +22,16 @@
 //    plane + parallel-plate (25, 50, 100), bisection to --dyn-tolerance (0.1 V). The
 //    three-mesh Richardson value is reported as computed; with a pre-asymptotic coarsest mesh
 //    (the 25 x 2 beam) it is meaningless (docs/BENCHMARKS.md sec. 5c).
+// 2b. Dynamic V_PI with the full field (--sections laplace_dynamic; docs/BENCHMARKS.md sec. 27):
+//    plane + Laplace (coupling/laplace_dynamic_switch.hpp: the field recomputed once per IDA
+//    step, gap-scaled lagged load inside the step; beams nx x nx/12.5, gap cells 2 ny) against
+//    the plate + parallel-plate (monolithic IDA), the same bisection (0.8-1.02 x each model's
+//    own quasi-static V_PI, to --laplace-dyn-tolerance) and the same IDA settings for both:
+//    rtol --laplace-dyn-rtol (1e-4), order <= 2, per-kind error weights (state_tolerances.hpp:
+//    atol rtol g0 on displacements, rtol g0 omega_1 on velocities, omega_1 = 2 pi 131 kHz, the
+//    measured first mode of sec. 6e). The scalar atol 1e-4 g0 of item 2 puts 3.75e-10 m/s on
+//    the velocities and makes the plane beam take ~5500 steps per run (measured on 50 x 4),
+//    each with a field solve. Accuracy of each model against its own finer mesh.
 // 3. The default case (cases/switch_plate/case.yaml as the driver runs it: plate 40 x 4 +
 //    parallel-plate + Reynolds gas at 1 atm; quasi-static curve, then bisection to 0.5 V
 //    between 0.8 and 1.02 x the quasi-static V_PI): wall and CPU time of the scene build, the
@@ -33,6 +43,7 @@
 //
 // Output: one JSON object per line on stdout; progress on stderr.
 //   bench_pullin_models [--quick] [--plate-nx 20 40 80 160] [--plane-nx 50 100 200]
+//                       [--sections default quasi_static dynamic laplace_dynamic]
 #include <CLI/CLI.hpp>
 #include <time.h>
 
@@ -50,6 +61,7 @@
 #include <vector>
 
 #include "coupling/dynamic_pull_in.hpp"
+#include "coupling/laplace_dynamic_switch.hpp"
 #include "coupling/laplace_pull_in.hpp"
 #include "coupling/pull_in_study.hpp"
 #include "coupling/quasi_static_pull_in.hpp"
@@ -77,6 +89,16 @@ struct Timer {
 };
 
 
+
+// The 1-minute load average (/proc/loadavg), recorded beside each timing.
+double load_average_1min() {
+  double load = -1;
+  if (FILE* f = std::fopen("/proc/loadavg", "r")) {
+    if (std::fscanf(f, "%lf", &load) != 1) load = -1;
+    std::fclose(f);
+  }
+  return load;
+}
 
 std::string cells(int nx, int ny) { return "mesh.cells=[" + std::to_string(nx) + "," + std::to_string(ny) + "]"; }
 
@@ -179,6 +201,9 @@ int main(int argc, char** argv) {
   std::vector<int> plate_nx{20, 40, 80, 160}, plane_nx{50, 100, 200};
   std::vector<int> dyn_plate_nx{20, 40, 80}, dyn_plane_nx{25, 50, 100};
   double dyn_tolerance = 0.1;
+  std::vector<int> laplace_plate_nx{40, 80}, laplace_plane_nx{50, 100};
+  double laplace_tolerance = 0.1, laplace_rtol = 1e-4;
+  std::vector<std::string> sections{"default", "quasi_static", "dynamic", "laplace_dynamic"};
   bool quick = false;
   app.add_option("--cases", cases, "the repository's cases/ directory");
   app.add_option("--plate-nx", plate_nx, "plate meshes nx (ny = nx/10), quasi-static");
@@ -186,6 +211,11 @@ int main(int argc, char** argv) {
   app.add_option("--dyn-plate-nx", dyn_plate_nx, "plate meshes, dynamic");
   app.add_option("--dyn-plane-nx", dyn_plane_nx, "beam meshes, dynamic (parallel-plate)");
   app.add_option("--dyn-tolerance", dyn_tolerance, "bisection tolerance of the mesh studies [V]");
+  app.add_option("--laplace-plate-nx", laplace_plate_nx, "plate meshes of sec. 2b");
+  app.add_option("--laplace-plane-nx", laplace_plane_nx, "plane + Laplace meshes of sec. 2b");
+  app.add_option("--laplace-dyn-tolerance", laplace_tolerance, "bisection tolerance, sec. 2b [V]");
+  app.add_option("--laplace-dyn-rtol", laplace_rtol, "IDA rtol of sec. 2b");
+  app.add_option("--sections", sections, "default quasi_static dynamic laplace_dynamic");
   app.add_flag("--quick", quick, "smoke run: two coarse meshes per model");
   CLI11_PARSE(app, argc, argv);
   if (quick) {
@@ -194,13 +224,20 @@ int main(int argc, char** argv) {
     dyn_plate_nx = {20};
     dyn_plane_nx = {50};
     dyn_tolerance = 0.5;
+    laplace_plate_nx = {20};
+    laplace_plane_nx = {25};
+    laplace_tolerance = 0.5;
   }
+  auto wanted = [&](const std::string& name) {
+    return std::find(sections.begin(), sections.end(), name) != sections.end();
+  };
   const std::string plate_case = cases + "/switch_plate/case.yaml";
   const std::string plane_case = cases + "/switch_plane_laplace/case.yaml";
   OJson common{{"bench", "pullin_models"}};
 
   // ---- 3 first: the default case's complete dynamic study, as the driver runs it ----------
   for (const std::string gas : {"reynolds", "none"}) {
+    if (!wanted("default")) break;
     Timer total;
     auto sc = load_scene(plate_case, {"gas.model=" + gas}, AnalysisType::Transient);
     SwitchScene& s = sc->scene;
@@ -241,6 +278,7 @@ int main(int argc, char** argv) {
 
   // ---- 1. quasi-static V_PI on mesh sequences ------------------------------------------
   std::vector<Point> plate_qs, plane_qs;
+  if (!wanted("quasi_static")) plate_nx.clear(), plane_nx.clear();
   for (int nx : plate_nx) {
     const int ny = std::max(1, nx / 10);
     Timer t;
@@ -293,7 +331,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "qs plane+Laplace %s: V_PI %.4f V, %.3f s, %ld Laplace solves\n",
                  p.mesh.c_str(), p.value, p.wall, r.coupling_iterations);
   }
-  {
+  if (wanted("quasi_static")) {
     OJson j = common;
     j["variant"] = "quasi_static_summary";
     OJson a, b;
@@ -316,16 +354,9 @@ int main(int argc, char** argv) {
     SwitchScene& s = sc->scene;
     const QuasiStaticPullIn qs = trace_pull_in(*s.actuation, s.control, sampling());
     const double qs_wall = t.wall();
-    // SwitchScene::make_transient_system passes StructuralModel::quasi_static_components(),
-    // which is empty for a plane beam, and ReducedInertiaSystem rejects an empty flag list
-    // ("0 flags for N unknowns"): the plane beam's system is built here with every
-    // component inertial (no gas: a plane scene has no film).
-    std::unique_ptr<SwitchSystem> system;
-    if (s.structure->quasi_static_components().empty())
-      system = std::make_unique<ActuatedStructureSystem>(
-          *s.actuation, std::vector<bool>(static_cast<std::size_t>(s.structure->structure().size()), false));
-    else
-      system = s.make_transient_system();
+    // A plane beam has no quasi-static components: every unknown is inertial (the
+    // ReducedInertiaSystem with no flags, since 018c69b).
+    const std::unique_ptr<SwitchSystem> system = s.make_transient_system();
     const DynamicPullIn d = find_dynamic_pull_in(*system, s.control, 0.8 * qs.pull_in_voltage,
                                                  1.02 * qs.pull_in_voltage, dyn_tolerance,
                                                  dynamic_options(s.gap));
@@ -355,6 +386,7 @@ int main(int argc, char** argv) {
     return p;
   };
   std::vector<Point> plate_dyn, plane_dyn;
+  if (!wanted("dynamic")) dyn_plate_nx.clear(), dyn_plane_nx.clear();
   for (int nx : dyn_plate_nx) {
     const int ny = std::max(1, nx / 10);
     plate_dyn.push_back(dynamic_point("plate+parallel_plate", plate_case,
@@ -367,7 +399,7 @@ int main(int argc, char** argv) {
                                       {cells(nx, ny), "actuation.electrostatics=parallel_plate"},
                                       std::to_string(nx) + "x" + std::to_string(ny)));
   }
-  {
+  if (wanted("dynamic")) {
     OJson j = common;
     j["variant"] = "dynamic_summary";
     j["bisection_tolerance"] = dyn_tolerance;
@@ -379,6 +411,123 @@ int main(int argc, char** argv) {
                            std::isnan(rb) ? plane_dyn.back().value : rb, "plate+parallel_plate",
                            "plane+parallel_plate");
     j["matched_reference"] = std::string(std::isnan(ra) || std::isnan(rb) ? "finest mesh" : "richardson");
+    emit(j);
+  }
+  // ---- 2b. dynamic V_PI: plate + parallel-plate against plane + Laplace -----------------
+  if (!wanted("laplace_dynamic")) return 0;
+  auto weighted = [&](double gap) {
+    DynamicOptions o = dynamic_options(gap);
+    o.ida.rtol = laplace_rtol;
+    o.ida.atol = laplace_rtol * gap;
+    o.tolerances.displacement = laplace_rtol * gap;
+    o.tolerances.velocity_rate = 2 * M_PI * 131.1e3;
+    return o;
+  };
+  auto report = [&](OJson j, const std::string& model, const std::string& mesh, double v_qs,
+                    const DynamicPullIn& d, const Timer& t, double qs_wall, double qs_cpu) {
+    Point p{mesh, 0, 0.5 * (d.voltage + d.lower), t.wall(), t.cpu()};
+    j["variant"] = "laplace_dynamic";
+    j["model"] = model;
+    j["mesh"] = mesh;
+    j["quasi_static_v_pi"] = v_qs;
+    j["dynamic_v_pi"] = d.voltage;
+    j["not_pulling_in"] = d.lower;
+    j["v_mid"] = p.value;
+    j["ratio_to_quasi_static"] = p.value / v_qs;
+    j["pull_in_time_s"] = d.pull_in_time;
+    j["runs"] = d.runs;
+    j["steps"] = d.steps;
+    j["residual_evals"] = d.residual_evals;
+    j["quasi_static_wall_s"] = qs_wall;
+    j["quasi_static_cpu_s"] = qs_cpu;
+    j["wall_s"] = p.wall;
+    j["cpu_s"] = p.cpu;
+    j["rtol"] = laplace_rtol;
+    j["bisection_tolerance"] = laplace_tolerance;
+    j["load_average_1min"] = load_average_1min();
+    emit(j);
+    std::fprintf(stderr, "dyn %s %s: V_dyn in (%.3f, %.3f] V (qs %.3f), %d runs, %ld steps, "
+                         "%.2f s wall, %.2f s CPU\n",
+                 model.c_str(), mesh.c_str(), d.lower, d.voltage, v_qs, d.runs, d.steps,
+                 p.wall, p.cpu);
+    return p;
+  };
+  std::vector<Point> plate_l, plane_l;
+  for (int nx : laplace_plate_nx) {
+    const int ny = std::max(1, nx / 10);
+    const std::string mesh = std::to_string(nx) + "x" + std::to_string(ny);
+    Timer t;
+    auto sc = load_scene(plate_case, {"gas.model=none", cells(nx, ny)}, AnalysisType::Transient);
+    SwitchScene& s = sc->scene;
+    const QuasiStaticPullIn qs = trace_pull_in(*s.actuation, s.control, sampling());
+    const double qs_wall = t.wall(), qs_cpu = t.cpu();
+    const std::unique_ptr<SwitchSystem> system = s.make_transient_system();
+    const DynamicOptions o = weighted(s.gap);
+    const DynamicPullIn d =
+        find_dynamic_pull_in(*system, s.control, 0.8 * qs.pull_in_voltage,
+                             1.02 * qs.pull_in_voltage, laplace_tolerance, o);
+    OJson j = common;
+    j["unknowns"] = system->size();
+    plate_l.push_back(
+        report(j, "plate+parallel_plate", mesh, qs.pull_in_voltage, d, t, qs_wall, qs_cpu));
+  }
+  for (int nx : laplace_plane_nx) {
+    const int ny = std::max(1, static_cast<int>(std::lround(nx / 12.5)));
+    const int gap_cells = 2 * ny;
+    const std::string mesh =
+        std::to_string(nx) + "x" + std::to_string(ny) + "+gap" + std::to_string(gap_cells);
+    Timer t;
+    auto sc = load_scene(plane_case,
+                         {cells(nx, ny),
+                          "actuation.laplace.gap_cells=" + std::to_string(gap_cells)},
+                         AnalysisType::Transient);
+    SwitchScene& s = sc->scene;
+    auto* beam = dynamic_cast<ElasticityScene*>(s.structure.get());
+    LaplacePullInOptions qo;
+    qo.sampling = sampling();
+    qo.gap_cells = gap_cells;
+    const LaplacePullIn qs =
+        trace_pull_in_laplace(*beam, s.facing_patch, s.gap, s.electrode, s.control, qo);
+    const double qs_wall = t.wall(), qs_cpu = t.cpu();
+    LaplaceGapOptions go;
+    go.gap_cells = gap_cells;
+    LaplaceDynamicSwitch sw(*beam->op, s.facing_patch, s.gap, s.electrode, s.control, go);
+    const DynamicOptions o = weighted(s.gap);
+    const double v_qs = qs.result.pull_in_voltage;
+    const DynamicPullIn d = find_dynamic_pull_in([&](Real v) { return sw.run(v, o); }, 0.8 * v_qs,
+                                                 1.02 * v_qs, laplace_tolerance, o.end_time);
+    OJson j = common;
+    j["unknowns"] = 2 * beam->op->size();
+    j["gap_cells_total"] = sw.field().gap_cells_total();
+    j["field_solves"] = sw.times().field_solves;
+    j["cpu_field_s"] = sw.times().field;
+    j["cpu_mesh_motion_s"] = sw.times().move;
+    j["cpu_structure_s"] = sw.times().structure;
+    plane_l.push_back(report(j, "plane+laplace", mesh, v_qs, d, t, qs_wall, qs_cpu));
+  }
+  {
+    OJson j = common;
+    j["variant"] = "laplace_dynamic_summary";
+    // Each model's error against its own finest mesh; matched: the cheapest mesh within the
+    // target of its own finest (the finest themselves have no reference and are left out).
+    OJson models = OJson::object();
+    for (auto* seq : {&plate_l, &plane_l}) {
+      OJson rows = OJson::array();
+      for (const Point& p : *seq)
+        rows.push_back({{"mesh", p.mesh},
+                        {"v_mid", p.value},
+                        {"error_vs_finest", std::abs(p.value / seq->back().value - 1)},
+                        {"wall_s", p.wall},
+                        {"cpu_s", p.cpu}});
+      models[seq == &plate_l ? "plate+parallel_plate" : "plane+laplace"] = rows;
+    }
+    j["models"] = models;
+    if (!plate_l.empty() && !plane_l.empty()) {
+      j["ratio_cpu_finest"] = plane_l.back().cpu / plate_l.back().cpu;
+      j["ratio_wall_finest"] = plane_l.back().wall / plate_l.back().wall;
+      j["ratio_cpu_coarsest"] = plane_l.front().cpu / plate_l.front().cpu;
+      j["ratio_wall_coarsest"] = plane_l.front().wall / plate_l.front().wall;
+    }
     emit(j);
   }
   return 0;

@@ -5,7 +5,8 @@
 //                 KINSOL, stable and unstable branches): the static pull-in voltage;
 //   dynamic:      a step voltage from rest under IDA with contact and turning-point roots;
 //                 the dynamic pull-in voltage by bisection, the pull-in time, and the
-//                 histories at voltages around it;
+//                 histories at voltages around it (a laplace case: the plane beam under the
+//                 Laplace field recomputed per IDA step, coupling/laplace_dynamic_switch.hpp);
 //   transient:    one step voltage from rest to an end time or touch-down, integrated by the
 //                 case's coupling scheme (coupling: monolithic | staggered | strongly_coupled,
 //                 coupling/coupling_settings.hpp): the centre-deflection history;
@@ -142,6 +143,12 @@ int run(const DriverOptions& options) {
                          {"case_text", case_file.text()},
                          {"case_effective", case_file.effective_text()},
                          {"model", scene.structure->kind()},
+                         {"electrostatics",
+                          summary["pull_in"]["electrostatics"].get<std::string>()},
+                         {"dynamic_electrostatics",
+                          report.has_dynamic
+                              ? summary["pull_in"]["dynamic"]["electrostatics"].get<std::string>()
+                              : std::string("none")},
                          {"summary", json_text(summary)}},
                         {{"wall_time_s", elapsed()}});
   writer.finish();
@@ -174,9 +181,12 @@ int run(const DriverOptions& options) {
                   "electrode just above it)\n",
                   report.pull_out.pull_out_voltage, 100 * report.pull_out.branch.back().contact_fraction);
     if (report.has_dynamic)
-      std::printf("  dynamic pull-in (%s voltage) at %.2f V (%.3f of quasi-static; %.2f V does "
-                  "not), pull-in time %.3f us; %d runs\n",
-                  report.waveform.c_str(), report.dynamic.voltage, report.dynamic.voltage / qs.pull_in_voltage,
+      std::printf("  dynamic pull-in (%s voltage, %s%s%s) at %.2f V (%.3f of quasi-static; %.2f V "
+                  "does not), pull-in time %.3f us; %d runs\n",
+                  report.waveform.c_str(),
+                  summary["pull_in"]["dynamic"]["electrostatics"].get<std::string>().c_str(),
+                  report.dynamic_coupling.empty() ? "" : ", ", report.dynamic_coupling.c_str(),
+                  report.dynamic.voltage, report.dynamic.voltage / qs.pull_in_voltage,
                   report.dynamic.lower, report.dynamic.pull_in_time * 1e6, report.dynamic.runs);
     if (report.has_release) {
       const DynamicRun& h = report.hold;

@@ -32,10 +32,11 @@ PartitionedOptions read_coupling_options(const CaseNode& root, const SwitchScene
   o.max_iterations = static_cast<int>(node.get_int("max_iterations", 50, Range::closed(1, 100000)));
   if (!partitioned) return o;
   // The partitioned schemes split the plate from its squeeze film: without the film there is
-  // nothing to partition, and the Laplace field has no partitioned transient here.
+  // nothing to partition; the Laplace field's staggered/implicit choice is
+  // pull_in.dynamic.laplace_coupling (laplace_dynamic_switch.hpp).
   node.require(scene.electrostatics == ElectrostaticsModel::ParallelPlate, "scheme",
-               "a partitioned scheme needs actuation.electrostatics: parallel_plate (laplace "
-               "scenes are coupled by the quasi-static iteration only)");
+               "a partitioned scheme needs actuation.electrostatics: parallel_plate (a laplace "
+               "scene's dynamic study sets pull_in.dynamic.laplace_coupling instead)");
   node.require(scene.film != nullptr, "scheme",
                "a partitioned scheme needs a gas film (gas.model: reynolds); without one the "
                "switch is a single field, use monolithic");

@@ -101,6 +101,13 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
   s.tolerance = dyn.get_quantity("tolerance", Dimension::Voltage, 0.5, Range::positive());
   if (dyn.has("voltages")) s.voltages = dyn.get_quantities("voltages", Dimension::Voltage);
   s.small_signal = dyn.get_real("small_signal", 0.3, Range{0.0, 0.9, false, false});
+  const bool laplace = scene.electrostatics == ElectrostaticsModel::Laplace;
+  dyn.require(laplace || !dyn.has("laplace_coupling"), "laplace_coupling",
+              "only with actuation.electrostatics: laplace");
+  s.laplace_coupling =
+      dyn.get_choice("laplace_coupling", {"staggered", "implicit"}, "staggered") == "implicit"
+          ? LaplaceCoupling::Implicit
+          : LaplaceCoupling::Staggered;
   if (dyn.has("waveform")) {
     const CaseNode w = dyn.child("waveform");
     const std::string type = w.get_choice("type", {"step", "ramp", "pulse"});
@@ -110,6 +117,8 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
     s.waveform.rise_time = w.get_quantity("rise_time", Dimension::Time,
                                           type == "ramp" ? -1.0 : 0.0, Range::non_negative());
     w.require(type != "ramp" || s.waveform.rise_time > 0, "rise_time", "a ramp needs rise_time > 0");
+    w.require(!laplace || type == "step", "type",
+              "the Laplace dynamic switch takes a step voltage only");
     if (type == "pulse") {
       s.waveform.release_time = w.get_quantity("release_time", Dimension::Time, Range::positive());
       s.waveform.hold_fraction = w.get_real("hold", 0.0, Range::closed(0.0, 1.0));
@@ -201,6 +210,46 @@ void run_transient(SwitchScene& scene, const PullInSettings& settings, PullInRep
   report.has_transient = true;
 }
 
+// A laplace scene's dynamic study: the plane beam under the Laplace field recomputed per IDA
+// step (laplace_dynamic_switch.hpp), bisection, histories and the small-signal response.
+void run_laplace_dynamic(SwitchScene& scene, const PullInSettings& settings, ResultWriter& writer,
+                         PullInReport& report) {
+  auto* beam = dynamic_cast<ElasticityScene*>(scene.structure.get());
+  if (!beam) throw InputError("laplace electrostatics need a plane beam");
+  LaplaceGapOptions gap_options;
+  gap_options.gap_cells = scene.laplace_gap_cells;
+  LaplaceDynamicSwitch sw(*beam->op, scene.facing_patch, scene.gap, scene.electrode,
+                          scene.control, gap_options);
+  const QuasiStaticPullIn& qs = report.quasi_static;
+  const Real low = settings.bracket_high > 0 ? settings.bracket_low : 0.8 * qs.pull_in_voltage;
+  const Real high = settings.bracket_high > 0 ? settings.bracket_high : 1.02 * qs.pull_in_voltage;
+  DynamicOptions quiet = settings.run;
+  quiet.output_interval = 0;
+  report.dynamic = find_dynamic_pull_in(
+      [&](Real v) { return sw.run(v, quiet, settings.laplace_coupling); }, low, high,
+      settings.tolerance, settings.run.end_time);
+  report.has_dynamic = true;
+  report.waveform = "step";
+  report.dynamic_coupling = laplace_coupling_name(settings.laplace_coupling);
+  DynamicOptions whole = settings.run;
+  whole.stop_at_turning = false;  // the whole history up to end_time (or touch-down)
+  std::vector<Real> voltages = settings.voltages;
+  if (voltages.empty()) voltages = {0.97 * report.dynamic.voltage, 1.03 * report.dynamic.voltage};
+  for (std::size_t k = 0; k < voltages.size(); ++k) {
+    DynamicRun run = sw.run(voltages[k], whole, settings.laplace_coupling);
+    write_history(writer, fmt::format("V{}", k), run);
+    report.histories.emplace_back(voltages[k], std::move(run));
+  }
+  if (settings.small_signal > 0) {
+    const Real v = settings.small_signal * qs.pull_in_voltage;
+    const DynamicRun run = sw.run(v, whole, settings.laplace_coupling);
+    write_history(writer, "small_signal", run);
+    report.small_signal_voltage = v;
+    report.small_signal = free_response(run.history);
+  }
+  report.dynamic_laplace_solves = sw.times().field_solves;
+}
+
 }  // namespace
 
 PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& settings,
@@ -232,6 +281,10 @@ PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& setting
                            "control_displacement");
   if (!settings.dynamic) return report;
 
+  if (scene.electrostatics == ElectrostaticsModel::Laplace) {
+    run_laplace_dynamic(scene, settings, writer, report);
+    return report;
+  }
   const std::unique_ptr<SwitchSystem> transient = scene.make_transient_system();
   SwitchSystem& system = *transient;
   const Real low = settings.bracket_high > 0 ? settings.bracket_low : 0.8 * qs.pull_in_voltage;
@@ -356,7 +409,8 @@ Json pull_in_summary(const SwitchScene& scene, const PullInReport& report) {
                     {"runs", d.runs},
                     {"steps", d.steps},
                     {"residual_evals", d.residual_evals},
-                    {"electrostatics", "parallel_plate"},
+                    {"electrostatics",
+                     report.dynamic_coupling.empty() ? "parallel_plate" : "laplace"},
                     {"gas", scene.film ? "reynolds" : "none"},
                     {"waveform", report.waveform}};
     Json histories = Json::array();
@@ -367,6 +421,10 @@ Json pull_in_summary(const SwitchScene& scene, const PullInReport& report) {
                            {"extreme_control", run.extreme_control},
                            {"steps", run.stats.steps}});
     j["dynamic"]["histories"] = histories;
+    if (!report.dynamic_coupling.empty()) {
+      j["dynamic"]["laplace_coupling"] = report.dynamic_coupling;
+      j["dynamic"]["laplace_solves"] = report.dynamic_laplace_solves;
+    }
     if (report.has_release) {
       const DynamicRun& a = report.approach.run;
       const DynamicRun& h = report.hold;

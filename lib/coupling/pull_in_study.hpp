@@ -21,6 +21,9 @@
 //       small_signal: 0.3             # a step to this fraction of the quasi-static V_PI,
 //                                     # recorded to end_time: damping ratio and frequency of
 //                                     # the free response (0: none; default 0.3)
+//       laplace_coupling: staggered   # laplace scenes: staggered (default; the field once per
+//                                     # IDA step, gap-scaled lagged load) | implicit (the field
+//                                     # in every residual call; laplace_dynamic_switch.hpp)
 //     release:                        # optional, needs actuation.contact: after touch-down the
 //                                     # voltage drops to a hold value (dynamic_release.hpp)
 //       hold_voltage: 10 V            # the hold whose history is recorded
@@ -47,14 +50,17 @@
 // state of its approach (quasi_static_pull_out.hpp).
 // Quasi-static: parallel_plate scenes by KINSOL under displacement control
 // (quasi_static_pull_in.hpp), laplace scenes by the strongly coupled iteration
-// (laplace_pull_in.hpp). Dynamic: parallel_plate only (a laplace scene's dynamic study uses its
-// parallel-plate actuation and says so in the summary).
+// (laplace_pull_in.hpp). Dynamic: parallel_plate scenes by one monolithic IDA system
+// (switch_system.hpp); laplace scenes by the plane beam under the Laplace field recomputed per
+// IDA step (laplace_dynamic_switch.hpp; step waveform, no gas, no contact), and the summary's
+// pull_in.dynamic.electrostatics says which.
 #pragma once
 #include <string>
 #include <vector>
 
 #include "coupling/dynamic_pull_in.hpp"
 #include "coupling/dynamic_release.hpp"
+#include "coupling/laplace_dynamic_switch.hpp"
 #include "coupling/partitioned_switch.hpp"
 #include "coupling/quasi_static_pull_in.hpp"
 #include "coupling/quasi_static_pull_out.hpp"
@@ -73,6 +79,7 @@ struct PullInSettings {
   std::vector<Real> voltages;         // empty: around the dynamic V_PI
   Real small_signal = 0.3;            // fraction of the quasi-static V_PI (0: none)
   VoltageWaveform waveform;
+  LaplaceCoupling laplace_coupling = LaplaceCoupling::Staggered;  // laplace scenes
   // pull_in.release
   bool release = false;
   ReleaseOptions release_options;     // voltage 0: from the dynamic V_PI
@@ -97,6 +104,8 @@ struct PullInReport {
   Real small_signal_voltage = 0;
   FreeResponse small_signal;
   long laplace_solves = 0;
+  long dynamic_laplace_solves = 0;    // laplace scenes: field solves of the dynamic study
+  std::string dynamic_coupling;       // laplace scenes: staggered | implicit
   bool has_pull_out = false;          // the scene has contact
   QuasiStaticPullOut pull_out;
   bool has_release = false;

@@ -1,0 +1,67 @@
+#include "coupling/gap_scaled_lagged_load.hpp"
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+
+namespace rfmems {
+
+namespace {
+// A trial state with a cell's gap below this fraction of g0 is rejected. Well below the
+// touch-down roots (2 % of g0 by default), so that a step that carries the gap through the
+// root is accepted and the root located inside it (with 2 % itself, the step that would cross
+// the root failed every time and IDA cut its step without end).
+constexpr Real kClosedFraction = 1e-3;
+}  // namespace
+
+GapScaledLaggedLoad::GapScaledLaggedLoad(ElasticityOperator& beam, Real gap0)
+    : beam_(beam), gap0_(gap0) {
+  const Index n = beam.size();
+  force_.assign(n, 0.0);
+  reference_gap_.assign(n / 2, gap0);
+  loaded_.assign(n / 2, 0);
+  const CsrPattern& p = beam.stiffness_pattern();
+  for (Index c = 0; c < n / 2; ++c) diagonal_.push_back(p.find(2 * c + 1, 2 * c + 1));
+}
+
+void GapScaledLaggedLoad::set_reference(std::vector<Real> force, std::span<const Real> u_ref) {
+  force_ = std::move(force);
+  for (std::size_t c = 0; c < reference_gap_.size(); ++c) {
+    reference_gap_[c] = gap0_ + u_ref[2 * c + 1];
+    loaded_[c] = force_[2 * c] != 0 || force_[2 * c + 1] != 0;
+  }
+}
+
+Real GapScaledLaggedLoad::scale(std::size_t c, std::span<const Real> u) const {
+  const Real g = gap0_ + u[2 * c + 1];
+  if (!(g > kClosedFraction * gap0_))
+    throw RecoverableError(fmt::format("Laplace switch: gap {:.3e} m of cell {} closed", g, c));
+  const Real s = reference_gap_[c] / g;
+  return s * s;
+}
+
+void GapScaledLaggedLoad::internal_residual(Real t, std::span<const Real> u, std::span<Real> r) {
+  beam_.internal_residual(t, u, r);
+  if (exact_) {
+    const std::vector<Real> f = exact_(u);
+    for (Index i = 0; i < size(); ++i) r[i] -= f[i];
+    return;
+  }
+  for (std::size_t c = 0; c < reference_gap_.size(); ++c) {
+    if (!loaded_[c]) continue;
+    r[2 * c] -= force_[2 * c];
+    r[2 * c + 1] -= force_[2 * c + 1] * scale(c, u);
+  }
+}
+
+void GapScaledLaggedLoad::stiffness(Real t, std::span<const Real> u, std::span<Real> values) {
+  beam_.stiffness(t, u, values);
+  for (std::size_t c = 0; c < reference_gap_.size(); ++c) {
+    if (!loaded_[c] || force_[2 * c + 1] == 0) continue;
+    const Real g = gap0_ + u[2 * c + 1];
+    // d/du of -F (g_ref/g)^2 = 2 F g_ref^2 / g^3.
+    values[diagonal_[c]] += 2 * force_[2 * c + 1] * scale(c, u) / g;
+  }
+}
+
+}  // namespace rfmems

@@ -1,0 +1,56 @@
+// A plane beam under an electrostatic load that is recomputed only once per time step (a
+// field solve is too expensive for every residual call), for IDA:
+//
+//   M u'' + K u - f(u) = 0,   f_x,c = F_x,c,   f_y,c(u) = F_y,c (g_ref,c / g_c(u))^2,
+//   g_c = g0 + u_y,c,
+//
+// F the field's force at the reference state u_ref (the state after the last accepted step)
+// with g_ref,c = g0 + u_y,c(u_ref): inside a step the load follows the dominant gap
+// dependence of the parallel-plate law, and the Jacobian carries the electrostatic spring
+// softening d(-f_y,c)/du_y,c = 2 F_y,c g_ref^2 / g^3 (F_y < 0: softening). The staggered
+// scheme refreshes F after every step IDA accepts; its error is first order in the step.
+//
+// With set_exact(load), the residual uses the exact load at u instead (the field solved in
+// every residual call: the implicit, strongly coupled reference), and the scaled lagged model
+// stays in the Jacobian (an inexact Newton).
+//
+// The same pattern drives the immersed-boundary switch (immersed_switch.cpp keeps its own
+// copy of this operator, LaggedLoadStructure, in its anonymous namespace).
+#pragma once
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "core/system_operator.hpp"
+#include "physics/elasticity/elasticity_operator.hpp"
+
+namespace rfmems {
+
+class GapScaledLaggedLoad : public SecondOrderOperator {
+ public:
+  using ExactLoad = std::function<std::vector<Real>(std::span<const Real>)>;
+  // beam: a plane elasticity operator (unknowns u_x, u_y per cell); gap0: the gap at rest.
+  GapScaledLaggedLoad(ElasticityOperator& beam, Real gap0);
+
+  // The field's force per unknown at the reference state u_ref [N/m].
+  void set_reference(std::vector<Real> force, std::span<const Real> u_ref);
+  void set_exact(ExactLoad exact) { exact_ = std::move(exact); }
+
+  Index size() const override { return beam_.size(); }
+  void internal_residual(Real t, std::span<const Real> u, std::span<Real> r) override;
+  const CsrPattern& stiffness_pattern() const override { return beam_.stiffness_pattern(); }
+  void stiffness(Real t, std::span<const Real> u, std::span<Real> values) override;
+  std::vector<Real> mass_diagonal() const override { return beam_.mass_diagonal(); }
+
+ private:
+  // (g_ref / g)^2 of cell c; a gap below 0.1 % of g0 is a failed trial state (IDA retries).
+  Real scale(std::size_t c, std::span<const Real> u) const;
+  ElasticityOperator& beam_;
+  Real gap0_;
+  std::vector<Real> force_, reference_gap_;
+  std::vector<Index> diagonal_;  // value index of (u_y,c, u_y,c) in the stiffness
+  std::vector<char> loaded_;     // cells with a nonzero reference force
+  ExactLoad exact_;
+};
+
+}  // namespace rfmems

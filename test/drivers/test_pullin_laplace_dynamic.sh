@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# rfmems-pullin, dynamic mode on a laplace case (coupling/laplace_dynamic_switch.hpp): the
+# coarse 25 x 2 plane beam of cases/switch_plane_laplace under the Laplace field recomputed per
+# IDA step exits 0, reports V_dyn with a ratio to the quasi-static V_PI near the thesis's 0.91,
+# says in the JSON and the result file's metadata that the dynamic study used the Laplace field
+# (staggered), and writes the histories; laplace-only keys are bad input elsewhere (exit 2).
+#
+# Usage: bash test_pullin_laplace_dynamic.sh <directory of rfmems-pullin> <source directory>
+set -uo pipefail
+
+DRIVER="$1/rfmems-pullin"
+SRC="$2"
+PY=/usr/bin/python3
+PLANE="$SRC/cases/switch_plane_laplace/case.yaml"
+PLATE="$SRC/cases/switch_plate/case.yaml"
+
+WORK=$(mktemp -d)
+trap 'rm -rf "$WORK"' EXIT
+source "$SRC/test/drivers/common.sh"
+
+# Coarse beam (two cells through the thickness: V_PI ~550 V), per-kind error weights at
+# rtol 1e-4 with this beam's first frequency (~385 kHz), bisection to 2 V.
+COARSE=(--set "mesh.cells=[25,2]" --set actuation.laplace.gap_cells=4 --set pull_in.mode=dynamic
+        --set "pull_in.dynamic={end_time: 20 us, tolerance: 2 V, small_signal: 0.2}"
+        --set "solver={rtol: 1e-4, error_weights: per_kind, velocity_frequency: 385 kHz}")
+if "$DRIVER" "$PLANE" "${COARSE[@]}" -o "$WORK/dyn.h5" --json --quiet >"$WORK/dyn.json" \
+    2>"$WORK/err"; then
+  pass "switch_plane_laplace 25 x 2, dynamic, exits 0"
+else
+  fail "switch_plane_laplace dynamic: $(cat "$WORK/err")"
+fi
+if $PY - "$WORK/dyn.json" "$WORK/dyn.h5" <<'PY'
+import json, sys
+import h5py
+d = json.load(open(sys.argv[1]))["pull_in"]
+dyn, qs = d["dynamic"], d["quasi_static"]
+assert d["electrostatics"] == "laplace", d
+assert dyn["electrostatics"] == "laplace" and dyn["laplace_coupling"] == "staggered", dyn
+assert dyn["laplace_solves"] > dyn["steps"], dyn  # one field solve per accepted step at least
+assert dyn["pull_in_voltage"] - dyn["not_pulling_in"] <= 2.0, dyn
+assert abs(dyn["ratio_to_quasi_static"] - 0.91) < 0.02, dyn
+assert dyn["pull_in_time"] > 0
+h = dyn["histories"]
+assert len(h) == 2 and not h[0]["pulled_in"] and h[1]["pulled_in"], h
+assert dyn["small_signal"]["swings"] >= 3 and dyn["small_signal"]["damping_ratio"] < 0.01, dyn
+with h5py.File(sys.argv[2]) as f:
+    meta = f["metadata"].attrs
+    text = lambda k: meta[k].decode() if isinstance(meta[k], bytes) else meta[k]
+    assert text("dynamic_electrostatics") == "laplace", dict(meta)
+    assert "V0" in f["dynamic"] and "small_signal" in f["dynamic"], list(f["dynamic"])
+print(f"V_qs {qs['pull_in_voltage']:.2f} V, V_dyn {dyn['pull_in_voltage']:.2f} V, ratio "
+      f"{dyn['ratio_to_quasi_static']:.4f}, {dyn['runs']} runs, {dyn['laplace_solves']} field solves")
+PY
+then
+  pass "V_dyn, ratio, electrostatics in JSON and metadata, histories"
+else
+  fail "laplace dynamic figures"
+fi
+
+expect_input_error laplace_coupling_on_plate "laplace_coupling" "$PLATE" \
+  --set pull_in.dynamic.laplace_coupling=implicit
+expect_input_error laplace_ramp "the Laplace dynamic switch takes a step voltage only" "$PLANE" \
+  "${COARSE[@]}" --set "pull_in.dynamic.waveform={type: ramp, rise_time: 1 us}"
+expect_input_error laplace_coupling_value "laplace_coupling" "$PLANE" "${COARSE[@]}" \
+  --set pull_in.dynamic.laplace_coupling=monolithic
+
+exit $((failures > 0))
