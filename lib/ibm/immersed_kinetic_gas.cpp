@@ -143,10 +143,11 @@ void ImmersedKineticGas::rebuild_graph(const CellMarking& marking) {
   if (distributed()) {
     if (owner_rank_.empty()) partition_background(marking);
     // The widest IB stencil: 4 rings from a surface point's seed (step i), 3 from an IB
-    // face's FLUID cell (step iii), the seed within a ring or two of the body; checked by
-    // LocalIbFaceValues::covers_every_stencil in set_body.
-    partition_.band_rings =
-        std::max(options_.ib.face_options.max_rings, options_.ib.surface_options.max_rings) + 3;
+    // face's FLUID cell (step iii), the seed next to the body's cells; checked by
+    // LocalIbFaceValues::covers_every_stencil in set_body, which widens the band if not.
+    if (partition_.band_rings == 0)
+      partition_.band_rings =
+          std::max(options_.ib.face_options.max_rings, options_.ib.surface_options.max_rings) + 1;
     part = std::make_unique<FluidGraphPart>(restrict_fluid_graph(
         *global, background_graph_, marking, owner_rank_, options_.comm, partition_.band_rings));
     fluid = &part->local;
@@ -187,6 +188,35 @@ void ImmersedKineticGas::rebuild_graph(const CellMarking& marking) {
   downwind_ = downwind_groups(fluid_->graph, grid_);
 }
 
+// The same FLUID graph with a wider IB band: a new part and operator; the owned cells keep
+// their values (the same cells), the ghosts are refreshed from their owners.
+void ImmersedKineticGas::widen_band(int rings) {
+  const Index N = grid_.size();
+  partition_.band_rings = rings;
+  auto part = std::make_unique<FluidGraphPart>(restrict_fluid_graph(
+      *global_fluid_, background_graph_, marking_, owner_rank_, options_.comm, rings));
+  auto op = std::make_unique<KineticOperator>(part->local.graph, grid_, gas_, outer_);
+  op->set_parallel(options_.comm, &part->exchange);
+  auto move = [&](std::vector<Real>& v) {
+    if (v.empty()) return;
+    std::vector<Real> w(part->local.graph.n_cells() * N, 0.0);
+    for (Index c = 0; c < part->local.graph.n_owned_cells; ++c)
+      std::copy_n(v.data() + part_->local_of_global[part->global_cell[c]] * N, N, w.data() + c * N);
+    part->exchange.exchange(std::span<Real>(w), static_cast<int>(N));
+    v = std::move(w);
+  };
+  move(f_);
+  move(f_previous_);
+  move(predictor_previous_);
+  point_.reset();
+  op_ = std::move(op);
+  part_ = std::move(part);
+  fluid_ = &part_->local;
+  downwind_ = downwind_groups(fluid_->graph, grid_);
+  partition_.owned_cells = fluid_->graph.n_owned_cells;
+  partition_.ghost_cells = fluid_->graph.n_cells() - fluid_->graph.n_owned_cells;
+}
+
 void ImmersedKineticGas::set_body(const ImmersedSurface& body, std::vector<Vec3> segment_velocity) {
   if (static_cast<Index>(segment_velocity.size()) != body.n_segments())
     throw InputError("immersed gas: one velocity per surface segment");
@@ -216,12 +246,18 @@ void ImmersedKineticGas::set_body(const ImmersedSurface& body, std::vector<Vec3>
                                                   segment_velocity_, ib_face_velocity_, grid_, gas_,
                                                   reference_density_, options_.ib);
   if (part_) {
-    local_values_ =
-        std::make_unique<LocalIbFaceValues>(*values_, *global_fluid_, *part_, grid_.size());
-    // The same global check on every rank (no communication): one verdict.
-    if (!local_values_->covers_every_stencil())
-      throw SolverError("immersed gas: an IB stencil reaches beyond the " +
-                        std::to_string(partition_.band_rings) + "-ring band of ghost cells");
+    // The same global check on every rank (no communication): one verdict, so every rank
+    // widens together.
+    for (;;) {
+      local_values_ =
+          std::make_unique<LocalIbFaceValues>(*values_, *global_fluid_, *part_, grid_.size());
+      if (local_values_->covers_every_stencil()) break;
+      if (partition_.band_rings >= 4 * options_.ib.surface_options.max_rings)
+        throw SolverError("immersed gas: an IB stencil reaches beyond the " +
+                          std::to_string(partition_.band_rings) + "-ring band of ghost cells");
+      local_values_.reset();
+      widen_band(partition_.band_rings + 1);
+    }
     op_->set_external_face_values(local_values_.get());
   } else {
     op_->set_external_face_values(values_.get());
@@ -270,7 +306,9 @@ GasStepReport ImmersedKineticGas::advance(Real dt) {
   const bool bdf2 = options_.bdf2 && !f_previous_.empty() && dt == dt_previous_;
   rep.order = bdf2 ? 2 : 1;
   const Real b = (bdf2 ? 1.5 : 1.0) / dt;
-  std::vector<Real> h = f_;
+  // Scratch kept between steps: a fresh n_cells x N vector per step cost page faults.
+  std::vector<Real>& h = scratch_h_;
+  h.assign(f_.begin(), f_.end());
   if (bdf2)
     for (std::size_t i = 0; i < h.size(); ++i) h[i] = (4 * f_[i] - f_previous_[i]) / 3;
   rep.mass_before = op_->total_mass(f_);
@@ -278,8 +316,10 @@ GasStepReport ImmersedKineticGas::advance(Real dt) {
   for (Index c = 0; c < nc; ++c)
     for (Index k = 0; k < N; ++k) scale += std::pow(b * g.cell_volume[c] * h[c * N + k], 2);
   scale = std::sqrt(options_.comm.sum(scale));
-  std::vector<Real> r(op_->size());
-  std::vector<Real> f_start = f_;
+  std::vector<Real>& r = scratch_r_;
+  r.resize(op_->size());
+  std::vector<Real>& f_start = scratch_start_;
+  f_start.assign(f_.begin(), f_.end());
   const std::vector<Real>& previous = f_previous_.empty() ? predictor_previous_ : f_previous_;
   if (options_.predictor && previous.size() == f_.size() && dt_previous_ > 0) {
     // Linear extrapolation, kept positive (the equilibrium's Newton needs positive moments).
@@ -290,7 +330,7 @@ GasStepReport ImmersedKineticGas::advance(Real dt) {
   }
   predictor_previous_.clear();
   const bool point = options_.smoother != GasSmoother::Downwind;
-  std::vector<Real> source;
+  std::vector<Real>& source = scratch_source_;
   if (point) {
     if (!point_) point_ = std::make_unique<PointCoupledSmoother>(*op_, CometCoupling::Conserved);
     point_->set_time_coefficient(b);
@@ -320,7 +360,7 @@ GasStepReport ImmersedKineticGas::advance(Real dt) {
     }
     ++rep.sweeps;
   }
-  f_previous_ = std::move(f_start);
+  std::swap(f_previous_, f_start);  // f^n becomes f^(n-1); the old buffer is scratch
   dt_previous_ = dt;
   rep.mass_after = op_->total_mass(f_);
   for (int p = 0; p < static_cast<int>(g.patch_names.size()); ++p)

@@ -49,9 +49,10 @@
 // converged step is the serial one, to the step tolerance); norms, masses, boundary flows
 // and the IB-face forces are sums over the ranks (each IB face's force computed by its
 // owner, so the segment forces are the same on every rank). The IB-face values of the
-// global fits come from the band (LocalIbFaceValues). The carry-over of a re-marking runs
-// per owned cell, with a ghost exchange between its filling passes, so it fills the cells
-// the serial one fills, in the same passes. GasStepper::Ida is serial only.
+// global fits come from the band (LocalIbFaceValues; the band starts at the widest ring cap
+// of the fits + 1 and is widened ring by ring while a fit reads beyond it). The carry-over of a
+// re-marking runs per owned cell, with a ghost exchange between its filling passes, so it fills the
+// cells the serial one fills, in the same passes. GasStepper::Ida is serial only.
 #pragma once
 #include <memory>
 #include <optional>
@@ -192,6 +193,7 @@ class ImmersedKineticGas {
   bool distributed() const { return !options_.comm.is_serial(); }
   void partition_background(const CellMarking& rest);
   void rebuild_graph(const CellMarking& marking);
+  void widen_band(int rings);
   std::vector<Real> carry_over(const FluidFaceGraph& fluid, const GhostExchange* exchange,
                                const std::vector<Real>& from, RemarkReport* report) const;
   void sweep(Real b, std::span<const Real> h);
@@ -224,6 +226,7 @@ class ImmersedKineticGas {
   std::vector<Real> f_previous_;  // f^(n-1) for BDF2 (empty: none on this graph)
   Real dt_previous_ = 0;
   std::vector<Real> predictor_previous_;  // f^(n-1) carried over a re-marking (predictor only)
+  std::vector<Real> scratch_h_, scratch_r_, scratch_start_, scratch_source_;  // advance()
   Real reference_density_ = 0;
   ImmersedGasTimings timings_;
   RemarkReport remark_;

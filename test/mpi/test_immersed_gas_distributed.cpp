@@ -15,11 +15,11 @@
 //    gathered distribution equals the serial one to 1e-8 of its largest value;
 //  - the coupled coarse switch (test/support/cantilever_switch_scene.hpp: 45 x 3 beam,
 //    76 x 26 background, 6^3 velocities, air at 1.36e4 Pa, 80 V step, 15 ns, gas step
-//    residual 1e-8): the same IDA steps, and the tip deflection of every sample equal to the
-//    serial one to 1e-6 relative (of the final deflection); the net gas force to 1e-7 of
-//    p0 times the beam's perimeter (the step tolerance is relative to the whole distribution,
-//    i.e. to the ambient pressure, while the net force is ~1e-4 of p0 times the perimeter
-//    here: measured 2.4e-9 N/m of 1.29 N/m on 2 ranks, 1.5e-5 of the net force itself).
+//    residual 1e-8): the same IDA steps (times to 1e-9 of the end time), and the tip deflection of
+//    every sample equal to the serial one to 1e-6 relative (of the final deflection); the net gas
+//    force to 1e-7 of p0 times the beam's perimeter (the step tolerance is relative to the whole
+//    distribution, i.e. to the ambient pressure, while the net force is ~1e-4 of p0 times the
+//    perimeter here: measured 2.4e-9 N/m of 1.29 N/m on 2 ranks, 1.5e-5 of the net force itself).
 // On one rank the distributed path is not taken (the serial code): identical by construction.
 #include <gtest/gtest.h>
 
@@ -165,7 +165,8 @@ TEST(ImmersedGasDistributed, CoupledCoarseSwitchGivesTheSerialTipDeflection) {
   const Real gas_scale = 1.36e4 * perimeter;
   Real d_tip = 0, d_gas = 0;
   for (std::size_t i = 0; i < r1.history.size(); ++i) {
-    EXPECT_EQ(r1.history[i].t, rP.history[i].t);
+    // IDA's steps: the serial ones up to the round-off the gas force's differences cause.
+    EXPECT_NEAR(r1.history[i].t, rP.history[i].t, 1e-9 * o.end_time);
     d_tip = std::max(d_tip, std::abs(r1.history[i].control - rP.history[i].control));
     d_gas = std::max(d_gas, std::abs(r1.history[i].gas_force - rP.history[i].gas_force));
   }
