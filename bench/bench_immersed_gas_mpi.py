@@ -47,6 +47,8 @@ def main():
     ap.add_argument("--end-time", default="0.01us")
     ap.add_argument("--voltage", default="80V")
     ap.add_argument("--set", action="append", default=[], dest="sets")
+    ap.add_argument("--mca", action="append", default=[], nargs=2, metavar=("NAME", "VALUE"),
+                    help="an Open MPI parameter for the mpirun runs (e.g. mpi_yield_when_idle 1)")
     a = ap.parse_args()
     sets = ["gas.model=esbgk", "pull_in.mode=transient",
             f"pull_in.transient.voltage={a.voltage}", f"pull_in.transient.end_time={a.end_time}"]
@@ -58,14 +60,15 @@ def main():
             for s in sets:
                 cmd += ["--set", s]
             if ranks > 1:
+                mca = [x for name, value in a.mca for x in ("--mca", name, value)]
                 cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "--bind-to", "none",
-                       "-np", str(ranks)] + cmd
+                       *mca, "-np", str(ranks)] + cmd
             j, wall, cpu, load0, load1 = run(cmd)
             im = j["immersed"]
             line = {
                 "bench": "immersed_gas_mpi",
                 "date": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()),
-                "ranks": ranks, "sets": sets, "wall_s": wall, "cpu_s": cpu,
+                "ranks": ranks, "sets": sets, "mca": a.mca if ranks > 1 else [], "wall_s": wall, "cpu_s": cpu,
                 "load_before": load0, "load_after": load1,
                 "driver_wall_s": j["wall_time_s"],
                 "cpu_root": im["cpu"], "transient": im["transient"],
