@@ -183,6 +183,7 @@ void ImmersedKineticGas::rebuild_graph(const CellMarking& marking) {
   op_ = std::move(op);
   global_fluid_ = std::move(global);
   part_ = std::move(part);
+  band_buffer_.clear();  // a new band: refilled with NaN by LocalIbFaceValues
   fluid_ = fluid;
   f_previous_.clear();  // BDF2 restarts with a backward Euler step on a new graph
   downwind_ = downwind_groups(fluid_->graph, grid_);
@@ -211,6 +212,7 @@ void ImmersedKineticGas::widen_band(int rings) {
   point_.reset();
   op_ = std::move(op);
   part_ = std::move(part);
+  band_buffer_.clear();
   fluid_ = &part_->local;
   downwind_ = downwind_groups(fluid_->graph, grid_);
   partition_.owned_cells = fluid_->graph.n_owned_cells;
@@ -249,8 +251,8 @@ void ImmersedKineticGas::set_body(const ImmersedSurface& body, std::vector<Vec3>
     // The same global check on every rank (no communication): one verdict, so every rank
     // widens together.
     for (;;) {
-      local_values_ =
-          std::make_unique<LocalIbFaceValues>(*values_, *global_fluid_, *part_, grid_.size());
+      local_values_ = std::make_unique<LocalIbFaceValues>(*values_, *global_fluid_, *part_,
+                                                          grid_.size(), band_buffer_);
       if (local_values_->covers_every_stencil()) break;
       if (partition_.band_rings >= 4 * options_.ib.surface_options.max_rings)
         throw SolverError("immersed gas: an IB stencil reaches beyond the " +

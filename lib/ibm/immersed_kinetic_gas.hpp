@@ -219,6 +219,7 @@ class ImmersedKineticGas {
   std::unique_ptr<ForceTransfer> transfer_;
   std::unique_ptr<IbKineticFaceValues> values_;      // on the global FLUID graph
   std::unique_ptr<LocalIbFaceValues> local_values_;  // distributed: values_ on part_
+  std::vector<Real> band_buffer_;                    // its global copy (NaN outside the band)
   bool has_state_ = false;                           // initialize() was called
   std::vector<DownwindGroup> downwind_;
   std::unique_ptr<PointCoupledSmoother> point_;  // per graph, made on first use

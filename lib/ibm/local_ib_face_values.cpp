@@ -8,12 +8,15 @@ namespace rfmems {
 
 LocalIbFaceValues::LocalIbFaceValues(IbKineticFaceValues& global_values,
                                      const FluidFaceGraph& global, const FluidGraphPart& part,
-                                     Index n_ordinates)
+                                     Index n_ordinates, std::vector<Real>& buffer)
     : global_values_(global_values),
       global_(global),
       part_(part),
       n_(n_ordinates),
-      global_f_(global.graph.n_cells() * n_ordinates, std::numeric_limits<Real>::quiet_NaN()) {}
+      global_f_(buffer) {
+  const std::size_t n = static_cast<std::size_t>(global.graph.n_cells() * n_ordinates);
+  if (global_f_.size() != n) global_f_.assign(n, std::numeric_limits<Real>::quiet_NaN());
+}
 
 void LocalIbFaceValues::update(std::span<const Real> f) {
   for (const Index c : part_.band)

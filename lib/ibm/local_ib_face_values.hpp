@@ -26,8 +26,12 @@ namespace rfmems {
 class LocalIbFaceValues : public ExternalFaceValues {
  public:
   // global_values: on the global FLUID graph `global`; both and `part` must outlive this.
+  // buffer: the global copy, kept by the caller across the objects made for one part (only
+  // band cells are ever written, so the rest stays NaN without a refill each step: a 50 MB
+  // fill per set_body on the case scene); empty or of another size, it is (re)filled with NaN.
+  // The caller must clear it when the part changes.
   LocalIbFaceValues(IbKineticFaceValues& global_values, const FluidFaceGraph& global,
-                    const FluidGraphPart& part, Index n_ordinates);
+                    const FluidGraphPart& part, Index n_ordinates, std::vector<Real>& buffer);
 
   void update(std::span<const Real> f) override;
   void fill(Index face, std::span<const Real> f, std::span<Real> out) const override;
@@ -42,7 +46,7 @@ class LocalIbFaceValues : public ExternalFaceValues {
   const FluidFaceGraph& global_;
   const FluidGraphPart& part_;
   Index n_;
-  mutable std::vector<Real> global_f_;  // per global FLUID cell x N; NaN outside the band
+  std::vector<Real>& global_f_;  // per global FLUID cell x N; NaN outside the band
 };
 
 }  // namespace rfmems
