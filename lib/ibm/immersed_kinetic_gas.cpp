@@ -146,8 +146,11 @@ void ImmersedKineticGas::rebuild_graph(const CellMarking& marking) {
     // face's FLUID cell (step iii), the seed next to the body's cells; checked by
     // LocalIbFaceValues::covers_every_stencil in set_body, which widens the band if not.
     if (partition_.band_rings == 0)
-      partition_.band_rings =
-          std::max(options_.ib.face_options.max_rings, options_.ib.surface_options.max_rings) + 1;
+      partition_.band_rings = options_.band_rings > 0
+                                  ? options_.band_rings
+                                  : std::max(options_.ib.face_options.max_rings,
+                                             options_.ib.surface_options.max_rings) +
+                                        1;
     part = std::make_unique<FluidGraphPart>(restrict_fluid_graph(
         *global, background_graph_, marking, owner_rank_, options_.comm, partition_.band_rings));
     fluid = &part->local;

@@ -106,6 +106,8 @@ struct ImmersedGasOptions {
   bool predictor = false;
   // The ranks the gas is distributed over (see "Under MPI" above); serial: one process.
   Communicator comm = Communicator::serial();
+  // The IB band's first depth in rings (0: the fits' widest ring cap + 1); widened as needed.
+  int band_rings = 0;
 };
 
 struct ImmersedGasTimings {  // CPU seconds of the process, accumulated
