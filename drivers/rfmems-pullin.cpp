@@ -20,6 +20,8 @@
 //   rfmems-pullin cases/switch_plate/case.yaml --set pull_in.mode=quasi_static
 //   rfmems-pullin cases/cantilever_switch/case.yaml   # immersed-boundary cantilever (a case
 //       with an `immersed` block: coupling/immersed_switch_study.hpp): dynamic V_PI by bisection
+//   mpirun -np 2 rfmems-pullin cases/cantilever_switch/case.yaml --set gas.model=esbgk
+//       --set pull_in.mode=transient   # the ESBGK gas distributed over 2 ranks
 //   rfmems-pullin cases/switch_plate/case.yaml --set pull_in.mode=transient
 //       --set pull_in.transient.voltage=180V --set pull_in.transient.end_time=5us
 //       --set coupling.scheme=strongly_coupled --set coupling.macro_step=0.1us
@@ -43,24 +45,44 @@
 #include "io/interrupt_cleanup.hpp"
 #include "io/json_summary.hpp"
 #include "io/result_writer.hpp"
+#include "parallel/communication_counters.hpp"
+#include "parallel/communicator.hpp"
 
 namespace {
 
 using namespace rfmems;
 
 // The immersed-boundary switch (an `immersed` block: coupling/immersed_switch_study.hpp).
+// With gas: esbgk every rank of mpirun runs it: the gas is distributed over the ranks
+// (ImmersedEsbgkSettings::comm), the rest (marking, fits, electrostatics, structure) is
+// computed redundantly on every rank from the same data. The root writes the result; the
+// others write to a scratch file of their own that is never finished (deleted on exit).
 int run_immersed(const DriverCase& run_case, const DriverOptions& options) {
   const CaseFile& case_file = run_case.file;
   const CaseNode& root = run_case.root;
+  const Communicator world = Communicator::world();
   ImmersedSwitchCase c = read_immersed_switch_case(root, run_case.dir);
   case_file.check_all_used();
-  ResultWriter writer(run_case.output, *c.beam->mesh);
-  remove_on_interrupt(temp_path_for(run_case.output));
+  const std::string output =
+      world.is_root() ? run_case.output : run_case.output + ".rank" + std::to_string(world.rank());
+  ResultWriter writer(output, *c.beam->mesh);
+  remove_on_interrupt(temp_path_for(output));
   Json summary;
   summary["case"] = run_case.name;
+  summary["ranks"] = world.size();
   summary["model"] = "plane_immersed";
   summary["output"] = {{"h5", writer.path()}, {"xdmf", writer.xdmf_path()}};
   summary["immersed"] = run_immersed_switch_study(c, root, writer);
+  if (!world.is_serial()) {
+    // What the root sent and waited for (parallel/communication_counters.hpp).
+    const CommunicationCounters sent = communication_counters();
+    summary["communication_rank0"] = {{"messages", sent.messages},
+                                      {"bytes", sent.bytes},
+                                      {"exchanges", sent.exchanges},
+                                      {"reductions", sent.reductions},
+                                      {"wait_cpu_s", sent.wait_cpu_seconds},
+                                      {"wait_wall_s", sent.wait_wall_seconds}};
+  }
   summary["wall_time_s"] = run_case.elapsed();
   writer.write_metadata({{"case_file", case_file.path()},
                          {"case_name", run_case.name},
@@ -69,6 +91,7 @@ int run_immersed(const DriverCase& run_case, const DriverOptions& options) {
                          {"model", "plane_immersed"},
                          {"summary", json_text(summary)}},
                         {{"wall_time_s", run_case.elapsed()}});
+  if (!world.is_root()) return 0;
   writer.finish();
   if (options.json) {
     std::cout << json_text(summary) << std::flush;
@@ -106,7 +129,15 @@ int run(const DriverOptions& options) {
   const std::string& name = run_case.name;
   const std::string& output = run_case.output;
   auto elapsed = [&] { return run_case.elapsed(); };
-  if (root.has("immersed")) return run_immersed(run_case, options);
+  // Under mpirun: the immersed switch with the ESBGK gas on every rank (its gas is
+  // distributed); everything else on the root while the other ranks wait.
+  const Communicator world = Communicator::world();
+  if (root.has("immersed")) {
+    const bool distributed = root.child_or_empty("gas").get_string("model", "none") == "esbgk";
+    if (!world.is_root() && !distributed) return 0;
+    return run_immersed(run_case, options);
+  }
+  if (!world.is_root()) return 0;
   const std::string mode =
       root.child("pull_in").get_choice("mode", {"quasi_static", "dynamic", "transient"});
   SwitchScene scene = build_switch_scene(
@@ -212,5 +243,5 @@ int run(const DriverOptions& options) {
 int main(int argc, char** argv) {
   return driver_main("rfmems-pullin",
                      "rfmems-pullin: quasi-static and dynamic pull-in of an electrostatic switch",
-                     argc, argv, run);
+                     argc, argv, run, RankUse::AllRanks);
 }

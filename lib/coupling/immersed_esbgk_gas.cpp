@@ -12,6 +12,7 @@ ImmersedEsbgkGas::ImmersedEsbgkGas(const Mesh& background, ImmersedEsbgkSettings
                                    Real substrate_y)
     : background_(background), settings_(std::move(settings)), substrate_y_(substrate_y) {
   settings_.options.ib.wall_temperature = settings_.temperature;
+  settings_.options.comm = settings_.comm;
 }
 
 ImmersedEsbgkGas::~ImmersedEsbgkGas() = default;

@@ -26,6 +26,10 @@ struct ImmersedEsbgkSettings {
   int velocities = 10;         // per direction (tensor grid n^3)
   Real velocity_extent = 3.5;  // half-width of the grid in thermal speeds sqrt(2 R T0)
   ImmersedGasOptions options;
+  // The ranks the gas is distributed over (options.comm is set from it): under mpirun every
+  // rank of the program, which must then all run the coupled switch (rfmems-pullin does for
+  // gas: esbgk); in a program without MPI the serial communicator.
+  Communicator comm = Communicator::world();
 };
 
 struct ImmersedEsbgkStats {  // summed over the steps since reset

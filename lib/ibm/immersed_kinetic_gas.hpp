@@ -37,6 +37,22 @@
 // M_FLUID (RemarkReport::mass_carried) is then scaled to M_before + rho_ref dA (mass_target;
 // conserve_mass_on_remark, closed domains only: no pressure patch), so M is an invariant of
 // every set_body too; the scale factor differs from 1 by O((rho_cell - rho_ref) dA / M).
+//
+// Under MPI (options.comm with more than one rank; issues 7 and 8): the background is
+// partitioned once (METIS k-way on its cell graph, weights 16 for a FLUID cell at the first
+// marking, 1 otherwise: the gas's cost is its FLUID cells), on the root and broadcast. Every
+// rank marks, fits, transfers and builds the global FLUID graph from the same global data
+// (deterministic, O(surface) beside the gas), then keeps the FLUID cells of its background
+// cells plus ghosts (FluidGraphPart: the transport neighbours and the IB band the IB fits
+// read). The distribution, the sweeps, the collision and the mass are per rank; ghost values
+// are exchanged after every sweep (block Jacobi between parts, Gauss-Seidel within: the
+// converged step is the serial one, to the step tolerance); norms, masses, boundary flows
+// and the IB-face forces are sums over the ranks (each IB face's force computed by its
+// owner, so the segment forces are the same on every rank). The IB-face values of the
+// global fits come from the band (LocalIbFaceValues; the band starts at the widest ring cap
+// of the fits + 1 and is widened ring by ring while a fit reads beyond it). The carry-over of a
+// re-marking runs per owned cell, with a ghost exchange between its filling passes, so it fills the
+// cells the serial one fills, in the same passes. GasStepper::Ida is serial only.
 #pragma once
 #include <memory>
 #include <optional>
@@ -47,10 +63,13 @@
 #include "fv/face_graph.hpp"
 #include "ibm/cell_marking.hpp"
 #include "ibm/fluid_face_graph.hpp"
+#include "ibm/fluid_graph_part.hpp"
 #include "ibm/force_transfer.hpp"
 #include "ibm/ib_kinetic_face_values.hpp"
 #include "ibm/immersed_surface.hpp"
+#include "ibm/local_ib_face_values.hpp"
 #include "mesh/mesh.hpp"
+#include "parallel/communicator.hpp"
 #include "physics/gas/comet/point_coupled_smoother.hpp"
 #include "physics/gas/kinetic/downwind_ordering.hpp"
 #include "physics/gas/kinetic/kinetic_operator.hpp"
@@ -85,6 +104,10 @@ struct ImmersedGasOptions {
   // Start the step's iteration from f^n + (dt / dt_prev) (f^n - f^(n-1)) (linear
   // extrapolation, when f^(n-1) is on the same graph) instead of f^n.
   bool predictor = false;
+  // The ranks the gas is distributed over (see "Under MPI" above); serial: one process.
+  Communicator comm = Communicator::serial();
+  // The IB band's first depth in rings (0: the fits' widest ring cap + 1); widened as needed.
+  int band_rings = 0;
 };
 
 struct ImmersedGasTimings {  // CPU seconds of the process, accumulated
@@ -110,6 +133,16 @@ struct GasStepReport {
   bool converged = false;
   Real mass_before = 0, mass_after = 0;
   Real boundary_mass_flow = 0;  // out through every patch (IB included), kg/s per unit depth
+};
+
+// The background's partition under MPI (METIS on the background's cell graph, once).
+struct GasPartitionReport {
+  int ranks = 1;
+  Index edge_cut = 0;      // background faces between parts
+  double imbalance = 1.0;  // largest part weight / mean (FLUID cells at rest)
+  Index owned_cells = 0;   // FLUID cells this rank owns, last graph
+  Index ghost_cells = 0;   // and holds as ghosts (transport + IB band)
+  int band_rings = 0;
 };
 
 class ImmersedKineticGas {
@@ -142,7 +175,13 @@ class ImmersedKineticGas {
   Real conserved_mass() const;
 
   const CellMarking& marking() const { return marking_; }
+  // This rank's FLUID graph (serial: the global one) and the global one (every rank holds it).
   const FluidFaceGraph& fluid() const { return *fluid_; }
+  const FluidFaceGraph& global_fluid() const { return *global_fluid_; }
+  // The distribution of every FLUID cell in global FLUID order, on every rank (collective;
+  // serial: distribution()).
+  std::vector<Real> global_distribution() const;
+  const GasPartitionReport& partition() const { return partition_; }
   const KineticOperator& kinetic() const { return *op_; }
   KineticOperator& kinetic() { return *op_; }
   const IbKineticFaceValues& face_values() const { return *values_; }
@@ -153,9 +192,12 @@ class ImmersedKineticGas {
   bool closed() const;
 
  private:
+  bool distributed() const { return !options_.comm.is_serial(); }
+  void partition_background(const CellMarking& rest);
   void rebuild_graph(const CellMarking& marking);
-  std::vector<Real> carry_over(const FluidFaceGraph& fluid, const std::vector<Real>& from,
-                               RemarkReport* report) const;
+  void widen_band(int rings);
+  std::vector<Real> carry_over(const FluidFaceGraph& fluid, const GhostExchange* exchange,
+                               const std::vector<Real>& from, RemarkReport* report) const;
   void sweep(Real b, std::span<const Real> h);
   GasStepReport advance_ida(Real dt);
 
@@ -170,16 +212,24 @@ class ImmersedKineticGas {
   std::optional<ImmersedSurface> body_;
   std::vector<Vec3> segment_velocity_, ib_face_velocity_;
   CellMarking marking_;
-  std::unique_ptr<FluidFaceGraph> fluid_;
+  std::vector<int> owner_rank_;  // per background cell (distributed only)
+  GasPartitionReport partition_;
+  std::unique_ptr<FluidFaceGraph> global_fluid_;
+  std::unique_ptr<FluidGraphPart> part_;   // distributed only
+  const FluidFaceGraph* fluid_ = nullptr;  // this rank's: part_->local, or global_fluid_
   std::unique_ptr<KineticOperator> op_;
   std::unique_ptr<ForceTransfer> transfer_;
-  std::unique_ptr<IbKineticFaceValues> values_;
+  std::unique_ptr<IbKineticFaceValues> values_;      // on the global FLUID graph
+  std::unique_ptr<LocalIbFaceValues> local_values_;  // distributed: values_ on part_
+  std::vector<Real> band_buffer_;                    // its global copy (NaN outside the band)
+  bool has_state_ = false;                           // initialize() was called
   std::vector<DownwindGroup> downwind_;
   std::unique_ptr<PointCoupledSmoother> point_;  // per graph, made on first use
   std::vector<Real> f_;
   std::vector<Real> f_previous_;  // f^(n-1) for BDF2 (empty: none on this graph)
   Real dt_previous_ = 0;
   std::vector<Real> predictor_previous_;  // f^(n-1) carried over a re-marking (predictor only)
+  std::vector<Real> scratch_h_, scratch_r_, scratch_start_, scratch_source_;  // advance()
   Real reference_density_ = 0;
   ImmersedGasTimings timings_;
   RemarkReport remark_;
