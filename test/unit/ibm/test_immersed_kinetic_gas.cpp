@@ -139,6 +139,8 @@ TEST(ImmersedKineticGas, ClosedBoxWithMovingBodyConservesMass) {
   int remarks = 0;
   Real worst_step = 0, worst_carry = 0;
   Vec3 last_force = Vec3::Zero();
+  long negative = 0, entering = 0;
+  Real deepest = 0, deepest_into_solid = 0;
   for (int step = 0; step < 12; ++step) {
     body = body.translated(Vec3(U * dt, 0, 0));
     const Real before = gas.conserved_mass();
@@ -158,6 +160,23 @@ TEST(ImmersedKineticGas, ClosedBoxWithMovingBodyConservesMass) {
     const GasStepReport rep = gas.advance(dt);
     const Real change = rep.mass_after / rep.mass_before - 1;
     worst_step = std::max(worst_step, std::abs(change));
+    // Positivity: the step-(iii) values before the clip, and the face values used after it.
+    const IbPositivityReport& pos = gas.face_values().positivity();
+    negative += pos.negative_entering;
+    entering += pos.entering_values;
+    deepest = std::min(deepest, pos.most_negative_entering);
+    deepest_into_solid = std::min(deepest_into_solid, pos.most_negative_into_solid);
+    EXPECT_EQ(pos.negative_wall_density, 0);
+    const FaceGraph& graph = gas.fluid().graph;
+    const Index N = gas.kinetic().n_ordinates();
+    std::vector<Real> out(N);
+    Real lowest_used = 0;
+    for (Index face = 0; face < graph.n_faces(); ++face) {
+      if (gas.fluid().ib_face[face] < 0) continue;
+      gas.face_values().fill(face, gas.distribution(), out);
+      for (Real v : out) lowest_used = std::min(lowest_used, v);
+    }
+    EXPECT_GE(lowest_used, 0.0) << "step " << step;
     Vec3 f = Vec3::Zero();
     for (const Vec3& x : gas.segment_forces()) f += x;
     last_force = f;
@@ -176,6 +195,10 @@ TEST(ImmersedKineticGas, ClosedBoxWithMovingBodyConservesMass) {
       "%d re-markings; worst gas-step mass change %.2e, worst carry-over %.2e; largest "
       "mass-flux factor |a_i - 1| %.2e\n",
       remarks, worst_step, worst_carry, worst_factor);
+  std::printf(
+      "positivity: %ld of %ld step-(iii) entering values negative before the clip, deepest "
+      "min/max %.3e; step (i) deepest %.3e\n",
+      negative, entering, deepest, deepest_into_solid);
   EXPECT_GE(remarks, 2);
   EXPECT_LE(worst_carry, 5e-3);
   EXPECT_LT(last_force.x(), 0);  // drag opposes the motion
