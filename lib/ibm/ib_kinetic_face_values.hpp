@@ -37,7 +37,10 @@
 // entering values are set to 0 before the mass-flux factor a_i is computed, so the factor
 // restores the face's prescribed mass flux exactly (the entering half is re-scaled); with
 // balance_mass_flux off, the clipped entering half is re-scaled to its unclipped mass flux.
-// Either way the clip changes no mass flux, so the closed-box conservation is untouched.
+// Either way the clip changes no mass flux, so the closed-box conservation is untouched. A face
+// whose entering values are all <= 0 (no non-negative half could carry its flux) takes its
+// FLUID cell's values for them, scaled by a_i (without the balance: unscaled, and its mass flux
+// changes); counted.
 // positivity() reports the last update's count and depth (docs/ibm.md "Positivity").
 #pragma once
 #include <array>
@@ -69,7 +72,8 @@ struct IbPositivityReport {
   Index entering_values = 0;    // step (iii): IB faces x entering ordinates
   Index negative_entering = 0;  // of those, < 0
   Index faces_with_negative = 0;
-  Real most_negative_entering = 0;    // min over faces of min_k e_ik / max_k e_ik (<= 0)
+  Real most_negative_entering = 0;    // min over faces of min_k e_ik / max_k abs(e_ik) (>= -1)
+  Index faces_from_cell = 0;          // all entering values <= 0: the FLUID cell's taken
   Index negative_into_solid = 0;      // step (i): segments x into-solid ordinates < 0
   Real most_negative_into_solid = 0;  // min over segments of min_k g_jk / max_k g_jk
   Index negative_wall_density = 0;    // step (ii): segments with n_j < 0

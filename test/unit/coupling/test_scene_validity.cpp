@@ -190,7 +190,8 @@ TEST(SceneValidity, KineticKnudsenRangeAndVelocityGridCover) {
 // The cell size against the mean free path: argon at Kn = 0.1 over 1 m (lambda = 0.1 m) is
 // inside on 80 cells (h / (2 lambda) = 0.0625) and on 10 (0.5); 4 cells (1.25) warn once, with
 // the key; the immersed switch's air at 1.36e4 Pa, 300 K (lambda = 0.463 um) on the 150 x 50
-// background (h = 0.5 um along x: 0.54) is inside, at 1e5 Pa (lambda = 63 nm: 4.0) it warns.
+// background (h = 0.2 um, the cells' smaller side: 0.22) is inside, at 1e5 Pa (lambda = 63 nm:
+// 1.59) it warns.
 TEST(SceneValidity, KineticCellSizeAgainstTheMeanFreePath) {
   SceneDescription s;
   s.kinetic.present = true;
@@ -223,9 +224,9 @@ TEST(SceneValidity, KineticCellSizeAgainstTheMeanFreePath) {
   for (Real p : {1.36e4, 1e5}) {
     const Real lambda = mean_free_path(p / (R * T), T, mu, R);
     ValidityReport r;
-    check_cell_size_against_mean_free_path(0.5e-6, lambda, lambda, "immersed.background.cells", r);
+    check_cell_size_against_mean_free_path(0.2e-6, lambda, lambda, "immersed.background.cells", r);
     EXPECT_EQ(r.warnings.size(), p > 5e4 ? 1u : 0u) << p;
-    EXPECT_NEAR(r.find("kinetic_upwind_viscosity_ratio")->max, 0.5e-6 / (2 * lambda), 1e-12);
+    EXPECT_NEAR(r.find("kinetic_upwind_viscosity_ratio")->max, 0.2e-6 / (2 * lambda), 1e-12);
     if (p < 5e4) EXPECT_NEAR(lambda, 0.463e-6, 1e-9);
   }
 }
