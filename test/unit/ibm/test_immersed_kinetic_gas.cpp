@@ -9,14 +9,15 @@
 //  - the IB-face values follow the three steps: for the uniform rest state the wall density of
 //    every segment (step ii) is the gas's, and the mass-flux factors are 1 (1e-12);
 //  - a closed box (diffuse walls) with a square body moving along x at 40 m/s, 12 steps, 8
-//    re-markings (5 before the marking's snap to grid lines): every gas step conserves the FLUID mass to 1e-10 relative (the IB faces
-//    carry rho_ref u . S, summing to zero around the body); the domain's gas mass
-//    M = M_FLUID + rho_ref (A - A_body - A_FLUID) is conserved to 1e-10 per step, re-markings
-//    included (there by the scaling of the carry-over to M_before + rho_ref dA); the carry-over
-//    alone lands within 5e-3 of that target (measured <= 3.1e-3: the scaling corrects only the
-//    density differences, rho_cell - rho_ref ~ 10 % at Mach 0.13, of the 7 cells of 576 that
-//    change class), and the x-force on the moving body opposes its motion (drag); no IB-face
-//    value used is negative (the clip; measured: none was before it either, 0 of 33 912);
+//    re-markings (5 before the marking's snap to grid lines): every gas step conserves the
+//    FLUID mass to 1e-10 relative (the IB faces carry rho_ref u . S, summing to zero around
+//    the body); the domain's gas mass M = M_FLUID + rho_ref (A - A_body - A_FLUID) is
+//    conserved to 1e-10 per step, re-markings included (there by the scaling of the carry-over
+//    to M_before + rho_ref dA); the carry-over alone lands within 5e-3 of that target
+//    (measured <= 3.1e-3: the scaling corrects only the density differences, rho_cell -
+//    rho_ref ~ 10 % at Mach 0.13, of the 7 cells of 576 that change class), and the x-force on
+//    the moving body opposes its motion (drag); no IB-face value used is negative (the clip;
+//    measured: none was before it either, 0 of 33 912);
 //  - time accuracy: a density wave (1 + 0.1 sin 2 pi x) in the box around a body at rest,
 //    integrated to 1 ms with dt = 250, 125, 62.5 us against BDF2 at 15.6 us: the density error
 //    falls at observed order ~1 for backward Euler and ~2 for BDF2 (asserted [0.8, 1.3] and
