@@ -10,8 +10,9 @@
 // re-build, interpolate), advance(dt) (backward Euler to --tolerance), segment forces.
 // Reported per step, CPU seconds of the process: marking (mark + fluid graph + carry-over),
 // interpolation (IB fits, force transfer, wall Maxwellians), gas (the sweeps); the sweeps, the
-// gas force on the beam, the mass change. One JSON object per line; the load average is in the
-// last line.
+// gas force on the beam, the mass change, and the negative step-(iii) entering values before
+// the clip (count and the deepest min/max ratio of a face; step (i) likewise). One JSON object
+// per line; the load average is in the last line.
 //
 //   build/bench/bench_ibm_gas [--steps 3] [--dt 5e-8] [--nx 150] [--ny 50] [--nv 10]
 //                             [--tolerance 1e-8] [--stepper sweeps|ida] [--ida-rtol 1e-6]
@@ -129,28 +130,35 @@ int main(int argc, char** argv) {
     Vec3 force = Vec3::Zero();
     for (const Vec3& f : gas.segment_forces()) force += f;
     const ImmersedGasTimings& t = gas.timings();
-    bench::emit(nlohmann::json{{"bench", "ibm_gas"},
-                               {"phase", "step"},
-                               {"step", n},
-                               {"tip_deflection_um", v_tip * dt * n / um},
-                               {"reclassified", gas.last_remark().reclassified},
-                               {"marking_cpu_s", t.marking - last.marking},
-                               {"interpolation_cpu_s", t.interpolation - last.interpolation},
-                               {"gas_cpu_s", t.gas - last.gas},
-                               {"stepper", stepper},
-                               {"smoother", smoother},
-                               {"predicted", rep.predicted},
-                               {"tolerance", tolerance},
-                               {"dt", dt},
-                               {"order", rep.order},
-                               {"sweeps", rep.sweeps},
-                               {"newton", rep.newton},
-                               {"krylov", rep.krylov},
-                               {"mass_change", rep.mass_after / rep.mass_before - 1},
-                               {"converged", rep.converged},
-                               {"residual_ratio", rep.residual_ratio},
-                               {"force_y_N_per_m", force.y()},
-                               {"wall_s", bench::now() - w1}});
+    bench::emit(nlohmann::json{
+        {"bench", "ibm_gas"},
+        {"phase", "step"},
+        {"step", n},
+        {"tip_deflection_um", v_tip * dt * n / um},
+        {"reclassified", gas.last_remark().reclassified},
+        {"marking_cpu_s", t.marking - last.marking},
+        {"interpolation_cpu_s", t.interpolation - last.interpolation},
+        {"gas_cpu_s", t.gas - last.gas},
+        {"stepper", stepper},
+        {"smoother", smoother},
+        {"predicted", rep.predicted},
+        {"tolerance", tolerance},
+        {"dt", dt},
+        {"order", rep.order},
+        {"sweeps", rep.sweeps},
+        {"newton", rep.newton},
+        {"krylov", rep.krylov},
+        {"mass_change", rep.mass_after / rep.mass_before - 1},
+        {"converged", rep.converged},
+        {"residual_ratio", rep.residual_ratio},
+        {"force_y_N_per_m", force.y()},
+        {"negative_entering", gas.face_values().positivity().negative_entering},
+        {"entering_values", gas.face_values().positivity().entering_values},
+        {"faces_with_negative", gas.face_values().positivity().faces_with_negative},
+        {"most_negative_entering", gas.face_values().positivity().most_negative_entering},
+        {"negative_into_solid", gas.face_values().positivity().negative_into_solid},
+        {"most_negative_into_solid", gas.face_values().positivity().most_negative_into_solid},
+        {"wall_s", bench::now() - w1}});
     last = t;
   }
   double load[3] = {0, 0, 0};

@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "coupling/immersed_esbgk_gas.hpp"
 #include "coupling/immersed_reynolds_film.hpp"
+#include "coupling/scene_validity.hpp"
 #include "io/probes.hpp"
 
 namespace rfmems {
@@ -316,6 +317,17 @@ Json run_immersed_switch_study(ImmersedSwitchCase& c, const CaseNode& root, Resu
         "Reynolds film followed to a gap below half the rest gap (large "
         "displacement: the 1D film takes h from the deformed beam, no edge "
         "correction at the tip)");
+  // ESBGK on the background: its cell size against the mean free path (scene_validity.hpp).
+  if (c.gas && root.child_or_empty("gas").get_choice("model", {"none", "reynolds", "esbgk"},
+                                                     "none") == "esbgk") {
+    const ImmersedSwitchGeometry& g = c.geometry;
+    const Real hx = (g.background_upper.x() - g.background_lower.x()) / g.background_cells[0];
+    ValidityReport v;
+    check_cell_size_against_mean_free_path(std::min(hx, cell), c.mean_free_path, c.mean_free_path,
+                                           "immersed.background.cells", v);
+    for (const std::string& w : v.warnings) warnings.push_back(w);
+    j["kinetic_upwind_viscosity_ratio"] = v.ranges.front().max;
+  }
   j["validity_warnings"] = warnings;
   j["cpu"] = times_json(s.times());
   j["study_wall_s"] = wall();

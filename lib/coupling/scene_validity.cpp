@@ -9,6 +9,7 @@
 #include "coupling/pull_in_study.hpp"
 #include "coupling/switch_scene.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/distributed_mesh.hpp"
 #include "physics/creep/creep_case.hpp"
 #include "physics/gas/kinetic/kinetic_case.hpp"
 
@@ -103,8 +104,12 @@ void check_parallel_plate(const SceneDescription &s, ValidityReport &r) {
 void check_kinetic(const SceneDescription::Kinetic &k, ValidityReport &r) {
   // lambda = mu / p sqrt(pi R T / 2), p = rho R T (Bird's hard-sphere mean free path).
   auto knudsen = [&](Real rho, Real T, Real mu) {
-    return mu / (rho * k.gas_constant * T) * std::sqrt(M_PI * k.gas_constant * T / 2) / k.length;
+    return mean_free_path(rho, T, mu, k.gas_constant) / k.length;
   };
+  if (k.cell_size > 0)
+    check_cell_size_against_mean_free_path(
+        k.cell_size, knudsen(k.density_max, k.temperature_min, k.viscosity_min) * k.length,
+        knudsen(k.density_min, k.temperature_max, k.viscosity_max) * k.length, k.cell_size_key, r);
   r.ranges.push_back({"kinetic_knudsen", knudsen(k.density_max, k.temperature_min, k.viscosity_min),
                       knudsen(k.density_min, k.temperature_max, k.viscosity_max)});
   const Real needed = k.wall_speed + C::kVelocityGridThermalSpeeds *
@@ -120,6 +125,24 @@ void check_kinetic(const SceneDescription::Kinetic &k, ValidityReport &r) {
 }
 
 }  // namespace
+
+Real mean_free_path(Real density, Real temperature, Real viscosity, Real gas_constant) {
+  return viscosity / (density * gas_constant * temperature) *
+         std::sqrt(M_PI * gas_constant * temperature / 2);
+}
+
+void check_cell_size_against_mean_free_path(Real cell_size, Real lambda_min, Real lambda_max,
+                                            const std::string &key, ValidityReport &r) {
+  const Real worst = cell_size / (2 * lambda_min), best = cell_size / (2 * lambda_max);
+  r.ranges.push_back({"kinetic_upwind_viscosity_ratio", best, worst});
+  if (worst > C::kMaxUpwindViscosityRatio)
+    r.warnings.push_back(fmt::format(
+        "kinetic gas: cell size h = {:.3g} m is {:.3g} times 2 lambda (lambda = {:.3g} m): "
+        "first-order upwinding adds a numerical viscosity mu_num / mu = h / (2 lambda) = {:.3g} "
+        "(above {:g}); refine {}",
+        cell_size, worst, lambda_min, worst, C::kMaxUpwindViscosityRatio,
+        key.empty() ? "the mesh" : key));
+}
 
 const ValidityRange *ValidityReport::find(const std::string &name) const {
   for (const ValidityRange &range : ranges)
@@ -228,6 +251,19 @@ ValidityReport kinetic_scene_validity(const KineticScene &scene, const Communica
   k.gas_constant = op.gas().R;
   k.length = scene.reference_length;
   k.velocity_extent = op.grid().extent.minCoeff();
+  // h: the largest over the owned cells of the cell's smallest extent, volume / largest face
+  // (a rectangle's shorter side): the resolution across a film or a Couette flow's shear, so
+  // a quasi-1D mesh (one wide column) is judged by its rows.
+  Real h = 0;
+  const Mesh &mesh = scene.distributed ? scene.distributed->local.mesh : *scene.mesh;
+  for (Index c = 0; c < mesh.n_owned_cells(); ++c) {
+    Real largest_face = 0;
+    for (Index f : mesh.cell_faces(c))
+      largest_face = std::max(largest_face, mesh.face_area(f).norm());
+    if (largest_face > 0) h = std::max(h, mesh.cell_volume(c) / largest_face);
+  }
+  k.cell_size = comm.max(h);
+  k.cell_size_key = "mesh.cells";
   k.wall_temperature = scene.initial.T;  // the grid's thermal speed is the initial state's
   for (const KineticBoundary &b : op.boundaries())
     if (b.kind == KineticBoundaryKind::DiffuseWall || b.kind == KineticBoundaryKind::Pressure) {

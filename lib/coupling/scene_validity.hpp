@@ -32,7 +32,14 @@
 //  - Kinetic gas: Kn = lambda/L over the computed density range (lambda = mu(T)/p
 //    sqrt(pi R T/2) with p = rho R T), reported; the velocity grid's half-extent must cover
 //    every wall's speed plus 3 thermal speeds sqrt(2 R T_wall) (a Maxwellian keeps
-//    exp(-9) ~ 1e-4 of its mass beyond 3 thermal speeds).
+//    exp(-9) ~ 1e-4 of its mass beyond 3 thermal speeds);
+//    the cell size h against the mean free path: the first-order upwind scheme adds the
+//    diffusion h |c| / 2 to every ordinate, a numerical viscosity mu_num / mu = h / (2 lambda)
+//    (docs/gas_damping.md "Continuum end": 6.9 there, the damping 7.2x the continuum's). Warn
+//    where h / (2 lambda) > 1 at the densest state (the numerical viscosity above the physical
+//    one), naming the case key that sets h. h is the largest cell's smallest extent (volume /
+//    largest face: the resolution across a film's or a Couette flow's shear; the numerical
+//    viscosity along a coarser direction is larger still, so the warning is never spurious).
 #pragma once
 #include <limits>
 #include <string>
@@ -81,6 +88,8 @@ struct SceneDescription {
     Real velocity_extent = 0;   // the grid's smallest half-extent [m/s]
     Real wall_speed = 0;        // the largest wall velocity component [m/s]
     Real wall_temperature = 0;  // the hottest wall [K]
+    Real cell_size = 0;         // h [m]: max over cells of the smallest extent (0: no check)
+    std::string cell_size_key;  // the case key that sets h, e.g. "mesh.cells"
   } kinetic;
 };
 
@@ -97,6 +106,7 @@ struct ValidityReport {
 };
 
 // The thresholds above, for the tests and the README.
+struct ValidityReport;
 struct ValidityCriteria {
   static constexpr Real kVeijolaMaxKnudsen = 880;
   static constexpr Real kContinuumMaxKnudsen = 0.01;
@@ -108,7 +118,17 @@ struct ValidityCriteria {
   static constexpr Real kFringingMaxForceError = 0.1;
   static constexpr Real kFringingCorrectionMaxGapOverWidth = 0.5;
   static constexpr Real kVelocityGridThermalSpeeds = 3;
+  static constexpr Real kMaxUpwindViscosityRatio = 1;  // h / (2 lambda)
 };
+
+// Bird's hard-sphere mean free path lambda = mu / (rho R T) sqrt(pi R T / 2) [m].
+Real mean_free_path(Real density, Real temperature, Real viscosity, Real gas_constant);
+
+// The cell-size criterion alone (for a run that has h and lambda but no SceneDescription, e.g.
+// the immersed switch's ESBGK gas): the range "kinetic_upwind_viscosity_ratio" = h / (2 lambda)
+// into r, and a warning naming `key` when it exceeds the limit.
+void check_cell_size_against_mean_free_path(Real cell_size, Real lambda_min, Real lambda_max,
+                                            const std::string &key, ValidityReport &r);
 
 ValidityReport check_scene_validity(const SceneDescription &scene);
 

@@ -30,6 +30,18 @@
 // Measured factors: |a_i - 1| <= 2.1e-7 in the Couette flow (tangential wall); up to 0.16 in
 // the closed box with a body moving normally at 40 m/s (Mach 0.12; test_immersed_kinetic_gas):
 // there the raw step-3 values miss part of the gas the body pushes.
+//
+// Positivity (`clip_negative`, default on). The step-(iii) fits have Lebesgue constants up
+// to 2.5 (and step (i) up to 8), so an entering value can come out negative where f varies
+// steeply across the stencil (the tail of the velocity grid beside a moving wall). Negative
+// entering values are set to 0 before the mass-flux factor a_i is computed, so the factor
+// restores the face's prescribed mass flux exactly (the entering half is re-scaled); with
+// balance_mass_flux off, the clipped entering half is re-scaled to its unclipped mass flux.
+// Either way the clip changes no mass flux, so the closed-box conservation is untouched. A face
+// whose entering values are all <= 0 (no non-negative half could carry its flux) takes its
+// FLUID cell's values for them, scaled by a_i (without the balance: unscaled, and its mass flux
+// changes); counted.
+// positivity() reports the last update's count and depth (docs/ibm.md "Positivity").
 #pragma once
 #include <array>
 #include <span>
@@ -52,6 +64,19 @@ struct IbKineticOptions {
   IbInterpolationOptions face_options = {};                                           // step (iii)
   IbInterpolationOptions surface_options = IbInterpolation::surface_point_options();  // step (i)
   bool balance_mass_flux = true;
+  bool clip_negative = true;  // entering values < 0 set to 0, the mass flux kept (above)
+};
+
+// Negative values of the last update, before any clipping.
+struct IbPositivityReport {
+  Index entering_values = 0;    // step (iii): IB faces x entering ordinates
+  Index negative_entering = 0;  // of those, < 0
+  Index faces_with_negative = 0;
+  Real most_negative_entering = 0;    // min over faces of min_k e_ik / max_k abs(e_ik) (>= -1)
+  Index faces_from_cell = 0;          // all entering values <= 0: the FLUID cell's taken
+  Index negative_into_solid = 0;      // step (i): segments x into-solid ordinates < 0
+  Real most_negative_into_solid = 0;  // min over segments of min_k g_jk / max_k g_jk
+  Index negative_wall_density = 0;    // step (ii): segments with n_j < 0
 };
 
 class IbKineticFaceValues : public ExternalFaceValues {
@@ -74,6 +99,7 @@ class IbKineticFaceValues : public ExternalFaceValues {
   // After update(): the wall density n_j of segment j (step ii) and the mass-flux factors a_i.
   Real wall_density(Index segment) const { return wall_density_[segment]; }
   std::span<const Real> flux_factors() const { return factor_; }
+  const IbPositivityReport& positivity() const { return positivity_; }
   // Degree counts and one-sided faces of the step-(iii) fits over all groups.
   Index count_one_sided() const;
   Index count_degree(int degree) const;
@@ -108,6 +134,7 @@ class IbKineticFaceValues : public ExternalFaceValues {
   std::vector<Real> entering_;           // per IB face x N: step (iii), scaled
   std::vector<Real> factor_;             // per IB face: a_i
   std::vector<IbFaceFit> fits_;          // step (iii) fits, all groups
+  IbPositivityReport positivity_;
 };
 
 }  // namespace rfmems

@@ -6,7 +6,8 @@
 # Veijola's 880 at the deepest computed gap) and a 45 um thick plate (L/h = 8.9 < 10) print one
 # "rfmems-pullin: warning: ..." line each on stderr, listed in the JSON too; --quiet silences
 # the stderr lines but not the JSON. rfmems-creep: the plate creep criterion L/h >= 20;
-# rfmems-gas: the kinetic Kn range and the velocity grid's cover of the walls.
+# rfmems-gas: the kinetic Kn range, the velocity grid's cover of the walls and the cell size
+# against the mean free path.
 #
 # Usage: bash test_validity.sh <directory of the drivers> <source directory>
 set -uo pipefail
@@ -102,6 +103,25 @@ sys.exit(0 if len(v['warnings']) == $want and abs(kn[0] - 0.1) < 1e-4 and abs(kn
     fi
   else
     fail "gas couette, velocity extent $extent: $(cat "$WORK/gas$extent.err")"
+  fi
+done
+
+# rfmems-gas: the cell size against the mean free path (Kn = 0.1 over 1 m: lambda = 0.1 m):
+# 20 cells (h / (2 lambda) = 0.25) are inside; 4 cells (1.25 > 1: upwinding's numerical
+# viscosity above the physical one) warn once, naming mesh.cells.
+for cells in 20 4; do
+  if "$GAS" "$SRC/cases/gas_couette/case.yaml" --set "mesh.cells=[1, $cells]" \
+      -o "$WORK/gash$cells.h5" --json >"$WORK/gash$cells.json" 2>"$WORK/gash$cells.err"; then
+    want=$([ "$cells" = 4 ] && echo 1 || echo 0)
+    if [ "$(grep -c "^rfmems-gas: warning: kinetic gas: cell size .*refine mesh.cells" "$WORK/gash$cells.err")" -eq "$want" ] &&
+       $PY -c "import json,sys; v=json.load(open(sys.argv[1]))['validity']; q=v['ranges']['kinetic_upwind_viscosity_ratio']
+sys.exit(0 if len(v['warnings']) == $want and abs(q[1] - 1.0 / $cells / 0.2) < 1e-3 * q[1] else 1)" "$WORK/gash$cells.json"; then
+      pass "gas couette, $cells cells: $want cell-size warning(s)"
+    else
+      fail "gas couette, $cells cells: stderr $(cat "$WORK/gash$cells.err"), $(cat "$WORK/gash$cells.json")"
+    fi
+  else
+    fail "gas couette, $cells cells: $(cat "$WORK/gash$cells.err")"
   fi
 done
 

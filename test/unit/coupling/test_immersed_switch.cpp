@@ -1,11 +1,10 @@
 // The coupled immersed-boundary switch (issue 8): the thesis's cantilever (Fig. 6.5) on
 // coarse meshes, against closed forms and the scene's own static solve.
 //
-// Backgrounds are 151 x 51 / 101 x 31 rather than 150 x 50 / 100 x 30: with those the beam's
-// top face and tip lie on grid lines at rest, and a deflection of a few nm then cuts slivers
-// off the cells beside them, where lib/ibm gives a spurious force (measured at 50 V: the top
-// of the tip's last 3 um pulled up by 4.3e-3 N/m instead of 1.8e-5 after a 44 nm deflection;
-// the static fixed point did not converge). docs/immersed_switch.md.
+// Backgrounds are 151 x 51 / 101 x 31, where the figures below were measured. They were chosen
+// because on 150 x 50 / 100 x 30 the beam's top and tip lie on grid lines and slivers gave a
+// spurious force; lib/ibm's marking now snaps them (test_immersed_switch_slivers: 150 x 50
+// converges at 50 V in 7 iterates), so the thesis sizes would work too. docs/immersed_switch.md.
 #include <gtest/gtest.h>
 
 #include <cmath>

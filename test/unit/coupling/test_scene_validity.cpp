@@ -187,5 +187,49 @@ TEST(SceneValidity, KineticKnudsenRangeAndVelocityGridCover) {
   EXPECT_EQ(check_scene_validity(s).warnings.size(), 1u);
 }
 
+// The cell size against the mean free path: argon at Kn = 0.1 over 1 m (lambda = 0.1 m) is
+// inside on 80 cells (h / (2 lambda) = 0.0625) and on 10 (0.5); 4 cells (1.25) warn once, with
+// the key; the immersed switch's air at 1.36e4 Pa, 300 K (lambda = 0.463 um) on the 150 x 50
+// background (h = 0.2 um, the cells' smaller side: 0.22) is inside, at 1e5 Pa (lambda = 63 nm:
+// 1.59) it warns.
+TEST(SceneValidity, KineticCellSizeAgainstTheMeanFreePath) {
+  SceneDescription s;
+  s.kinetic.present = true;
+  auto &k = s.kinetic;
+  k.gas_constant = 208.13;
+  k.temperature_min = k.temperature_max = 273.15;
+  k.viscosity_min = k.viscosity_max = 2.117e-5;
+  k.length = 1;
+  const Real rt = k.gas_constant * k.temperature_min;
+  k.density_min = k.density_max = k.viscosity_min * std::sqrt(M_PI * rt / 2) / (0.1 * rt);
+  EXPECT_NEAR(mean_free_path(k.density_min, k.temperature_min, k.viscosity_min, k.gas_constant),
+              0.1, 1e-12);
+  k.velocity_extent = 3.5 * std::sqrt(2 * rt);
+  k.wall_temperature = k.temperature_min;
+  k.cell_size_key = "mesh.cells";
+  for (int cells : {80, 10, 4}) {
+    k.cell_size = 1.0 / cells;
+    const ValidityReport r = check_scene_validity(s);
+    const Real ratio = 1.0 / cells / (2 * 0.1);
+    EXPECT_NEAR(r.find("kinetic_upwind_viscosity_ratio")->max, ratio, 1e-12);
+    EXPECT_EQ(r.warnings.size(), cells == 4 ? 1u : 0u) << cells;
+    EXPECT_EQ(count_containing(r, "numerical viscosity"), cells == 4 ? 1 : 0);
+    EXPECT_EQ(count_containing(r, "refine mesh.cells"), cells == 4 ? 1 : 0);
+  }
+  k.cell_size = 0;  // not given: no range, no warning
+  EXPECT_EQ(check_scene_validity(s).find("kinetic_upwind_viscosity_ratio"), nullptr);
+
+  // Air (R = 287.05, mu = 1.712e-5 Pa s, 300 K) at the switch's pressure and at 1 atm.
+  const Real R = 287.05, T = 300, mu = 1.712e-5;
+  for (Real p : {1.36e4, 1e5}) {
+    const Real lambda = mean_free_path(p / (R * T), T, mu, R);
+    ValidityReport r;
+    check_cell_size_against_mean_free_path(0.2e-6, lambda, lambda, "immersed.background.cells", r);
+    EXPECT_EQ(r.warnings.size(), p > 5e4 ? 1u : 0u) << p;
+    EXPECT_NEAR(r.find("kinetic_upwind_viscosity_ratio")->max, 0.2e-6 / (2 * lambda), 1e-12);
+    if (p < 5e4) EXPECT_NEAR(lambda, 0.463e-6, 1e-9);
+  }
+}
+
 }  // namespace
 }  // namespace rfmems

@@ -56,8 +56,12 @@ TEST(CellMarking, StructuredNumberingIsRowMajor) {
     }
 }
 
-// Checks the invariants any marking must have.
-void expect_consistent(const Mesh& mesh, const CellMarking& m, const ImmersedSurface& body) {
+// Checks the invariants any marking must have. A FLUID | SOLID face lies on the surface the
+// marking used: the body with its vertices snapped to grid lines (CellMarkingOptions).
+void expect_consistent(const CellMarker& marker, const CellMarking& m,
+                       const ImmersedSurface& true_body) {
+  const Mesh& mesh = marker.mesh();
+  const ImmersedSurface body = marker.snapped(true_body);
   ASSERT_EQ(m.cell.size(), static_cast<std::size_t>(mesh.n_cells()));
   for (std::size_t k = 0; k < m.ib_faces.size(); ++k) {
     const Index f = m.ib_faces[k], c = m.ib_face_fluid_cell[k];
@@ -92,7 +96,7 @@ TEST(CellMarking, BeamHandCounted) {
   CellMarker marker(mesh);
   const auto beam = ImmersedSurface::rectangle({1.5 * h, 2.5 * h, 0}, {6.5 * h, 5.5 * h, 0}, 3, 2);
   CellMarking m = marker.mark(beam);
-  expect_consistent(mesh, m, beam);
+  expect_consistent(marker, m, beam);
   EXPECT_EQ(m.count(CellClass::ImmersedBoundary), 16);
   EXPECT_EQ(m.count(CellClass::Solid), 8);
   EXPECT_EQ(m.count(CellClass::Fluid), 40);
@@ -119,7 +123,7 @@ TEST(CellMarking, BeamOnGridLinesHasNoCutCells) {
   CellMarker marker(mesh);
   const auto beam = ImmersedSurface::rectangle({2 * h, 3 * h, 0}, {6 * h, 5 * h, 0}, 4, 2);
   CellMarking m = marker.mark(beam);
-  expect_consistent(mesh, m, beam);
+  expect_consistent(marker, m, beam);
   EXPECT_EQ(m.count(CellClass::ImmersedBoundary), 0);
   EXPECT_EQ(m.count(CellClass::Solid), 8);
   EXPECT_EQ(m.count(CellClass::Fluid), 56);
@@ -155,7 +159,7 @@ TEST(CellMarking, CircleHandCounted) {
   const Real r = 2.4 * h;
   const auto circle = ImmersedSurface::circle(centre, r, 400, 0.1);
   CellMarking m = marker.mark(circle);
-  expect_consistent(mesh, m, circle);
+  expect_consistent(marker, m, circle);
   EXPECT_EQ(m.count(CellClass::Solid), 12);
   EXPECT_EQ(m.count(CellClass::ImmersedBoundary), 20);
   EXPECT_EQ(m.count(CellClass::Fluid), 32);
@@ -192,7 +196,7 @@ TEST(CellMarking, MovingBodyReMarksShiftedByOneCell) {
   expect_shifted(m0, marker.mark(beam.translated({0, -h, 0})), 0, -1);
   const auto moved = beam.translated({h, h, 0});
   const CellMarking m1 = marker.mark(moved);
-  expect_consistent(mesh, m1, moved);
+  expect_consistent(marker, m1, moved);
   expect_shifted(m0, m1, 1, 1);
 
   const auto circle = ImmersedSurface::circle({4 * h, 4 * h, 0}, 2.4 * h, 400, 0.1);
@@ -203,7 +207,7 @@ TEST(CellMarking, MovingBodyReMarksShiftedByOneCell) {
   // consistent.
   const auto half = circle.translated({0.5 * h, 0, 0});
   const CellMarking c1 = marker.mark(half);
-  expect_consistent(mesh, c1, half);
+  expect_consistent(marker, c1, half);
   for (Index c = 0; c < mesh.n_cells(); ++c)
     EXPECT_EQ(c1.cell[c], analytic_circle_class(mesh, c, {4.5 * h, 4 * h, 0}, 2.4 * h));
 }
@@ -216,7 +220,7 @@ TEST(CellMarking, AreaOfSolidAndIbCellsConvergesToTheBodyArea) {
     Mesh mesh = unit_square(n);
     CellMarker marker(mesh);
     CellMarking m = marker.mark(circle);
-    expect_consistent(mesh, m, circle);
+    expect_consistent(marker, m, circle);
     const Real solid = m.area(mesh, CellClass::Solid);
     const Real ib = m.area(mesh, CellClass::ImmersedBoundary);
     EXPECT_LT(solid, circle.area());
@@ -248,7 +252,7 @@ TEST(CellMarking, BodyAnchoredInTheOuterBoundary) {
   // A cantilever from beyond the left wall to x = 5.5h, 1.5h < y < 3.5h.
   const auto beam = ImmersedSurface::rectangle({-0.2, 1.5 * h, 0}, {5.5 * h, 3.5 * h, 0}, 6, 2);
   CellMarking m = marker.mark(beam);
-  expect_consistent(mesh, m, beam);
+  expect_consistent(marker, m, beam);
   // Rows j = 1 and 3 are cut for i <= 5, row 2 cut only at i = 5 (the tip),
   // SOLID i <= 4.
   for (int i = 0; i <= 4; ++i) {
@@ -275,7 +279,7 @@ TEST(CellMarking, SurfaceWithinRoundOffOfAGridLine) {
   beam.n[1] = 5;
   const auto body = ImmersedSurface::from_mesh_boundary(make_structured_mesh(beam));
   CellMarking m = marker.mark(body);
-  expect_consistent(mesh, m, body);
+  expect_consistent(marker, m, body);
   auto id = [](int i, int j) { return 40 * j + i; };
   for (int i = 9; i <= 32; ++i) {
     EXPECT_EQ(m.cell[id(i, 17)], CellClass::ImmersedBoundary) << i;  // y = 0.43 cuts row 17

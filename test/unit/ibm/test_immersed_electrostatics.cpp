@@ -11,8 +11,11 @@
 //  - coaxial cylinders: a circle of radius R1 at V inside a square whose sides carry the
 //    exact potential V ln(r/R2)/ln(R1/R2): the charge converges to 2 pi eps V / ln(R2/R1) and
 //    the potential to the exact field on 40..160 cells per side. Observed orders asserted
-//    >= 1.8 with the fit-gradient IB-face flux (measured: charge 3.48, max-norm potential
-//    2.83) and >= 1.5 / 1.4 with the two-point one (measured 1.76 / 1.55);
+//    >= 1.8 with the fit-gradient IB-face flux (measured: charge 3.80, max-norm potential
+//    2.75) and >= 1.5 / 1.3 with the two-point one (measured 1.73 / 1.34). The marking's
+//    snap to grid lines (cell_marking.hpp) lowered every error (two-point potential
+//    1.91e-3, 6.20e-4, 2.236e-4 -> 1.44e-3, 6.04e-4, 2.230e-4), the coarse ones most, which
+//    is what lowered that fitted order from 1.55;
 //  - a finite beam (b/g = 10, 12.5): the charge under it exceeds the parallel plate's by less
 //    than 10 % (edge fringing), the whole beam (sides, top) carries more, under 1.5 times;
 //    moved closer and re-marked, it carries more charge and relatively less fringing;
@@ -125,7 +128,7 @@ TEST(ImmersedElectrostatics, CoaxialCylindersConverge) {
         charge_errors[2], q_order, potential_errors[0], potential_errors[1], potential_errors[2],
         phi_order);
     EXPECT_GE(q_order, gradient ? 1.8 : 1.5);
-    EXPECT_GE(phi_order, gradient ? 1.8 : 1.4);
+    EXPECT_GE(phi_order, gradient ? 1.8 : 1.3);
     EXPECT_LT(charge_errors.back(), 1e-3);
   }
 }
