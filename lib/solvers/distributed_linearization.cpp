@@ -1,0 +1,67 @@
+#include "solvers/distributed_linearization.hpp"
+
+#include <algorithm>
+
+namespace rfmems {
+
+DistributedLinearization::DistributedLinearization(DistributedSystem& system,
+                                                   bool with_derivative_terms)
+    : system_(system), with_derivative_terms_(with_derivative_terms) {
+  const CsrPattern& full = system_.jacobian_pattern();
+  const Index n = system_.owned_size();
+  for (Index i = 0; i < n; ++i) {
+    for (Index e = full.row_ptr[i]; e < full.row_ptr[i + 1]; ++e)
+      if (full.col_idx[e] < n) {
+        block_pattern_.col_idx.push_back(full.col_idx[e]);
+        block_source_.push_back(e);
+      }
+    block_pattern_.row_ptr.push_back(block_pattern_.nnz());
+  }
+  a_.resize(full.nnz());
+  if (with_derivative_terms_) b_.resize(full.nnz());
+  block_values_.resize(block_pattern_.nnz());
+  column_work_.resize(system_.local_columns());
+}
+
+DistributedLinearization::~DistributedLinearization() = default;
+
+void DistributedLinearization::setup(Real t, Real c_j, std::span<const Real> y,
+                                     std::span<const Real> yp) {
+  system_.jacobian(t, 0.0, y, yp, a_);
+  if (with_derivative_terms_) {
+    system_.jacobian(t, 1.0, y, yp, b_);
+    for (std::size_t e = 0; e < b_.size(); ++e) b_[e] -= a_[e];
+  }
+  for (std::size_t k = 0; k < block_source_.size(); ++k) {
+    const Index e = block_source_[k];
+    block_values_[k] = with_derivative_terms_ ? a_[e] + c_j * b_[e] : a_[e];
+  }
+  ++setups_;
+  if (system_.owned_size() == 0) return;  // an empty part has nothing to factorise
+  if (lu_)
+    lu_->refactor(block_values_);
+  else
+    lu_ = std::make_unique<KluFactorization>(block_pattern_, block_values_);
+}
+
+void DistributedLinearization::apply(Real c_j, std::span<const Real> v, std::span<Real> jv) {
+  const Index n = system_.owned_size();
+  std::copy(v.begin(), v.begin() + n, column_work_.begin());
+  system_.exchange_ghosts(column_work_);
+  const CsrPattern& full = system_.jacobian_pattern();
+  for (Index i = 0; i < n; ++i) {
+    Real sum = 0;
+    for (Index e = full.row_ptr[i]; e < full.row_ptr[i + 1]; ++e) {
+      const Real value = with_derivative_terms_ ? a_[e] + c_j * b_[e] : a_[e];
+      sum += value * column_work_[full.col_idx[e]];
+    }
+    jv[i] = sum;
+  }
+}
+
+void DistributedLinearization::precondition(std::span<const Real> r, std::span<Real> z) {
+  if (r.data() != z.data()) std::copy(r.begin(), r.begin() + system_.owned_size(), z.begin());
+  if (lu_) lu_->solve(z);
+}
+
+}  // namespace rfmems
