@@ -20,6 +20,11 @@ class DistributedStaticSystem : public DistributedSystem {
   void jacobian(Real t, Real c_j, std::span<const Real> y, std::span<const Real> yp,
                 std::span<Real> values) override;
   void exchange_ghosts(std::span<Real> x) const override { op_.exchange_ghosts(x); }
+  const CsrPattern* overlap_pattern() const override { return op_.overlap_stiffness_pattern(); }
+  void overlap_jacobian(Real t, Real, std::span<const Real> y, std::span<const Real>,
+                        std::span<Real> values) override {
+    op_.overlap_stiffness(t, y, values);
+  }
 
  private:
   DistributedSecondOrderOperator& op_;

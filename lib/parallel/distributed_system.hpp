@@ -37,6 +37,13 @@ class DistributedSystem {
                         std::span<Real> values) = 0;
   // x has local_columns() entries, the owned ones set: fills the ghost ones (collective).
   virtual void exchange_ghosts(std::span<Real> x) const = 0;
+
+  // Optional: the rank's overlapping subdomain problem, all local rows (owned and ghost) x
+  // local columns, square and nonsingular, for an additive Schwarz preconditioner. nullptr:
+  // none (block Jacobi on the owned block only).
+  virtual const CsrPattern* overlap_pattern() const { return nullptr; }
+  virtual void overlap_jacobian(Real /*t*/, Real /*c_j*/, std::span<const Real> /*y*/,
+                                std::span<const Real> /*yp*/, std::span<Real> /*values*/) {}
 };
 
 // M y'' + R(t, y) = 0 with y distributed (the structure's operators on a distributed mesh):
@@ -57,6 +64,11 @@ class DistributedSecondOrderOperator {
   // Owned entries of the lumped mass.
   virtual std::vector<Real> mass_diagonal() const = 0;
   virtual void exchange_ghosts(std::span<Real> x) const = 0;
+  // Optional: dR/dy of the overlapping subdomain (all local rows x local columns; see
+  // DistributedSystem::overlap_pattern), nullptr if none.
+  virtual const CsrPattern* overlap_stiffness_pattern() const { return nullptr; }
+  virtual void overlap_stiffness(Real /*t*/, std::span<const Real> /*y*/,
+                                 std::span<Real> /*values*/) {}
   // The owned values of every rank in global order on the root (empty elsewhere), and the
   // reverse: the owned part of a global vector known on every rank.
   virtual std::vector<Real> gather_to_root(std::span<const Real> owned) const = 0;

@@ -2,11 +2,19 @@
 
 #include <algorithm>
 
+#include "core/error.hpp"
+
 namespace rfmems {
 
 DistributedLinearization::DistributedLinearization(DistributedSystem& system,
-                                                   bool with_derivative_terms)
-    : system_(system), with_derivative_terms_(with_derivative_terms) {
+                                                   bool with_derivative_terms,
+                                                   Preconditioner preconditioner)
+    : system_(system),
+      with_derivative_terms_(with_derivative_terms),
+      schwarz_(preconditioner == Preconditioner::RestrictedAdditiveSchwarz) {
+  if (schwarz_ && (with_derivative_terms_ || !system_.overlap_pattern()))
+    throw SolverError("additive Schwarz: the system has no overlapping static subdomain matrix");
+  if (schwarz_) overlap_values_.resize(system_.overlap_pattern()->nnz());
   const CsrPattern& full = system_.jacobian_pattern();
   const Index n = system_.owned_size();
   for (Index i = 0; i < n; ++i) {
@@ -37,11 +45,14 @@ void DistributedLinearization::setup(Real t, Real c_j, std::span<const Real> y,
     block_values_[k] = with_derivative_terms_ ? a_[e] + c_j * b_[e] : a_[e];
   }
   ++setups_;
+  if (schwarz_) system_.overlap_jacobian(t, c_j, y, yp, overlap_values_);  // collective
   if (system_.owned_size() == 0) return;  // an empty part has nothing to factorise
+  const CsrPattern& pattern = schwarz_ ? *system_.overlap_pattern() : block_pattern_;
+  const std::vector<Real>& values = schwarz_ ? overlap_values_ : block_values_;
   if (lu_)
-    lu_->refactor(block_values_);
+    lu_->refactor(values);
   else
-    lu_ = std::make_unique<KluFactorization>(block_pattern_, block_values_);
+    lu_ = std::make_unique<KluFactorization>(pattern, values);
 }
 
 void DistributedLinearization::apply(Real c_j, std::span<const Real> v, std::span<Real> jv) {
@@ -60,8 +71,16 @@ void DistributedLinearization::apply(Real c_j, std::span<const Real> v, std::spa
 }
 
 void DistributedLinearization::precondition(std::span<const Real> r, std::span<Real> z) {
-  if (r.data() != z.data()) std::copy(r.begin(), r.begin() + system_.owned_size(), z.begin());
-  if (lu_) lu_->solve(z);
+  const Index n = system_.owned_size();
+  if (!schwarz_) {
+    if (r.data() != z.data()) std::copy(r.begin(), r.begin() + n, z.begin());
+    if (lu_) lu_->solve(z);
+    return;
+  }
+  std::copy(r.begin(), r.begin() + n, column_work_.begin());
+  system_.exchange_ghosts(column_work_);  // R_d r: the overlap's entries from their owners
+  if (lu_) lu_->solve(column_work_);
+  std::copy(column_work_.begin(), column_work_.begin() + n, z.begin());  // R_0^T
 }
 
 }  // namespace rfmems

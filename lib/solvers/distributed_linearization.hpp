@@ -12,6 +12,12 @@
 // Block Jacobi drops the couplings between parts: on P ranks the Krylov solver has to
 // recover them, so its iterations grow with P (docs/BENCHMARKS.md section 29). One rank: the
 // block is the whole Jacobian and one iteration solves exactly.
+//
+// Restricted additive Schwarz (Cai & Sarkis 1999), where the system offers its overlapping
+// subdomain matrix (DistributedSystem::overlap_pattern): z = R_0^T A_d^-1 R_d r, i.e. r's
+// ghost entries fetched from their owners, the subdomain problem (owned + ghost rows, KLU)
+// solved, the owned part kept. One ghost exchange more per application; the overlap carries
+// the coupling between parts that block Jacobi drops.
 #pragma once
 #include <memory>
 #include <span>
@@ -24,21 +30,27 @@ namespace rfmems {
 
 class DistributedLinearization {
  public:
+  enum class Preconditioner { BlockJacobi, RestrictedAdditiveSchwarz };
   // with_derivative_terms: evaluate dF/dy' too (IDA); false: c_j is always 0 (KINSOL).
-  DistributedLinearization(DistributedSystem& system, bool with_derivative_terms);
+  // RestrictedAdditiveSchwarz needs system.overlap_pattern() and c_j = 0 (else SolverError).
+  DistributedLinearization(DistributedSystem& system, bool with_derivative_terms,
+                           Preconditioner preconditioner = Preconditioner::BlockJacobi);
   ~DistributedLinearization();
 
   // Collective.
   void setup(Real t, Real c_j, std::span<const Real> y, std::span<const Real> yp);
   // jv = (dF/dy + c_j dF/dy') v on the owned rows (collective: exchanges v's ghosts).
   void apply(Real c_j, std::span<const Real> v, std::span<Real> jv);
-  // z = P^-1 r with P the owned block at the last setup (rank-local).
+  // z = P^-1 r with P the owned block at the last setup (rank-local; collective with the
+  // additive Schwarz preconditioner).
   void precondition(std::span<const Real> r, std::span<Real> z);
   long setups() const { return setups_; }
 
  private:
   DistributedSystem& system_;
   bool with_derivative_terms_;
+  bool schwarz_;
+  std::vector<Real> overlap_values_;
   std::vector<Real> a_, b_;  // J(0) and J(1) - J(0) on jacobian_pattern()
   CsrPattern block_pattern_;
   std::vector<Index> block_source_;  // entry of jacobian_pattern() for each block entry

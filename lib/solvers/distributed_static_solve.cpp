@@ -30,8 +30,14 @@ struct Problem {
   std::exception_ptr pending;
   std::vector<Real> no_derivative;
 
-  Problem(DistributedSecondOrderOperator& op, Real time)
-      : system(op), linearization(system, false), t(time), no_derivative(op.owned_size(), 0.0) {}
+  Problem(DistributedSecondOrderOperator& op, Real time, bool overlap)
+      : system(op),
+        linearization(system, false,
+                      overlap && system.overlap_pattern()
+                          ? DistributedLinearization::Preconditioner::RestrictedAdditiveSchwarz
+                          : DistributedLinearization::Preconditioner::BlockJacobi),
+        t(time),
+        no_derivative(op.owned_size(), 0.0) {}
 
   template <class F>
   int guarded(F&& body) {
@@ -91,7 +97,7 @@ DistributedStaticSolution solve_static_distributed(DistributedSecondOrderOperato
                                                    std::vector<Real> y0) {
   const Communicator& comm = op.communicator();
   const Index n = op.owned_size();
-  Problem problem(op, t);
+  Problem problem(op, t, options.overlap);
   DistributedStaticSolution solution;
   solution.y = y0.empty() ? std::vector<Real>(n, 0.0) : std::move(y0);
 

@@ -23,6 +23,9 @@ struct DistributedNewtonOptions {
   Real linear_tolerance = 1e-12;
   int krylov_dimension = 200;
   int max_restarts = 10;
+  // Restricted additive Schwarz on the ghost overlap where the operator offers it, else
+  // block Jacobi on the owned blocks (solvers/distributed_linearization.hpp).
+  bool overlap = true;
 };
 
 struct DistributedStaticSolution {

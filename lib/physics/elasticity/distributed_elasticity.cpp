@@ -12,12 +12,14 @@ DistributedElasticity::DistributedElasticity(const ElasticityOperator& global,
   n_owned_ = local.n_owned_cells();
   if (n_owned_ == 0) return;  // an empty part (more ranks than cells): no rows, no columns
   // The same condition on each physical patch (by name: the local mesh numbers its patches
-  // in its own order); the cut through the last ghost layer is free and only its outer
-  // ghost rows see it.
+  // in its own order). The cut through the last ghost layer is clamped: only the last
+  // layer's rows and reconstructions see it (a cell of layer 3 has no face on the cut), and
+  // it keeps the local matrix nonsingular where a part floats free of the physical clamps.
   std::vector<ElasticityBoundary> boundaries;
   for (const Patch& p : local.patches()) {
     const int g = global.mesh().find_patch(p.name);
-    boundaries.push_back(g >= 0 ? global.boundaries()[g] : ElasticityBoundary{});
+    boundaries.push_back(g >= 0 ? global.boundaries()[g]
+                                : ElasticityBoundary{ElasticityBoundary::Kind::Fixed, {}});
   }
   local_ = std::make_unique<ElasticityOperator>(local, global.material(), std::move(boundaries),
                                                 global.body_force(),
@@ -49,6 +51,12 @@ void DistributedElasticity::stiffness(Real t, std::span<const Real> u, std::span
   if (!local_) return;
   local_->stiffness(t, u_local_, k_local_);
   std::copy(k_local_.begin(), k_local_.begin() + owned_pattern_.nnz(), values.begin());
+}
+
+void DistributedElasticity::overlap_stiffness(Real t, std::span<const Real> u,
+                                              std::span<Real> values) {
+  load(u);
+  if (local_) local_->stiffness(t, u_local_, values);
 }
 
 std::vector<Real> DistributedElasticity::mass_diagonal() const {

@@ -3,14 +3,16 @@
 //
 // It wraps the serial ElasticityOperator built on the rank's local mesh (owned cells, then
 // kGhostLayers layers of ghosts; the faces leaving the last layer form a free "processor"
-// patch) rather than rewriting it. That is exact: an owned cell's row sums the forces of its
-// faces, each from the reconstructions of the cell and of its face neighbour (a ghost of
-// layer 1 at most), and a reconstruction's stencil reaches three rings (cubic, near free
+// patch, clamped: u = 0 there) rather than rewriting it. That is exact: an owned cell's row sums
+// the forces of its faces, each from the reconstructions of the cell and of its face neighbour (a
+// ghost of layer 1 at most), and a reconstruction's stencil reaches three rings (cubic, near free
 // boundaries; fv/polynomial_reconstruction.hpp), so with four layers every stencil an owned
 // row uses is the serial one. Only the order of the points inside a stencil (and so the
 // round-off of its least-squares fit) differs: owned rows of the residual and of the
 // Jacobian equal the serial ones to round-off (test/mpi/test_distributed_structure.cpp).
-// The outer ghost rows are wrong (truncated stencils) and never used.
+// The outer ghost rows are wrong (truncated stencils, the clamped cut) and never used in the
+// residual; they make the local matrix a nonsingular subdomain problem, the block of the
+// restricted additive Schwarz preconditioner (solvers/distributed_linearization.hpp).
 //
 // Ghost values are refreshed (GhostExchange) before every residual and Jacobian.
 #pragma once
@@ -41,6 +43,12 @@ class DistributedElasticity : public DistributedSecondOrderOperator {
   void stiffness(Real t, std::span<const Real> u, std::span<Real> values) override;
   std::vector<Real> mass_diagonal() const override;
   void exchange_ghosts(std::span<Real> x) const override;
+  // The local operator's whole matrix: the subdomain with its ghost overlap, clamped at the
+  // cut (the "processor" patch is Fixed at zero, which only the last ghost layer's rows see).
+  const CsrPattern* overlap_stiffness_pattern() const override {
+    return local_ ? &local_->stiffness_pattern() : &owned_pattern_;
+  }
+  void overlap_stiffness(Real t, std::span<const Real> u, std::span<Real> values) override;
   std::vector<Real> gather_to_root(std::span<const Real> owned) const override;
   std::vector<Real> owned_part(std::span<const Real> global) const override;
 
