@@ -1,7 +1,8 @@
 // Static equilibrium R(t, y) = 0 of a distributed structural operator (issue 7): KINSOL on
 // SUNDIALS' MPI parallel N_Vector, Newton with SPGMR (right-preconditioned GMRES, modified
-// Gram-Schmidt) for the linear systems, the exact distributed Jacobian-vector product and the
-// block-Jacobi / KLU preconditioner of solvers/distributed_linearization.hpp.
+// Gram-Schmidt) for the linear systems, the exact distributed Jacobian-vector product and a
+// KLU preconditioner on the rank-local blocks (restricted additive Schwarz on the ghost
+// overlap, or block Jacobi; solvers/distributed_linearization.hpp).
 //
 // The convergence test is the serial one (solvers/static_solve.hpp): ||R||_inf <=
 // relative_tolerance ||R(y0)||_inf. Each Newton step's Krylov solve is tight (constant

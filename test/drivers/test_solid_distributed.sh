@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # rfmems-solid with solver.distributed: true (issue 7): the cantilever distributed over 1, 2
-# and 3 ranks (METIS parts, KINSOL + GMRES with block-Jacobi KLU on the parallel N_Vector)
+# and 3 ranks (METIS parts, KINSOL + GMRES with additive Schwarz KLU blocks on the parallel N_Vector)
 # writes one result file on rank 0 whose displacement field equals the serial KLU run's to
 # 2e-7 of its largest value (the round-off floor of this L/h = 50 beam is ~4e-8,
 # test/mpi/test_distributed_structure.cpp), in one Newton step; a short transient equals the

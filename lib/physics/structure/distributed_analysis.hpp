@@ -1,8 +1,9 @@
 // The static and transient analyses of structural_analysis.hpp with the structure
 // distributed over the ranks (issue 7; case key solver.distributed: true): the continuum's
 // FV elasticity operator on METIS parts (physics/elasticity/distributed_elasticity.hpp),
-// Newton (KINSOL) or IDA on SUNDIALS' MPI parallel N_Vector, GMRES with a block-Jacobi KLU
-// preconditioner (lib/solvers/distributed_*). Every output is gathered on the root, which
+// Newton (KINSOL) or IDA on SUNDIALS' MPI parallel N_Vector, GMRES preconditioned by KLU on
+// the rank-local blocks (static: additive Schwarz on the ghost overlap; transient: block
+// Jacobi; lib/solvers/distributed_*). Every output is gathered on the root, which
 // alone receives it (the result file is the serial run's, from rank 0).
 //
 // Supported: plane and 3D continua with the coupled stress method; the plate and the

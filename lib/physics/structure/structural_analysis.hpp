@@ -28,7 +28,7 @@
 //   solver:                        # both:
 //     distributed: false           #   true: under mpirun -np P the continuum is distributed
 //                                  #   over P METIS parts (distributed_analysis.hpp; GMRES
-//                                  #   with block-Jacobi KLU); false (default): the structure
+//                                  #   with rank-local KLU blocks); false (default): the structure
 //                                  #   is solved on rank 0 while the other ranks wait
 //
 // Static: R(t_load, u) = 0 at the time every ramp has finished (model.ramp_end_time()), by
