@@ -46,6 +46,7 @@ class DistributedFirstOrderSystem : public DistributedSystem {
   void jacobian(Real t, Real c_j, std::span<const Real> y, std::span<const Real> yp,
                 std::span<Real> values) override;
   void exchange_ghosts(std::span<Real> x) const override;
+  DistributedSecondOrderOperator* second_order() override { return &op_; }
 
  private:
   DistributedSecondOrderOperator& op_;

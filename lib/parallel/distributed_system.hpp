@@ -17,6 +17,8 @@
 
 namespace rfmems {
 
+class DistributedSecondOrderOperator;
+
 // F(t, y, y') = 0 with y distributed (SUNDIALS' IDA and KINSOL on N_Vector_Parallel).
 class DistributedSystem {
  public:
@@ -44,6 +46,9 @@ class DistributedSystem {
   virtual const CsrPattern* overlap_pattern() const { return nullptr; }
   virtual void overlap_jacobian(Real /*t*/, Real /*c_j*/, std::span<const Real> /*y*/,
                                 std::span<const Real> /*yp*/, std::span<Real> /*values*/) {}
+  // Optional: the structural operator of a first-order system [y' - v; M v' + R] (state
+  // [y; v]), for preconditioners that eliminate v; nullptr otherwise.
+  virtual DistributedSecondOrderOperator* second_order() { return nullptr; }
 };
 
 // M y'' + R(t, y) = 0 with y distributed (the structure's operators on a distributed mesh):
@@ -69,6 +74,8 @@ class DistributedSecondOrderOperator {
   virtual const CsrPattern* overlap_stiffness_pattern() const { return nullptr; }
   virtual void overlap_stiffness(Real /*t*/, std::span<const Real> /*y*/,
                                  std::span<Real> /*values*/) {}
+  // The lumped mass of all local rows (owned and ghost), with overlap_stiffness_pattern().
+  virtual std::vector<Real> overlap_mass_diagonal() const { return {}; }
   // The owned values of every rank in global order on the root (empty elsewhere), and the
   // reverse: the owned part of a global vector known on every rank.
   virtual std::vector<Real> gather_to_root(std::span<const Real> owned) const = 0;

@@ -32,8 +32,13 @@ struct DistributedIdaIntegrator::Impl {
   Real t = 0;
   std::exception_ptr pending;
 
-  Impl(DistributedSystem& s, const IdaOptions& o)
-      : system(s), options(o), linearization(s, true), ctx(sundials::make_context()) {}
+  Impl(DistributedSystem& s, const IdaOptions& o, bool overlap)
+      : system(s),
+        options(o),
+        linearization(s, true,
+                      overlap ? DistributedLinearization::best_for(s, true)
+                              : DistributedLinearization::Preconditioner::BlockJacobi),
+        ctx(sundials::make_context()) {}
   ~Impl() { IDAFree(&mem); }
 
   template <class F>
@@ -81,8 +86,8 @@ struct DistributedIdaIntegrator::Impl {
 };
 
 DistributedIdaIntegrator::DistributedIdaIntegrator(DistributedSystem& system,
-                                                   const IdaOptions& options)
-    : impl_(std::make_unique<Impl>(system, options)) {
+                                                   const IdaOptions& options, bool overlap)
+    : impl_(std::make_unique<Impl>(system, options, overlap)) {
   Impl& k = *impl_;
   const Communicator& comm = system.communicator();
   const Index n = system.owned_size();

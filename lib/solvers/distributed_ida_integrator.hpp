@@ -1,8 +1,9 @@
 // Transient integration of a DistributedSystem with SUNDIALS IDA on the MPI parallel
 // N_Vector (issue 7): variable-order variable-step BDF as IdaIntegrator, with SPGMR (left
 // preconditioned) for the Newton systems, the exact distributed Jacobian-vector product of
-// dF/dy + c_j dF/dy' and the block-Jacobi / KLU preconditioner of
-// solvers/distributed_linearization.hpp, refreshed when IDA asks for a linear-solver setup.
+// dF/dy + c_j dF/dy' and a rank-local KLU preconditioner (solvers/distributed_linearization.hpp:
+// the Schur complement K + c_j^2 M by additive Schwarz on the overlap for a structural
+// first-order system, else block Jacobi), refreshed when IDA asks for a linear-solver setup.
 //
 // The options and statistics are IdaIntegrator's (linear_solver is ignored: always SPGMR;
 // atols, fixed steps and root functions are not supported here). The local error test is
@@ -19,8 +20,9 @@ namespace rfmems {
 
 class DistributedIdaIntegrator {
  public:
-  // Collective.
-  DistributedIdaIntegrator(DistributedSystem& system, const IdaOptions& options);
+  // Collective. overlap false: block Jacobi even where the system offers more.
+  DistributedIdaIntegrator(DistributedSystem& system, const IdaOptions& options,
+                           bool overlap = true);
   ~DistributedIdaIntegrator();
   DistributedIdaIntegrator(const DistributedIdaIntegrator&) = delete;
   DistributedIdaIntegrator& operator=(const DistributedIdaIntegrator&) = delete;

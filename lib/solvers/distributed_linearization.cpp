@@ -15,6 +15,18 @@ DistributedLinearization::DistributedLinearization(DistributedSystem& system,
   if (schwarz_ && (with_derivative_terms_ || !system_.overlap_pattern()))
     throw SolverError("additive Schwarz: the system has no overlapping static subdomain matrix");
   if (schwarz_) overlap_values_.resize(system_.overlap_pattern()->nnz());
+  if (preconditioner == Preconditioner::SchurAdditiveSchwarz) {
+    structure_ = system_.second_order();
+    if (!structure_ || !structure_->overlap_stiffness_pattern() || !with_derivative_terms_)
+      throw SolverError("Schur additive Schwarz: the system has no structural overlap matrix");
+    const CsrPattern& p = *structure_->overlap_stiffness_pattern();
+    overlap_values_.resize(p.nnz());
+    overlap_diagonal_.resize(p.n_rows());
+    for (Index i = 0; i < p.n_rows(); ++i) overlap_diagonal_[i] = p.find(i, i);
+    owned_mass_ = structure_->mass_diagonal();
+    overlap_mass_ = structure_->overlap_mass_diagonal();
+    schur_work_.resize(structure_->local_columns());
+  }
   const CsrPattern& full = system_.jacobian_pattern();
   const Index n = system_.owned_size();
   for (Index i = 0; i < n; ++i) {
@@ -46,13 +58,31 @@ void DistributedLinearization::setup(Real t, Real c_j, std::span<const Real> y,
   }
   ++setups_;
   if (schwarz_) system_.overlap_jacobian(t, c_j, y, yp, overlap_values_);  // collective
+  if (structure_) {  // K + c^2 M of the local rows
+    structure_->overlap_stiffness(t, y.subspan(0, structure_->owned_size()), overlap_values_);
+    schur_c_ = c_j;
+    for (std::size_t i = 0; i < overlap_diagonal_.size(); ++i)
+      overlap_values_[overlap_diagonal_[i]] += c_j * c_j * overlap_mass_[i];
+  }
   if (system_.owned_size() == 0) return;  // an empty part has nothing to factorise
-  const CsrPattern& pattern = schwarz_ ? *system_.overlap_pattern() : block_pattern_;
-  const std::vector<Real>& values = schwarz_ ? overlap_values_ : block_values_;
+  const CsrPattern& pattern = schwarz_     ? *system_.overlap_pattern()
+                              : structure_ ? *structure_->overlap_stiffness_pattern()
+                                           : block_pattern_;
+  const std::vector<Real>& values = schwarz_ || structure_ ? overlap_values_ : block_values_;
   if (lu_)
     lu_->refactor(values);
   else
     lu_ = std::make_unique<KluFactorization>(pattern, values);
+}
+
+DistributedLinearization::Preconditioner DistributedLinearization::best_for(
+    DistributedSystem& system, bool with_derivative_terms) {
+  if (!with_derivative_terms)
+    return system.overlap_pattern() ? Preconditioner::RestrictedAdditiveSchwarz
+                                    : Preconditioner::BlockJacobi;
+  DistributedSecondOrderOperator* op = system.second_order();
+  return op && op->overlap_stiffness_pattern() ? Preconditioner::SchurAdditiveSchwarz
+                                               : Preconditioner::BlockJacobi;
 }
 
 void DistributedLinearization::apply(Real c_j, std::span<const Real> v, std::span<Real> jv) {
@@ -72,6 +102,19 @@ void DistributedLinearization::apply(Real c_j, std::span<const Real> v, std::spa
 
 void DistributedLinearization::precondition(std::span<const Real> r, std::span<Real> z) {
   const Index n = system_.owned_size();
+  if (structure_) {
+    // (K + c^2 M) dy = r_v + c M r_y on the overlap, then dv = c dy - r_y.
+    const Index m = structure_->owned_size();
+    for (Index i = 0; i < m; ++i) schur_work_[i] = r[m + i] + schur_c_ * owned_mass_[i] * r[i];
+    structure_->exchange_ghosts(schur_work_);
+    if (lu_) lu_->solve(schur_work_);
+    for (Index i = 0; i < m; ++i) {
+      const Real dy = schur_work_[i];
+      z[m + i] = schur_c_ * dy - r[i];  // r[i] read before z[i] is written (z may be r)
+      z[i] = dy;
+    }
+    return;
+  }
   if (!schwarz_) {
     if (r.data() != z.data()) std::copy(r.begin(), r.begin() + n, z.begin());
     if (lu_) lu_->solve(z);

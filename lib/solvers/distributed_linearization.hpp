@@ -18,6 +18,11 @@
 // ghost entries fetched from their owners, the subdomain problem (owned + ghost rows, KLU)
 // solved, the owned part kept. One ghost exchange more per application; the overlap carries
 // the coupling between parts that block Jacobi drops.
+//
+// For a first-order structural system [y' - v; M v' + R] (DistributedSystem::second_order)
+// with J = [c I, -I; K, c M], eliminating dv = c dy - r_y leaves (K + c^2 M) dy = r_v + c M r_y:
+// the Schur variant solves that by restricted additive Schwarz on the structure's overlap
+// (K and M of the local rows, c of the last setup) and recovers dv.
 #pragma once
 #include <memory>
 #include <span>
@@ -30,9 +35,10 @@ namespace rfmems {
 
 class DistributedLinearization {
  public:
-  enum class Preconditioner { BlockJacobi, RestrictedAdditiveSchwarz };
+  enum class Preconditioner { BlockJacobi, RestrictedAdditiveSchwarz, SchurAdditiveSchwarz };
   // with_derivative_terms: evaluate dF/dy' too (IDA); false: c_j is always 0 (KINSOL).
-  // RestrictedAdditiveSchwarz needs system.overlap_pattern() and c_j = 0 (else SolverError).
+  // RestrictedAdditiveSchwarz needs system.overlap_pattern() and c_j = 0, SchurAdditiveSchwarz
+  // a second_order() operator with an overlap_stiffness_pattern() (else SolverError).
   DistributedLinearization(DistributedSystem& system, bool with_derivative_terms,
                            Preconditioner preconditioner = Preconditioner::BlockJacobi);
   ~DistributedLinearization();
@@ -45,12 +51,17 @@ class DistributedLinearization {
   // additive Schwarz preconditioner).
   void precondition(std::span<const Real> r, std::span<Real> z);
   long setups() const { return setups_; }
+  // The strongest preconditioner the system offers (Schur Schwarz, Schwarz, block Jacobi).
+  static Preconditioner best_for(DistributedSystem& system, bool with_derivative_terms);
 
  private:
   DistributedSystem& system_;
   bool with_derivative_terms_;
   bool schwarz_;
-  std::vector<Real> overlap_values_;
+  DistributedSecondOrderOperator* structure_ = nullptr;  // the Schur variant's
+  std::vector<Real> overlap_values_, owned_mass_, overlap_mass_, schur_work_;
+  std::vector<Index> overlap_diagonal_;
+  Real schur_c_ = 0;
   std::vector<Real> a_, b_;  // J(0) and J(1) - J(0) on jacobian_pattern()
   CsrPattern block_pattern_;
   std::vector<Index> block_source_;  // entry of jacobian_pattern() for each block entry

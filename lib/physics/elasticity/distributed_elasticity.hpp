@@ -49,6 +49,9 @@ class DistributedElasticity : public DistributedSecondOrderOperator {
     return local_ ? &local_->stiffness_pattern() : &owned_pattern_;
   }
   void overlap_stiffness(Real t, std::span<const Real> u, std::span<Real> values) override;
+  std::vector<Real> overlap_mass_diagonal() const override {
+    return local_ ? local_->mass_diagonal() : std::vector<Real>{};
+  }
   std::vector<Real> gather_to_root(std::span<const Real> owned) const override;
   std::vector<Real> owned_part(std::span<const Real> global) const override;
 

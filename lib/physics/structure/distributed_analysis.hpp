@@ -2,8 +2,8 @@
 // distributed over the ranks (issue 7; case key solver.distributed: true): the continuum's
 // FV elasticity operator on METIS parts (physics/elasticity/distributed_elasticity.hpp),
 // Newton (KINSOL) or IDA on SUNDIALS' MPI parallel N_Vector, GMRES preconditioned by KLU on
-// the rank-local blocks (static: additive Schwarz on the ghost overlap; transient: block
-// Jacobi; lib/solvers/distributed_*). Every output is gathered on the root, which
+// the rank-local blocks (restricted additive Schwarz on the ghost overlap; transients on the
+// Schur complement K + c_j^2 M; lib/solvers/distributed_*). Every output is gathered on the root, which
 // alone receives it (the result file is the serial run's, from rank 0).
 //
 // Supported: plane and 3D continua with the coupled stress method; the plate and the
