@@ -18,7 +18,9 @@
 // Exit codes: 0 success; 2 bad input (case file, option, mesh file): one line
 // "rfmems-solid: <message>" on stderr and no result file; 1 any other failure.
 #include <cstdio>
+#include <exception>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -62,22 +64,32 @@ int run(const DriverOptions& options) {
   if (distributed) check_distributable(*model, settings, root);
   case_file.check_all_used();  // a typo stops the run here, before any solving
 
+  // The result file exists on the root only; if creating it fails there, a distributed run's
+  // other ranks must not enter the collective solve (they would wait for the root forever).
+  std::unique_ptr<StructuralResults> results;
+  std::exception_ptr failure;
+  if (world.is_root()) try {
+      results = std::make_unique<StructuralResults>(output, *model, std::move(probes));
+      remove_on_interrupt(temp_path_for(output));  // exceptions clean up; signals need this
+    } catch (...) {
+      failure = std::current_exception();
+    }
+  if (distributed && world.max(static_cast<Index>(failure ? 1 : 0)) != 0 && !failure) return 0;
+  if (failure) std::rethrow_exception(failure);
   if (!world.is_root()) {  // a distributed run's other ranks: solve, the root writes
     ProgressReporter silent(true, settings.end_time);
     NoOutput none;
     run_distributed_analysis(*model, settings, world, none, silent);
     return 0;
   }
-  StructuralResults results(output, *model, std::move(probes));
-  remove_on_interrupt(temp_path_for(output));  // exceptions clean up; signals need this
   ProgressReporter progress(options.quiet || type == AnalysisType::Static, settings.end_time);
   const AnalysisStats stats =
-      distributed ? run_distributed_analysis(*model, settings, world, results, progress)
-                  : run_analysis(*model, settings, results, progress);
+      distributed ? run_distributed_analysis(*model, settings, world, *results, progress)
+                  : run_analysis(*model, settings, *results, progress);
   progress.finish();
-  results.finish(case_file, name, stats, elapsed());
+  results->finish(case_file, name, stats, elapsed());
 
-  const Json summary = structural_summary(name, *model, results, stats, elapsed());
+  const Json summary = structural_summary(name, *model, *results, stats, elapsed());
   if (options.json) {
     std::cout << json_text(summary) << std::flush;
   } else if (!options.quiet) {
@@ -91,7 +103,7 @@ int run(const DriverOptions& options) {
                     value[components[k]].get<double>(), plate && k > 0 ? " rad" : " m");
       std::printf("\n");
     }
-    std::printf("wrote %s and %s (%.1f s)\n", results.path().c_str(), results.xdmf_path().c_str(),
+    std::printf("wrote %s and %s (%.1f s)\n", results->path().c_str(), results->xdmf_path().c_str(),
                 elapsed());
   }
   return 0;
