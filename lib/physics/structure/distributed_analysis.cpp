@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "core/error.hpp"
 #include "parallel/distributed_structural_systems.hpp"
 #include "physics/elasticity/distributed_elasticity.hpp"
+#include "physics/plate/distributed_plate.hpp"
 #include "solvers/distributed_ida_integrator.hpp"
 #include "solvers/distributed_static_solve.hpp"
 
@@ -14,10 +16,11 @@ namespace rfmems {
 void check_distributable(StructuralModel& model, const AnalysisSettings& settings,
                          const CaseNode& root) {
   const CaseNode solver = root.child_or_empty("solver");
-  auto* elasticity = dynamic_cast<const ElasticityOperator*>(&model.structure());
-  solver.require(elasticity != nullptr, "distributed",
-                 "is for the continuum (model.structure plane or solid3d); the plate is solved "
-                 "on one rank");
+  const bool continuum = dynamic_cast<const ElasticityOperator*>(&model.structure()) != nullptr;
+  const bool plate = dynamic_cast<const PlateOperator*>(&model.structure()) != nullptr;
+  solver.require(continuum || (plate && settings.type == AnalysisType::Static), "distributed",
+                 "is for the continuum (model.structure plane or solid3d) and for static plates; "
+                 "a plate transient is solved on one rank");
   solver.require(model.static_method() == "newton" || settings.type == AnalysisType::Transient,
                  "distributed", "needs model.stress coupled (the segregated method is serial)");
   solver.require(settings.ida.fixed_step == 0, "distributed", "does not support solver.fixed_step");
@@ -26,7 +29,7 @@ void check_distributable(StructuralModel& model, const AnalysisSettings& setting
 namespace {
 
 AnalysisStats run_static(StructuralModel& model, const AnalysisSettings& settings,
-                         DistributedElasticity& op, AnalysisObserver& observer) {
+                         DistributedSecondOrderOperator& op, AnalysisObserver& observer) {
   AnalysisStats stats;
   stats.type = AnalysisType::Static;
   stats.static_method = "newton";
@@ -43,7 +46,7 @@ AnalysisStats run_static(StructuralModel& model, const AnalysisSettings& setting
   return stats;
 }
 
-AnalysisStats run_transient(const AnalysisSettings& settings, DistributedElasticity& op,
+AnalysisStats run_transient(const AnalysisSettings& settings, DistributedSecondOrderOperator& op,
                             AnalysisObserver& observer, ProgressReporter& progress) {
   AnalysisStats stats;
   stats.type = AnalysisType::Transient;
@@ -85,12 +88,16 @@ AnalysisStats run_transient(const AnalysisSettings& settings, DistributedElastic
 AnalysisStats run_distributed_analysis(StructuralModel& model, const AnalysisSettings& settings,
                                        const Communicator& comm, AnalysisObserver& observer,
                                        ProgressReporter& progress) {
-  auto* elasticity = dynamic_cast<ElasticityOperator*>(&model.structure());
-  if (!elasticity) throw SolverError("distributed analysis: not a continuum");
-  DistributedElasticity op(*elasticity, comm);
+  std::unique_ptr<DistributedLocalOperator> op;
+  if (auto* elasticity = dynamic_cast<ElasticityOperator*>(&model.structure()))
+    op = std::make_unique<DistributedElasticity>(*elasticity, comm);
+  else if (auto* plate = dynamic_cast<PlateOperator*>(&model.structure()))
+    op = std::make_unique<DistributedPlate>(*plate, comm);
+  else
+    throw SolverError("distributed analysis: neither a continuum nor a plate");
   AnalysisStats stats = settings.type == AnalysisType::Static
-                            ? run_static(model, settings, op, observer)
-                            : run_transient(settings, op, observer, progress);
+                            ? run_static(model, settings, *op, observer)
+                            : run_transient(settings, *op, observer, progress);
   stats.distributed_ranks = comm.size();
   return stats;
 }

@@ -3,11 +3,12 @@
 // FV elasticity operator on METIS parts (physics/elasticity/distributed_elasticity.hpp),
 // Newton (KINSOL) or IDA on SUNDIALS' MPI parallel N_Vector, GMRES preconditioned by KLU on
 // the rank-local blocks (restricted additive Schwarz on the ghost overlap; transients on the
-// Schur complement K + c_j^2 M; lib/solvers/distributed_*). Every output is gathered on the root, which
-// alone receives it (the result file is the serial run's, from rank 0).
+// Schur complement K + c_j^2 M; lib/solvers/distributed_*). Every output is gathered on the root,
+// which alone receives it (the result file is the serial run's, from rank 0).
 //
-// Supported: plane and 3D continua with the coupled stress method; the plate and the
-// segregated method stay serial (InputError naming solver.distributed). Static: the serial
+// Supported: plane and 3D continua with the coupled stress method (static and transient),
+// the plate's static solve (physics/plate/distributed_plate.hpp); the plate's transient and
+// the segregated method stay serial (InputError naming solver.distributed). Static: the serial
 // convergence test (solver.tolerance on ||R||/||R0||), one Newton step for the linear
 // structure. Transient: the serial IDA settings (rtol, atol, max_order); fixed_step is not
 // supported distributed.
