@@ -10,9 +10,10 @@
 //   rfmems-solid cases/clamped_plate/case.yaml                 # plate: deflection, moments
 //
 // Under mpirun the structure is solved on rank 0 while the other ranks wait, unless the case
-// says solver.distributed: true: then the continuum is distributed over the ranks (METIS
-// parts, GMRES preconditioned by rank-local KLU; physics/structure/distributed_analysis.hpp) and
-// rank 0 gathers each output into the same result file:
+// says solver.distributed: true: then the continuum (or a static plate) is distributed over the
+// ranks (METIS parts, GMRES preconditioned by rank-local KLU;
+// physics/structure/distributed_analysis.hpp) and rank 0 gathers each output into the same result
+// file:
 //   mpirun -np 2 rfmems-solid cases/cantilever_static/case.yaml --set 'solver={distributed: true}'
 //
 // Exit codes: 0 success; 2 bad input (case file, option, mesh file): one line

@@ -26,7 +26,8 @@
 //                                  #   mesh's high-frequency modes and IDA then crawls.
 //     fixed_step: 0                #   > 0: fixed step size, no error control (default 0)
 //   solver:                        # both:
-//     distributed: false           #   true: under mpirun -np P the continuum is distributed
+//     distributed: false           #   true: under mpirun -np P the continuum (or a static
+//                                  #   plate) is distributed
 //                                  #   over P METIS parts (distributed_analysis.hpp; GMRES
 //                                  #   with rank-local KLU blocks); false (default): the structure
 //                                  #   is solved on rank 0 while the other ranks wait
