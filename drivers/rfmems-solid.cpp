@@ -9,10 +9,19 @@
 //   rfmems-solid cases/cantilever_static/case.yaml --set mesh.cells=[320,32] -o out/fine.h5
 //   rfmems-solid cases/clamped_plate/case.yaml                 # plate: deflection, moments
 //
+// Under mpirun the structure is solved on rank 0 while the other ranks wait, unless the case
+// says solver.distributed: true: then the continuum (or a static plate) is distributed over the
+// ranks (METIS parts, GMRES preconditioned by rank-local KLU;
+// physics/structure/distributed_analysis.hpp) and rank 0 gathers each output into the same result
+// file:
+//   mpirun -np 2 rfmems-solid cases/cantilever_static/case.yaml --set 'solver={distributed: true}'
+//
 // Exit codes: 0 success; 2 bad input (case file, option, mesh file): one line
 // "rfmems-solid: <message>" on stderr and no result file; 1 any other failure.
 #include <cstdio>
+#include <exception>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -23,6 +32,8 @@
 #include "io/json_summary.hpp"
 #include "io/probes.hpp"
 #include "io/progress.hpp"
+#include "parallel/communicator.hpp"
+#include "physics/structure/distributed_analysis.hpp"
 #include "physics/structure/structural_analysis.hpp"
 #include "physics/structure/structural_results.hpp"
 #include "physics/structure/structure_from_case.hpp"
@@ -31,6 +42,10 @@ namespace {
 
 using namespace rfmems;
 
+struct NoOutput : AnalysisObserver {
+  void output(int, Real, std::span<const Real>, std::span<const Real>) override {}
+};
+
 int run(const DriverOptions& options) {
   const DriverCase run_case(options);
   const CaseFile& case_file = run_case.file;
@@ -38,21 +53,44 @@ int run(const DriverOptions& options) {
   const std::string& name = run_case.name;
   const std::string& output = run_case.output;
   auto elapsed = [&] { return run_case.elapsed(); };
+  const Communicator world = Communicator::world();
+  // Serial structures: the root alone builds and solves; the other ranks wait at exit.
+  const bool distributed = root.child_or_empty("solver").get_bool("distributed", false);
+  if (!distributed && !world.is_root()) return 0;
 
   const AnalysisType type = read_analysis_type(root);
   std::unique_ptr<StructuralModel> model = build_structure(root, run_case.dir, type);
   const AnalysisSettings settings = read_analysis_settings(root, *model);
   std::vector<Probe> probes = read_probes(root.child_or_empty("probes"), model->structure_mesh());
+  if (distributed) check_distributable(*model, settings, root);
   case_file.check_all_used();  // a typo stops the run here, before any solving
 
-  StructuralResults results(output, *model, std::move(probes));
-  remove_on_interrupt(temp_path_for(output));  // exceptions clean up; signals need this
+  // The result file exists on the root only; if creating it fails there, a distributed run's
+  // other ranks must not enter the collective solve (they would wait for the root forever).
+  std::unique_ptr<StructuralResults> results;
+  std::exception_ptr failure;
+  if (world.is_root()) try {
+      results = std::make_unique<StructuralResults>(output, *model, std::move(probes));
+      remove_on_interrupt(temp_path_for(output));  // exceptions clean up; signals need this
+    } catch (...) {
+      failure = std::current_exception();
+    }
+  if (distributed && world.max(static_cast<Index>(failure ? 1 : 0)) != 0 && !failure) return 0;
+  if (failure) std::rethrow_exception(failure);
+  if (!world.is_root()) {  // a distributed run's other ranks: solve, the root writes
+    ProgressReporter silent(true, settings.end_time);
+    NoOutput none;
+    run_distributed_analysis(*model, settings, world, none, silent);
+    return 0;
+  }
   ProgressReporter progress(options.quiet || type == AnalysisType::Static, settings.end_time);
-  const AnalysisStats stats = run_analysis(*model, settings, results, progress);
+  const AnalysisStats stats =
+      distributed ? run_distributed_analysis(*model, settings, world, *results, progress)
+                  : run_analysis(*model, settings, *results, progress);
   progress.finish();
-  results.finish(case_file, name, stats, elapsed());
+  results->finish(case_file, name, stats, elapsed());
 
-  const Json summary = structural_summary(name, *model, results, stats, elapsed());
+  const Json summary = structural_summary(name, *model, *results, stats, elapsed());
   if (options.json) {
     std::cout << json_text(summary) << std::flush;
   } else if (!options.quiet) {
@@ -66,8 +104,8 @@ int run(const DriverOptions& options) {
                     value[components[k]].get<double>(), plate && k > 0 ? " rad" : " m");
       std::printf("\n");
     }
-    std::printf("wrote %s and %s (%.1f s)\n", results.path().c_str(),
-                results.xdmf_path().c_str(), elapsed());
+    std::printf("wrote %s and %s (%.1f s)\n", results->path().c_str(), results->xdmf_path().c_str(),
+                elapsed());
   }
   return 0;
 }
@@ -78,5 +116,5 @@ int main(int argc, char** argv) {
   return driver_main("rfmems-solid",
                      "rfmems-solid: static and transient linear elasticity of a continuum or a "
                      "plate (FV)",
-                     argc, argv, run);
+                     argc, argv, run, RankUse::AllRanks);
 }

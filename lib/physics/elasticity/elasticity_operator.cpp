@@ -24,6 +24,7 @@ ElasticityOperator::ElasticityOperator(const Mesh& mesh, const LinearElastic& ma
       boundaries_(std::move(boundaries)),
       body_force_(std::move(body_force)),
       dim_(mesh.dim()),
+      requested_degree_(reconstruction_degree),
       mu_(material.mu()),
       lambda_(material.lambda()) {
   if (boundaries_.size() != mesh_.patches().size())

@@ -48,6 +48,9 @@ class ElasticityOperator : public SecondOrderOperator {
   const Mesh& mesh() const { return mesh_; }
   const LinearElastic& material() const { return material_; }
   const std::vector<ElasticityBoundary>& boundaries() const { return boundaries_; }
+  const VectorField& body_force() const { return body_force_; }
+  // The degree asked for (0: the default), to build the same operator on another mesh.
+  int requested_reconstruction_degree() const { return requested_degree_; }
 
   void internal_residual(Real t, std::span<const Real> u, std::span<Real> r) override;
   const CsrPattern& stiffness_pattern() const override { return sparsity_->pattern(); }
@@ -109,6 +112,7 @@ class ElasticityOperator : public SecondOrderOperator {
   std::vector<ElasticityBoundary> boundaries_;
   VectorField body_force_;
   int dim_;
+  int requested_degree_;
   Real mu_, lambda_;
   std::unique_ptr<PolynomialReconstruction> reconstruction_;
   std::unique_ptr<BlockSparsity> sparsity_;

@@ -35,7 +35,8 @@ PlateOperator::PlateOperator(const Mesh& mesh, const PlateSection& section,
     : mesh_(mesh),
       section_(section),
       boundaries_(std::move(boundaries)),
-      pressure_(std::move(pressure)) {
+      pressure_(std::move(pressure)),
+      reconstruction_degree_(reconstruction_degree) {
   if (mesh_.dim() != 2) throw InputError("plate: the mid-surface mesh must be 2D");
   if (boundaries_.size() != mesh_.patches().size())
     throw InputError(fmt::format("plate: {} boundary conditions for {} patches", boundaries_.size(),

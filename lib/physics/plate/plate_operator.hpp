@@ -96,6 +96,12 @@ class PlateOperator : public SecondOrderOperator {
   Index size() const override { return 3 * mesh_.n_cells(); }
   const Mesh& mesh() const { return mesh_; }
   const PlateSection& section() const { return section_; }
+  const ScalarField& pressure() const { return pressure_; }
+  // The concentrated loads (cell, value(t)) added by add_point_load().
+  const std::vector<std::pair<Index, std::function<Vec3(Real)>>>& point_loads() const {
+    return point_loads_;
+  }
+  int reconstruction_degree() const { return reconstruction_degree_; }
 
   void internal_residual(Real t, std::span<const Real> y, std::span<Real> r) override;
   const CsrPattern& stiffness_pattern() const override { return pattern_; }
@@ -190,6 +196,7 @@ class PlateOperator : public SecondOrderOperator {
   PlateSection section_;
   std::vector<PlateBoundary> boundaries_;
   ScalarField pressure_;
+  int reconstruction_degree_;
   std::vector<std::pair<Index, std::function<Vec3(Real)>>> point_loads_;
   Real mu_, lambda_, kgh_;  // D (1-nu)/2, D nu, k G h
   std::unique_ptr<PolynomialReconstruction> beta_rec_, own_w_rec_;

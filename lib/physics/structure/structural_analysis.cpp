@@ -127,6 +127,7 @@ AnalysisSettings read_analysis_settings(const CaseNode& root, const StructuralMo
   s.type = read_analysis_type(root);
   const CaseNode analysis = root.child("analysis");
   const CaseNode solver = root.child_or_empty("solver");
+  s.distributed = solver.get_bool("distributed", false);
   if (s.type == AnalysisType::Static) {
     const bool newton = model.static_method() == "newton";
     s.tolerance = solver.get_real("tolerance", 1e-6, Range::open(0.0, 1.0));

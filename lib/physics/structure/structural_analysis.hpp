@@ -25,6 +25,12 @@
 //                                  #   instability near the imaginary axis excites the
 //                                  #   mesh's high-frequency modes and IDA then crawls.
 //     fixed_step: 0                #   > 0: fixed step size, no error control (default 0)
+//   solver:                        # both:
+//     distributed: false           #   true: under mpirun -np P the continuum (or a static
+//                                  #   plate) is distributed
+//                                  #   over P METIS parts (distributed_analysis.hpp; GMRES
+//                                  #   with rank-local KLU blocks); false (default): the structure
+//                                  #   is solved on rank 0 while the other ranks wait
 //
 // Static: R(t_load, u) = 0 at the time every ramp has finished (model.ramp_end_time()), by
 // Newton with KINSOL or the model's own method (segregated); one output, index 0, at t_load.
@@ -55,6 +61,9 @@ struct AnalysisSettings {
   Real end_time = 0;
   Real output_interval = 0;
   IdaOptions ida;
+  // solver.distributed: the structure on distributed vectors (physics/structure/
+  // distributed_analysis.hpp) instead of on rank 0.
+  bool distributed = false;
 };
 
 // analysis.type alone: the scene needs it before the rest can be read.
@@ -79,6 +88,7 @@ struct AnalysisStats {
   SegregatedStats segregated;            // static, segregated (elasticity)
   int n_outputs = 0;
   Real final_time = 0;
+  int distributed_ranks = 0;  // > 0: solved distributed over this many ranks
 };
 
 // Runs the analysis. Progress (transients) goes to `progress`; the caller finishes it.

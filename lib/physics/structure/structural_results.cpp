@@ -70,6 +70,11 @@ Json solver_stats_json(const AnalysisStats& stats) {
     j["residual_initial"] = s.initial_residual;
     j["residual_final"] = s.final_residual;
   }
+  if (stats.distributed_ranks > 0) {  // GMRES with rank-local KLU blocks over the ranks
+    j["distributed_ranks"] = stats.distributed_ranks;
+    j["krylov_iterations"] = stats.type == AnalysisType::Transient ? stats.transient.linear_iters
+                                                                   : stats.newton.linear_iters;
+  }
   return j;
 }
 

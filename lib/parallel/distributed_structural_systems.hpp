@@ -1,0 +1,62 @@
+// Adaptors from a DistributedSecondOrderOperator (M y'' + R(t, y) = 0, y distributed) to the
+// DistributedSystem contract: the distributed counterparts of core/structural_systems.hpp,
+// row for row the same equations on the owned unknowns.
+#pragma once
+#include "parallel/distributed_system.hpp"
+
+namespace rfmems {
+
+// Static equilibrium R(t, y) = 0 (KINSOL).
+class DistributedStaticSystem : public DistributedSystem {
+ public:
+  explicit DistributedStaticSystem(DistributedSecondOrderOperator& op) : op_(op) {}
+  const Communicator& communicator() const override { return op_.communicator(); }
+  Index owned_size() const override { return op_.owned_size(); }
+  Index local_columns() const override { return op_.local_columns(); }
+  std::vector<Real> differential_components() const override;
+  void residual(Real t, std::span<const Real> y, std::span<const Real> yp,
+                std::span<Real> r) override;
+  const CsrPattern& jacobian_pattern() const override { return op_.stiffness_pattern(); }
+  void jacobian(Real t, Real c_j, std::span<const Real> y, std::span<const Real> yp,
+                std::span<Real> values) override;
+  void exchange_ghosts(std::span<Real> x) const override { op_.exchange_ghosts(x); }
+  const CsrPattern* overlap_pattern() const override { return op_.overlap_stiffness_pattern(); }
+  void overlap_jacobian(Real t, Real, std::span<const Real> y, std::span<const Real>,
+                        std::span<Real> values) override {
+    op_.overlap_stiffness(t, y, values);
+  }
+
+ private:
+  DistributedSecondOrderOperator& op_;
+};
+
+// First-order form for IDA, owned state Y = [y; v] (n + n, this rank's owned unknowns):
+//   F_y = y' - v,   F_v = M v' + R(t, y).
+// Local columns: [y owned; v owned; y ghosts] (only R reaches ghosts).
+class DistributedFirstOrderSystem : public DistributedSystem {
+ public:
+  explicit DistributedFirstOrderSystem(DistributedSecondOrderOperator& op);
+  const Communicator& communicator() const override { return op_.communicator(); }
+  Index owned_size() const override { return 2 * n_; }
+  Index local_columns() const override { return 2 * n_ + n_ghost_; }
+  std::vector<Real> differential_components() const override;
+  void residual(Real t, std::span<const Real> y, std::span<const Real> yp,
+                std::span<Real> r) override;
+  const CsrPattern& jacobian_pattern() const override { return pattern_; }
+  void jacobian(Real t, Real c_j, std::span<const Real> y, std::span<const Real> yp,
+                std::span<Real> values) override;
+  void exchange_ghosts(std::span<Real> x) const override;
+  DistributedSecondOrderOperator* second_order() override { return &op_; }
+
+ private:
+  DistributedSecondOrderOperator& op_;
+  Index n_, n_ghost_;
+  std::vector<Real> mass_;
+  CsrPattern pattern_;
+  std::vector<Index> mass_position_;       // value index of (n + i, n + i)
+  std::vector<Index> stiffness_position_;  // value index of each stiffness entry
+  std::vector<Real> k_values_, r_;
+  mutable std::vector<Real> column_work_;
+};
+
+}  // namespace rfmems

@@ -1,0 +1,33 @@
+// The static and transient analyses of structural_analysis.hpp with the structure
+// distributed over the ranks (issue 7; case key solver.distributed: true): the continuum's
+// FV elasticity operator on METIS parts (physics/elasticity/distributed_elasticity.hpp),
+// Newton (KINSOL) or IDA on SUNDIALS' MPI parallel N_Vector, GMRES preconditioned by KLU on
+// the rank-local blocks (restricted additive Schwarz on the ghost overlap; transients on the
+// Schur complement K + c_j^2 M; lib/solvers/distributed_*). Every output is gathered on the root,
+// which alone receives it (the result file is the serial run's, from rank 0).
+//
+// Supported: plane and 3D continua with the coupled stress method (static and transient),
+// the plate's static solve (physics/plate/distributed_plate.hpp); the plate's transient and
+// the segregated method stay serial (InputError naming solver.distributed). Static: the serial
+// convergence test (solver.tolerance on ||R||/||R0||), one Newton step for the linear
+// structure. Transient: the serial IDA settings (rtol, atol, max_order); fixed_step is not
+// supported distributed.
+#pragma once
+#include "parallel/communicator.hpp"
+#include "physics/structure/structural_analysis.hpp"
+
+namespace rfmems {
+
+// InputError (naming solver.distributed) if this model or these settings cannot run
+// distributed. Cheap; call before any solving, on every rank.
+void check_distributable(StructuralModel& model, const AnalysisSettings& settings,
+                         const CaseNode& root);
+
+// Collective. `observer` (and `progress`) are used on the root only; other ranks may pass
+// any observer, it is never called there. The statistics are the distributed solvers'
+// (Newton: linear_iters = GMRES iterations; transient: linear_iters, preconditioner_setups).
+AnalysisStats run_distributed_analysis(StructuralModel& model, const AnalysisSettings& settings,
+                                       const Communicator& comm, AnalysisObserver& observer,
+                                       ProgressReporter& progress);
+
+}  // namespace rfmems

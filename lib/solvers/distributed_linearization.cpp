@@ -1,0 +1,129 @@
+#include "solvers/distributed_linearization.hpp"
+
+#include <algorithm>
+
+#include "core/error.hpp"
+
+namespace rfmems {
+
+DistributedLinearization::DistributedLinearization(DistributedSystem& system,
+                                                   bool with_derivative_terms,
+                                                   Preconditioner preconditioner)
+    : system_(system),
+      with_derivative_terms_(with_derivative_terms),
+      schwarz_(preconditioner == Preconditioner::RestrictedAdditiveSchwarz) {
+  if (schwarz_ && (with_derivative_terms_ || !system_.overlap_pattern()))
+    throw SolverError("additive Schwarz: the system has no overlapping static subdomain matrix");
+  if (schwarz_) overlap_values_.resize(system_.overlap_pattern()->nnz());
+  if (preconditioner == Preconditioner::SchurAdditiveSchwarz) {
+    structure_ = system_.second_order();
+    if (!structure_ || !structure_->overlap_stiffness_pattern() || !with_derivative_terms_)
+      throw SolverError("Schur additive Schwarz: the system has no structural overlap matrix");
+    const CsrPattern& p = *structure_->overlap_stiffness_pattern();
+    overlap_values_.resize(p.nnz());
+    overlap_diagonal_.resize(p.n_rows());
+    for (Index i = 0; i < p.n_rows(); ++i) overlap_diagonal_[i] = p.find(i, i);
+    owned_mass_ = structure_->mass_diagonal();
+    overlap_mass_ = structure_->overlap_mass_diagonal();
+    schur_work_.resize(structure_->local_columns());
+  }
+  const CsrPattern& full = system_.jacobian_pattern();
+  const Index n = system_.owned_size();
+  for (Index i = 0; i < n; ++i) {
+    for (Index e = full.row_ptr[i]; e < full.row_ptr[i + 1]; ++e)
+      if (full.col_idx[e] < n) {
+        block_pattern_.col_idx.push_back(full.col_idx[e]);
+        block_source_.push_back(e);
+      }
+    block_pattern_.row_ptr.push_back(block_pattern_.nnz());
+  }
+  a_.resize(full.nnz());
+  if (with_derivative_terms_) b_.resize(full.nnz());
+  block_values_.resize(block_pattern_.nnz());
+  column_work_.resize(system_.local_columns());
+}
+
+DistributedLinearization::~DistributedLinearization() = default;
+
+void DistributedLinearization::setup(Real t, Real c_j, std::span<const Real> y,
+                                     std::span<const Real> yp) {
+  system_.jacobian(t, 0.0, y, yp, a_);
+  if (with_derivative_terms_) {
+    system_.jacobian(t, 1.0, y, yp, b_);
+    for (std::size_t e = 0; e < b_.size(); ++e) b_[e] -= a_[e];
+  }
+  for (std::size_t k = 0; k < block_source_.size(); ++k) {
+    const Index e = block_source_[k];
+    block_values_[k] = with_derivative_terms_ ? a_[e] + c_j * b_[e] : a_[e];
+  }
+  ++setups_;
+  if (schwarz_) system_.overlap_jacobian(t, c_j, y, yp, overlap_values_);  // collective
+  if (structure_) {  // K + c^2 M of the local rows
+    structure_->overlap_stiffness(t, y.subspan(0, structure_->owned_size()), overlap_values_);
+    schur_c_ = c_j;
+    for (std::size_t i = 0; i < overlap_diagonal_.size(); ++i)
+      overlap_values_[overlap_diagonal_[i]] += c_j * c_j * overlap_mass_[i];
+  }
+  if (system_.owned_size() == 0) return;  // an empty part has nothing to factorise
+  const CsrPattern& pattern = schwarz_     ? *system_.overlap_pattern()
+                              : structure_ ? *structure_->overlap_stiffness_pattern()
+                                           : block_pattern_;
+  const std::vector<Real>& values = schwarz_ || structure_ ? overlap_values_ : block_values_;
+  if (lu_)
+    lu_->refactor(values);
+  else
+    lu_ = std::make_unique<KluFactorization>(pattern, values);
+}
+
+DistributedLinearization::Preconditioner DistributedLinearization::best_for(
+    DistributedSystem& system, bool with_derivative_terms) {
+  if (!with_derivative_terms)
+    return system.overlap_pattern() ? Preconditioner::RestrictedAdditiveSchwarz
+                                    : Preconditioner::BlockJacobi;
+  DistributedSecondOrderOperator* op = system.second_order();
+  return op && op->overlap_stiffness_pattern() ? Preconditioner::SchurAdditiveSchwarz
+                                               : Preconditioner::BlockJacobi;
+}
+
+void DistributedLinearization::apply(Real c_j, std::span<const Real> v, std::span<Real> jv) {
+  const Index n = system_.owned_size();
+  std::copy(v.begin(), v.begin() + n, column_work_.begin());
+  system_.exchange_ghosts(column_work_);
+  const CsrPattern& full = system_.jacobian_pattern();
+  for (Index i = 0; i < n; ++i) {
+    Real sum = 0;
+    for (Index e = full.row_ptr[i]; e < full.row_ptr[i + 1]; ++e) {
+      const Real value = with_derivative_terms_ ? a_[e] + c_j * b_[e] : a_[e];
+      sum += value * column_work_[full.col_idx[e]];
+    }
+    jv[i] = sum;
+  }
+}
+
+void DistributedLinearization::precondition(std::span<const Real> r, std::span<Real> z) {
+  const Index n = system_.owned_size();
+  if (structure_) {
+    // (K + c^2 M) dy = r_v + c M r_y on the overlap, then dv = c dy - r_y.
+    const Index m = structure_->owned_size();
+    for (Index i = 0; i < m; ++i) schur_work_[i] = r[m + i] + schur_c_ * owned_mass_[i] * r[i];
+    structure_->exchange_ghosts(schur_work_);
+    if (lu_) lu_->solve(schur_work_);
+    for (Index i = 0; i < m; ++i) {
+      const Real dy = schur_work_[i];
+      z[m + i] = schur_c_ * dy - r[i];  // r[i] read before z[i] is written (z may be r)
+      z[i] = dy;
+    }
+    return;
+  }
+  if (!schwarz_) {
+    if (r.data() != z.data()) std::copy(r.begin(), r.begin() + n, z.begin());
+    if (lu_) lu_->solve(z);
+    return;
+  }
+  std::copy(r.begin(), r.begin() + n, column_work_.begin());
+  system_.exchange_ghosts(column_work_);  // R_d r: the overlap's entries from their owners
+  if (lu_) lu_->solve(column_work_);
+  std::copy(column_work_.begin(), column_work_.begin() + n, z.begin());  // R_0^T
+}
+
+}  // namespace rfmems

@@ -1,0 +1,73 @@
+// The linear algebra of Newton-Krylov on a DistributedSystem: the exact distributed
+// Jacobian-vector product and a block-Jacobi preconditioner whose blocks are the rank-local
+// Jacobians (owned rows x owned columns) factorised by KLU.
+//
+// setup() evaluates dF/dy (and, for transients, dF/dy') at the Newton iterate and factorises
+// the owned block of dF/dy + c_j dF/dy'. apply() multiplies by the Jacobian at that iterate
+// for any c_j: the systems here are affine in c_j (dF/dy' does not depend on it), so
+// J(c_j) = A + c_j B with A = J(0), B = J(1) - A exactly (to one rounding). Between setups
+// the product uses the last setup's A: exact for the linear structure, a modified (lagged)
+// Newton for a nonlinear one.
+//
+// Block Jacobi drops the couplings between parts: on P ranks the Krylov solver has to
+// recover them, so its iterations grow with P (docs/BENCHMARKS.md section 29). One rank: the
+// block is the whole Jacobian and one iteration solves exactly.
+//
+// Restricted additive Schwarz (Cai & Sarkis 1999), where the system offers its overlapping
+// subdomain matrix (DistributedSystem::overlap_pattern): z = R_0^T A_d^-1 R_d r, i.e. r's
+// ghost entries fetched from their owners, the subdomain problem (owned + ghost rows, KLU)
+// solved, the owned part kept. One ghost exchange more per application; the overlap carries
+// the coupling between parts that block Jacobi drops.
+//
+// For a first-order structural system [y' - v; M v' + R] (DistributedSystem::second_order)
+// with J = [c I, -I; K, c M], eliminating dv = c dy - r_y leaves (K + c^2 M) dy = r_v + c M r_y:
+// the Schur variant solves that by restricted additive Schwarz on the structure's overlap
+// (K and M of the local rows, c of the last setup) and recovers dv.
+#pragma once
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "parallel/distributed_system.hpp"
+#include "solvers/klu_factorization.hpp"
+
+namespace rfmems {
+
+class DistributedLinearization {
+ public:
+  enum class Preconditioner { BlockJacobi, RestrictedAdditiveSchwarz, SchurAdditiveSchwarz };
+  // with_derivative_terms: evaluate dF/dy' too (IDA); false: c_j is always 0 (KINSOL).
+  // RestrictedAdditiveSchwarz needs system.overlap_pattern() and c_j = 0, SchurAdditiveSchwarz
+  // a second_order() operator with an overlap_stiffness_pattern() (else SolverError).
+  DistributedLinearization(DistributedSystem& system, bool with_derivative_terms,
+                           Preconditioner preconditioner = Preconditioner::BlockJacobi);
+  ~DistributedLinearization();
+
+  // Collective.
+  void setup(Real t, Real c_j, std::span<const Real> y, std::span<const Real> yp);
+  // jv = (dF/dy + c_j dF/dy') v on the owned rows (collective: exchanges v's ghosts).
+  void apply(Real c_j, std::span<const Real> v, std::span<Real> jv);
+  // z = P^-1 r with P the owned block at the last setup (rank-local; collective with the
+  // additive Schwarz preconditioner).
+  void precondition(std::span<const Real> r, std::span<Real> z);
+  long setups() const { return setups_; }
+  // The strongest preconditioner the system offers (Schur Schwarz, Schwarz, block Jacobi).
+  static Preconditioner best_for(DistributedSystem& system, bool with_derivative_terms);
+
+ private:
+  DistributedSystem& system_;
+  bool with_derivative_terms_;
+  bool schwarz_;
+  DistributedSecondOrderOperator* structure_ = nullptr;  // the Schur variant's
+  std::vector<Real> overlap_values_, owned_mass_, overlap_mass_, schur_work_;
+  std::vector<Index> overlap_diagonal_;
+  Real schur_c_ = 0;
+  std::vector<Real> a_, b_;  // J(0) and J(1) - J(0) on jacobian_pattern()
+  CsrPattern block_pattern_;
+  std::vector<Index> block_source_;  // entry of jacobian_pattern() for each block entry
+  std::vector<Real> block_values_, column_work_;
+  std::unique_ptr<KluFactorization> lu_;
+  long setups_ = 0;
+};
+
+}  // namespace rfmems

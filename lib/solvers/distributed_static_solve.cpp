@@ -1,0 +1,166 @@
+#include "solvers/distributed_static_solve.hpp"
+
+#include <fmt/format.h>
+#include <kinsol/kinsol.h>
+#include <sunlinsol/sunlinsol_spgmr.h>
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <utility>
+
+#include "core/error.hpp"
+#include "parallel/distributed_structural_systems.hpp"
+#include "solvers/distributed_linearization.hpp"
+#include "solvers/parallel_vector.hpp"
+
+namespace rfmems {
+
+namespace {
+
+void check(int flag, const char* call) {
+  if (flag < 0) throw SolverError(fmt::format("KINSOL: {} failed with flag {}", call, flag));
+}
+
+struct Problem {
+  DistributedStaticSystem system;
+  DistributedLinearization linearization;
+  Real t = 0;
+  long residual_calls = 0;
+  std::exception_ptr pending;
+  std::vector<Real> no_derivative;
+
+  Problem(DistributedSecondOrderOperator& op, Real time, bool overlap)
+      : system(op),
+        linearization(system, false,
+                      overlap && system.overlap_pattern()
+                          ? DistributedLinearization::Preconditioner::RestrictedAdditiveSchwarz
+                          : DistributedLinearization::Preconditioner::BlockJacobi),
+        t(time),
+        no_derivative(op.owned_size(), 0.0) {}
+
+  template <class F>
+  int guarded(F&& body) {
+    try {
+      body();
+      return 0;
+    } catch (const RecoverableError&) {
+      return 1;
+    } catch (...) {
+      pending = std::current_exception();
+      return -1;
+    }
+  }
+};
+
+Problem& problem_of(void* data) { return *static_cast<Problem*>(data); }
+
+int residual(N_Vector y, N_Vector f, void* data) {
+  Problem& p = problem_of(data);
+  return p.guarded([&] {
+    ++p.residual_calls;
+    p.system.residual(p.t, sundials::local_span(y), p.no_derivative, sundials::local_span(f));
+  });
+}
+
+int preconditioner_setup(N_Vector u, N_Vector, N_Vector, N_Vector, void* data) {
+  Problem& p = problem_of(data);
+  return p.guarded(
+      [&] { p.linearization.setup(p.t, 0.0, sundials::local_span(u), p.no_derivative); });
+}
+
+int preconditioner_solve(N_Vector, N_Vector, N_Vector, N_Vector, N_Vector v, void* data) {
+  Problem& p = problem_of(data);
+  return p.guarded([&] {
+    auto z = sundials::local_span(v);
+    p.linearization.precondition(z, z);
+  });
+}
+
+int jacobian_times(N_Vector v, N_Vector jv, N_Vector, booleantype* new_u, void* data) {
+  Problem& p = problem_of(data);
+  *new_u = SUNFALSE;  // the product uses the Jacobian of the last setup, at this u
+  return p.guarded(
+      [&] { p.linearization.apply(0.0, sundials::local_span(v), sundials::local_span(jv)); });
+}
+
+Real global_max_abs(const Communicator& comm, std::span<const Real> x) {
+  Real m = 0;
+  for (Real v : x) m = std::max(m, std::abs(v));
+  return comm.max(m);
+}
+
+}  // namespace
+
+DistributedStaticSolution solve_static_distributed(DistributedSecondOrderOperator& op, Real t,
+                                                   const DistributedNewtonOptions& options,
+                                                   std::vector<Real> y0) {
+  const Communicator& comm = op.communicator();
+  const Index n = op.owned_size();
+  Problem problem(op, t, options.overlap);
+  DistributedStaticSolution solution;
+  solution.y = y0.empty() ? std::vector<Real>(n, 0.0) : std::move(y0);
+
+  sundials::Context ctx = sundials::make_context();
+  sundials::Vector y = sundials::make_parallel_vector(comm, n, ctx.get());
+  sundials::Vector scale_u = sundials::make_parallel_vector(comm, n, ctx.get());
+  sundials::Vector scale_f = sundials::make_parallel_vector(comm, n, ctx.get());
+  auto yv = sundials::local_span(y.get());
+  std::copy(solution.y.begin(), solution.y.end(), yv.begin());
+
+  // Scale F by its initial size so the tolerance is a relative reduction (as the serial solve).
+  auto f0 = sundials::local_span(scale_f.get());
+  problem.system.residual(t, yv, problem.no_derivative, f0);
+  NonlinearStats& stats = solution.stats;
+  stats.initial_residual = global_max_abs(comm, f0);
+  stats.residual_evals = 1;
+  if (stats.initial_residual == 0) return solution;
+  N_VConst(1.0 / stats.initial_residual, scale_f.get());
+  N_VConst(1.0, scale_u.get());
+
+  sundials::LinearSolver gmres(
+      SUNLinSol_SPGMR(y.get(), SUN_PREC_RIGHT, options.krylov_dimension, ctx.get()));
+  if (!gmres) throw SolverError("SUNLinSol_SPGMR failed");
+  SUNLinSol_SPGMRSetGSType(gmres.get(), SUN_MODIFIED_GS);
+  SUNLinSol_SPGMRSetMaxRestarts(gmres.get(), options.max_restarts);
+
+  void* mem = KINCreate(ctx.get());
+  if (!mem) throw SolverError("KINCreate failed");
+  struct Free {
+    void* mem;
+    ~Free() { KINFree(&mem); }
+  } free_mem{mem};
+  check(KINInit(mem, residual, y.get()), "KINInit");
+  check(KINSetUserData(mem, &problem), "KINSetUserData");
+  check(KINSetLinearSolver(mem, gmres.get(), nullptr), "KINSetLinearSolver");
+  check(KINSetPreconditioner(mem, preconditioner_setup, preconditioner_solve),
+        "KINSetPreconditioner");
+  check(KINSetJacTimesVecFn(mem, jacobian_times), "KINSetJacTimesVecFn");
+  check(KINSetMaxSetupCalls(mem, 1), "KINSetMaxSetupCalls");  // exact Newton
+  check(KINSetEtaForm(mem, KIN_ETACONSTANT), "KINSetEtaForm");
+  check(KINSetEtaConstValue(mem, options.linear_tolerance), "KINSetEtaConstValue");
+  check(KINSetNumMaxIters(mem, options.max_iterations), "KINSetNumMaxIters");
+  check(KINSetPrintLevel(mem, 0), "KINSetPrintLevel");
+  check(KINSetFuncNormTol(mem, options.relative_tolerance), "KINSetFuncNormTol");
+  check(KINSetScaledStepTol(mem, 1e-300), "KINSetScaledStepTol");
+  check(KINSetMaxNewtonStep(mem, 1e300), "KINSetMaxNewtonStep");  // see KinsolSolver::solve
+
+  const int flag = KINSol(mem, y.get(), KIN_NONE, scale_u.get(), scale_f.get());
+  if (problem.pending) std::rethrow_exception(std::exchange(problem.pending, nullptr));
+  if (flag < 0)
+    throw SolverError(fmt::format("KINSOL (distributed) failed with flag {} ({})", flag,
+                                  KINGetReturnFlagName(flag)));
+  long nni = 0, nli = 0;
+  KINGetNumNonlinSolvIters(mem, &nni);
+  KINGetNumLinIters(mem, &nli);
+  stats.newton_iters = nni;
+  stats.jacobian_evals = problem.linearization.setups();
+  stats.linear_iters = nli;
+  stats.residual_evals += problem.residual_calls;
+  problem.system.residual(t, yv, problem.no_derivative, f0);
+  stats.final_residual = global_max_abs(comm, f0);
+  std::copy(yv.begin(), yv.end(), solution.y.begin());
+  return solution;
+}
+
+}  // namespace rfmems

@@ -1,0 +1,42 @@
+// Static equilibrium R(t, y) = 0 of a distributed structural operator (issue 7): KINSOL on
+// SUNDIALS' MPI parallel N_Vector, Newton with SPGMR (right-preconditioned GMRES, modified
+// Gram-Schmidt) for the linear systems, the exact distributed Jacobian-vector product and a
+// KLU preconditioner on the rank-local blocks (restricted additive Schwarz on the ghost
+// overlap, or block Jacobi; solvers/distributed_linearization.hpp).
+//
+// The convergence test is the serial one (solvers/static_solve.hpp): ||R||_inf <=
+// relative_tolerance ||R(y0)||_inf. Each Newton step's Krylov solve is tight (constant
+// forcing term linear_tolerance, not Eisenstat-Walker), so a linear problem still takes one
+// Newton step, as with KLU.
+#pragma once
+#include <vector>
+
+#include "parallel/distributed_system.hpp"
+#include "solvers/kinsol_solver.hpp"
+
+namespace rfmems {
+
+struct DistributedNewtonOptions {
+  Real relative_tolerance = 1e-6;  // as KinsolOptions
+  int max_iterations = 50;
+  // KINSOL's constant forcing term: each GMRES solve reduces the scaled residual of the
+  // Newton system by this (2-norm).
+  Real linear_tolerance = 1e-12;
+  int krylov_dimension = 200;
+  int max_restarts = 10;
+  // Restricted additive Schwarz on the ghost overlap where the operator offers it, else
+  // block Jacobi on the owned blocks (solvers/distributed_linearization.hpp).
+  bool overlap = true;
+};
+
+struct DistributedStaticSolution {
+  std::vector<Real> y;   // this rank's owned unknowns
+  NonlinearStats stats;  // linear_iters: the GMRES iterations (the same on every rank)
+};
+
+// Collective. Starts from y0 (owned; zero if empty).
+DistributedStaticSolution solve_static_distributed(DistributedSecondOrderOperator& op, Real t,
+                                                   const DistributedNewtonOptions& options = {},
+                                                   std::vector<Real> y0 = {});
+
+}  // namespace rfmems

@@ -1,0 +1,294 @@
+// The structure on distributed vectors (issue 7) under mpirun -np P: the FV elasticity
+// operator distributed over METIS parts (physics/elasticity/distributed_elasticity.hpp),
+// solved by KINSOL / IDA on SUNDIALS' parallel N_Vector with GMRES and a block-Jacobi KLU
+// preconditioner (solvers/distributed_static_solve.hpp, distributed_ida_integrator.hpp):
+//  - the Jacobian's owned rows equal the serial Jacobian's rows (round-off);
+//  - the cantilever's static deflection equals the serial KLU solution to 1e-8 on every
+//    rank count, in one Newton step, and the beam solution as the serial case does;
+//  - a short transient of the same cantilever equals the serial IDA + KLU run to the IDA
+//    tolerance, with block Jacobi and with the Schur complement K + c_j^2 M preconditioned by
+//    additive Schwarz on the ghost overlap.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/structural_systems.hpp"
+#include "mesh/structured_mesh.hpp"
+#include "parallel/distributed_structural_systems.hpp"
+#include "physics/elasticity/distributed_elasticity.hpp"
+#include "physics/plate/distributed_plate.hpp"
+#include "solvers/distributed_ida_integrator.hpp"
+#include "solvers/distributed_static_solve.hpp"
+#include "solvers/ida_integrator.hpp"
+#include "solvers/klu_factorization.hpp"
+#include "solvers/static_solve.hpp"
+
+using namespace rfmems;
+
+namespace {
+
+// cases/cantilever_static on a coarser mesh: L = 2 m, h = 0.04 m, end shear 1000 Pa.
+constexpr double L = 2.0, h = 0.04, E = 200e9, nu = 0.31, traction = 1000.0;
+
+struct Cantilever {
+  Mesh mesh;
+  std::unique_ptr<ElasticityOperator> op;
+};
+
+Cantilever make_cantilever(int nx, int ny) {
+  BoxSpec spec;
+  spec.lower = Vec3(0, -h / 2, 0);
+  spec.upper = Vec3(L, h / 2, 0);
+  spec.n[0] = nx;
+  spec.n[1] = ny;
+  Cantilever beam{make_structured_mesh(spec), nullptr};
+  std::vector<ElasticityBoundary> bcs;
+  for (const Patch& p : beam.mesh.patches()) {
+    if (p.name == "left")
+      bcs.push_back({ElasticityBoundary::Kind::Fixed, {}});
+    else if (p.name == "right")
+      bcs.push_back({ElasticityBoundary::Kind::Traction,
+                     [](const Vec3&, double) { return Vec3(0, -traction, 0); }});
+    else
+      bcs.push_back({ElasticityBoundary::Kind::Traction, {}});
+  }
+  beam.op = std::make_unique<ElasticityOperator>(
+      beam.mesh, LinearElastic{E, nu, 7854, Hypothesis::PlaneStress}, bcs);
+  return beam;
+}
+
+double max_abs(std::span<const double> x) {
+  double m = 0;
+  for (double v : x) m = std::max(m, std::abs(v));
+  return m;
+}
+
+// Tip deflection at (L, 0) from the reconstruction of the nearest cell (the probe's rule).
+double tip_deflection(const Cantilever& beam, const std::vector<double>& u) {
+  const Vec3 tip(L, 0, 0);
+  Index nearest = 0;
+  for (Index c = 0; c < beam.mesh.n_cells(); ++c)
+    if ((beam.mesh.cell_centroid(c) - tip).norm() < (beam.mesh.cell_centroid(nearest) - tip).norm())
+      nearest = c;
+  return beam.op->displacement_at(nearest, tip, u, beam.op->cell_gradients(0, u)).y();
+}
+
+}  // namespace
+
+TEST(DistributedStructure, OwnedJacobianRowsEqualTheSerialRows) {
+  const Communicator comm = Communicator::world();
+  Cantilever beam = make_cantilever(40, 6);
+  DistributedElasticity dist(*beam.op, comm);
+  EXPECT_EQ(comm.sum(dist.owned_size()), beam.op->size());
+
+  std::vector<double> u(beam.op->size(), 0.0), k_serial(beam.op->stiffness_pattern().nnz());
+  beam.op->stiffness(0, u, k_serial);
+  const CsrPattern& serial = beam.op->stiffness_pattern();
+  const CsrPattern& owned = dist.stiffness_pattern();
+  std::vector<double> k(owned.nnz());
+  dist.stiffness(0, dist.owned_part(u), k);
+
+  const auto& local = dist.distributed_mesh().local;
+  auto global_dof = [&](Index local_dof) {
+    return local.global_cell[local_dof / 2] * 2 + local_dof % 2;
+  };
+  const double scale = max_abs(k_serial);
+  double diff = 0;
+  Index matched = 0, serial_entries = 0;
+  for (Index i = 0; i < dist.owned_size(); ++i) {
+    const Index gi = global_dof(i);
+    serial_entries += serial.row_ptr[gi + 1] - serial.row_ptr[gi];
+    for (Index e = owned.row_ptr[i]; e < owned.row_ptr[i + 1]; ++e) {
+      const Index pos = serial.find(gi, global_dof(owned.col_idx[e]));
+      ASSERT_GE(pos, 0) << "an owned entry the serial pattern lacks";
+      diff = std::max(diff, std::abs(k[e] - k_serial[pos]));
+      ++matched;
+    }
+  }
+  diff = comm.max(diff);
+  if (comm.is_root())
+    std::printf("ranks %d: max |K_owned - K_serial| / max |K| = %.2e\n", comm.size(), diff / scale);
+  EXPECT_EQ(matched, serial_entries);  // the same entries, none missing
+  EXPECT_LT(diff, 1e-12 * scale);
+}
+
+TEST(DistributedStructure, CantileverStaticEqualsSerialKlu) {
+  const Communicator comm = Communicator::world();
+  Cantilever beam = make_cantilever(80, 8);
+  const StaticSolution serial = solve_static(*beam.op, 0.0);
+  // The round-off floor of this slender beam (L/h = 50, a near-singular bending mode): the
+  // serial solution's residual is not zero but the round-off of evaluating R (~1e-7 of R0),
+  // and the change of u that a residual that small allows, K^-1 R(u_KLU) (one step of
+  // iterative refinement), is what two accurate solvers may differ by.
+  std::vector<double> k(beam.op->stiffness_pattern().nnz()), refinement(beam.op->size());
+  beam.op->stiffness(0, serial.y, k);
+  beam.op->internal_residual(0, serial.y, refinement);
+  KluFactorization lu(beam.op->stiffness_pattern(), k);
+  lu.solve(refinement);
+  const double floor = max_abs(refinement) / max_abs(serial.y);
+  DistributedElasticity dist(*beam.op, comm);
+  long iterations[2] = {0, 0};
+  for (const bool overlap : {false, true}) {  // block Jacobi, restricted additive Schwarz
+    DistributedNewtonOptions options;
+    options.overlap = overlap;
+    const DistributedStaticSolution s = solve_static_distributed(dist, 0.0, options);
+    iterations[overlap] = s.stats.linear_iters;
+
+    // Every rank against its owned part of the serial solution.
+    const std::vector<double> reference = dist.owned_part(serial.y);
+    double diff = 0;
+    for (std::size_t i = 0; i < s.y.size(); ++i)
+      diff = std::max(diff, std::abs(s.y[i] - reference[i]));
+    const double rel = comm.max(diff) / max_abs(serial.y);
+    EXPECT_EQ(s.stats.newton_iters, 1);  // linear: one Newton step, as with KLU
+    // 1e-8 is beneath that floor here; the distributed solution is within a few times it.
+    EXPECT_LT(rel, std::max(1e-8, 3 * floor));
+
+    const std::vector<double> all = dist.gather_to_root(s.y);
+    if (comm.is_root()) {
+      const double w = tip_deflection(beam, all), w_serial = tip_deflection(beam, serial.y);
+      // Euler-Bernoulli P L^3 / (3 E I) with P = traction h; shear deformation adds 3e-4.
+      const double w_beam = -traction * h * std::pow(L, 3) / (3 * E * std::pow(h, 3) / 12);
+      std::printf(
+          "ranks %d, %s: %ld GMRES iterations, |u - u_KLU| / |u| = %.2e (round-off floor "
+          "|K^-1 R(u_KLU)| / |u| = %.2e), tip %.6e m (serial %.6e, beam theory %.6e)\n",
+          comm.size(), overlap ? "additive Schwarz" : "block Jacobi", s.stats.linear_iters, rel,
+          floor, w, w_serial, w_beam);
+      EXPECT_NEAR(w / w_beam, 1.0, 0.01);
+    }
+  }
+  // The overlap carries the coupling between parts: never more iterations than block Jacobi.
+  EXPECT_LE(iterations[1], iterations[0]);
+}
+
+TEST(DistributedStructure, CantileverTransientEqualsSerialIda) {
+  // The end load ramped over 20 ms and held (cases/cantilever_vibration): a quarter period
+  // of the first mode (8.2 Hz) on a coarse mesh, from rest.
+  const Communicator comm = Communicator::world();
+  Cantilever beam = make_cantilever(40, 4);
+  const double ramp = 0.02;
+  for (std::size_t p = 0; p < beam.mesh.patches().size(); ++p)
+    if (beam.mesh.patches()[p].name == "right") {
+      std::vector<ElasticityBoundary> bcs = beam.op->boundaries();
+      bcs[p].value = [ramp](const Vec3&, double t) {
+        return Vec3(0, -traction * std::min(t / ramp, 1.0), 0);
+      };
+      beam.op = std::make_unique<ElasticityOperator>(beam.mesh, beam.op->material(), bcs);
+    }
+  IdaOptions options;
+  options.rtol = 1e-4;  // as the case; atol its default rule (rtol 1e-4 x 2 m)
+  options.atol = 2e-8;
+  options.max_order = 2;
+
+  FirstOrderSystem serial_system(*beam.op);
+  IdaIntegrator serial(serial_system, options);
+  std::vector<double> zero(serial_system.size(), 0.0);
+  serial.initialize(0.0, zero, zero);
+
+  const Index n = beam.op->size();
+  std::vector<std::vector<double>> u_serial;  // at 10, 20, 30 ms
+  for (int k = 1; k <= 3; ++k) {
+    serial.advance(0.01 * k);
+    u_serial.emplace_back(serial.y().begin(), serial.y().begin() + n);
+  }
+  const IntegratorStats s_serial = serial.stats();
+
+  DistributedElasticity dist(*beam.op, comm);
+  DistributedFirstOrderSystem system(dist);
+  long iterations[2] = {0, 0};
+  for (const bool overlap : {false, true}) {  // block Jacobi, Schur complement by Schwarz
+    DistributedIdaIntegrator ida(system, options, overlap);
+    std::vector<double> owned_zero(system.owned_size(), 0.0);
+    ida.initialize(0.0, owned_zero, owned_zero);
+    double worst = 0, amplitude = 0;
+    for (int k = 1; k <= 3; ++k) {
+      ida.advance(0.01 * k);
+      const std::vector<double> reference = dist.owned_part(u_serial[k - 1]);
+      double diff = 0;
+      for (Index i = 0; i < dist.owned_size(); ++i)
+        diff = std::max(diff, std::abs(ida.y()[i] - reference[i]));
+      worst = std::max(worst, comm.max(diff));
+      amplitude = std::max(amplitude, max_abs(u_serial[k - 1]));
+    }
+    const IntegratorStats s = ida.stats();
+    iterations[overlap] = s.linear_iters;
+    if (comm.is_root())
+      std::printf(
+          "ranks %d, %s: transient to 30 ms: max |u - u_serial| / max |u| = %.2e; steps %ld "
+          "(serial %ld), Newton %ld, GMRES %ld (%.1f per Newton iteration), preconditioner "
+          "setups %ld\n",
+          comm.size(), overlap ? "Schur additive Schwarz" : "block Jacobi", worst / amplitude,
+          s.steps, s_serial.steps, s.newton_iters, s.linear_iters,
+          static_cast<double>(s.linear_iters) / s.newton_iters, s.preconditioner_setups);
+    EXPECT_GT(amplitude, 1e-5);  // the beam has moved (static tip deflection ~1e-4 m)
+    EXPECT_LT(worst, 10 * options.rtol * amplitude);
+  }
+  // Eliminating v and solving K + c_j^2 M on the overlap: fewer iterations than block Jacobi.
+  EXPECT_LE(iterations[1], iterations[0]);
+}
+
+namespace {
+
+// The clamped square plate of test/regression/test_plate_clamped_square.cpp: a = 1 m, q = 1 Pa,
+// E = 200 GPa, nu = 0.3, L/h = 10, on n x n cells.
+std::unique_ptr<PlateOperator> clamped_plate(const Mesh& mesh) {
+  PlateSection section;
+  section.E = 200e9;
+  section.nu = 0.3;
+  section.thickness = 0.1;
+  std::vector<PlateBoundary> bcs(mesh.patches().size(), {PlateBoundary::Kind::Clamped, {}});
+  return std::make_unique<PlateOperator>(mesh, section, bcs,
+                                         [](const Vec3&, double) { return -1.0; });
+}
+
+}  // namespace
+
+TEST(DistributedStructure, ClampedPlateStaticEqualsSerialKlu) {
+  const Communicator comm = Communicator::world();
+  BoxSpec spec;
+  spec.n[0] = spec.n[1] = 16;
+  const Mesh mesh = make_structured_mesh(spec);
+  auto plate = clamped_plate(mesh);
+  DistributedPlate dist(*plate, comm);
+  EXPECT_EQ(comm.sum(dist.owned_size()), plate->size());
+
+  // Owned Jacobian rows against the serial rows.
+  std::vector<double> zero(plate->size(), 0.0), k_serial(plate->stiffness_pattern().nnz());
+  plate->stiffness(0, zero, k_serial);
+  const CsrPattern& serial_pattern = plate->stiffness_pattern();
+  const CsrPattern& owned = dist.stiffness_pattern();
+  std::vector<double> k(owned.nnz());
+  dist.stiffness(0, dist.owned_part(zero), k);
+  const auto& local = dist.distributed_mesh().local;
+  auto global_dof = [&](Index d) { return local.global_cell[d / 3] * 3 + d % 3; };
+  double diff = 0;
+  double extra = 0;  // largest owned entry the serial pattern lacks
+  for (Index i = 0; i < dist.owned_size(); ++i)
+    for (Index e = owned.row_ptr[i]; e < owned.row_ptr[i + 1]; ++e) {
+      const Index pos = serial_pattern.find(global_dof(i), global_dof(owned.col_idx[e]));
+      if (pos < 0) {  // measured, not asserted: every rank must reach the collectives below
+        extra = std::max(extra, std::abs(k[e]));
+        continue;
+      }
+      diff = std::max(diff, std::abs(k[e] - k_serial[pos]));
+    }
+  const double k_rel = comm.max(diff) / max_abs(k_serial);
+  extra = comm.max(extra) / max_abs(k_serial);
+  EXPECT_LT(extra, 1e-12);  // round-off where a local stencil differs from the serial one
+
+  const StaticSolution serial = solve_static(*plate, 0.0);
+  const DistributedStaticSolution s = solve_static_distributed(dist, 0.0);
+  const std::vector<double> reference = dist.owned_part(serial.y);
+  double u_diff = 0;
+  for (std::size_t i = 0; i < s.y.size(); ++i)
+    u_diff = std::max(u_diff, std::abs(s.y[i] - reference[i]));
+  const double rel = comm.max(u_diff) / max_abs(serial.y);
+  if (comm.is_root())
+    std::printf(
+        "ranks %d, plate 16 x 16: max |K_owned - K_serial| / max |K| = %.2e (entries outside "
+        "the serial pattern: %.2e); %ld GMRES iterations, |y - y_KLU| / |y| = %.2e\n",
+        comm.size(), k_rel, extra, s.stats.linear_iters, rel);
+  EXPECT_LT(k_rel, 1e-12);
+  EXPECT_EQ(s.stats.newton_iters, 1);
+  EXPECT_LT(rel, 1e-8);  // a stocky plate (L/h = 10): well conditioned
+}
