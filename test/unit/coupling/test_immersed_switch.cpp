@@ -116,6 +116,42 @@ TEST(ImmersedSwitch, StrongCouplingConvergesToTheImplicitStep) {
   RecordProperty("staggered_over_implicit", std::to_string(e_staggered));
 }
 
+// coupling.gas_every = k: the gas is advanced over every k-th accepted structure step, one gas
+// step spanning the k steps. The gas's intervals must tile [0, t_end] without gap or overlap
+// (the gas's own time is the structure's), there must be ceil(steps / k) of them, and each
+// carries the surface of its end state. A recording gas (constant force) checks it.
+TEST(ImmersedSwitch, GasEveryKStepsTilesTheRun) {
+  struct RecordingGas : ImmersedGasModel {
+    std::vector<std::pair<Real, Real>> intervals;
+    std::string name() const override { return "recording"; }
+    void reset(const ImmersedSurface&, Real) override { intervals.clear(); }
+    std::vector<Vec3> advance(const ImmersedSurface& surface, std::span<const Vec3>, Real t,
+                              Real dt) override {
+      intervals.emplace_back(t, dt);
+      return std::vector<Vec3>(surface.n_segments(), Vec3::Zero());
+    }
+  };
+  Cantilever c(46, 4, 101, 31);
+  ImmersedRunOptions o = run_options(0.2e-6, 1e-5);
+  o.stop_at_turning = false;
+  for (int k : {1, 3}) {
+    o.gas_every = k;
+    RecordingGas gas;
+    c.scene->reset_times();
+    const DynamicRun r = c.scene->run(30.0, o, &gas);
+    const long steps = c.scene->times().structure_steps;
+    ASSERT_FALSE(gas.intervals.empty());
+    EXPECT_EQ(static_cast<long>(gas.intervals.size()), (steps + k - 1) / k);
+    Real t = 0;
+    for (const auto& [t0, dt] : gas.intervals) {
+      EXPECT_DOUBLE_EQ(t0, t);
+      EXPECT_GT(dt, 0);
+      t = t0 + dt;
+    }
+    EXPECT_NEAR(t, r.final_time, 1e-12 * r.final_time);
+  }
+}
+
 // The Reynolds film under a rigid beam closing at a constant slow velocity w (w < 0) reaches
 // the incompressible squeeze film: p - p_a = 6 mu_eff w (x^2 - L^2) / h^3 (zero flux at the
 // anchor x = 0, ambient at the tip x = L), force 4 mu_eff |w| L^3 / h^3 (opening). Second-order
