@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "core/reduced_inertia_system.hpp"
+#include "coupling/aitken_relaxation.hpp"
 #include "coupling/displacement_control_fixed_point.hpp"
 #include "ibm/force_transfer.hpp"
 #include "solvers/ida_integrator.hpp"
@@ -48,6 +49,15 @@ class LaggedLoadStructure : public SecondOrderOperator {
       reference_gap_[c] = gap0_ + u[2 * c + 1];
   }
   void set_gas(std::vector<Real> gas) { gas_ = std::move(gas); }
+  // The electrostatic load the residual applies at u (the scaled lagged model).
+  std::vector<Real> applied(std::span<const Real> u) const {
+    std::vector<Real> f(force_.size());
+    for (std::size_t c = 0; c < reference_gap_.size(); ++c) {
+      f[2 * c] = force_[2 * c];
+      f[2 * c + 1] = force_[2 * c + 1] * scale(c, u);
+    }
+    return f;
+  }
   // Implicit coupling: the exact load at u (replaces the scaled lagged one in the residual).
   void set_exact(std::function<std::vector<Real>(std::span<const Real>)> exact) {
     exact_ = std::move(exact);
@@ -233,6 +243,10 @@ std::span<const Real> ImmersedSwitch::potential() const {
   return kernel_->electrostatics.potential();
 }
 
+void ImmersedSwitch::set_electrostatics_lu(LuReuse reuse) {
+  kernel_->electrostatics.set_lu_reuse(reuse);
+}
+
 ImmersedSurface ImmersedSwitch::moved_surface(std::span<const Real> u) const {
   const std::vector<Mat3> gradients = beam_.cell_gradients(0.0, u);
   std::vector<Vec3> vertices = rest_surface_.vertices();
@@ -304,7 +318,9 @@ ImmersedLoad ImmersedSwitch::electrostatic_load(std::span<const Real> u, Real vo
   }
   {
     ScopedCpu t{times_.electrostatics};
+    const long analyses = kernel_->electrostatics.analyses();
     kernel_->electrostatics.solve(marking, *ib, voltage);
+    times_.electrostatic_analyses += kernel_->electrostatics.analyses() - analyses;
   }
   ImmersedLoad load;
   {
@@ -416,10 +432,58 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
   std::vector<Raw> raw{{0.0, 0.0, 0.0, gap0_, load.total.y(), 0.0}};
   DynamicRun out;
   bool moved_down = false;
-  Real t_prev = 0;
+  Real t_gas = 0;  // the gas's time: it advances every gas_every accepted steps
+  int since_gas = 0;
+  const bool strong = options.coupling == ImmersedCoupling::Strong;
+  // Strong coupling per step (block Gauss-Seidel with Aitken relaxation, Kuettler & Wall 2008):
+  // the step is redone from IDA's checkpoint with the interface load G_k, applied in the
+  // residual as G_k (g_k / g(u))^2 with g_k the gap of iterate k's end state (k = 0 is the
+  // staggered step: G_0 = F(u_n) at g_n), until the IBM load F(u_k) at the step's end state
+  // (IDA's t_n, also after a root return) matches the load A_k applied there:
+  // |r_k| <= tol |F(u_k)|, r_k = F(u_k) - A_k; then G_{k+1} = A_k + omega_k r_k, omega_0 = 1 and
+  // Aitken's factor after. The gas (if any) is advanced once, after the converged step
+  // (lagged, as in the staggered scheme): the gas models keep no checkpoint to redo a step.
+  auto strong_step = [&]() {
+    ida.save_checkpoint();
+    std::vector<Real> residual_prev;
+    Real omega = 1;
+    for (int k = 0;; ++k) {
+      IdaIntegrator::Status status;
+      {
+        ScopedCpu t{times_.structure};
+        status = ida.step(options.end_time);
+      }
+      const std::span<const Real> u_end = ida.internal_y().subspan(0, n);
+      const std::vector<Real> applied = structure.applied(u_end);
+      load = electrostatic_load(u_end, voltage);
+      ++times_.coupling_iterations;
+      std::vector<Real> residual(n);
+      Real r2 = 0, f2 = 0;
+      for (Index i = 0; i < n; ++i) {
+        residual[i] = load.force[i] - applied[i];
+        r2 += residual[i] * residual[i];
+        f2 += load.force[i] * load.force[i];
+      }
+      const bool converged = r2 <= options.strong_tolerance * options.strong_tolerance * f2;
+      if (converged || k + 1 >= options.strong_max_iterations) {
+        times_.unconverged_steps += !converged;
+        times_.max_coupling_iterations = std::max(times_.max_coupling_iterations, k + 1);
+        structure.set_reference(load.force, u_end);  // the next step's k = 0
+        return status;
+      }
+      if (k > 0) omega = std::clamp(aitken_factor(omega, residual, residual_prev), 0.01, 4.0);
+      std::vector<Real> next(n);
+      for (Index i = 0; i < n; ++i) next[i] = applied[i] + omega * residual[i];
+      structure.set_reference(std::move(next), u_end);
+      residual_prev = std::move(residual);
+      ida.restore_checkpoint();
+    }
+  };
   while (true) {
     IdaIntegrator::Status status;
-    {
+    if (strong) {
+      status = strong_step();
+    } else {
       ScopedCpu t{times_.structure};
       status = ida.step(options.end_time);
     }
@@ -444,15 +508,17 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
     }
     // The coupled step's exchange: the IBM load and the gas at the accepted state.
     {
-      load = electrostatic_load(u, voltage);
-      structure.set_reference(load.force, u);
-      if (gas && t > t_prev) {
+      if (!strong) {  // strong_step left the IBM load at IDA's internal state as reference
+        load = electrostatic_load(u, voltage);
+        structure.set_reference(load.force, u);
+      }
+      if (gas && t > t_gas && (++since_gas >= options.gas_every || stop)) {
+        since_gas = 0;
         ScopedCpu timer{times_.gas};
         std::vector<Real> v(n);
         for (Index i = 0; i < n; ++i) v[i] = state[system.velocity_index(i)];
         const ImmersedSurface surface = moved_surface(u);
-        const std::vector<Vec3> f =
-            gas->advance(surface, segment_velocities(v), t_prev, t - t_prev);
+        const std::vector<Vec3> f = gas->advance(surface, segment_velocities(v), t_gas, t - t_gas);
         ++times_.gas_steps;
         gas_force = 0;
         for (const Vec3& x : f) gas_force += x.y();
@@ -460,7 +526,7 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
       }
     }
     raw.push_back({t, u[control()], state[vc], min_gap(u), load.total.y(), gas_force});
-    t_prev = t;
+    if (since_gas == 0) t_gas = t;
     if (stop) break;
   }
   out.final_time = ida.time();

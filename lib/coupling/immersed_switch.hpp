@@ -63,6 +63,11 @@ struct ImmersedPhysicsTimes {
   double move = 0, marking = 0, interpolation = 0, electrostatics = 0, transfer = 0, gas = 0;
   double structure = 0;
   long load_evaluations = 0, gas_steps = 0, structure_steps = 0;
+  long electrostatic_analyses = 0;  // solves on a new pattern (the rest refactor the kept LU)
+  // Strong coupling: iterations over all steps (one IBM evaluation each), the most in a step,
+  // and the steps left at strong_max_iterations unconverged.
+  long coupling_iterations = 0, unconverged_steps = 0;
+  int max_coupling_iterations = 0;
 };
 
 struct ImmersedLoad {
@@ -71,7 +76,10 @@ struct ImmersedLoad {
   Index ib_faces = 0, one_sided = 0, unreached = 0;
 };
 
-enum class ImmersedCoupling { Staggered, Implicit };
+// Strong: per step, Aitken-relaxed fixed-point iterations on the electrostatic interface load
+// (see run()), the step redone from IDA's checkpoint until the load changes by less than
+// strong_tolerance; converges to the implicit scheme's step.
+enum class ImmersedCoupling { Staggered, Implicit, Strong };
 
 struct ImmersedRunOptions {
   Real end_time = 0;
@@ -80,6 +88,12 @@ struct ImmersedRunOptions {
   Real output_interval = 0;     // > 0: history resampled at this interval (cubic Hermite in
                                 // the control's deflection and velocity); else IDA's steps
   ImmersedCoupling coupling = ImmersedCoupling::Staggered;
+  Real strong_tolerance = 1e-6;  // |F_IBM(u) - F_applied(u)| / |F_IBM(u)| at the step's end
+  int strong_max_iterations = 20;
+  // The gas advanced over [t_gas, t] every gas_every accepted structure steps (one gas step
+  // spanning them), its force held in between: the gas's step decoupled from IDA's, whose
+  // steps (~2e-9 s near pull-in) are far below what the gas's accuracy needs.
+  int gas_every = 1;
   IdaOptions ida;  // atol: on displacements; velocities get atol 2 pi / period
 };
 
@@ -132,6 +146,8 @@ class ImmersedSwitch {
 
   const ImmersedPhysicsTimes& times() const { return times_; }
   void reset_times() { times_ = {}; }
+  // The electrostatic LU: kept between evaluations while its pattern holds (default) or fresh.
+  void set_electrostatics_lu(LuReuse reuse);
   // The last evaluation's marking and potential (for output).
   std::span<const Real> potential() const;
 

@@ -130,11 +130,16 @@ ImmersedSwitchCase read_immersed_switch_case(const CaseNode& root, const std::st
   c.run.ida.rtol = solver.get_real("rtol", 1e-4, Range::open(0.0, 1.0));
   c.run.ida.atol = solver.get_quantity("atol", Dimension::Length, 1e-5 * gap, Range::positive());
   c.run.ida.max_order = static_cast<int>(solver.get_int("max_order", 2, Range::closed(1, 5)));
-  c.run.coupling =
-      root.child_or_empty("coupling")
-                  .get_choice("scheme", {"staggered", "implicit"}, "staggered") == "implicit"
-          ? ImmersedCoupling::Implicit
-          : ImmersedCoupling::Staggered;
+  const CaseNode coupling = root.child_or_empty("coupling");
+  const std::string scheme =
+      coupling.get_choice("scheme", {"staggered", "implicit", "strong"}, "staggered");
+  c.run.coupling = scheme == "implicit" ? ImmersedCoupling::Implicit
+                   : scheme == "strong" ? ImmersedCoupling::Strong
+                                        : ImmersedCoupling::Staggered;
+  c.run.strong_tolerance = coupling.get_real("tolerance", 1e-6, Range::open(0.0, 1.0));
+  c.run.strong_max_iterations =
+      static_cast<int>(coupling.get_int("max_iterations", 20, Range::closed(1, 1000)));
+  c.run.gas_every = static_cast<int>(coupling.get_int("gas_every", 1, Range::closed(1, 1000)));
   // Every block is checked whatever the mode (a case toggled by --set stays valid); the
   // active mode's block and required keys must be there.
   auto block = [&](const std::string& name) {
@@ -203,6 +208,10 @@ Json times_json(const ImmersedPhysicsTimes& t) {
           {"gas_s", t.gas},
           {"structure_s", t.structure},
           {"load_evaluations", t.load_evaluations},
+          {"electrostatic_analyses", t.electrostatic_analyses},
+          {"coupling_iterations", t.coupling_iterations},
+          {"max_coupling_iterations", t.max_coupling_iterations},
+          {"unconverged_coupling_steps", t.unconverged_steps},
           {"structure_steps", t.structure_steps},
           {"gas_steps", t.gas_steps}};
 }
@@ -234,7 +243,10 @@ Json run_immersed_switch_study(ImmersedSwitchCase& c, const CaseNode& root, Resu
   j["surface_segments"] = s.rest_surface().n_segments();
   j["first_bending_period"] = s.first_bending_period();
   j["gas"] = c.gas ? c.gas->name() : "none";
-  j["coupling"] = c.run.coupling == ImmersedCoupling::Implicit ? "implicit" : "staggered";
+  j["coupling"] = c.run.coupling == ImmersedCoupling::Implicit ? "implicit"
+                  : c.run.coupling == ImmersedCoupling::Strong ? "strong"
+                                                               : "staggered";
+  j["gas_every"] = c.run.gas_every;
   j["contact_gap"] = c.run.contact_gap;
   const std::size_t n = c.beam->op->size();
   if (c.mode == "static") {

@@ -22,6 +22,12 @@
 //     quasi_static: {points: 16, max_fraction: 0.6, voltage_tolerance: 0.05 V}
 //   coupling: {scheme: staggered}     # staggered (IBM load refreshed after every IDA step)
 //                                     # | implicit (IBM load inside every residual)
+//                                     # | strong (Aitken-relaxed iterations per step on the
+//                                     # electrostatic load, the step redone until
+//     tolerance: 1e-6                 # |F_IBM - F_applied| <= tolerance |F_IBM|, at most
+//     max_iterations: 20              # max_iterations per step)
+//     gas_every: 1                    # the gas advanced over every k-th accepted step (one
+//                                     # gas step spanning k structure steps, force held)
 //   gas:                              # the gas slot: none (default) | reynolds | esbgk
 //     model: reynolds                 # 1D film under the beam, open at the tip
 //     pressure: 1.36e4 Pa

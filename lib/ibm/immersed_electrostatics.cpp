@@ -1,7 +1,9 @@
 #include "ibm/immersed_electrostatics.hpp"
 
 #include <fmt/format.h>
+
 #include <Eigen/SparseCore>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -13,8 +15,9 @@ namespace rfmems {
 
 ImmersedElectrostatics::ImmersedElectrostatics(const Mesh& background,
                                                std::map<std::string, PotentialBoundary> patches,
-                                               Real permittivity, IbFaceFlux ib_flux)
-    : mesh_(background), permittivity_(permittivity), ib_flux_(ib_flux) {
+                                               Real permittivity, IbFaceFlux ib_flux,
+                                               LuReuse lu_reuse)
+    : mesh_(background), permittivity_(permittivity), ib_flux_(ib_flux), lu_reuse_(lu_reuse) {
   if (background.dim() != 2) throw MeshError("immersed electrostatics: the background is not 2D");
   if (!(permittivity > 0))
     throw InputError(
@@ -34,6 +37,14 @@ ImmersedElectrostatics::ImmersedElectrostatics(const Mesh& background,
                       p.name));
     boundary_.push_back(it->second);
   }
+}
+
+ImmersedElectrostatics::~ImmersedElectrostatics() = default;
+ImmersedElectrostatics::ImmersedElectrostatics(ImmersedElectrostatics&&) noexcept = default;
+
+void ImmersedElectrostatics::set_lu_reuse(LuReuse reuse) {
+  lu_reuse_ = reuse;
+  lu_.reset();
 }
 
 bool ImmersedElectrostatics::uses_gradient(const IbInterpolation& ib, Index k) const {
@@ -106,14 +117,27 @@ void ImmersedElectrostatics::solve(const CellMarking& marking, const IbInterpola
   Eigen::SparseMatrix<Real, Eigen::RowMajor> A(n, n);
   A.setFromTriplets(triplets.begin(), triplets.end());
   A.makeCompressed();
-  CsrPattern pattern;
-  pattern.row_ptr.assign(A.outerIndexPtr(), A.outerIndexPtr() + n + 1);
-  pattern.col_idx.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
+  const bool same_pattern =
+      lu_ && lu_reuse_ == LuReuse::Reuse && pattern_.n_rows() == n &&
+      pattern_.nnz() == A.nonZeros() &&
+      std::equal(pattern_.row_ptr.begin(), pattern_.row_ptr.end(), A.outerIndexPtr()) &&
+      std::equal(pattern_.col_idx.begin(), pattern_.col_idx.end(), A.innerIndexPtr());
+  const std::span<const Real> values(A.valuePtr(), A.nonZeros());
   std::vector<Real> phi(rhs.data(), rhs.data() + n);
   try {
-    KluFactorization lu(pattern, std::span<const Real>(A.valuePtr(), A.nonZeros()));
-    lu.solve(phi);
+    if (same_pattern) {
+      lu_->refactor(values);
+      ++refactorizations_;
+    } else {
+      lu_.reset();
+      pattern_.row_ptr.assign(A.outerIndexPtr(), A.outerIndexPtr() + n + 1);
+      pattern_.col_idx.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
+      lu_ = std::make_unique<KluFactorization>(pattern_, values);
+      ++analyses_;
+    }
+    lu_->solve(phi);
   } catch (const SolverError&) {
+    lu_.reset();
     throw SolverError("immersed electrostatics: singular matrix (no potential prescribed?)");
   }
 

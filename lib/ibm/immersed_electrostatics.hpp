@@ -13,6 +13,10 @@
 // through the FLUID cell potentials and V_body at the wall points (or, as an option, the
 // two-point difference to the fit's value P(x_f)). Those rows are implicit (the fit's weights go
 // into the matrix), so one sparse LU solve (KLU) gives phi.
+// The LU is kept between calls: while the matrix's sparsity pattern is unchanged (the FLUID
+// set and the IB stencils change only on a re-marking that changes cell classes or stencils;
+// a moving beam changes mostly the values) KLU refactors numerically on the kept symbolic
+// analysis and pivot sequence (klu_refactor); a new pattern gets a fresh analysis.
 // Exact for a field linear in the gap (a wide beam over a ground plane: the parallel-plate
 // solution), since the interpolation and the two-point flux are exact for linear fields.
 //
@@ -23,10 +27,12 @@
 // Reuses PotentialBoundary and the permittivity of lib/physics/electrostatics.
 #pragma once
 #include <map>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "core/system_operator.hpp"
 #include "core/types.hpp"
 #include "ibm/cell_marking.hpp"
 #include "ibm/ib_interpolation.hpp"
@@ -40,12 +46,21 @@ namespace rfmems {
 // at the face). Degree-0 faces (no gradient) always use the two-point difference.
 enum class IbFaceFlux { FitGradient, TwoPoint };
 
+// Factorisation per solve: Reuse keeps the symbolic analysis (and pivots) while the pattern is
+// unchanged; Fresh analyses and factorises every call (the old path, kept as the reference).
+enum class LuReuse { Reuse, Fresh };
+
+class KluFactorization;
+
 class ImmersedElectrostatics {
  public:
   // One boundary per background patch (Potential or ZeroFlux; InputError otherwise).
   ImmersedElectrostatics(const Mesh& background, std::map<std::string, PotentialBoundary> patches,
                          Real permittivity = kVacuumPermittivity,
-                         IbFaceFlux ib_flux = IbFaceFlux::FitGradient);
+                         IbFaceFlux ib_flux = IbFaceFlux::FitGradient,
+                         LuReuse lu_reuse = LuReuse::Reuse);
+  ~ImmersedElectrostatics();
+  ImmersedElectrostatics(ImmersedElectrostatics&&) noexcept;
 
   // Solves on the FLUID cells of `marking` with the body at potential body_potential, the IB
   // faces' values from `interpolation` (built on the same marking).
@@ -58,6 +73,11 @@ class ImmersedElectrostatics {
   Real body_charge() const;
   // Per IB face: the electrostatic force on the body through that face [N/m].
   std::vector<Vec3> ib_face_forces() const;
+  // Solves that analysed a new pattern (symbolic + numeric) and that refactored on the kept one.
+  long analyses() const { return analyses_; }
+  long refactorizations() const { return refactorizations_; }
+  // Drops the kept LU; later solves follow `reuse`.
+  void set_lu_reuse(LuReuse reuse);
 
  private:
   bool uses_gradient(const IbInterpolation& ib, Index k) const;
@@ -68,6 +88,10 @@ class ImmersedElectrostatics {
   std::vector<Real> potential_, ib_face_charge_;
   std::vector<Vec3> ib_face_normal_;
   std::vector<Real> ib_face_area_;
+  LuReuse lu_reuse_;
+  CsrPattern pattern_;  // of lu_
+  std::unique_ptr<KluFactorization> lu_;
+  long analyses_ = 0, refactorizations_ = 0;
 };
 
 }  // namespace rfmems

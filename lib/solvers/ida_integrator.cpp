@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <ida/ida.h>
+#include <ida/ida_impl.h>
 #include <sunlinsol/sunlinsol_spgmr.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 
@@ -52,7 +53,103 @@ IdaIntegrator::IdaIntegrator(SystemOperator& op, const IdaOptions& options)
   if (!mem_) throw SolverError("IDACreate failed");
 }
 
+// The fields of IDAMemRec that IDASolve (one-step mode) and IDAStep read or change over a step:
+// the divided differences phi, the step-size coefficients, order and step control, the stop
+// time and the root finder's bracket.
+struct IdaIntegrator::Checkpoint {
+  std::vector<std::vector<Real>> phi;
+  std::vector<Real> ee;
+  Real psi[MXORDP1], alpha[MXORDP1], beta[MXORDP1], sigma[MXORDP1], gamma[MXORDP1];
+  int kk, kused, knew, phase, ns;
+  Real hh, hused, tn, tretlast, cj, cjlast, cjold, cjratio, ss, oldnrm, eta;
+  long nst;
+  booleantype tstopset;
+  Real tstop;
+  std::vector<int> iroots;
+  std::vector<Real> glo, ghi, grout;
+  std::vector<booleantype> gactive;
+  Real tlo, thi, trout, toutc;
+  int taskc, irfnd, mxgnull;
+  Real t;
+  std::vector<Real> y, yp;
+};
+
 IdaIntegrator::~IdaIntegrator() { IDAFree(&mem_); }
+
+void IdaIntegrator::save_checkpoint() {
+  if (!checkpoint_) checkpoint_ = std::make_unique<Checkpoint>();
+  Checkpoint& c = *checkpoint_;
+  const IDAMem m = static_cast<IDAMem>(mem_);
+  c.phi.resize(m->ida_maxord_alloc + 1);  // phi[j] is allocated for j <= maxord_alloc
+  for (int j = 0; j <= m->ida_maxord_alloc; ++j) {
+    const std::span<const Real> v = sundials::as_span(m->ida_phi[j]);
+    c.phi[j].assign(v.begin(), v.end());
+  }
+  const std::span<const Real> ee = sundials::as_span(m->ida_ee);
+  c.ee.assign(ee.begin(), ee.end());
+  std::copy(m->ida_psi, m->ida_psi + MXORDP1, c.psi);
+  std::copy(m->ida_alpha, m->ida_alpha + MXORDP1, c.alpha);
+  std::copy(m->ida_beta, m->ida_beta + MXORDP1, c.beta);
+  std::copy(m->ida_sigma, m->ida_sigma + MXORDP1, c.sigma);
+  std::copy(m->ida_gamma, m->ida_gamma + MXORDP1, c.gamma);
+  c.kk = m->ida_kk, c.kused = m->ida_kused, c.knew = m->ida_knew, c.phase = m->ida_phase;
+  c.ns = m->ida_ns;
+  c.hh = m->ida_hh, c.hused = m->ida_hused, c.tn = m->ida_tn;
+  c.tretlast = m->ida_tretlast, c.cj = m->ida_cj, c.cjlast = m->ida_cjlast;
+  c.cjold = m->ida_cjold, c.cjratio = m->ida_cjratio, c.ss = m->ida_ss;
+  c.oldnrm = m->ida_oldnrm, c.eta = m->ida_eta, c.nst = m->ida_nst;
+  c.tstopset = m->ida_tstopset, c.tstop = m->ida_tstop;
+  const int nr = m->ida_nrtfn;
+  c.iroots.assign(m->ida_iroots, m->ida_iroots + nr);
+  c.glo.assign(m->ida_glo, m->ida_glo + nr);
+  c.ghi.assign(m->ida_ghi, m->ida_ghi + nr);
+  c.grout.assign(m->ida_grout, m->ida_grout + nr);
+  c.gactive.assign(m->ida_gactive, m->ida_gactive + nr);
+  c.tlo = m->ida_tlo, c.thi = m->ida_thi, c.trout = m->ida_trout, c.toutc = m->ida_toutc;
+  c.taskc = m->ida_taskc, c.irfnd = m->ida_irfnd, c.mxgnull = m->ida_mxgnull;
+  c.t = t_;
+  c.y.assign(y().begin(), y().end());
+  c.yp.assign(yp().begin(), yp().end());
+}
+
+Real IdaIntegrator::internal_time() const { return static_cast<IDAMem>(mem_)->ida_tn; }
+
+std::span<const Real> IdaIntegrator::internal_y() const {
+  return sundials::as_span(static_cast<IDAMem>(mem_)->ida_phi[0]);
+}
+
+void IdaIntegrator::restore_checkpoint() {
+  if (!checkpoint_) throw SolverError("IDA: restore_checkpoint without a saved checkpoint");
+  const Checkpoint& c = *checkpoint_;
+  const IDAMem m = static_cast<IDAMem>(mem_);
+  if (m->ida_nrtfn != static_cast<int>(c.iroots.size()))
+    throw SolverError("IDA: the roots changed since the checkpoint");
+  for (std::size_t j = 0; j < c.phi.size(); ++j)
+    std::copy(c.phi[j].begin(), c.phi[j].end(), sundials::as_span(m->ida_phi[j]).begin());
+  std::copy(c.ee.begin(), c.ee.end(), sundials::as_span(m->ida_ee).begin());
+  std::copy(c.psi, c.psi + MXORDP1, m->ida_psi);
+  std::copy(c.alpha, c.alpha + MXORDP1, m->ida_alpha);
+  std::copy(c.beta, c.beta + MXORDP1, m->ida_beta);
+  std::copy(c.sigma, c.sigma + MXORDP1, m->ida_sigma);
+  std::copy(c.gamma, c.gamma + MXORDP1, m->ida_gamma);
+  m->ida_kk = c.kk, m->ida_kused = c.kused, m->ida_knew = c.knew, m->ida_phase = c.phase;
+  m->ida_ns = c.ns;
+  m->ida_hh = c.hh, m->ida_hused = c.hused, m->ida_tn = c.tn;
+  m->ida_tretlast = c.tretlast, m->ida_cj = c.cj, m->ida_cjlast = c.cjlast;
+  m->ida_cjold = c.cjold, m->ida_cjratio = c.cjratio, m->ida_ss = c.ss;
+  m->ida_oldnrm = c.oldnrm, m->ida_eta = c.eta, m->ida_nst = c.nst;
+  m->ida_tstopset = c.tstopset, m->ida_tstop = c.tstop;
+  std::copy(c.iroots.begin(), c.iroots.end(), m->ida_iroots);
+  std::copy(c.glo.begin(), c.glo.end(), m->ida_glo);
+  std::copy(c.ghi.begin(), c.ghi.end(), m->ida_ghi);
+  std::copy(c.grout.begin(), c.grout.end(), m->ida_grout);
+  std::copy(c.gactive.begin(), c.gactive.end(), m->ida_gactive);
+  m->ida_tlo = c.tlo, m->ida_thi = c.thi, m->ida_trout = c.trout, m->ida_toutc = c.toutc;
+  m->ida_taskc = c.taskc, m->ida_irfnd = c.irfnd, m->ida_mxgnull = c.mxgnull;
+  t_ = c.t;
+  std::copy(c.y.begin(), c.y.end(), sundials::as_span(y_.get()).begin());
+  std::copy(c.yp.begin(), c.yp.end(), sundials::as_span(yp_.get()).begin());
+}
 
 void IdaIntegrator::initialize(Real t0, std::span<const Real> y0, std::span<const Real> yp0) {
   std::copy(y0.begin(), y0.end(), sundials::as_span(y_.get()).begin());

@@ -3,6 +3,7 @@
 #pragma once
 #include <exception>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "core/system_operator.hpp"
@@ -82,8 +83,22 @@ class IdaIntegrator {
   // Which roots fired at the last Root return (+1 rising, -1 falling, 0 none).
   std::vector<int> roots_found() const;
   IntegratorStats stats() const;
+  // Saves IDA's whole step state (BDF history, step size and order, stop time, root-finding
+  // state, our y / y') and restores it, so that a partitioned scheme can redo the step(s)
+  // taken since the save with a corrected load as if they had not been taken (strong coupling
+  // per step), keeping the variable-order history that IDAReInit would drop. One checkpoint;
+  // the step count is restored too (work counters are not). Uses IDA's private memory layout
+  // (ida_impl.h, SUNDIALS 6.4).
+  void save_checkpoint();
+  void restore_checkpoint();
+  // IDA's internal time t_n and y(t_n) (its phi[0]): past time() after a root return, where
+  // y() is interpolated back to the root.
+  Real internal_time() const;
+  std::span<const Real> internal_y() const;
 
  private:
+  struct Checkpoint;
+  std::unique_ptr<Checkpoint> checkpoint_;
   static int residual_trampoline(Real t, N_Vector y, N_Vector yp, N_Vector r, void* self);
   static int jacobian_trampoline(Real t, Real c_j, N_Vector y, N_Vector yp, N_Vector r, SUNMatrix J,
                                  void* self, N_Vector, N_Vector, N_Vector);
