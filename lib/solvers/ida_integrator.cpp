@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <ida/ida.h>
 #include <ida/ida_impl.h>
+#include <sundials/sundials_config.h>
 #include <sunlinsol/sunlinsol_spgmr.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 
@@ -10,6 +11,11 @@
 #include <utility>
 
 #include "core/error.hpp"
+
+// save_checkpoint/restore_checkpoint copy IDA's private step history (ida_impl.h), whose
+// layout is SUNDIALS 6.4's; another version must be checked field by field before it builds.
+static_assert(SUNDIALS_VERSION_MAJOR == 6 && SUNDIALS_VERSION_MINOR == 4,
+              "IdaIntegrator's checkpoint reads ida_impl.h of SUNDIALS 6.4: check its IDAMem");
 
 namespace rfmems {
 
