@@ -45,9 +45,7 @@ void ParallelPlateActuation::set_contact(const ContactPenalty& contact) {
     throw std::logic_error("ParallelPlateActuation: the contact gap must lie in (0, initial gap)");
   contact_ = contact;
   p1_contact_ = contact.enabled() ? law_.pressure_per_volt2(contact.gap) : 0.0;
-  linear_below_ = contact.gap - kLinearBelow * contact.penetration;
-  if (contact.enabled() && law_.electrical_gap(linear_below_) <= 0)
-    throw std::logic_error("ParallelPlateActuation: the penetration is too large for the gap");
+  slope_contact_ = contact.enabled() ? -law_.pressure_per_volt2_derivative(contact.gap) : 0.0;
 }
 
 void ParallelPlateActuation::check_gap(Real g, std::size_t e) const {
