@@ -28,8 +28,8 @@ std::vector<GapElement> elements_over_electrode(const std::vector<GapElement>& e
 }
 
 ParallelPlateActuation::ParallelPlateActuation(SecondOrderOperator& structure,
-                                               std::vector<GapElement> elements,
-                                               Real initial_gap, ParallelPlateLaw law)
+                                               std::vector<GapElement> elements, Real initial_gap,
+                                               ParallelPlateLaw law)
     : structure_(structure), elements_(std::move(elements)), gap0_(initial_gap), law_(law) {
   const CsrPattern& pattern = structure_.stiffness_pattern();
   for (const GapElement& e : elements_) {
@@ -50,11 +50,11 @@ void ParallelPlateActuation::set_contact(const ContactPenalty& contact) {
 
 void ParallelPlateActuation::check_gap(Real g, std::size_t e) const {
   if (!contact_.enabled() && law_.electrical_gap(g) <= 0)
-    throw RecoverableError(fmt::format("parallel-plate gap closed (g = {:.3e} m at element {})", g, e));
+    throw RecoverableError(
+        fmt::format("parallel-plate gap closed (g = {:.3e} m at element {})", g, e));
 }
 
-void ParallelPlateActuation::internal_residual(Real t, std::span<const Real> y,
-                                               std::span<Real> r) {
+void ParallelPlateActuation::internal_residual(Real t, std::span<const Real> y, std::span<Real> r) {
   structure_.internal_residual(t, y, r);
   const Real v2 = voltage_squared(t);
   if (v2 == 0) return;

@@ -7,8 +7,8 @@
 // each solved by Newton (KINSOL, line search), with D the structure's stiffness diagonal at
 // rest (so dtau is dimensionless: dtau = 1 damps each unknown by its own spring) and dtau grown
 // by switched evolution relaxation, dtau_{k+1} = dtau_k ||F(y_{k-1})|| / ||F(y_k)|| (at least
-// x1.5 and at most x10 a step; halved when the residual more than doubles), until ||F(y)||_inf reaches the tolerance; a pseudo-step Newton cannot solve is
-// retried with dtau / 4.
+// x1.5 and at most x10 a step; halved when the residual more than doubles), until ||F(y)||_inf
+// reaches the tolerance; a pseudo-step Newton cannot solve is retried with dtau / 4.
 //
 // Why: the contact branch of a plate pulled onto a dielectric is fold-rich. On a mesh whose
 // cells are not much smaller than the electrostatic boundary layer at the contact edge
@@ -27,10 +27,10 @@
 namespace rfmems {
 
 struct PseudoTransientOptions {
-  Real tolerance = 0;        // on ||F||_inf (absolute, F's units)
-  Real initial_step = 1;     // dtau_0
-  Real max_step = 1e12;      // dtau cap (beyond it the step is a Newton solve of F = 0)
-  int max_steps = 2000;      // pseudo-steps
+  Real tolerance = 0;     // on ||F||_inf (absolute, F's units)
+  Real initial_step = 1;  // dtau_0
+  Real max_step = 1e12;   // dtau cap (beyond it the step is a Newton solve of F = 0)
+  int max_steps = 2000;   // pseudo-steps
   int max_newton_iterations = 30;
 };
 

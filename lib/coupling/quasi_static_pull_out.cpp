@@ -37,21 +37,22 @@ struct ContactSolver {
       : act(a),
         system(a),
         tolerance(options.newton_tolerance * stiffness_scale(a) * a.initial_gap()),
-        solver(system, [&] {
-          KinsolOptions kin;
-          kin.max_iterations = options.max_newton_iterations;
-          kin.line_search = true;
-          kin.relative_tolerance = options.newton_tolerance;
-          kin.residual_scale = stiffness_scale(a) * a.initial_gap();
-          return kin;
-        }()),
+        solver(system,
+               [&] {
+                 KinsolOptions kin;
+                 kin.max_iterations = options.max_newton_iterations;
+                 kin.line_search = true;
+                 kin.relative_tolerance = options.newton_tolerance;
+                 kin.residual_scale = stiffness_scale(a) * a.initial_gap();
+                 return kin;
+               }()),
         pseudo_mass(rest_stiffness_diagonal(a)),
         relax(options.relax) {}
   // The equilibrium at voltage v from `from`: the pseudo-transient flow to within
   // kRelaxed x the tolerance (the nearest stable equilibrium), then Newton to the tolerance.
   // Released: an equilibrium off the dielectric, or (Newton alone) none found, the fold;
   // Failed: the relaxation or its Newton polish did not converge (not a release).
-  static constexpr Real kRelaxed = 1e4;
+  static constexpr Real kRelaxed = 100;
   enum class Outcome { Contact, Released, Failed };
   Outcome solve(Real v, const std::vector<Real>& from, std::vector<Real>& state, long& iterations) {
     act.set_voltage_squared([v](Real) { return v * v; });
