@@ -6,16 +6,22 @@
 //   pull_out:     the quasi-static pull-out from the state at the drop (pseudo-transient
 //                 relaxation + Newton down the contact branch, quasi_static_pull_out.hpp);
 //   hold:         the drop to --hold, until release or --window;
-//   dynamic_pull_out: bisection on the hold voltage in [0, --voltage] to --tolerance.
+//   dynamic_pull_out: bisection on the hold voltage in [0, --voltage] to --tolerance;
+//   --touching-only: only the touching point of the no-contact branch (displacement control,
+//                 the control cell at g0 - g_c), which the quasi-static pull-out approaches
+//                 as delta -> 0: its mesh dependence without any dynamics.
 //
 //   bench_plate_release --cells 40,4 --gas reynolds
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "bench_support.hpp"
 #include "coupling/dynamic_release.hpp"
 #include "coupling/pull_in_study.hpp"
+#include "coupling/quasi_static_pull_in.hpp"
 #include "coupling/quasi_static_pull_out.hpp"
 #include "coupling/switch_scene.hpp"
 #include "io/case_file.hpp"
@@ -27,7 +33,7 @@ int main(int argc, char** argv) {
   CLI::App app("contact, hold and pull-out of the plate switch: cost per phase");
   std::string cells = "40,4", gas = "reynolds";
   double voltage = 180, hold = 10, tolerance = 0.5, delay = 2e-6, window = 20e-6;
-  bool bisect = true;
+  bool bisect = true, touching_only = false;
   app.add_option("--cells", cells, "plate cells nx,ny");
   app.add_option("--gas", gas, "none | reynolds");
   app.add_option("--voltage", voltage, "the step that pulls in [V]");
@@ -36,6 +42,8 @@ int main(int argc, char** argv) {
   app.add_option("--delay", delay, "the drop, after touch-down [s]");
   app.add_option("--window", window, "a hold not released by drop + window holds [s]");
   app.add_flag("!--no-bisection", bisect, "skip the dynamic pull-out bisection");
+  app.add_flag("--touching-only", touching_only,
+               "only the touching point of the no-contact branch");
   CLI11_PARSE(app, argc, argv);
 
   const std::string path = bench::default_cases_dir() + "/switch_plate/case.yaml";
@@ -49,6 +57,21 @@ int main(int argc, char** argv) {
   const auto system = scene.make_transient_system();
   Json base = {{"bench", "plate_release"}, {"cells", cells}, {"gas", gas}, {"voltage", voltage}};
 
+  if (touching_only) {
+    const double c = bench::cpu_now();
+    const QuasiStaticPullIn in =
+        trace_pull_in(*scene.actuation, scene.control, settings.quasi_static);
+    const std::vector<Real> touching = follow_displacement(
+        *scene.actuation, scene.control, in.fold_state, {-(scene.gap - scene.contact.gap)});
+    Json t = base;
+    t["phase"] = "touching_point";
+    t["cpu_s"] = bench::cpu_now() - c;
+    t["pull_in_voltage"] = in.pull_in_voltage;
+    t["touching_voltage"] = std::sqrt(touching.back());
+    t["min_gap"] = scene.actuation->min_gap(touching);
+    bench::emit(t);
+    return 0;
+  }
   ReleaseOptions r;
   r.voltage = voltage;
   r.delay = delay;

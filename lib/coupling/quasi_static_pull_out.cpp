@@ -82,6 +82,7 @@ struct ContactSolver {
   bool relax_to(Real target, std::vector<Real>& state) {
     PseudoTransientOptions pt;
     pt.tolerance = target;
+    pt.initial_step = 100;  // from a nearby equilibrium: start coarse, SER shrinks it if needed
     const PseudoTransientStats s = relax_pseudo_transient(system, state, pseudo_mass, pt);
     relaxation_steps += s.steps;
     newton += s.newton_iterations;
