@@ -6,7 +6,7 @@
 //
 // Physics: the dynamic pull-out is not the quasi-static one. From just above the static
 // pull-out (V_rest = 1.5 V_PO, the contact already at its last cells) the excess is the
-// penalty's rebound, a few per cent (test_plate_contact.cpp: 5.4 % undamped). From a plate
+// penalty's rebound, a few per cent (test_plate_contact.cpp: 4.7 % undamped). From a plate
 // zipped far above (V_rest = 200 V: half the electrode in contact) the drop lets the contact
 // front run back and the bending energy of the zipped spans turns into motion, which lifts
 // the whole plate unless the hold voltage is several times the static pull-out; the film

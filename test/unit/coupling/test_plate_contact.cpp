@@ -19,7 +19,7 @@
 //    where it is closest, so it needs twice the voltage to hold the last contact.
 //    Then the dynamic pull-out from rest in contact at 1.5 V_PO (contact 10 %, zero velocity;
 //    no damping), bisected to 0.1 V: a hold below the static pull-out releases (no equilibrium
-//    in contact), and the dynamic pull-out lies above it by less than 10 % (measured 5.4 %):
+//    in contact), and the dynamic pull-out lies above it by less than 10 % (measured 4.7 %):
 //    at the drop the penalty is compressed more than at rest under the hold voltage, and the
 //    undamped rebound carries the plate past the barrier above g_c (as the lumped actuator's,
 //    test_contact_pull_out.cpp: 7.8-11.5 %). From a zipped state far above (200 V) the unzipping
