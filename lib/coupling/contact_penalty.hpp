@@ -10,10 +10,13 @@
 // force) and delta the penetration tolerance.
 //
 // Why scaled by V^2: the penalty then carries the electrostatic load it has to resist at any
-// voltage. At rest in contact p1(g) V^2 = p_c + (the structure's lift), so
-// phi(s) <= p1(g_c - s delta) / p1(g_c) = 1 + 2 s delta / g_ec + ...: the penetration is
-// delta (1 + O(delta / g_ec)) whatever the voltage, with no stiffness to tune. p_c and dp_c/dg
-// are continuous (phi is C^1), so Newton and IDA see no kink; the regularisation moves the
+// voltage. In contact the electrostatic pressure stays bounded near V^2 p1(g_c)
+// (parallel_plate_actuation.hpp: the penetration does not thin the dielectric), so at rest
+// V^2 p1(g_c) (1 + O(delta / g_ec)) = p_c + (the structure's lift) and phi(s) <= 1 + delta/g_ec:
+// the penetration is at most delta (1 + delta / (2 g_ec)) whatever the voltage, with no
+// stiffness to tune, and the contact stiffness 2 V^2 p1(g_c)/delta beats the (bounded)
+// electrostatic softening at every depth past s = delta / g_ec. p_c and dp_c/dg are
+// continuous (phi is C^1), so Newton and IDA see no kink; the regularisation moves the
 // pull-out voltage of a lumped actuator by O((delta / g_ec)^2) (test_contact_pull_out.cpp).
 // Without a voltage the penalty vanishes: then nothing presses the structure onto the
 // dielectric but its own inertia (a voltage switched off during the approach: not modelled).

@@ -28,8 +28,8 @@ std::vector<GapElement> elements_over_electrode(const std::vector<GapElement>& e
 }
 
 ParallelPlateActuation::ParallelPlateActuation(SecondOrderOperator& structure,
-                                               std::vector<GapElement> elements,
-                                               Real initial_gap, ParallelPlateLaw law)
+                                               std::vector<GapElement> elements, Real initial_gap,
+                                               ParallelPlateLaw law)
     : structure_(structure), elements_(std::move(elements)), gap0_(initial_gap), law_(law) {
   const CsrPattern& pattern = structure_.stiffness_pattern();
   for (const GapElement& e : elements_) {
@@ -45,18 +45,16 @@ void ParallelPlateActuation::set_contact(const ContactPenalty& contact) {
     throw std::logic_error("ParallelPlateActuation: the contact gap must lie in (0, initial gap)");
   contact_ = contact;
   p1_contact_ = contact.enabled() ? law_.pressure_per_volt2(contact.gap) : 0.0;
-  linear_below_ = contact.gap - kLinearBelow * contact.penetration;
-  if (contact.enabled() && law_.electrical_gap(linear_below_) <= 0)
-    throw std::logic_error("ParallelPlateActuation: the penetration is too large for the gap");
+  slope_contact_ = contact.enabled() ? -law_.pressure_per_volt2_derivative(contact.gap) : 0.0;
 }
 
 void ParallelPlateActuation::check_gap(Real g, std::size_t e) const {
   if (!contact_.enabled() && law_.electrical_gap(g) <= 0)
-    throw RecoverableError(fmt::format("parallel-plate gap closed (g = {:.3e} m at element {})", g, e));
+    throw RecoverableError(
+        fmt::format("parallel-plate gap closed (g = {:.3e} m at element {})", g, e));
 }
 
-void ParallelPlateActuation::internal_residual(Real t, std::span<const Real> y,
-                                               std::span<Real> r) {
+void ParallelPlateActuation::internal_residual(Real t, std::span<const Real> y, std::span<Real> r) {
   structure_.internal_residual(t, y, r);
   const Real v2 = voltage_squared(t);
   if (v2 == 0) return;

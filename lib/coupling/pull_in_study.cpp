@@ -347,9 +347,11 @@ PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& setting
     write_history(writer, "release", both);
     report.has_release = true;
     if (settings.release_tolerance > 0) {
-      const Real high = settings.release_bracket_high > 0
-                            ? settings.release_bracket_high
-                            : std::min(r.voltage, 2 * report.pull_out.pull_out_voltage);
+      // Default high end: the voltage that pulled in (holds: no drop). The dynamic pull-out
+      // can be several times the quasi-static one (the plate switch from 180 V: 5-6x,
+      // docs/BENCHMARKS.md section 28), so twice the static one is no bracket.
+      const Real high =
+          settings.release_bracket_high > 0 ? settings.release_bracket_high : r.voltage;
       report.dynamic_pull_out = find_dynamic_pull_out(
           system, scene.control, report.approach.drop, settings.release_bracket_low, high,
           settings.release_tolerance, settings.run, r);

@@ -34,7 +34,7 @@
 //       lift: 0.19 um                 # released: the smallest gap above contact gap + lift
 //                                     # (default 5 % of the gap)
 //       tolerance: 0.5 V              # bisection on the hold: the dynamic pull-out (0: none)
-//       bracket: [0 V, 40 V]          # default [0, min(voltage, 2 x the quasi-static pull-out)]
+//       bracket: [0 V, 40 V]          # default [0, voltage]
 //     transient:                      # mode transient: one step voltage from rest, integrated
 //       voltage: 180 V                #   by the coupling scheme (coupling_settings.hpp) to
 //       end_time: 5 us                #   end_time or touch-down; no quasi-static curve

@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "core/structural_systems.hpp"
+#include "coupling/pseudo_transient_relaxation.hpp"
 #include "coupling/quasi_static_pull_in.hpp"
 #include "solvers/kinsol_solver.hpp"
 
@@ -15,41 +16,77 @@ namespace rfmems {
 
 namespace {
 
+// The structure's stiffness diagonal at rest: the pseudo-mass of the relaxation.
+std::vector<Real> rest_stiffness_diagonal(ParallelPlateActuation& act) {
+  const CsrPattern& k = act.stiffness_pattern();
+  std::vector<Real> values(k.nnz()), zero(act.size(), 0.0), d(act.size());
+  act.structure().stiffness(0.0, zero, values);
+  for (Index i = 0; i < act.size(); ++i) d[i] = std::abs(values[k.find(i, i)]);
+  return d;
+}
+
 struct ContactSolver {
   ParallelPlateActuation& act;
   StaticSystem system;
   Real tolerance;  // on ||F||_inf [N]
   KinsolSolver solver;
-  long solves = 0, newton = 0;
+  std::vector<Real> pseudo_mass;
+  bool relax;
+  long solves = 0, newton = 0, relaxation_steps = 0;
   ContactSolver(ParallelPlateActuation& a, const PullOutOptions& options)
       : act(a),
         system(a),
         tolerance(options.newton_tolerance * stiffness_scale(a) * a.initial_gap()),
-        solver(system, [&] {
-          KinsolOptions kin;
-          kin.max_iterations = options.max_newton_iterations;
-          kin.line_search = true;
-          kin.relative_tolerance = options.newton_tolerance;
-          kin.residual_scale = stiffness_scale(a) * a.initial_gap();
-          return kin;
-        }()) {}
-  // The equilibrium at voltage v from `from`; false if Newton fails or leaves the dielectric.
-  bool solve(Real v, const std::vector<Real>& from, std::vector<Real>& state, long& iterations) {
+        solver(system,
+               [&] {
+                 KinsolOptions kin;
+                 kin.max_iterations = options.max_newton_iterations;
+                 kin.line_search = true;
+                 kin.relative_tolerance = options.newton_tolerance;
+                 kin.residual_scale = stiffness_scale(a) * a.initial_gap();
+                 return kin;
+               }()),
+        pseudo_mass(rest_stiffness_diagonal(a)),
+        relax(options.relax) {}
+  // The equilibrium at voltage v from `from`: the pseudo-transient flow to within
+  // kRelaxed x the tolerance (the nearest stable equilibrium), then Newton to the tolerance.
+  // Released: an equilibrium off the dielectric, or (Newton alone) none found, the fold;
+  // Failed: the relaxation or its Newton polish did not converge (not a release).
+  static constexpr Real kRelaxed = 100;
+  enum class Outcome { Contact, Released, Failed };
+  Outcome solve(Real v, const std::vector<Real>& from, std::vector<Real>& state, long& iterations) {
     act.set_voltage_squared([v](Real) { return v * v; });
     state = from;
     ++solves;
-    NonlinearStats stats;
+    iterations = 0;
+    if (relax && !relax_to(kRelaxed * tolerance, state)) return Outcome::Failed;
+    const std::vector<Real> relaxed = state;
+    bool converged = false;
     try {
-      stats = solver.solve(0.0, state);
+      const NonlinearStats stats = solver.solve(0.0, state);
+      iterations = stats.newton_iters;
+      newton += iterations;
+      // KINSOL can stop with a warning (a stalled line search at the fold, where the Jacobian
+      // is singular and no solution exists below it): only a small residual is an equilibrium.
+      converged = stats.final_residual <= 10 * tolerance;
     } catch (const std::exception&) {  // SolverError, RecoverableError from the film/gap
-      return false;
     }
-    iterations = stats.newton_iters;
-    newton += iterations;
-    // KINSOL can stop with a warning (a stalled line search at the fold, where the Jacobian is
-    // singular and no solution exists below it): only a small residual is an equilibrium.
-    if (stats.final_residual > 10 * tolerance) return false;
-    return act.min_gap(state) < act.contact().gap;
+    if (!converged) {
+      if (!relax) return Outcome::Released;  // no equilibrium near: past the fold
+      // Near a fold of the branch Newton is slow (singular Jacobian): the flow goes on.
+      state = relaxed;
+      if (!relax_to(10 * tolerance, state)) return Outcome::Failed;
+    }
+    return act.min_gap(state) < act.contact().gap ? Outcome::Contact : Outcome::Released;
+  }
+  bool relax_to(Real target, std::vector<Real>& state) {
+    PseudoTransientOptions pt;
+    pt.tolerance = target;
+    pt.initial_step = 100;  // from a nearby equilibrium: start coarse, SER shrinks it if needed
+    const PseudoTransientStats s = relax_pseudo_transient(system, state, pseudo_mass, pt);
+    relaxation_steps += s.steps;
+    newton += s.newton_iterations;
+    return s.converged;
   }
 };
 
@@ -84,7 +121,7 @@ std::vector<Real> press_onto_dielectric(ParallelPlateActuation& act, Index contr
   Real ratio = 1 / options.step_ratio;
   while (v < voltage) {
     const Real next = std::min(voltage, v * ratio);
-    if (cs.solve(next, state, trial, iterations)) {
+    if (cs.solve(next, state, trial, iterations) == ContactSolver::Outcome::Contact) {
       state = trial;
       v = next;
       ratio = std::min(1 / options.step_ratio, 1 + 2 * (ratio - 1));
@@ -109,11 +146,16 @@ QuasiStaticPullOut trace_pull_out(ParallelPlateActuation& act, Index control,
     return ContactBranchPoint{v, state[control], act.min_gap(state), act.contact_fraction(state),
                               iterations};
   };
+  // true: in contact at v; false: released at v; a failed solve is an error, not a release.
   auto solve = [&](Real v, const std::vector<Real>& from, std::vector<Real>& state, long& it) {
-    const bool ok = cs.solve(v, from, state, it);
+    const ContactSolver::Outcome outcome = cs.solve(v, from, state, it);
     out.solves = cs.solves;
     out.newton_iterations = cs.newton;
-    return ok;
+    out.relaxation_steps = cs.relaxation_steps;
+    if (outcome == ContactSolver::Outcome::Failed)
+      throw SolverError(fmt::format(
+          "pull-out: the relaxation to the equilibrium at {:.6g} V did not converge", v));
+    return outcome == ContactSolver::Outcome::Contact;
   };
   std::vector<Real> state, trial;
   long iterations = 0;

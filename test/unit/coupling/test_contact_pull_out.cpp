@@ -22,8 +22,8 @@
 // under the hold voltage (the spring's share of the load changes), and the undamped rebound
 // carries the mass past the unstable equilibrium just above g_c. That barrier's height grows
 // as (V_h^2/V_PO^2 - 1)^2 and the rebound energy as delta, so the excess goes as
-// sqrt(delta / g_ec) asymptotically. Measured 11.8 % and 7.9 % at delta = g_c/10 and g_c/30
-// (observed order 0.36, below the asymptotic 1/2 at these eps = delta/g_ec = 0.085, 0.028):
+// sqrt(delta / g_ec) asymptotically. Measured 11.5 % and 7.8 % at delta = g_c/10 and g_c/30
+// (observed order 0.35, below the asymptotic 1/2 at these eps = delta/g_ec = 0.085, 0.028):
 // asserted order in (0.25, 0.65). So a dynamic pull-out carries a penalty error of this size;
 // a damped contact (the squeeze film) removes most of the rebound.
 #include <gtest/gtest.h>
