@@ -1,13 +1,13 @@
 #include "coupling/immersed_switch.hpp"
 
 #include <fmt/format.h>
-#include <time.h>
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 
 #include "core/error.hpp"
+#include "core/process_cpu_clock.hpp"
 #include "core/reduced_inertia_system.hpp"
 #include "coupling/aitken_relaxation.hpp"
 #include "coupling/displacement_control_fixed_point.hpp"
@@ -18,19 +18,6 @@
 namespace rfmems {
 
 namespace {
-
-double cpu_now() {
-  timespec ts;
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
-
-// Adds the CPU time of its scope to a counter.
-struct ScopedCpu {
-  double& sink;
-  double start = cpu_now();
-  ~ScopedCpu() { sink += cpu_now() - start; }
-};
 
 // M u'' + K u - f(u) - f_gas = 0 with the lagged, gap-scaled IBM load (see the header).
 class LaggedLoadStructure : public SecondOrderOperator {
@@ -303,28 +290,28 @@ ImmersedLoad ImmersedSwitch::electrostatic_load(std::span<const Real> u, Real vo
   ++times_.load_evaluations;
   std::unique_ptr<ImmersedSurface> surface;
   {
-    ScopedCpu t{times_.move};
+    ScopedCpuTimer t{times_.move};
     surface = std::make_unique<ImmersedSurface>(moved_surface(u));
   }
   CellMarking marking;
   {
-    ScopedCpu t{times_.marking};
+    ScopedCpuTimer t{times_.marking};
     marking = kernel_->marker.mark(*surface);
   }
   std::unique_ptr<IbInterpolation> ib;
   {
-    ScopedCpu t{times_.interpolation};
+    ScopedCpuTimer t{times_.interpolation};
     ib = std::make_unique<IbInterpolation>(*background_, marking, *surface, interpolation_);
   }
   {
-    ScopedCpu t{times_.electrostatics};
+    ScopedCpuTimer t{times_.electrostatics};
     const long analyses = kernel_->electrostatics.analyses();
     kernel_->electrostatics.solve(marking, *ib, voltage);
     times_.electrostatic_analyses += kernel_->electrostatics.analyses() - analyses;
   }
   ImmersedLoad load;
   {
-    ScopedCpu t{times_.transfer};
+    ScopedCpuTimer t{times_.transfer};
     const ForceTransfer transfer(*background_, marking, *surface);
     const std::vector<Vec3> segment = transfer.to_surface(kernel_->electrostatics.ib_face_forces());
     for (const Vec3& f : segment) load.total += f;
@@ -410,7 +397,7 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
         [&](std::span<const Real> u) { return electrostatic_load(u, voltage).force; });
   Real gas_force = 0;
   if (gas) {
-    ScopedCpu t{times_.gas};
+    ScopedCpuTimer t{times_.gas};
     gas->reset(rest_surface_, 0.0);
   }
   std::vector<Real> yp = system.consistent_derivative(0.0, y);
@@ -450,7 +437,7 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
     for (int k = 0;; ++k) {
       IdaIntegrator::Status status;
       {
-        ScopedCpu t{times_.structure};
+        ScopedCpuTimer t{times_.structure};
         status = ida.step(options.end_time);
       }
       const std::span<const Real> u_end = ida.internal_y().subspan(0, n);
@@ -484,7 +471,7 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
     if (strong) {
       status = strong_step();
     } else {
-      ScopedCpu t{times_.structure};
+      ScopedCpuTimer t{times_.structure};
       status = ida.step(options.end_time);
     }
     ++times_.structure_steps;
@@ -514,7 +501,7 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
       }
       if (gas && t > t_gas && (++since_gas >= options.gas_every || stop)) {
         since_gas = 0;
-        ScopedCpu timer{times_.gas};
+        ScopedCpuTimer timer{times_.gas};
         std::vector<Real> v(n);
         for (Index i = 0; i < n; ++i) v[i] = state[system.velocity_index(i)];
         const ImmersedSurface surface = moved_surface(u);

@@ -1,4 +1,5 @@
 #include "solvers/distributed_ida_integrator.hpp"
+#include "solvers/callback_guard.hpp"
 
 #include <fmt/format.h>
 #include <ida/ida.h>
@@ -30,7 +31,7 @@ struct DistributedIdaIntegrator::Impl {
   sundials::LinearSolver gmres;
   void* mem = nullptr;
   Real t = 0;
-  std::exception_ptr pending;
+  CallbackGuard guard;
 
   Impl(DistributedSystem& s, const IdaOptions& o, bool overlap)
       : system(s),
@@ -41,46 +42,32 @@ struct DistributedIdaIntegrator::Impl {
         ctx(sundials::make_context()) {}
   ~Impl() { IDAFree(&mem); }
 
-  template <class F>
-  int guarded(F&& body) {
-    try {
-      body();
-      return 0;
-    } catch (const RecoverableError&) {
-      return 1;
-    } catch (...) {
-      pending = std::current_exception();
-      return -1;
-    }
-  }
-  void rethrow() {
-    if (pending) std::rethrow_exception(std::exchange(pending, nullptr));
-  }
+  void rethrow() { guard.rethrow(); }
 
   static Impl& of(void* data) { return *static_cast<Impl*>(data); }
 
   static int residual(Real t, N_Vector y, N_Vector yp, N_Vector r, void* data) {
     Impl& me = of(data);
-    return me.guarded([&] {
+    return me.guard.run([&] {
       me.system.residual(t, sundials::local_span(y), sundials::local_span(yp),
                          sundials::local_span(r));
     });
   }
   static int preconditioner_setup(Real t, N_Vector y, N_Vector yp, N_Vector, Real c_j, void* data) {
     Impl& me = of(data);
-    return me.guarded(
+    return me.guard.run(
         [&] { me.linearization.setup(t, c_j, sundials::local_span(y), sundials::local_span(yp)); });
   }
   static int preconditioner_solve(Real, N_Vector, N_Vector, N_Vector, N_Vector r, N_Vector z, Real,
                                   Real, void* data) {
     Impl& me = of(data);
-    return me.guarded(
+    return me.guard.run(
         [&] { me.linearization.precondition(sundials::local_span(r), sundials::local_span(z)); });
   }
   static int jacobian_times(Real, N_Vector, N_Vector, N_Vector, N_Vector v, N_Vector jv, Real c_j,
                             void* data, N_Vector, N_Vector) {
     Impl& me = of(data);
-    return me.guarded(
+    return me.guard.run(
         [&] { me.linearization.apply(c_j, sundials::local_span(v), sundials::local_span(jv)); });
   }
 };

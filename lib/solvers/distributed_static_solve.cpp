@@ -1,4 +1,5 @@
 #include "solvers/distributed_static_solve.hpp"
+#include "solvers/callback_guard.hpp"
 
 #include <fmt/format.h>
 #include <kinsol/kinsol.h>
@@ -27,7 +28,7 @@ struct Problem {
   DistributedLinearization linearization;
   Real t = 0;
   long residual_calls = 0;
-  std::exception_ptr pending;
+  CallbackGuard guard;
   std::vector<Real> no_derivative;
 
   Problem(DistributedSecondOrderOperator& op, Real time, bool overlap)
@@ -39,25 +40,13 @@ struct Problem {
         t(time),
         no_derivative(op.owned_size(), 0.0) {}
 
-  template <class F>
-  int guarded(F&& body) {
-    try {
-      body();
-      return 0;
-    } catch (const RecoverableError&) {
-      return 1;
-    } catch (...) {
-      pending = std::current_exception();
-      return -1;
-    }
-  }
 };
 
 Problem& problem_of(void* data) { return *static_cast<Problem*>(data); }
 
 int residual(N_Vector y, N_Vector f, void* data) {
   Problem& p = problem_of(data);
-  return p.guarded([&] {
+  return p.guard.run([&] {
     ++p.residual_calls;
     p.system.residual(p.t, sundials::local_span(y), p.no_derivative, sundials::local_span(f));
   });
@@ -65,13 +54,13 @@ int residual(N_Vector y, N_Vector f, void* data) {
 
 int preconditioner_setup(N_Vector u, N_Vector, N_Vector, N_Vector, void* data) {
   Problem& p = problem_of(data);
-  return p.guarded(
+  return p.guard.run(
       [&] { p.linearization.setup(p.t, 0.0, sundials::local_span(u), p.no_derivative); });
 }
 
 int preconditioner_solve(N_Vector, N_Vector, N_Vector, N_Vector, N_Vector v, void* data) {
   Problem& p = problem_of(data);
-  return p.guarded([&] {
+  return p.guard.run([&] {
     auto z = sundials::local_span(v);
     p.linearization.precondition(z, z);
   });
@@ -80,7 +69,7 @@ int preconditioner_solve(N_Vector, N_Vector, N_Vector, N_Vector, N_Vector v, voi
 int jacobian_times(N_Vector v, N_Vector jv, N_Vector, booleantype* new_u, void* data) {
   Problem& p = problem_of(data);
   *new_u = SUNFALSE;  // the product uses the Jacobian of the last setup, at this u
-  return p.guarded(
+  return p.guard.run(
       [&] { p.linearization.apply(0.0, sundials::local_span(v), sundials::local_span(jv)); });
 }
 
@@ -146,7 +135,7 @@ DistributedStaticSolution solve_static_distributed(DistributedSecondOrderOperato
   check(KINSetMaxNewtonStep(mem, 1e300), "KINSetMaxNewtonStep");  // see KinsolSolver::solve
 
   const int flag = KINSol(mem, y.get(), KIN_NONE, scale_u.get(), scale_f.get());
-  if (problem.pending) std::rethrow_exception(std::exchange(problem.pending, nullptr));
+  problem.guard.rethrow();
   if (flag < 0)
     throw SolverError(fmt::format("KINSOL (distributed) failed with flag {} ({})", flag,
                                   KINGetReturnFlagName(flag)));

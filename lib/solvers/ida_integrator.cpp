@@ -25,21 +25,6 @@ void check(int flag, const char* call) {
 }
 }  // namespace
 
-// Runs a callback body, mapping RecoverableError to SUNDIALS' "retry" (> 0) and storing any
-// other exception to rethrow once IDA has returned.
-template <class F>
-int IdaIntegrator::guarded(F&& body) {
-  try {
-    body();
-    return 0;
-  } catch (const RecoverableError&) {
-    return 1;
-  } catch (...) {
-    pending_ = std::current_exception();
-    return -1;
-  }
-}
-
 IdaIntegrator::IdaIntegrator(SystemOperator& op, const IdaOptions& options)
     : op_(op), options_(options), ctx_(sundials::make_context()) {
   const Index n = op_.size();
@@ -222,7 +207,7 @@ void IdaIntegrator::reinitialize(Real t0, std::span<const Real> y0, std::span<co
 
 void IdaIntegrator::correct_initial_conditions(Real t_first) {
   check(IDACalcIC(mem_, IDA_YA_YDP_INIT, t_first), "IDACalcIC");
-  if (pending_) std::rethrow_exception(std::exchange(pending_, nullptr));
+  guard_.rethrow();
   check(IDAGetConsistentIC(mem_, y_.get(), yp_.get()), "IDAGetConsistentIC");
 }
 
@@ -236,7 +221,7 @@ IdaIntegrator::Status IdaIntegrator::advance(Real t_out) {
   Real t_ret = t_;
   int flag = IDASolve(mem_, t_out, &t_ret, y_.get(), yp_.get(), IDA_NORMAL);
   t_ = t_ret;
-  if (pending_) std::rethrow_exception(std::exchange(pending_, nullptr));
+  guard_.rethrow();
   if (flag < 0)
     throw SolverError(fmt::format("IDA failed at t = {:.6g} with flag {} ({})", t_ret, flag,
                                   IDAGetReturnFlagName(flag)));
@@ -248,7 +233,7 @@ IdaIntegrator::Status IdaIntegrator::step(Real t_stop) {
   Real t_ret = t_;
   const int flag = IDASolve(mem_, t_stop, &t_ret, y_.get(), yp_.get(), IDA_ONE_STEP);
   t_ = t_ret;
-  if (pending_) std::rethrow_exception(std::exchange(pending_, nullptr));
+  guard_.rethrow();
   if (flag < 0)
     throw SolverError(fmt::format("IDA failed at t = {:.6g} with flag {} ({})", t_ret, flag,
                                   IDAGetReturnFlagName(flag)));
@@ -286,7 +271,7 @@ IntegratorStats IdaIntegrator::stats() const {
 
 int IdaIntegrator::residual_trampoline(Real t, N_Vector y, N_Vector yp, N_Vector r, void* self) {
   auto* me = static_cast<IdaIntegrator*>(self);
-  return me->guarded([&] {
+  return me->guard_.run([&] {
     me->op_.residual(t, sundials::as_span(y), sundials::as_span(yp), sundials::as_span(r));
   });
 }
@@ -294,7 +279,7 @@ int IdaIntegrator::residual_trampoline(Real t, N_Vector y, N_Vector yp, N_Vector
 int IdaIntegrator::jacobian_trampoline(Real t, Real c_j, N_Vector y, N_Vector yp, N_Vector,
                                        SUNMatrix J, void* self, N_Vector, N_Vector, N_Vector) {
   auto* me = static_cast<IdaIntegrator*>(self);
-  return me->guarded([&] {
+  return me->guard_.run([&] {
     const CsrPattern& pattern = me->op_.jacobian_pattern();
     sundials::load_pattern(pattern, J);
     std::span<Real> values(SUNSparseMatrix_Data(J), static_cast<std::size_t>(pattern.nnz()));
@@ -305,7 +290,7 @@ int IdaIntegrator::jacobian_trampoline(Real t, Real c_j, N_Vector y, N_Vector yp
 
 int IdaIntegrator::root_trampoline(Real t, N_Vector y, N_Vector yp, Real* g, void* self) {
   auto* me = static_cast<IdaIntegrator*>(self);
-  return me->guarded([&] {
+  return me->guard_.run([&] {
     me->roots_(t, sundials::as_span(y), sundials::as_span(yp),
                std::span<Real>(g, static_cast<std::size_t>(me->n_roots_)));
   });
@@ -314,7 +299,7 @@ int IdaIntegrator::root_trampoline(Real t, N_Vector y, N_Vector yp, Real* g, voi
 int IdaIntegrator::preconditioner_setup_trampoline(Real t, N_Vector y, N_Vector yp, N_Vector,
                                                    Real c_j, void* self) {
   auto* me = static_cast<IdaIntegrator*>(self);
-  return me->guarded([&] {
+  return me->guard_.run([&] {
     if (me->fallback_preconditioner_)
       me->fallback_preconditioner_->setup(t, c_j, sundials::as_span(y), sundials::as_span(yp));
     else
@@ -325,7 +310,7 @@ int IdaIntegrator::preconditioner_setup_trampoline(Real t, N_Vector y, N_Vector 
 int IdaIntegrator::preconditioner_solve_trampoline(Real, N_Vector, N_Vector, N_Vector, N_Vector rv,
                                                    N_Vector zv, Real, Real, void* self) {
   auto* me = static_cast<IdaIntegrator*>(self);
-  return me->guarded([&] {
+  return me->guard_.run([&] {
     if (me->fallback_preconditioner_)
       me->fallback_preconditioner_->solve(sundials::as_span(rv), sundials::as_span(zv));
     else

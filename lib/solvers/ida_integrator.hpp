@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/system_operator.hpp"
+#include "solvers/callback_guard.hpp"
 #include "solvers/jacobian_lu_preconditioner.hpp"
 #include "solvers/sundials_handles.hpp"
 
@@ -108,8 +109,6 @@ class IdaIntegrator {
   static int preconditioner_solve_trampoline(Real t, N_Vector y, N_Vector yp, N_Vector r,
                                              N_Vector rv, N_Vector zv, Real c_j, Real delta,
                                              void* self);
-  template <class F>
-  int guarded(F&& body);
 
   SystemOperator& op_;
   IdaOptions options_;
@@ -122,7 +121,7 @@ class IdaIntegrator {
   bool initialized_ = false;
   int n_roots_ = 0;
   RootFunction roots_;
-  std::exception_ptr pending_;
+  CallbackGuard guard_;
   std::unique_ptr<JacobianLuPreconditioner> fallback_preconditioner_;
 };
 

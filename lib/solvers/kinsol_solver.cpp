@@ -65,7 +65,7 @@ NonlinearStats KinsolSolver::solve(Real t, std::span<Real> y) {
   residual_calls_ = 0;
   int flag = KINSol(mem_, y_.get(), options_.line_search ? KIN_LINESEARCH : KIN_NONE,
                     scale_u_.get(), scale_f_.get());
-  if (pending_) std::rethrow_exception(std::exchange(pending_, nullptr));
+  guard_.rethrow();
   if (flag < 0)
     throw SolverError(fmt::format("KINSOL failed with flag {} ({})", flag, KINGetReturnFlagName(flag)));
   long nni = 0, nje = 0, nli = 0;
@@ -86,33 +86,23 @@ NonlinearStats KinsolSolver::solve(Real t, std::span<Real> y) {
 
 int KinsolSolver::residual_trampoline(N_Vector y, N_Vector f, void* self) {
   auto* me = static_cast<KinsolSolver*>(self);
-  try {
+  return me->guard_.run([&] {
     ++me->residual_calls_;
     me->op_.residual(me->t_, sundials::as_span(y), sundials::as_span(me->zero_.get()),
                      sundials::as_span(f));
-    return 0;
-  } catch (const RecoverableError&) {
-    return 1;
-  } catch (...) {
-    me->pending_ = std::current_exception();
-    return -1;
-  }
+  });
 }
 
 int KinsolSolver::jacobian_trampoline(N_Vector y, N_Vector, SUNMatrix J, void* self, N_Vector,
                                       N_Vector) {
   auto* me = static_cast<KinsolSolver*>(self);
-  try {
+  return me->guard_.run_or_stop([&] {
     const CsrPattern& pattern = me->op_.jacobian_pattern();
     sundials::load_pattern(pattern, J);
     std::span<Real> values(SUNSparseMatrix_Data(J), static_cast<std::size_t>(pattern.nnz()));
     std::fill(values.begin(), values.end(), 0.0);
     me->op_.jacobian(me->t_, 0.0, sundials::as_span(y), sundials::as_span(me->zero_.get()), values);
-    return 0;
-  } catch (...) {
-    me->pending_ = std::current_exception();
-    return -1;
-  }
+  });
 }
 
 }  // namespace rfmems

@@ -4,6 +4,7 @@
 #include <exception>
 
 #include "core/system_operator.hpp"
+#include "solvers/callback_guard.hpp"
 #include "solvers/sundials_handles.hpp"
 
 namespace rfmems {
@@ -50,7 +51,7 @@ class KinsolSolver {
   void* mem_ = nullptr;
   Real t_ = 0;
   long residual_calls_ = 0;
-  std::exception_ptr pending_;
+  CallbackGuard guard_;
 };
 
 }  // namespace rfmems
