@@ -250,24 +250,26 @@ std::vector<int> IdaIntegrator::roots_found() const {
   return found;
 }
 
-IntegratorStats IdaIntegrator::stats() const {
+IntegratorStats ida_memory_stats(void* mem) {
   IntegratorStats s;
   long nrevals_ls = 0;
-  IDAGetNumSteps(mem_, &s.steps);
-  IDAGetNumResEvals(mem_, &s.residual_evals);
-  IDAGetNumLinResEvals(mem_, &nrevals_ls);
+  IDAGetNumSteps(mem, &s.steps);
+  IDAGetNumResEvals(mem, &s.residual_evals);
+  IDAGetNumLinResEvals(mem, &nrevals_ls);
   s.residual_evals += nrevals_ls;
-  IDAGetNumJacEvals(mem_, &s.jacobian_evals);
-  IDAGetNumNonlinSolvIters(mem_, &s.newton_iters);
-  IDAGetNumLinSolvSetups(mem_, &s.linear_setups);
-  IDAGetNumErrTestFails(mem_, &s.error_test_fails);
-  IDAGetNumNonlinSolvConvFails(mem_, &s.newton_fails);
-  IDAGetLastOrder(mem_, &s.last_order);
-  IDAGetLastStep(mem_, &s.last_step);
-  IDAGetNumLinIters(mem_, &s.linear_iters);
-  IDAGetNumPrecEvals(mem_, &s.preconditioner_setups);
+  IDAGetNumJacEvals(mem, &s.jacobian_evals);
+  IDAGetNumNonlinSolvIters(mem, &s.newton_iters);
+  IDAGetNumLinSolvSetups(mem, &s.linear_setups);
+  IDAGetNumErrTestFails(mem, &s.error_test_fails);
+  IDAGetNumNonlinSolvConvFails(mem, &s.newton_fails);
+  IDAGetLastOrder(mem, &s.last_order);
+  IDAGetLastStep(mem, &s.last_step);
+  IDAGetNumLinIters(mem, &s.linear_iters);
+  IDAGetNumPrecEvals(mem, &s.preconditioner_setups);
   return s;
 }
+
+IntegratorStats IdaIntegrator::stats() const { return ida_memory_stats(mem_); }
 
 int IdaIntegrator::residual_trampoline(Real t, N_Vector y, N_Vector yp, N_Vector r, void* self) {
   auto* me = static_cast<IdaIntegrator*>(self);

@@ -49,6 +49,10 @@ struct IntegratorStats {
   Real last_step = 0;
 };
 
+// The counters of one IDA memory block (IDAGetNum*; residual evaluations include the linear
+// solver's): what IdaIntegrator and DistributedIdaIntegrator report.
+IntegratorStats ida_memory_stats(void* ida_mem);
+
 // g_i(t, y, y') whose sign changes mark events.
 using RootFunction = std::function<void(Real t, std::span<const Real> y, std::span<const Real> yp,
                                         std::span<Real> g)>;
