@@ -318,20 +318,22 @@ Json run_immersed_switch_study(ImmersedSwitchCase& c, const CaseNode& root, Resu
         fmt::format("contact gap {:.3g} m is below one background cell ({:.3g} m): "
                     "the IB layer fills the gap before touch-down",
                     c.run.contact_gap, cell));
-  if (c.gas && j["gas_max_knudsen"].get<double>() > 1.0)
+  // The film's limits are the Reynolds film's only; the kinetic gas holds at every Kn.
+  const std::string gas_model =
+      root.child_or_empty("gas").get_choice("model", {"none", "reynolds", "esbgk"}, "none");
+  if (gas_model == "reynolds" && j["gas_max_knudsen"].get<double>() > 1.0)
     warnings.push_back(
         fmt::format("Reynolds film at Kn up to {:.3g} (> 1): Veijola's viscosity "
                     "fit holds, the film's lubrication assumptions weaken",
                     j["gas_max_knudsen"].get<double>()));
-  if (c.gas && (c.mode == "dynamic" || c.mode == "transient") &&
+  if (gas_model == "reynolds" && (c.mode == "dynamic" || c.mode == "transient") &&
       c.run.contact_gap < 0.5 * s.rest_gap())
     warnings.push_back(
         "Reynolds film followed to a gap below half the rest gap (large "
         "displacement: the 1D film takes h from the deformed beam, no edge "
         "correction at the tip)");
   // ESBGK on the background: its cell size against the mean free path (scene_validity.hpp).
-  if (c.gas && root.child_or_empty("gas").get_choice("model", {"none", "reynolds", "esbgk"},
-                                                     "none") == "esbgk") {
+  if (c.gas && gas_model == "esbgk") {
     const ImmersedSwitchGeometry& g = c.geometry;
     const Real hx = (g.background_upper.x() - g.background_lower.x()) / g.background_cells[0];
     ValidityReport v;

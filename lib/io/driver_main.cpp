@@ -35,7 +35,7 @@ namespace {
 
 int parse_and_run(const std::string& program, const std::string& description, int argc,
                   char** argv, const std::function<int(const DriverOptions&)>& run,
-                  const ExtraOptions& extra_options) {
+                  const ExtraOptions& extra_options, bool distributed) {
   DriverOptions options;
   CLI::App app{description};
   app.add_option("case", options.case_path, "case file (YAML)")->required();
@@ -54,14 +54,19 @@ int parse_and_run(const std::string& program, const std::string& description, in
     print_driver_error(program, std::string(e.what()) + " (see --help)");
     return 2;
   }
+  const Communicator world = Communicator::world();
   try {
     return run(options);
   } catch (const InputError& e) {  // also MeshError
     // Every rank reads the same input and fails alike: one line, from the root.
-    if (Communicator::world().is_root()) print_driver_error(program, e.what());
+    if (world.is_root()) print_driver_error(program, e.what());
     return 2;
   } catch (const std::exception& e) {
     print_driver_error(program, std::string("error: ") + e.what());
+    // A solver failure may hit one rank only (a ghost exchange, a reduction or an IDA step
+    // the others are inside): they would wait for it for ever, so the job ends here. The
+    // result file is written through a temporary and renamed, so nothing half is left.
+    if (distributed && !world.is_serial()) world.abort(1);
     return 1;
   }
 }
@@ -75,7 +80,8 @@ int driver_main(const std::string& program, const std::string& description, int 
   const Communicator world = Communicator::world();
   Index code = 0;
   if (ranks == RankUse::AllRanks || world.is_root())
-    code = parse_and_run(program, description, argc, argv, run, extra_options);
+    code = parse_and_run(program, description, argc, argv, run, extra_options,
+                         ranks == RankUse::AllRanks);
   // One verdict for every rank: the worst (the root's, when only the root runs).
   return static_cast<int>(world.max(code));
 }

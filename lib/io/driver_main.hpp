@@ -8,7 +8,9 @@
 // Under mpirun every driver starts MPI. A driver whose physics is distributed runs on every
 // rank (RankUse::AllRanks); the others (a structure small enough for one rank) run on the root
 // while the other ranks wait, so `mpirun -np P` gives the serial answer and one output file.
-// Every rank exits with the root's code.
+// Every rank exits with the root's code. A failure other than bad input while every rank runs
+// may be on one rank alone, with the others inside a collective: that rank prints its line and
+// ends the whole job (MPI_Abort, exit 1) rather than leave them waiting.
 #pragma once
 #include <chrono>
 #include <functional>

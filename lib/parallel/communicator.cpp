@@ -2,6 +2,8 @@
 
 #include <mpi.h>
 
+#include <cstdlib>
+
 #include "parallel/communication_counters.hpp"
 
 namespace rfmems {
@@ -84,6 +86,11 @@ void Communicator::broadcast(std::vector<int>& values, int root) const {
 
 void Communicator::barrier() const {
   if (!is_serial()) MPI_Barrier(comm_of(handle_));
+}
+
+void Communicator::abort(int code) const {
+  if (!is_serial()) MPI_Abort(comm_of(handle_), code);
+  std::exit(code);
 }
 
 }  // namespace rfmems

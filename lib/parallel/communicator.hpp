@@ -45,6 +45,10 @@ class Communicator {
   void sum_in_place(std::span<Real> values) const;
   void broadcast(std::vector<int>& values, int root = 0) const;
   void barrier() const;
+  // Ends every rank of this communicator's job with `code` (MPI_Abort). For a failure on one
+  // rank while the others may be inside a collective (a ghost exchange, a reduction): they
+  // would wait for it for ever. Serial: std::exit(code).
+  [[noreturn]] void abort(int code) const;
 
   // The MPI_Comm as an opaque handle (Open MPI's MPI_Comm is a pointer), so this header
   // needs no mpi.h.
