@@ -14,7 +14,7 @@ std::vector<Real> solve_stokes(const StokesOperator& op) {
       values[k] *= rows[r] * columns[pattern.col_idx[k]];
     x[r] *= rows[r];
   }
-  KluFactorization lu(pattern, values);
+  KluFactorization lu(pattern, values, KluOrdering::NestedDissection);
   lu.solve(x);
   for (Index k = 0; k < op.size(); ++k) x[k] *= columns[k];
   return x;
