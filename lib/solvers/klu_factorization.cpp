@@ -1,6 +1,9 @@
 #include "solvers/klu_factorization.hpp"
 
 #include <klu.h>
+#include <metis.h>
+
+#include <algorithm>
 #include <vector>
 
 #include "core/error.hpp"
@@ -18,6 +21,38 @@ struct KluFactorization::Impl {
   SuiteSparse_long n = 0;
 };
 
+namespace {
+
+// KLU's user ordering (klu_common.user_order): METIS_NodeND on the graph of A + A^T of the
+// compressed-column matrix (Ap, Ai); returns 1 on success, as KLU expects.
+SuiteSparse_long nested_dissection(SuiteSparse_long n, SuiteSparse_long* Ap, SuiteSparse_long* Ai,
+                                   SuiteSparse_long* Perm, klu_l_common*) {
+  std::vector<std::vector<idx_t>> adjacent(n);
+  for (SuiteSparse_long c = 0; c < n; ++c)
+    for (SuiteSparse_long k = Ap[c]; k < Ap[c + 1]; ++k)
+      if (Ai[k] != c) {
+        adjacent[Ai[k]].push_back(static_cast<idx_t>(c));
+        adjacent[c].push_back(static_cast<idx_t>(Ai[k]));
+      }
+  std::vector<idx_t> xadj{0}, adjncy;
+  for (auto& a : adjacent) {
+    std::sort(a.begin(), a.end());
+    a.erase(std::unique(a.begin(), a.end()), a.end());
+    adjncy.insert(adjncy.end(), a.begin(), a.end());
+    xadj.push_back(static_cast<idx_t>(adjncy.size()));
+    a = {};
+  }
+  idx_t nodes = static_cast<idx_t>(n);
+  std::vector<idx_t> perm(n), inverse(n);
+  if (METIS_NodeND(&nodes, xadj.data(), adjncy.data(), nullptr, nullptr, perm.data(),
+                   inverse.data()) != METIS_OK)
+    return 0;
+  std::copy(perm.begin(), perm.end(), Perm);
+  return 1;
+}
+
+}  // namespace
+
 KluFactorization::KluFactorization(const CsrPattern& pattern, std::span<const Real> values,
                                    KluOrdering ordering)
     : impl_(new Impl) {
@@ -28,6 +63,10 @@ KluFactorization::KluFactorization(const CsrPattern& pattern, std::span<const Re
   k.values.assign(values.begin(), values.end());
   klu_l_defaults(&k.common);
   k.common.ordering = ordering == KluOrdering::Colamd ? 1 : 0;
+  if (ordering == KluOrdering::NestedDissection) {
+    k.common.ordering = 3;  // user ordering
+    k.common.user_order = nested_dissection;
+  }
   k.symbolic = klu_l_analyze(k.n, k.ptr.data(), k.idx.data(), &k.common);
   if (k.symbolic)
     k.numeric = klu_l_factor(k.ptr.data(), k.idx.data(), k.values.data(), k.symbolic, &k.common);
