@@ -40,7 +40,9 @@
 // Output: one JSON object per line on stdout; progress on stderr.
 //   bench_pullin_work_error [--quick] [--voltage 180] [--gas none reynolds] [--cap 60]
 //       [--families ...] [--rate-factors 1 10 0] [--t-ref T (exploration: skip the reference)]
-// docs/BENCHMARKS.md sections 6 (scalar atol) and 6e (error weights, cutting fixed steps).
+//       [--case switch_plate_damped --end-time 40e-6 --free-voltage 20]
+// docs/BENCHMARKS.md sections 6 (scalar atol), 6e (error weights, cutting fixed steps) and 32
+// (the squeeze-film-dominated switch, cases/switch_plate_damped).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -82,14 +84,15 @@ struct Run {
   IntegratorStats stats;
 };
 
-// The voltage's rise time (--rise-time; 0: a step).
+// The voltage's rise time (--rise-time; 0: a step) and the end of every run (--end-time).
 double g_rise_time = 0;
+double g_end_time = 40e-6;
 
 // One step-voltage (or ramped, with --rise-time) run from rest to touch-down (or end_time).
 Run pull_in_run(SwitchSystem& system, Index control, double voltage, double gap,
                 const IdaOptions& ida, const StateTolerances& tolerances = {}) {
   DynamicOptions o;
-  o.end_time = 40e-6;
+  o.end_time = g_end_time;
   o.contact_gap = 0.02 * gap;
   o.stop_at_turning = false;  // above V_dyn it must touch down; a turn would be reported as such
   o.output_interval = 0;
@@ -144,7 +147,7 @@ Json step_profile(SwitchSystem& system, double voltage, double gap, const IdaOpt
                     {"order", st.last_order},
                     {"min_gap_over_g0", system.min_gap(ida.y()) / gap}});
     before = st.steps;
-    if (status == IdaIntegrator::Status::Root || t_out > 40e-6) break;
+    if (status == IdaIntegrator::Status::Root || t_out > g_end_time) break;
   }
   return rows;
 }
@@ -192,7 +195,8 @@ int main(int argc, char** argv) {
   CLI::App app{
       "Work against error of IDA and fixed-step BDF for the dynamic pull-in time of the "
       "plate switch (JSON lines)"};
-  std::string cases = default_cases_dir();
+  std::string cases = default_cases_dir(), case_name = "switch_plate";
+  double free_voltage = 20.0;
   double voltage = 180.0, cap = 40.0, ref_rtol = 1e-9, ref_o2_rtol = 0;
   std::vector<std::string> gases{"none", "reynolds"};
   std::vector<double> rtols{1e-1, 3e-2, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6};
@@ -207,6 +211,13 @@ int main(int argc, char** argv) {
   std::vector<double> rate_factors{1.0};
   bool quick = false;
   app.add_option("--cases", cases, "the repository's cases/ directory");
+  app.add_option("--case", case_name,
+                 "the switch case under --cases (switch_plate; switch_plate_damped: the "
+                 "squeeze-film-dominated one, BENCHMARKS sec. 32)");
+  app.add_option("--end-time", g_end_time,
+                 "every run gives up (not pulled in) at this time [s]");
+  app.add_option("--free-voltage", free_voltage,
+                 "step voltage [V] of the free response that measures omega_1");
   app.add_option("--families", families, "integrator families to run (see the header)");
   app.add_option("--w-rtols", w_rtols, "rtols of ida_o2_w");
   app.add_option("--w-o5-rtols", w_o5_rtols, "rtols of ida_o5_w");
@@ -251,14 +262,14 @@ int main(int argc, char** argv) {
 
   Json summary_all = Json::array();
   for (const std::string& gas : gases) {
-    const std::string case_path = cases + "/switch_plate/case.yaml";
+    const std::string case_path = cases + "/" + case_name + "/case.yaml";
     const CaseFile cf = CaseFile::load(case_path, {"gas.model=" + gas});
     SwitchScene scene = build_switch_scene(cf.root(), fs::path(case_path).parent_path().string(),
                                            AnalysisType::Transient);
     const std::unique_ptr<SwitchSystem> system = scene.make_transient_system();
     const double gap = scene.gap;
     Json common{{"bench", "pullin_work_error"},
-                {"case", "switch_plate"},
+                {"case", case_name},
                 {"gas", gas},
                 {"voltage", voltage},
                 {"cells", scene.structure->structure_mesh().n_cells()},
@@ -305,8 +316,9 @@ int main(int argc, char** argv) {
     auto runs_family = [&](const std::string& f) {
       return std::find(families.begin(), families.end(), f) != families.end();
     };
-    // omega_1: the damped frequency of the free response to a 20 V step (electrostatic
-    // softening (20/171)^2 ~ 1 %), IDA order <= 5 at rtol 1e-6 with the scalar atol.
+    // omega_1: the damped frequency of the free response to a --free-voltage step (20 V on
+    // the default case: electrostatic softening (20/171)^2 ~ 1 %), IDA order <= 5 at rtol 1e-6
+    // with the scalar atol. A heavily damped scene gives no free oscillation: --velocity-rate.
     double omega_1 = velocity_rate;
     if (omega_1 <= 0) {
       DynamicOptions o;
@@ -315,10 +327,12 @@ int main(int argc, char** argv) {
       o.stop_at_turning = false;
       o.output_interval = 0.02e-6;
       o.ida = adaptive(1e-6, 5);
-      const DynamicRun r = run_dynamic(*system, scene.control, VoltageWaveform{}.at(20.0), o);
+      const DynamicRun r =
+          run_dynamic(*system, scene.control, VoltageWaveform{}.at(free_voltage), o);
       const FreeResponse fr = free_response(r.history);
       if (fr.swings < 2) {
-        std::fprintf(stderr, "  no free oscillation at 20 V: give --velocity-rate\n");
+        std::fprintf(stderr, "  no free oscillation at %g V: give --velocity-rate\n",
+                     free_voltage);
         return 1;
       }
       omega_1 = 2 * M_PI * fr.frequency;
@@ -329,20 +343,13 @@ int main(int argc, char** argv) {
       j["swings"] = fr.swings;
       j["omega_1_rad_s"] = omega_1;
       emit(j);
-      std::fprintf(stderr, "  omega_1 = %.4e rad/s (f = %.1f kHz, zeta %.3g, 20 V)\n", omega_1,
-                   fr.frequency / 1e3, fr.damping_ratio);
+      std::fprintf(stderr, "  omega_1 = %.4e rad/s (f = %.1f kHz, zeta %.3g, %g V)\n", omega_1,
+                   fr.frequency / 1e3, fr.damping_ratio, free_voltage);
     }
-    const double cell_length = 400e-6 / 40;  // the plate's dx (cases/switch_plate)
-    const double p_ambient = scene.film ? scene.film->gas().ambient_pressure : 0.0;
     auto weighted = [&](double rtol, double rate_factor = 1.0) {
-      StateTolerances t;
-      t.displacement = atol_factor * rtol * gap;
       // Factor 0: velocities out of the test (an atol 1e13 x d per second: never binding).
-      t.velocity_rate = rate_factor > 0 ? rate_factor * omega_1 : 1e13;
-      t.pressure = scene.film ? t.displacement * p_ambient / gap : 0.0;
-      t.quasi_static = t.displacement / cell_length;
-      t.suppress_quasi_static = true;
-      return t;
+      return per_kind_tolerances(scene, atol_factor * rtol * gap,
+                                 rate_factor > 0 ? rate_factor * omega_1 : 1e13);
     };
 
     // The reference (order <= 5 at ref_rtol) and two checks of it: order <= 5 at 10 x
@@ -378,7 +385,8 @@ int main(int argc, char** argv) {
     }
     const double t_ref = refs[0].t_pi;
     if (!refs[0].pulled_in) {
-      std::fprintf(stderr, "  %.1f V does not pull in within 40 us: raise --voltage\n", voltage);
+      std::fprintf(stderr, "  %.1f V does not pull in within %g s: raise --voltage or --end-time\n",
+                   voltage, g_end_time);
       return 1;
     }
     {

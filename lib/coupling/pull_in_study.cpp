@@ -39,19 +39,10 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
   s.run.ida.max_order = static_cast<int>(solver.get_int("max_order", 2, Range::closed(1, 5)));
   s.run.ida.max_steps = 10000000;
   if (per_kind) {
-    StateTolerances& t = s.run.tolerances;
-    t.displacement = s.run.ida.atol;
-    t.velocity_rate =
+    s.run.tolerances = per_kind_tolerances(
+        scene, s.run.ida.atol,
         2 * M_PI *
-        solver.get_quantity("velocity_frequency", Dimension::Frequency, Range::positive());
-    // Film: the isothermal p g = const answer to a gap error d; rotations (algebraic, out of
-    // the error test): d over the mean cell size, for Newton's test only.
-    if (scene.film) t.pressure = t.displacement * scene.film->gas().ambient_pressure / scene.gap;
-    const Mesh& mesh = scene.structure->structure_mesh();
-    Real area = 0;
-    for (Index c = 0; c < mesh.n_cells(); ++c) area += mesh.cell_volume(c);
-    t.quasi_static = t.displacement / std::sqrt(area / static_cast<Real>(mesh.n_cells()));
-    t.suppress_quasi_static = true;
+            solver.get_quantity("velocity_frequency", Dimension::Frequency, Range::positive()));
   } else {
     solver.require(!solver.has("velocity_frequency"), "velocity_frequency",
                    "only with error_weights: per_kind");
@@ -99,6 +90,11 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
     s.bracket_high = b[1];
   }
   s.tolerance = dyn.get_quantity("tolerance", Dimension::Voltage, 0.5, Range::positive());
+  // A run that turns back has not pulled in: true of an underdamped step response, not of a
+  // squeeze-film-dominated one, whose slow creep towards the fold carries the wiggles of
+  // weakly damped higher modes (the control's velocity changes sign on the way down; cases/
+  // switch_plate_damped). false: every bisection run goes to touch-down or end_time.
+  s.run.stop_at_turning = dyn.get_bool("stop_at_turning", true);
   if (dyn.has("voltages")) s.voltages = dyn.get_quantities("voltages", Dimension::Voltage);
   s.small_signal = dyn.get_real("small_signal", 0.3, Range{0.0, 0.9, false, false});
   const bool laplace = scene.electrostatics == ElectrostaticsModel::Laplace;

@@ -15,6 +15,10 @@
 //       bracket: [150 V, 190 V]       # bisection bracket (default [0.8, 1.02] x the
 //                                     # quasi-static V_PI, computed first)
 //       tolerance: 0.5 V              # on the dynamic pull-in voltage
+//       stop_at_turning: true         # a bisection run that turns back did not pull in
+//                                     # (false: run to touch-down or end_time; for heavily
+//                                     # damped switches, whose higher modes reverse the
+//                                     # control's velocity during the creep)
 //       voltages: [170 V, 180 V]      # step voltages whose histories are recorded (default:
 //                                     # 0.97 and 1.03 x the dynamic V_PI)
 //       output_interval: 0.1 us       # sampling of the recorded histories

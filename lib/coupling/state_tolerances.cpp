@@ -1,5 +1,9 @@
 #include "coupling/state_tolerances.hpp"
 
+#include <cmath>
+
+#include "coupling/switch_scene.hpp"
+
 namespace rfmems {
 
 std::vector<Real> absolute_tolerances(const std::vector<StateKind>& kinds, const StateTolerances& t,
@@ -26,6 +30,21 @@ std::vector<Real> absolute_tolerances(const std::vector<StateKind>& kinds, const
     }
   }
   return atols;
+}
+
+StateTolerances per_kind_tolerances(const SwitchScene& scene, Real displacement,
+                                    Real velocity_rate) {
+  StateTolerances t;
+  t.displacement = displacement;
+  t.velocity_rate = velocity_rate;
+  // The isothermal film (p g = const) answers a gap error d with d p_a / g0.
+  if (scene.film) t.pressure = displacement * scene.film->gas().ambient_pressure / scene.gap;
+  const Mesh& mesh = scene.structure->structure_mesh();
+  Real area = 0;
+  for (Index c = 0; c < mesh.n_cells(); ++c) area += mesh.cell_volume(c);
+  t.quasi_static = displacement / std::sqrt(area / static_cast<Real>(mesh.n_cells()));
+  t.suppress_quasi_static = true;
+  return t;
 }
 
 IdaOptions with_state_tolerances(IdaOptions ida, const SwitchSystem& system,

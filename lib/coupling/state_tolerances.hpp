@@ -25,6 +25,8 @@
 
 namespace rfmems {
 
+struct SwitchScene;
+
 struct StateTolerances {
   Real displacement = 0;   // d [m]; 0: off (IdaOptions::atol on every unknown)
   Real velocity_rate = 0;  // [1/s]; 0: IdaOptions::atol on the velocities
@@ -37,6 +39,13 @@ struct StateTolerances {
 // The per-component atols for a system with these kinds (unset scales: scalar_atol).
 std::vector<Real> absolute_tolerances(const std::vector<StateKind>& kinds,
                                       const StateTolerances& tolerances, Real scalar_atol);
+
+// The scales above for a scene, from d = `displacement` [m] and the velocity rate [1/s]: film
+// pressures d p_a / g0 (none without a film), rotations d over the mean cell size of the
+// structure's mesh, suppressed from the error test (the driver's solver.error_weights:
+// per_kind and bench_pullin_work_error build theirs here).
+StateTolerances per_kind_tolerances(const SwitchScene& scene, Real displacement,
+                                    Real velocity_rate);
 
 // `ida` with the state tolerances installed (unchanged if they are off, or the system does not
 // classify its unknowns, or in fixed-step mode).

@@ -5,6 +5,7 @@
 // scales d, d * rate, d * p_a / g0.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include "coupling/state_tolerances.hpp"
@@ -99,4 +100,30 @@ TEST(StateTolerances, OffOrFixedStepLeavesTheOptionsAlone) {
   IdaOptions fixed;
   fixed.fixed_step = 1e-8;
   EXPECT_TRUE(with_state_tolerances(fixed, *system, t).atols.empty());
+}
+
+// The scales of a scene (per_kind_tolerances): d on w, d x rate on v, the isothermal film's
+// d p_a / g0 on p, and d over the mean cell size on the suppressed rotations; on the default
+// 400 x 40 um plate of 40 x 4 cells and on a 20 x 8 mesh of it (cells 20 x 5 um: the mean
+// size is sqrt(100 um^2)).
+TEST(StateTolerances, PerKindScalesOfAScene) {
+  const std::string path = std::string(RFMEMS_SOURCE_DIR) + "/cases/switch_plate/case.yaml";
+  struct Variant {
+    std::string gas, cells;
+    Real cell_size;
+  };
+  for (const Variant& v : {Variant{"reynolds", "[40, 4]", 10e-6}, Variant{"none", "[40, 4]", 10e-6},
+                           Variant{"reynolds", "[20, 8]", std::sqrt(20e-6 * 5e-6)}}) {
+    const CaseFile cf = CaseFile::load(path, {"gas.model=" + v.gas, "mesh.cells=" + v.cells});
+    SwitchScene scene = build_switch_scene(
+        cf.root(), std::filesystem::path(path).parent_path().string(), AnalysisType::Transient);
+    const Real d = 3e-9, rate = 8e5;
+    const StateTolerances t = per_kind_tolerances(scene, d, rate);
+    EXPECT_DOUBLE_EQ(t.displacement, d) << v.gas << v.cells;
+    EXPECT_DOUBLE_EQ(t.velocity_rate, rate) << v.gas << v.cells;
+    EXPECT_NEAR(t.quasi_static, d / v.cell_size, 1e-12 * d / v.cell_size) << v.gas << v.cells;
+    EXPECT_TRUE(t.suppress_quasi_static);
+    // 1 atm over the 3.75 um gap; no film, no pressure unknowns to weigh.
+    EXPECT_NEAR(t.pressure, v.gas == "none" ? 0.0 : d * 101325.0 / 3.75e-6, 1e-9) << v.gas;
+  }
 }
