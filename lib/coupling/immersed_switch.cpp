@@ -234,8 +234,9 @@ void ImmersedSwitch::set_electrostatics_lu(LuReuse reuse) {
   kernel_->electrostatics.set_lu_reuse(reuse);
 }
 
-void ImmersedSwitch::distribute_electrostatics(const Communicator& comm) {
-  kernel_->electrostatics.distribute(comm);
+void ImmersedSwitch::distribute_electrostatics(const Communicator& comm,
+                                               const DistributedLinearOptions& options) {
+  kernel_->electrostatics.distribute(comm, options);
 }
 
 bool ImmersedSwitch::electrostatics_distributed() const {

@@ -152,7 +152,8 @@ class ImmersedSwitch {
   // The field solved over comm's ranks (ImmersedElectrostatics::distribute; every rank of comm
   // then evaluates every load together, as under mpirun with the ESBGK gas); the serial
   // communicator gives back the KLU path (the default).
-  void distribute_electrostatics(const Communicator& comm);
+  void distribute_electrostatics(const Communicator& comm,
+                                 const DistributedLinearOptions& options = {});
   bool electrostatics_distributed() const;
   // The last evaluation's marking and potential (for output).
   std::span<const Real> potential() const;
