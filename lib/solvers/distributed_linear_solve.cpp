@@ -87,10 +87,15 @@ struct DistributedLinearSolver::Impl {
         schwarz(preconditioner_of(system, o.overlap) ==
                 DistributedLinearization::Preconditioner::RestrictedAdditiveSchwarz),
         x(sundials::make_parallel_vector(comm, a.n_owned, ctx.get())),
-        b(sundials::make_parallel_vector(comm, a.n_owned, ctx.get())),
-        gmres(SUNLinSol_SPGMR(x.get(), SUN_PREC_RIGHT, o.krylov_dimension, ctx.get())) {
+        b(sundials::make_parallel_vector(comm, a.n_owned, ctx.get())) {
+    // The fused reductions (one MPI_Allreduce for all of classical Gram-Schmidt's dot
+    // products) on the vectors SPGMR clones from x; without them N_VDotProdMulti loops.
+    if (N_VGetVectorID(x.get()) == SUNDIALS_NVEC_PARALLEL)
+      for (N_Vector v : {x.get(), b.get()}) N_VEnableFusedOps_Parallel(v, SUNTRUE);
+    gmres.reset(SUNLinSol_SPGMR(x.get(), SUN_PREC_RIGHT, o.krylov_dimension, ctx.get()));
     if (!gmres) throw SolverError("SUNLinSol_SPGMR failed");
-    SUNLinSol_SPGMRSetGSType(gmres.get(), SUN_MODIFIED_GS);
+    SUNLinSol_SPGMRSetGSType(gmres.get(),
+                             o.classical_gram_schmidt ? SUN_CLASSICAL_GS : SUN_MODIFIED_GS);
     SUNLinSol_SPGMRSetMaxRestarts(gmres.get(), o.max_restarts);
     if (SUNLinSolSetATimes(gmres.get(), this, times) != 0 ||
         SUNLinSolSetPreconditioner(gmres.get(), this, nullptr, precondition) != 0 ||

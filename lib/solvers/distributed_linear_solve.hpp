@@ -38,6 +38,9 @@ struct DistributedLinearOptions {
   int krylov_dimension = 100;
   int max_restarts = 20;
   bool overlap = true;  // restricted additive Schwarz where the matrix has an overlap
+  // Classical Gram-Schmidt (one global reduction per iteration, N_VDotProdMulti) rather than
+  // modified (one per basis vector: k reductions at iteration k).
+  bool classical_gram_schmidt = true;
 };
 
 struct DistributedLinearStats {
