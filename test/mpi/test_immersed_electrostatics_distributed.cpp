@@ -24,6 +24,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "../support/bending_beam_surface.hpp"
 #include "../support/cantilever_switch_scene.hpp"
 #include "ibm/cell_marking.hpp"
 #include "ibm/ib_interpolation.hpp"
@@ -62,13 +63,9 @@ TEST(ImmersedElectrostaticsDistributed, BendingBeamGivesTheSerialPotentialCharge
   ImmersedElectrostatics serial(mesh, grounded_bottom());
   ImmersedElectrostatics parallel(mesh, grounded_bottom());
   parallel.distribute(world);
-  Real d = 0, worst_potential = 0, worst_charge = 0, worst_force = 0, spread = 0;
+  Real worst_potential = 0, worst_charge = 0, worst_force = 0, spread = 0;
   for (int step = 0; step < 40; ++step) {
-    d += (step % 4 == 3 ? 20e-9 : 2e-9);
-    std::vector<Vec3> x = rest.vertices();
-    for (Vec3& p : x) p.y() -= d * std::pow(std::max(p.x(), 0.0) / L, 2);
-    ImmersedSurface beam = rest;
-    beam.set_vertices(std::move(x));
+    const ImmersedSurface beam = test::bent_down(rest, test::bending_deflection(step), L);
     const CellMarking m = marker.mark(beam);
     const IbInterpolation ib(mesh, m, beam);
     serial.solve(m, ib, V);
