@@ -53,9 +53,10 @@ namespace {
 using namespace rfmems;
 
 // The immersed-boundary switch (an `immersed` block: coupling/immersed_switch_study.hpp).
-// With gas: esbgk every rank of mpirun runs it: the gas is distributed over the ranks
-// (ImmersedEsbgkSettings::comm), the rest (marking, fits, electrostatics, structure) is
-// computed redundantly on every rank from the same data. The root writes the result; the
+// With gas: esbgk or immersed.electrostatics_distributed every rank of mpirun runs it: the gas
+// and (with the key) the field are distributed over the ranks (ImmersedEsbgkSettings::comm,
+// ImmersedSwitch::distribute_electrostatics), the rest (marking, fits, structure) is computed
+// redundantly on every rank from the same data. The root writes the result; the
 // others write to a scratch file of their own that is never finished (deleted on exit).
 int run_immersed(const DriverCase& run_case, const DriverOptions& options) {
   const CaseFile& case_file = run_case.file;
@@ -133,7 +134,9 @@ int run(const DriverOptions& options) {
   // distributed); everything else on the root while the other ranks wait.
   const Communicator world = Communicator::world();
   if (root.has("immersed")) {
-    const bool distributed = root.child_or_empty("gas").get_string("model", "none") == "esbgk";
+    const bool distributed =
+        root.child_or_empty("gas").get_string("model", "none") == "esbgk" ||
+        root.child("immersed").get_bool("electrostatics_distributed", false);
     if (!world.is_root() && !distributed) return 0;
     return run_immersed(run_case, options);
   }

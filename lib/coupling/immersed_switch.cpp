@@ -234,6 +234,15 @@ void ImmersedSwitch::set_electrostatics_lu(LuReuse reuse) {
   kernel_->electrostatics.set_lu_reuse(reuse);
 }
 
+void ImmersedSwitch::distribute_electrostatics(const Communicator& comm,
+                                               const DistributedLinearOptions& options) {
+  kernel_->electrostatics.distribute(comm, options);
+}
+
+bool ImmersedSwitch::electrostatics_distributed() const {
+  return kernel_->electrostatics.distributed();
+}
+
 ImmersedSurface ImmersedSwitch::moved_surface(std::span<const Real> u) const {
   const std::vector<Mat3> gradients = beam_.cell_gradients(0.0, u);
   std::vector<Vec3> vertices = rest_surface_.vertices();
@@ -305,9 +314,11 @@ ImmersedLoad ImmersedSwitch::electrostatic_load(std::span<const Real> u, Real vo
   }
   {
     ScopedCpuTimer t{times_.electrostatics};
-    const long analyses = kernel_->electrostatics.analyses();
-    kernel_->electrostatics.solve(marking, *ib, voltage);
-    times_.electrostatic_analyses += kernel_->electrostatics.analyses() - analyses;
+    ImmersedElectrostatics& field = kernel_->electrostatics;
+    const long analyses = field.analyses(), iterations = field.krylov_iterations();
+    field.solve(marking, *ib, voltage);
+    times_.electrostatic_analyses += field.analyses() - analyses;
+    times_.electrostatic_krylov_iterations += field.krylov_iterations() - iterations;
   }
   ImmersedLoad load;
   {

@@ -64,6 +64,7 @@ struct ImmersedPhysicsTimes {
   double structure = 0;
   long load_evaluations = 0, gas_steps = 0, structure_steps = 0;
   long electrostatic_analyses = 0;  // solves on a new pattern (the rest refactor the kept LU)
+  long electrostatic_krylov_iterations = 0;  // distributed field: GMRES iterations
   // Strong coupling: iterations over all steps (one IBM evaluation each), the most in a step,
   // and the steps left at strong_max_iterations unconverged.
   long coupling_iterations = 0, unconverged_steps = 0;
@@ -148,6 +149,12 @@ class ImmersedSwitch {
   void reset_times() { times_ = {}; }
   // The electrostatic LU: kept between evaluations while its pattern holds (default) or fresh.
   void set_electrostatics_lu(LuReuse reuse);
+  // The field solved over comm's ranks (ImmersedElectrostatics::distribute; every rank of comm
+  // then evaluates every load together, as under mpirun with the ESBGK gas); the serial
+  // communicator gives back the KLU path (the default).
+  void distribute_electrostatics(const Communicator& comm,
+                                 const DistributedLinearOptions& options = {});
+  bool electrostatics_distributed() const;
   // The last evaluation's marking and potential (for output).
   std::span<const Real> potential() const;
 

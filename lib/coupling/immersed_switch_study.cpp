@@ -119,6 +119,8 @@ ImmersedSwitchCase read_immersed_switch_case(const CaseNode& root, const std::st
   const CasePointFinder finder(mesh);
   const Index control_cell = finder.find(im, "control", "the control point").second;
   c.scene = std::make_unique<ImmersedSwitch>(*c.beam->op, g, control_cell);
+  if (im.get_bool("electrostatics_distributed", false))
+    c.scene->distribute_electrostatics(Communicator::world());
 
   const CaseNode pi = root.child("pull_in");
   c.mode = pi.get_choice("mode", {"dynamic", "transient", "static", "quasi_static"});
@@ -209,6 +211,7 @@ Json times_json(const ImmersedPhysicsTimes& t) {
           {"structure_s", t.structure},
           {"load_evaluations", t.load_evaluations},
           {"electrostatic_analyses", t.electrostatic_analyses},
+          {"electrostatic_krylov_iterations", t.electrostatic_krylov_iterations},
           {"coupling_iterations", t.coupling_iterations},
           {"max_coupling_iterations", t.max_coupling_iterations},
           {"unconverged_coupling_steps", t.unconverged_steps},

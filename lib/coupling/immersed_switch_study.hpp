@@ -12,6 +12,9 @@
 //     anchor_extension: 0.5 um        # the anchored face pushed into the wall (default one
 //                                     # background cell)
 //     control: [45 um, 1.5 um]        # the point whose deflection is reported (the tip)
+//     electrostatics_distributed: false  # under mpirun: the field solved over the ranks
+//                                     # (GMRES + additive Schwarz KLU; every rank runs the
+//                                     # switch), else redundantly by KLU on every rank
 //   pull_in:
 //     mode: dynamic                   # dynamic | transient | static | quasi_static
 //     contact_gap: 0.3 um             # touch-down gap (default 1.5 background cell heights:

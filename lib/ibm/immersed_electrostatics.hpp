@@ -25,6 +25,18 @@
 // total charge, and the Maxwell force on the conductor per IB face, t = eps E_n^2 / 2 along the
 // normal out of the body (the conductor is pulled into the field), ready for ForceTransfer.
 // Reuses PotentialBoundary and the permittivity of lib/physics/electrostatics.
+//
+// Under MPI (distribute(comm), issue 8): the background is partitioned once, at the first
+// solve's marking (background_partition.hpp, as the gas's); every rank marks and fits from the
+// same global data (the caller's), assembles the rows of the FLUID cells it owns (global
+// columns: the fits reach FLUID cells a few rings away, those are ghosts) and the ghost rows
+// truncated to its columns (the overlap), and one GMRES solve with restricted additive
+// Schwarz (KLU on the overlap, refactored while the pattern holds) gives the owned potential
+// (solvers/distributed_linear_solve.hpp), to ||b - A phi||_2 <= 1e-13 ||b||_2 by default.
+// The owned parts are then summed into the whole potential on every rank, and each rank
+// computes every IB face's charge from it: the outputs are the same vectors on every rank, so
+// the force transfer and the structure stay redundant. The initial guess is the last
+// potential (a moving beam changes it little between solves).
 #pragma once
 #include <map>
 #include <memory>
@@ -37,7 +49,9 @@
 #include "ibm/cell_marking.hpp"
 #include "ibm/ib_interpolation.hpp"
 #include "mesh/mesh.hpp"
+#include "parallel/communicator.hpp"
 #include "physics/electrostatics/electrostatic_boundary.hpp"
+#include "solvers/distributed_linear_solve.hpp"
 
 namespace rfmems {
 
@@ -79,8 +93,27 @@ class ImmersedElectrostatics {
   // Drops the kept LU; later solves follow `reuse`.
   void set_lu_reuse(LuReuse reuse);
 
+  // The ranks the solve is distributed over (collective from then on: every rank of comm
+  // calls solve together, with the same marking and fits); the serial communicator (the
+  // default) keeps the KLU path. Drops what the previous path kept.
+  void distribute(const Communicator& comm, const DistributedLinearOptions& options = {});
+  bool distributed() const { return !comm_.is_serial(); }
+  // Distributed: the last solve's GMRES statistics and the iterations of all solves.
+  const DistributedLinearStats& last_krylov() const { return last_krylov_; }
+  long krylov_iterations() const { return krylov_iterations_; }
+
  private:
+  struct Distributed;
   bool uses_gradient(const IbInterpolation& ib, Index k) const;
+  // Row of FLUID cell P: emit(background cell, coefficient) per matrix entry, in the serial
+  // assembly order; returns the row's right-hand side.
+  template <class Emit>
+  Real assemble_row(Index P, const CellMarking& marking, const IbInterpolation& ib,
+                    std::span<const Index> ib_of_face, Real body_potential, Emit&& emit) const;
+  void solve_serial(const CellMarking& marking, const IbInterpolation& ib,
+                    std::span<const Index> ib_of_face, Real body_potential);
+  void solve_distributed(const CellMarking& marking, const IbInterpolation& ib,
+                         std::span<const Index> ib_of_face, Real body_potential);
   const Mesh& mesh_;
   Real permittivity_;
   IbFaceFlux ib_flux_;
@@ -92,6 +125,11 @@ class ImmersedElectrostatics {
   CsrPattern pattern_;  // of lu_
   std::unique_ptr<KluFactorization> lu_;
   long analyses_ = 0, refactorizations_ = 0;
+  Communicator comm_ = Communicator::serial();
+  DistributedLinearOptions krylov_options_;
+  std::unique_ptr<Distributed> distributed_;
+  DistributedLinearStats last_krylov_;
+  long krylov_iterations_ = 0;
 };
 
 }  // namespace rfmems

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "mesh/partition.hpp"
+#include "ibm/background_partition.hpp"
 #include "physics/gas/comet/transient_kinetic_system.hpp"
 #include "solvers/ida_integrator.hpp"
 
@@ -122,18 +122,11 @@ std::vector<Real> ImmersedKineticGas::carry_over(const FluidFaceGraph& fluid,
 }
 
 void ImmersedKineticGas::partition_background(const CellMarking& rest) {
-  const Communicator& comm = options_.comm;
-  std::vector<int> weights(background_graph_.n_cells());
-  for (std::size_t b = 0; b < weights.size(); ++b)
-    weights[b] = rest.cell[b] == CellClass::Fluid ? 16 : 1;
-  // On the root and broadcast (as distribute_mesh): one answer whatever METIS does.
-  Partition p;
-  if (comm.is_root()) p = partition_cells(background_, comm.size(), weights);
+  Partition p = partition_fluid_background(background_, rest, options_.comm);
   owner_rank_ = std::move(p.part);
-  comm.broadcast(owner_rank_);
-  partition_.ranks = comm.size();
-  partition_.edge_cut = comm.sum(comm.is_root() ? p.edge_cut : Index{0});
-  partition_.imbalance = comm.max(comm.is_root() ? p.imbalance : 0.0);
+  partition_.ranks = p.n_parts;
+  partition_.edge_cut = p.edge_cut;
+  partition_.imbalance = p.imbalance;
 }
 
 void ImmersedKineticGas::rebuild_graph(const CellMarking& marking) {

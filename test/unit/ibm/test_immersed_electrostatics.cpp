@@ -31,6 +31,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "../../support/bending_beam_surface.hpp"
 #include "../../support/convergence_order.hpp"
 #include "core/error.hpp"
 #include "ibm/cell_marking.hpp"
@@ -185,13 +186,9 @@ TEST(ImmersedElectrostatics, KeptFactorizationGivesTheFreshSolution) {
                               LuReuse::Reuse);
   ImmersedElectrostatics fresh(mesh, grounded_bottom(), kVacuumPermittivity,
                                IbFaceFlux::FitGradient, LuReuse::Fresh);
-  Real d = 0, worst_potential = 0, worst_charge = 0;
+  Real worst_potential = 0, worst_charge = 0;
   for (int step = 0; step < 40; ++step) {
-    d += (step % 4 == 3 ? 20e-9 : 2e-9);
-    std::vector<Vec3> x = rest.vertices();
-    for (Vec3& p : x) p.y() -= d * std::pow(std::max(p.x(), 0.0) / L, 2);
-    ImmersedSurface beam = rest;
-    beam.set_vertices(std::move(x));
+    const ImmersedSurface beam = test::bent_down(rest, test::bending_deflection(step), L);
     const CellMarking m = marker.mark(beam);
     const IbInterpolation ib(mesh, m, beam);
     kept.solve(m, ib, V);
