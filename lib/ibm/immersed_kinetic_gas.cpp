@@ -159,6 +159,7 @@ void ImmersedKineticGas::rebuild_graph(const CellMarking& marking) {
   }
   auto op = std::make_unique<KineticOperator>(fluid->graph, grid_, gas_, outer_);
   if (part) op->set_parallel(options_.comm, &part->exchange);
+  op->set_transport(options_.transport);
   remark_ = RemarkReport{};
   remark_.reclassified = true;
   if (has_state_) {
@@ -201,6 +202,7 @@ void ImmersedKineticGas::widen_band(int rings) {
       *global_fluid_, background_graph_, marking_, owner_rank_, options_.comm, rings));
   auto op = std::make_unique<KineticOperator>(part->local.graph, grid_, gas_, outer_);
   op->set_parallel(options_.comm, &part->exchange);
+  op->set_transport(options_.transport);
   auto move = [&](std::vector<Real>& v) {
     if (v.empty()) return;
     std::vector<Real> w(part->local.graph.n_cells() * N, 0.0);
@@ -447,10 +449,7 @@ std::vector<Vec3> ImmersedKineticGas::ib_face_forces() const {
   for (Index f = g.n_interior_faces; f < g.n_faces(); ++f) {
     const Index i = fluid_->ib_face[f];
     if (i < 0) continue;
-    if (local_values_)
-      local_values_->fill(f, f_, face);
-    else
-      values_->fill(f, f_, face);
+    op_->face_values(f, f_, face);  // the leaving values as the transport scheme gives them
     const Vec3& S = g.face_area[f];
     Vec3 F = Vec3::Zero();
     for (Index k = 0; k < N; ++k) F += (grid_.w[k] * grid_.c[k].dot(S) * face[k]) * grid_.c[k];

@@ -66,7 +66,7 @@ class ExactFaces final : public ExternalFaceValues {
  public:
   ExactFaces(const FaceGraph& g, const VelocityGrid& grid, const Profile& p)
       : g_(g), grid_(grid), p_(p) {}
-  void update(std::span<const Real>) override {}
+  void update(std::span<const Real>, std::span<const Real>) override {}
   void fill(Index face, std::span<const Real>, std::span<Real> out) const override {
     for (Index k = 0; k < grid_.size(); ++k) out[k] = p_.value(grid_, k, g_.face_centroid[face]);
   }

@@ -175,7 +175,7 @@ TEST(ImmersedKineticGas, ClosedBoxWithMovingBodyConservesMass) {
     Real lowest_used = 0;
     for (Index face = 0; face < graph.n_faces(); ++face) {
       if (gas.fluid().ib_face[face] < 0) continue;
-      gas.face_values().fill(face, gas.distribution(), out);
+      gas.kinetic().face_values(face, gas.distribution(), out);
       for (Real v : out) lowest_used = std::min(lowest_used, v);
     }
     EXPECT_GE(lowest_used, 0.0) << "step " << step;
