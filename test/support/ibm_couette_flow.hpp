@@ -1,13 +1,13 @@
 // Couette flow through the immersed boundary against the body-fitted solver on the same rows
-// (the helpers of test/regression/test_ibm_couette.cpp and test/study/test_ibm_couette_study.cpp;
-// the set-up is described there).
+// (the helpers of test/regression/test_ibm_couette.cpp, test_ibm_couette_second_order.cpp and
+// test/study/test_ibm_couette_study.cpp; the set-up is described there), with first- or
+// second-order transport in both.
 #pragma once
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 
 #include "ibm/immersed_kinetic_gas.hpp"
 #include "mesh/structured_mesh.hpp"
@@ -33,11 +33,6 @@ inline VelocityGrid velocities(const KineticGas& gas, int nv) {
 inline SequentialOptions solver_options() {
   SequentialOptions o;
   o.tolerance = 1e-8;
-  if (std::getenv("COUETTE_MONITOR"))
-    o.monitor = [](int i, Real r) {
-      if (i % 200 == 0) std::printf("    sweep %d: %.3e\n", i, r);
-      return true;
-    };
   return o;
 }
 
@@ -175,8 +170,8 @@ inline Comparison compare(Real kn, int m, int nv,
   std::printf(
       "%s, Kn = %.2f, m = %2d: max |du| / U = %.3e, shear IBM %.5e vs body-fitted %.5e N/m "
       "(%+.3e), IBM balance %.1e; sweeps IBM %d, body-fitted %d\n",
-      transport_order_name(order), kn, m, c.profile, ib.plate_shear, bf.plate_shear, c.shear, c.balance, ib.iterations,
-      bf.iterations);
+      transport_order_name(order), kn, m, c.profile, ib.plate_shear, bf.plate_shear, c.shear,
+      c.balance, ib.iterations, bf.iterations);
   return c;
 }
 
