@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/process_cpu_clock.hpp"
 #include "ibm/immersed_kinetic_gas.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/gas/kinetic/sequential_solver.hpp"
@@ -24,6 +25,7 @@ struct Profile {
   Real fixed_wall_shear = 0;  // on the wall at y = 0
   int iterations = 0;
   bool converged = false;
+  double cpu = 0;  // CPU seconds of the run (set-up and solve)
 };
 
 inline VelocityGrid velocities(const KineticGas& gas, int nv) {
@@ -44,6 +46,7 @@ inline TransportScheme transport(TransportOrder order) {
 
 inline Profile body_fitted(Real kn, int m, int nv,
                            TransportOrder order = TransportOrder::FirstOrder) {
+  const double t0 = process_cpu_seconds();
   const Real h = H / (m + theta), W = columns * h;
   BoxSpec spec;
   spec.upper = Vec3(W, m + 1, 0);
@@ -72,11 +75,13 @@ inline Profile body_fitted(Real kn, int m, int nv,
   p.fixed_wall_shear = op.wall_force("bottom", f).z();
   p.iterations = r.iterations;
   p.converged = r.converged;
+  p.cpu = process_cpu_seconds() - t0;
   return p;
 }
 
 inline Profile immersed(Real kn, int m, int nv,
                         TransportOrder order = TransportOrder::FirstOrder) {
+  const double t0 = process_cpu_seconds();
   const Real h = H / (m + theta), W = columns * h;
   BoxSpec spec;
   spec.upper = Vec3(W, (m + 2) * h, 0);
@@ -117,6 +122,7 @@ inline Profile immersed(Real kn, int m, int nv,
   p.fixed_wall_shear = op.wall_force("bottom", ibm.distribution()).z();
   p.iterations = r.iterations;
   p.converged = r.converged;
+  p.cpu = process_cpu_seconds() - t0;
   return p;
 }
 
@@ -126,6 +132,7 @@ struct Comparison {
   Real ib_slip_error = 0, bf_slip_error = 0;  // max |u - u_slip| / U over rows 0..m-1
   Real tau = 0;                               // slip theory's shear force, N/m
   std::vector<Real> ib_at, bf_at;             // u at y / H = 0.1, ..., 0.9
+  Profile ib, bf;
 };
 
 // Linear interpolation of cell-centre values (rows at (i + 1/2) h) at y.
@@ -144,6 +151,8 @@ inline Comparison compare(Real kn, int m, int nv,
   EXPECT_TRUE(bf.converged);
   EXPECT_TRUE(ib.converged);
   Comparison c;
+  c.ib = ib;
+  c.bf = bf;
   for (int i = 0; i < m; ++i) c.profile = std::max(c.profile, std::abs(ib.u[i] - bf.u[i]) / U);
   // Body-fitted: one column of width W; IBM: `columns` columns, the same width W.
   c.shear = ib.plate_shear / bf.plate_shear - 1;
