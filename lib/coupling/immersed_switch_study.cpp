@@ -11,6 +11,7 @@
 #include "coupling/immersed_reynolds_film.hpp"
 #include "coupling/scene_validity.hpp"
 #include "io/probes.hpp"
+#include "physics/gas/kinetic/kinetic_case.hpp"
 
 namespace rfmems {
 
@@ -69,6 +70,7 @@ std::unique_ptr<ImmersedGasModel> make_case_gas(const CaseNode& root, const Imme
   e.options.predictor = gas.get_bool("predictor", true);
   e.options.max_step_sweeps =
       static_cast<int>(gas.get_int("max_step_sweeps", 2000, Range::closed(1, 100000)));
+  e.options.transport = read_transport_scheme(gas);
   if (model == "none") return nullptr;
   if (model == "esbgk")
     return std::make_unique<ImmersedEsbgkGas>(scene.background(), e, geometry.background_lower.y());

@@ -47,6 +47,9 @@
 //     smoother: point                 # point (COMET cell solve) | downwind | both
 //     predictor: true                 # start each step from the extrapolated f
 //     max_step_sweeps: 2000
+//     transport: first_order          # | second_order, with limiter, limiter_k and
+//                                     # boundary_reconstruction as for rfmems-gas's solver
+//                                     # (kinetic_case.hpp; immersed_kinetic_gas.hpp)
 //   solver: {rtol: 1e-4, atol: 1.5e-11 m, max_order: 2}
 #pragma once
 #include <memory>

@@ -87,7 +87,7 @@ IbKineticFaceValues::Stencils IbKineticFaceValues::compact(const IbInterpolation
   return s;
 }
 
-void IbKineticFaceValues::update(std::span<const Real> f) {
+void IbKineticFaceValues::update(std::span<const Real> f, std::span<const Real> owner_values) {
   const Index N = grid_.size(), ns = body_.n_segments();
   // (i) into-solid values at the segment midpoints, from FLUID cells (all ordinates: the
   // out-of-solid ones are overwritten in (ii) and never read).
@@ -198,7 +198,7 @@ void IbKineticFaceValues::update(std::span<const Real> f) {
     if (!options_.balance_mass_flux) continue;
     const Index face = graph_face_of_ib_[i];
     const Vec3& S = graph.face_area[face];
-    const Real* fo = f.data() + graph.face_owner[face] * N;
+    const Real* fo = owner_values.data() + (face - graph.n_interior_faces) * N;  // leaving
     const Real* e_i = entering_.data() + i * N;
     Real out_flux = 0, in_flux = 0;
     for (Index k = 0; k < N; ++k) {
@@ -213,12 +213,12 @@ void IbKineticFaceValues::update(std::span<const Real> f) {
   }
 }
 
-void IbKineticFaceValues::fill(Index face, std::span<const Real> f, std::span<Real> out) const {
+void IbKineticFaceValues::fill(Index face, std::span<const Real> owner_values,
+                               std::span<Real> out) const {
   const Index N = grid_.size();
   const Index i = fluid_.ib_face[face];
-  const FaceGraph& graph = fluid_.graph;
-  const Vec3& S = graph.face_area[face];
-  const Real* fo = f.data() + graph.face_owner[face] * N;
+  const Vec3& S = fluid_.graph.face_area[face];
+  const Real* fo = owner_values.data();
   const Real* e_i = entering_.data() + i * N;
   const Real a = factor_[i];
   for (Index k = 0; k < N; ++k) out[k] = grid_.c[k].dot(S) >= 0 ? fo[k] : a * e_i[k];

@@ -15,13 +15,16 @@
 //         wall_point_admissible(j) = c_k . n_j > 0 and the foundation's one-sided rule (kappa,
 //         Lebesgue constant; widen, then lower the degree). Ordinates whose admissible-segment
 //         sets agree share one interpolation (a rectangle: 4 groups, one per quadrant of
-//         (c_x, c_y)). The ordinates leaving the fluid take the FLUID cell's value (upwind).
+//         (c_x, c_y)). The ordinates leaving the fluid take the FLUID cell's value at the face
+//         (upwind): the owner's values the operator hands over (external_face_values.hpp),
+//         its cell values with first-order transport, its limited linear reconstruction with
+//         second order (immersed_kinetic_gas.hpp "Second-order transport").
 //
 // One change to the thesis (documented in docs/ibm.md): step (iii) is an interpolation, so the
 // IB face's net mass flux is not the wall's. With `balance_mass_flux` (default) the entering values
 // of face i are scaled by one factor a_i so that the face carries the mass flux of an
 // impermeable wall moving at u_i (the ForceTransfer adjoint's velocity at the face):
-//   sum_k w_k (c_k . S_i) f_ik = rho_ref u_i . S_i,
+//   sum_k w_k (c_k . S_i) f_ik = rho_ref u_i . S_i   (the leaving f_ik: the owner's values),
 // rho_ref one reference density (the gas's mean at the last set_body / initialize). One rho_ref
 // for all faces makes the IB faces' net mass flow rho_ref sum_i u_i . S_i, which is zero to
 // round-off for a rigid motion (the IB faces close around the body and the adjoint reproduces
@@ -90,8 +93,8 @@ class IbKineticFaceValues : public ExternalFaceValues {
                       const KineticGas& gas, Real reference_density,
                       const IbKineticOptions& options);
 
-  void update(std::span<const Real> f) override;
-  void fill(Index face, std::span<const Real> f, std::span<Real> out) const override;
+  void update(std::span<const Real> f, std::span<const Real> owner_values) override;
+  void fill(Index face, std::span<const Real> owner_values, std::span<Real> out) const override;
 
   void set_reference_density(Real rho) { reference_density_ = rho; }
   Real reference_density() const { return reference_density_; }

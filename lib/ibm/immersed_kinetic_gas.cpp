@@ -1,25 +1,14 @@
 #include "ibm/immersed_kinetic_gas.hpp"
 
-#include <time.h>
-
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/process_cpu_clock.hpp"
 #include "ibm/background_partition.hpp"
 #include "physics/gas/comet/transient_kinetic_system.hpp"
 #include "solvers/ida_integrator.hpp"
 
 namespace rfmems {
-namespace {
-
-double cpu_seconds() {
-  timespec ts;
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
-
-}  // namespace
-
 ImmersedKineticGas::ImmersedKineticGas(const Mesh& background, std::vector<KineticBoundary> outer,
                                        VelocityGrid grid, KineticGas gas,
                                        ImmersedGasOptions options)
@@ -152,6 +141,7 @@ void ImmersedKineticGas::rebuild_graph(const CellMarking& marking) {
   }
   auto op = std::make_unique<KineticOperator>(fluid->graph, grid_, gas_, outer_);
   if (part) op->set_parallel(options_.comm, &part->exchange);
+  op->set_transport(options_.transport);
   remark_ = RemarkReport{};
   remark_.reclassified = true;
   if (has_state_) {
@@ -194,6 +184,7 @@ void ImmersedKineticGas::widen_band(int rings) {
       *global_fluid_, background_graph_, marking_, owner_rank_, options_.comm, rings));
   auto op = std::make_unique<KineticOperator>(part->local.graph, grid_, gas_, outer_);
   op->set_parallel(options_.comm, &part->exchange);
+  op->set_transport(options_.transport);
   auto move = [&](std::vector<Real>& v) {
     if (v.empty()) return;
     std::vector<Real> w(part->local.graph.n_cells() * N, 0.0);
@@ -218,7 +209,7 @@ void ImmersedKineticGas::widen_band(int rings) {
 void ImmersedKineticGas::set_body(const ImmersedSurface& body, std::vector<Vec3> segment_velocity) {
   if (static_cast<Index>(segment_velocity.size()) != body.n_segments())
     throw InputError("immersed gas: one velocity per surface segment");
-  double t0 = cpu_seconds();
+  double t0 = process_cpu_seconds();
   CellMarking marking = marker_.mark(body);
   const bool reclassify = !fluid_ || marking.cell != marking_.cell;
   if (values_) op_->set_external_face_values(nullptr);
@@ -231,7 +222,7 @@ void ImmersedKineticGas::set_body(const ImmersedSurface& body, std::vector<Vec3>
   }
   // Same classes: the graph (and its IB face numbering) is unchanged, the fits are not.
   marking_ = std::move(marking);
-  double t1 = cpu_seconds();
+  double t1 = process_cpu_seconds();
   timings_.marking += t1 - t0;
 
   body_ = body;
@@ -264,7 +255,7 @@ void ImmersedKineticGas::set_body(const ImmersedSurface& body, std::vector<Vec3>
     op_->update_boundary_values(f_);
     op_->update_collision(f_);
   }
-  timings_.interpolation += cpu_seconds() - t1;
+  timings_.interpolation += process_cpu_seconds() - t1;
 }
 
 void ImmersedKineticGas::initialize(const GasState& state) {
@@ -279,10 +270,10 @@ void ImmersedKineticGas::initialize(const GasState& state) {
 }
 
 KineticSolveResult ImmersedKineticGas::solve_steady(const SequentialOptions& options) {
-  const double t0 = cpu_seconds();
+  const double t0 = process_cpu_seconds();
   KineticSolveResult r = solve_sequential(*op_, f_, options);
   op_->update_boundary_values(f_);
-  timings_.gas += cpu_seconds() - t0;
+  timings_.gas += process_cpu_seconds() - t0;
   return r;
 }
 
@@ -295,7 +286,7 @@ void ImmersedKineticGas::sweep(Real b, std::span<const Real> h) {
 GasStepReport ImmersedKineticGas::advance(Real dt) {
   if (!(dt > 0)) throw InputError("immersed gas: time step must be positive");
   if (options_.stepper == GasStepper::Ida) return advance_ida(dt);
-  const double t0 = cpu_seconds();
+  const double t0 = process_cpu_seconds();
   const FaceGraph& g = fluid_->graph;
   const Index N = grid_.size(), nc = g.n_owned_cells;  // the rows with equations
   GasStepReport rep;
@@ -363,7 +354,7 @@ GasStepReport ImmersedKineticGas::advance(Real dt) {
   rep.mass_after = op_->total_mass(f_);
   for (int p = 0; p < static_cast<int>(g.patch_names.size()); ++p)
     rep.boundary_mass_flow += op_->boundary_mass_flow(p, f_);
-  timings_.gas += cpu_seconds() - t0;
+  timings_.gas += process_cpu_seconds() - t0;
   return rep;
 }
 
@@ -373,7 +364,7 @@ GasStepReport ImmersedKineticGas::advance(Real dt) {
 // it makes the Newton test vacuous (tolerances 1e10), i.e. an explicit predictor step.
 GasStepReport ImmersedKineticGas::advance_ida(Real dt) {
   if (distributed()) throw InputError("immersed gas: the IDA stepper runs serially only");
-  const double t0 = cpu_seconds();
+  const double t0 = process_cpu_seconds();
   const FaceGraph& g = fluid_->graph;
   const Index N = grid_.size(), nc = g.n_cells();
   GasStepReport rep;
@@ -406,7 +397,7 @@ GasStepReport ImmersedKineticGas::advance_ida(Real dt) {
   rep.mass_after = op_->total_mass(f_);
   for (int p = 0; p < static_cast<int>(g.patch_names.size()); ++p)
     rep.boundary_mass_flow += op_->boundary_mass_flow(p, f_);
-  timings_.gas += cpu_seconds() - t0;
+  timings_.gas += process_cpu_seconds() - t0;
   return rep;
 }
 
@@ -440,10 +431,7 @@ std::vector<Vec3> ImmersedKineticGas::ib_face_forces() const {
   for (Index f = g.n_interior_faces; f < g.n_faces(); ++f) {
     const Index i = fluid_->ib_face[f];
     if (i < 0) continue;
-    if (local_values_)
-      local_values_->fill(f, f_, face);
-    else
-      values_->fill(f, f_, face);
+    op_->face_values(f, f_, face);  // the leaving values as the transport scheme gives them
     const Vec3& S = g.face_area[f];
     Vec3 F = Vec3::Zero();
     for (Index k = 0; k < N; ++k) F += (grid_.w[k] * grid_.c[k].dot(S) * face[k]) * grid_.c[k];

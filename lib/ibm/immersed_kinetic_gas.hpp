@@ -53,6 +53,35 @@
 // of the fits + 1 and is widened ring by ring while a fit reads beyond it). The carry-over of a
 // re-marking runs per owned cell, with a ghost exchange between its filling passes, so it fills the
 // cells the serial one fills, in the same passes. GasStepper::Ida is serial only.
+//
+// Second-order transport (options.transport, issue 8; second_order_transport.hpp): the FLUID
+// graph's KineticOperator gets the body-fitted gas's scheme unchanged (LS gradient, limiter,
+// deferred correction). Near the body:
+//   - the gradient stencil of a cell is its FLUID face neighbours only; the IB faces are
+//     boundary faces of the FLUID graph and are not stencil points (their leaving half is the
+//     cell's own reconstruction, circular; their entering half is a fit of the same FLUID
+//     cells and the wall values, lagged). A one-sided stencil (a cell beside an IB face has
+//     neighbours on the other three sides) is still exact for linear data; a stencil that does
+//     not span the plane (a cell with one FLUID neighbour, or two in line) gets no gradient:
+//     first order in that cell (LinearReconstruction's rank test).
+//   - the limiter's bounds are min / max over the cell and its FLUID neighbours, applied at
+//     every face including the IB faces, as at a body-fitted wall.
+//   - the ordinates leaving the fluid through an IB face take the owner's limited
+//     reconstruction at the IB face (not its cell value); the entering ones come from the
+//     thesis's three steps as before. The mass-flux factor a_i is computed with the same
+//     leaving values, so the face carries the wall's mass flux exactly and the closed-box
+//     conservation is that of first order; the residual's correction includes the IB faces'
+//     outgoing (c.S)^+ (f_face - f_c) so that the residual carries that same flux.
+// Time: the correction D(f) is refreshed from the iterate at every residual evaluation of a
+// step's iteration (advance() evaluates the full residual before each sweep and stops on it),
+// so a converged step solves alpha V (f - h) / dt + r_2(f) = 0 with the second-order r_2 at
+// f^(n+1): BDF2 / backward Euler keep their order and consistency; the lag is between sweeps
+// only, not between steps. GasStepper::Ida sees the same r_2 in every residual (the
+// preconditioner stays first order).
+// MPI: the slopes of ghost cells come from their owners (KineticOperator exchanges them after
+// each reconstruction; the transport ghosts are the face neighbours the upwind faces need), the
+// limiter's length scale is the global mesh's, and the IB-face owners are owned cells, so the
+// reconstruction and the correction are the serial ones.
 #pragma once
 #include <memory>
 #include <optional>
@@ -108,6 +137,8 @@ struct ImmersedGasOptions {
   Communicator comm = Communicator::serial();
   // The IB band's first depth in rings (0: the fits' widest ring cap + 1); widened as needed.
   int band_rings = 0;
+  // Face values of the transport (default first order; see "Second-order transport" above).
+  TransportScheme transport;
 };
 
 struct ImmersedGasTimings {  // CPU seconds of the process, accumulated

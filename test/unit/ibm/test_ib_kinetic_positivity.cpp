@@ -64,13 +64,18 @@ TEST(IbKineticPositivity, ClipKeepsEveryFaceMassFlux) {
     o.balance_mass_flux = balance;
     IbKineticFaceValues values(mesh, fluid, marking, body, segment_velocity, face_velocity, grid,
                                gas, rho, o);
-    values.update(f);
+    // First-order transport: the owners' values at the faces are their cell values.
+    std::vector<Real> owner((g.n_faces() - g.n_interior_faces) * N);
+    for (Index face = g.n_interior_faces; face < g.n_faces(); ++face)
+      std::copy_n(f.data() + g.face_owner[face] * N, N,
+                  owner.data() + (face - g.n_interior_faces) * N);
+    values.update(f, owner);
     Faces out;
     out.report = values.positivity();
     std::vector<Real> v(N);
     for (Index face = 0; face < g.n_faces(); ++face) {
       if (fluid.ib_face[face] < 0) continue;
-      values.fill(face, f, v);
+      values.fill(face, std::span<const Real>(f).subspan(g.face_owner[face] * N, N), v);
       Real flux = 0;
       bool all_negative = true;
       for (Index k = 0; k < N; ++k) {

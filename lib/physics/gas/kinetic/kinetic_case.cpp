@@ -41,15 +41,21 @@ KineticSolverSettings read_kinetic_solver_settings(const CaseNode& node) {
   s.tolerance = node.get_real("tolerance", 1e-6, Range::open(0, 1));
   s.max_iterations =
       static_cast<int>(node.get_int("max_iterations", 200000, Range::closed(1, 1e9)));
-  s.transport.order = transport_order_from_name(
-      node.get_choice("transport", {"first_order", "second_order"}, "first_order"));
-  s.transport.limiter = slope_limiter_from_name(node.get_choice(
-      "limiter", {"venkatakrishnan", "barth_jespersen", "none"}, "venkatakrishnan"));
-  s.transport.venkatakrishnan_k = node.get_real("limiter_k", 1.0, Range::positive());
-  s.transport.reconstruct_boundaries =
-      node.has("boundary_reconstruction") ? node.get_bool("boundary_reconstruction") : true;
+  s.transport = read_transport_scheme(node);
   s.node = node;
   return s;
+}
+
+TransportScheme read_transport_scheme(const CaseNode& node) {
+  TransportScheme t;
+  t.order = transport_order_from_name(
+      node.get_choice("transport", {"first_order", "second_order"}, "first_order"));
+  t.limiter = slope_limiter_from_name(node.get_choice(
+      "limiter", {"venkatakrishnan", "barth_jespersen", "none"}, "venkatakrishnan"));
+  t.venkatakrishnan_k = node.get_real("limiter_k", 1.0, Range::positive());
+  t.reconstruct_boundaries =
+      node.has("boundary_reconstruction") ? node.get_bool("boundary_reconstruction") : true;
+  return t;
 }
 
 KineticScene build_kinetic_scene(const CaseNode& root, const std::string& case_dir,

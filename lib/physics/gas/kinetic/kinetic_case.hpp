@@ -81,6 +81,9 @@ KineticScene build_kinetic_scene(const CaseNode& root, const std::string& case_d
 
 // Reads `solver:` (type must be a registered solver).
 KineticSolverSettings read_kinetic_solver_settings(const CaseNode& solver);
+// The transport keys of a node (transport, limiter, limiter_k, boundary_reconstruction; above):
+// the body-fitted gas's `solver:` and the immersed switch's `gas:` block.
+TransportScheme read_transport_scheme(const CaseNode& node);
 
 // A steady solver: iterates f (the initial state on entry); monitor(iteration, ratio) may stop
 // it by returning false.

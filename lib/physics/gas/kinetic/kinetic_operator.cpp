@@ -1,5 +1,6 @@
 #include "physics/gas/kinetic/kinetic_operator.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -77,35 +78,44 @@ std::span<const Index> KineticOperator::reflection(Index face) const {
   return {reflections_.data() + off, static_cast<std::size_t>(n_ordinates())};
 }
 
-void KineticOperator::face_values(Index face, std::span<const Real> f, std::span<Real> out) const {
-  const FaceGraph& g = *graph_;
-  const int p = g.face_patch[face];
-  if (boundaries_[p].kind == KineticBoundaryKind::External) {
-    if (!external_) throw std::logic_error("kinetic operator: external patch without a source");
-    external_->fill(face, f, out);
-    return;
-  }
-  const Index owner = g.face_owner[face];
-  if (!(second_order() && transport_.reconstruct_boundaries && owner < n_owned_cells())) {
-    fill_boundary_face(boundaries_[p], g.face_area[face], cell(f, owner), grid_, reflection(face),
-                       patch_maxwellian_[p], out);
-    return;
-  }
+std::span<const Real> KineticOperator::owner_values(Index face, std::span<const Real> f,
+                                                    std::span<Real> scratch) const {
+  const Index owner = graph_->face_owner[face];
+  if (!(second_order() && transport_.reconstruct_boundaries && owner < n_owned_cells()))
+    return cell(f, owner);
   // The owner's reconstructed values at the face feed the condition (outgoing ordinates, the
-  // diffuse wall's re-emission, the reflection), from the owner's slopes at this f.
+  // diffuse wall's re-emission, the reflection, an External source), from the owner's slopes
+  // at this f.
   const Index N = n_ordinates();
   const int D = reconstruction_->dim();
-  std::vector<Real> slopes(N * D), owner_face(N);
+  std::vector<Real> slopes(N * D);
   reconstruction_->cell_slopes(owner, f, N, transport_, true, slopes);
-  const Vec3 x = g.face_centroid[face] - g.cell_centroid[owner];
+  const Vec3 x = graph_->face_centroid[face] - graph_->cell_centroid[owner];
   const std::span<const Real> fo = cell(f, owner);
   for (Index k = 0; k < N; ++k) {
     Real v = fo[k];
     for (int d = 0; d < D; ++d) v += slopes[k * D + d] * x[d];
-    owner_face[k] = v;
+    scratch[k] = v;
   }
-  fill_boundary_face(boundaries_[p], g.face_area[face], owner_face, grid_, reflection(face),
+  return scratch;
+}
+
+void KineticOperator::condition_values(Index face, std::span<const Real> owner,
+                                       std::span<Real> out) const {
+  const FaceGraph& g = *graph_;
+  const int p = g.face_patch[face];
+  if (boundaries_[p].kind == KineticBoundaryKind::External) {
+    if (!external_) throw std::logic_error("kinetic operator: external patch without a source");
+    external_->fill(face, owner, out);
+    return;
+  }
+  fill_boundary_face(boundaries_[p], g.face_area[face], owner, grid_, reflection(face),
                      patch_maxwellian_[p], out);
+}
+
+void KineticOperator::face_values(Index face, std::span<const Real> f, std::span<Real> out) const {
+  std::vector<Real> scratch(second_order() ? n_ordinates() : 0);
+  condition_values(face, owner_values(face, f, scratch), out);
 }
 
 void KineticOperator::set_transport(const TransportScheme& scheme) {
@@ -116,7 +126,7 @@ void KineticOperator::set_transport(const TransportScheme& scheme) {
     slopes_.clear();
     return;
   }
-  reconstruction_ = std::make_unique<LinearReconstruction>(*graph_);
+  reconstruction_ = std::make_unique<LinearReconstruction>(*graph_, comm_);
   correction_.assign(n_cells() * n_ordinates(), 0.0);
   slopes_.assign(n_cells() * n_ordinates() * reconstruction_->dim(), 0.0);
 }
@@ -152,13 +162,13 @@ void KineticOperator::update_transport_correction(std::span<const Real> f) {
     }
   }
   // Boundary faces with reconstruction: the incoming values (cached) already are the
-  // second-order ones; the outgoing flux gains (c.S)^+ (f_face - f_c).
+  // second-order ones; the outgoing flux gains (c.S)^+ (f_face - f_c). External faces too:
+  // their source was given the same reconstruction as the leaving values (its mass-flux
+  // balance, ib_kinetic_face_values.hpp, then holds for the flux the residual carries).
   if (!transport_.reconstruct_boundaries) return;
   for (Index face = g.n_interior_faces; face < g.n_faces(); ++face) {
     const Index o = g.face_owner[face];
-    if (o >= n_owned_cells() ||
-        boundaries_[g.face_patch[face]].kind == KineticBoundaryKind::External)
-      continue;
+    if (o >= n_owned_cells()) continue;
     const Vec3& S = g.face_area[face];
     const Vec3 xo = g.face_centroid[face] - g.cell_centroid[o];
     const Real* so = slopes_.data() + o * N * D;
@@ -178,9 +188,17 @@ void KineticOperator::update_boundary_values(Index face, std::span<const Real> f
 }
 
 void KineticOperator::update_boundary_values(std::span<const Real> f) {
-  if (external_) external_->update(f);
-  for (Index face = graph_->n_interior_faces; face < graph_->n_faces(); ++face)
-    update_boundary_values(face, f);
+  const Index N = n_ordinates(), n0 = graph_->n_interior_faces;
+  owner_values_.resize(boundary_values_.size());
+  for (Index face = n0; face < graph_->n_faces(); ++face) {
+    const std::span<Real> slot(owner_values_.data() + (face - n0) * N, N);
+    const std::span<const Real> v = owner_values(face, f, slot);
+    if (v.data() != slot.data()) std::copy(v.begin(), v.end(), slot.begin());
+  }
+  if (external_) external_->update(f, owner_values_);
+  for (Index face = n0; face < graph_->n_faces(); ++face)
+    condition_values(face, std::span<const Real>(owner_values_.data() + (face - n0) * N, N),
+                     boundary_values(face));
 }
 
 std::span<const Real> KineticOperator::boundary_values(Index face) const {
@@ -256,6 +274,7 @@ Real KineticOperator::residual_norm(std::span<const Real> f) {
 void KineticOperator::set_parallel(const Communicator& comm, const GhostExchange* exchange) {
   comm_ = comm;
   exchange_ = exchange;
+  if (second_order()) set_transport(transport_);  // the length scale over every rank
 }
 
 void KineticOperator::exchange_ghosts(std::span<Real> f) const {

@@ -31,7 +31,10 @@
 // update_transport_correction) from the state it is evaluated at, and carried by
 // incoming_flux (so every solver that reassembles the residual from the pieces sees it, the
 // downwind sweep through transport_correction). With boundary reconstruction the cached
-// boundary face values (and the wall integrals) are those of the owner's reconstructed values.
+// boundary face values (and the wall integrals) are those of the owner's reconstructed values,
+// External faces included (their source gets the reconstruction as the leaving values). Under
+// MPI the reconstruction's length scale (the limiter's e^2) is the global mesh's, so a part
+// limits as the serial run does.
 // First order (the default): no correction, the operator is the first-order one above.
 //
 // Residual scaling shared by every kinetic solver: ||r||_2 over all owned (cell, ordinate)
@@ -128,6 +131,10 @@ class KineticOperator {
   void set_external_face_values(ExternalFaceValues* source) { external_ = source; }
   // Refreshes the face values of every boundary face from f.
   void update_boundary_values(std::span<const Real> f);
+  // Face values of boundary face `face` from f, into out (not cached): the condition fed with
+  // the owner's values at the face (second order with boundary reconstruction: the owner's
+  // reconstruction, also for External faces; external_face_values.hpp).
+  void face_values(Index face, std::span<const Real> f, std::span<Real> out) const;
   // The same for one face.
   void update_boundary_values(Index face, std::span<const Real> f);
   // Cached face values (all ordinates) of boundary face `face`.
@@ -174,8 +181,13 @@ class KineticOperator {
   std::span<const Real> cell(std::span<const Real> f, Index c) const {
     return f.subspan(c * n_ordinates(), n_ordinates());
   }
-  // Face values of boundary face `face` from f, into out (not cached).
-  void face_values(Index face, std::span<const Real> f, std::span<Real> out) const;
+  // The owner's values at boundary face `face`: its cell values, or with second order and
+  // boundary reconstruction its limited reconstruction at the face centroid (into scratch;
+  // the span returned is scratch or the cell of f).
+  std::span<const Real> owner_values(Index face, std::span<const Real> f,
+                                     std::span<Real> scratch) const;
+  // The condition of boundary face `face` given the owner's values there.
+  void condition_values(Index face, std::span<const Real> owner, std::span<Real> out) const;
 
   // Does boundary face `face` belong to an owned cell (counted by this rank)?
   bool owned_face(Index face) const { return graph_->face_owner[face] < n_owned_cells(); }
@@ -196,6 +208,7 @@ class KineticOperator {
   long equilibrium_iterations_ = 0;
 
   std::vector<Real> boundary_values_;     // (face - n_interior) * N + k
+  std::vector<Real> owner_values_;        // the same layout: the owners' values at the faces
   std::vector<Index> reflection_offset_;  // per boundary face, -1 if none
   std::vector<Index> reflections_;
   std::vector<std::vector<Real>> patch_maxwellian_;  // boundary_maxwellian per patch

@@ -46,13 +46,15 @@ Real limiter_factor(SlopeLimiter limiter, Real d, Real lower, Real upper, Real e
   return (D2 + e2 + 2 * d * D) / (D2 + 2 * d * d + d * D + e2);
 }
 
-LinearReconstruction::LinearReconstruction(const FaceGraph& g) : graph_(g), dim_(g.dim) {
+LinearReconstruction::LinearReconstruction(const FaceGraph& g, const Communicator& comm)
+    : graph_(g), dim_(g.dim) {
   Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
   for (const Vec3& x : g.face_centroid) {
     lo = lo.cwiseMin(x);
     hi = hi.cwiseMax(x);
   }
-  length_ = (hi - lo).maxCoeff();
+  length_ = 0;
+  for (int d = 0; d < 3; ++d) length_ = std::max(length_, comm.max(hi[d]) - comm.min(lo[d]));
   weights_.assign(g.cell_faces.size(), Vec3::Zero());
   offsets_.assign(g.cell_faces.size(), Vec3::Zero());
   cell_size_.resize(g.n_cells());

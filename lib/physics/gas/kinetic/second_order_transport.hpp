@@ -33,6 +33,7 @@
 
 #include "core/types.hpp"
 #include "fv/face_graph.hpp"
+#include "parallel/communicator.hpp"
 
 namespace rfmems {
 
@@ -59,7 +60,10 @@ struct TransportScheme {
 // The geometry of the reconstruction: LS gradient weights and face offsets, per cell.
 class LinearReconstruction {
  public:
-  explicit LinearReconstruction(const FaceGraph& graph);
+  // comm: the ranks of a distributed graph (collective), whose largest extent L is the
+  // global mesh's, so every part limits as the serial run does.
+  explicit LinearReconstruction(const FaceGraph& graph,
+                                const Communicator& comm = Communicator::serial());
 
   // Limited slopes phi_ck g_ck of the owned cells from f (cell-major, n ordinates), into
   // slopes[(c * n + k) * dim + d]; ghost rows untouched.
@@ -75,7 +79,7 @@ class LinearReconstruction {
  private:
   const FaceGraph& graph_;
   int dim_;
-  Real length_;                  // the mesh's largest extent
+  Real length_;                  // the mesh's largest extent (over every rank)
   std::vector<Vec3> weights_;    // per cell_faces entry: grad = sum w_j (f_j - f_c); 0 on boundary
   std::vector<Vec3> offsets_;    // per cell_faces entry: x_f - x_c
   std::vector<Real> cell_size_;  // V^(1/dim)
