@@ -11,86 +11,12 @@
 #include "core/reduced_inertia_system.hpp"
 #include "coupling/aitken_relaxation.hpp"
 #include "coupling/displacement_control_fixed_point.hpp"
+#include "coupling/gap_scaled_lagged_load.hpp"
 #include "ibm/force_transfer.hpp"
 #include "solvers/ida_integrator.hpp"
 #include "solvers/klu_factorization.hpp"
 
 namespace rfmems {
-
-namespace {
-
-// M u'' + K u - f(u) - f_gas = 0 with the lagged, gap-scaled IBM load (see the header).
-class LaggedLoadStructure : public SecondOrderOperator {
- public:
-  LaggedLoadStructure(ElasticityOperator& beam, Real gap0) : beam_(beam), gap0_(gap0) {
-    const Index n = beam.size();
-    force_.assign(n, 0.0);
-    gas_.assign(n, 0.0);
-    reference_gap_.assign(n / 2, gap0);
-    const CsrPattern& p = beam.stiffness_pattern();
-    for (Index c = 0; c < n / 2; ++c) diagonal_.push_back(p.find(2 * c + 1, 2 * c + 1));
-  }
-  void set_reference(std::vector<Real> force, std::span<const Real> u) {
-    force_ = std::move(force);
-    for (std::size_t c = 0; c < reference_gap_.size(); ++c)
-      reference_gap_[c] = gap0_ + u[2 * c + 1];
-  }
-  void set_gas(std::vector<Real> gas) { gas_ = std::move(gas); }
-  // The electrostatic load the residual applies at u (the scaled lagged model).
-  std::vector<Real> applied(std::span<const Real> u) const {
-    std::vector<Real> f(force_.size());
-    for (std::size_t c = 0; c < reference_gap_.size(); ++c) {
-      f[2 * c] = force_[2 * c];
-      f[2 * c + 1] = force_[2 * c + 1] * scale(c, u);
-    }
-    return f;
-  }
-  // Implicit coupling: the exact load at u (replaces the scaled lagged one in the residual).
-  void set_exact(std::function<std::vector<Real>(std::span<const Real>)> exact) {
-    exact_ = std::move(exact);
-  }
-
-  Index size() const override { return beam_.size(); }
-  void internal_residual(Real t, std::span<const Real> u, std::span<Real> r) override {
-    beam_.internal_residual(t, u, r);
-    if (exact_) {
-      const std::vector<Real> f = exact_(u);
-      for (Index i = 0; i < size(); ++i) r[i] -= f[i] + gas_[i];
-      return;
-    }
-    for (std::size_t c = 0; c < reference_gap_.size(); ++c) {
-      r[2 * c] -= force_[2 * c] + gas_[2 * c];
-      r[2 * c + 1] -= force_[2 * c + 1] * scale(c, u) + gas_[2 * c + 1];
-    }
-  }
-  const CsrPattern& stiffness_pattern() const override { return beam_.stiffness_pattern(); }
-  void stiffness(Real t, std::span<const Real> u, std::span<Real> values) override {
-    beam_.stiffness(t, u, values);
-    for (std::size_t c = 0; c < reference_gap_.size(); ++c) {
-      if (force_[2 * c + 1] == 0) continue;
-      const Real g = gap0_ + u[2 * c + 1];
-      // d/du of -F (g_ref/g)^2 = 2 F g_ref^2 / g^3 (F < 0: softening).
-      values[diagonal_[c]] += 2 * force_[2 * c + 1] * scale(c, u) / g;
-    }
-  }
-  std::vector<Real> mass_diagonal() const override { return beam_.mass_diagonal(); }
-
- private:
-  Real scale(std::size_t c, std::span<const Real> u) const {
-    const Real g = gap0_ + u[2 * c + 1];
-    if (!(g > 0.02 * gap0_))
-      throw RecoverableError(fmt::format("immersed switch: gap {:.3e} m of cell {} closed", g, c));
-    const Real s = reference_gap_[c] / g;
-    return s * s;
-  }
-  ElasticityOperator& beam_;
-  Real gap0_;
-  std::vector<Real> force_, gas_, reference_gap_;
-  std::vector<Index> diagonal_;
-  std::function<std::vector<Real>(std::span<const Real>)> exact_;
-};
-
-}  // namespace
 
 Mesh make_switch_background(const ImmersedSwitchGeometry& g) {
   const int nx = g.background_cells[0], ny = g.background_cells[1];
@@ -387,7 +313,8 @@ QuasiStaticPullIn ImmersedSwitch::trace_quasi_static(const QuasiStaticOptions& o
 DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
                                ImmersedGasModel* gas) {
   const Index n = beam_.size();
-  LaggedLoadStructure structure(beam_, gap0_);
+  // The lagged, gap-scaled IBM load (see the header); a trial gap below 2 % of g0 is retried.
+  GapScaledLaggedLoad structure(beam_, gap0_, 0.02);
   ReducedInertiaSystem system(structure, {});
   std::vector<Real> y(system.size(), 0.0);
   ImmersedLoad load = electrostatic_load(std::span<const Real>(y.data(), n), voltage);
@@ -509,7 +436,7 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
         ++times_.gas_steps;
         gas_force = 0;
         for (const Vec3& x : f) gas_force += x.y();
-        structure.set_gas(to_structure(f));
+        structure.set_held(to_structure(f));  // the lagged gas force
       }
     }
     raw.push_back({t, u[control()], state[vc], min_gap(u), load.total.y(), gas_force});
