@@ -12,6 +12,7 @@
 #include "coupling/aitken_relaxation.hpp"
 #include "coupling/displacement_control_fixed_point.hpp"
 #include "coupling/gap_scaled_lagged_load.hpp"
+#include "coupling/step_voltage_run.hpp"
 #include "ibm/force_transfer.hpp"
 #include "solvers/ida_integrator.hpp"
 #include "solvers/klu_factorization.hpp"
@@ -335,17 +336,12 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
   IdaIntegrator ida(system, ida_options);
   ida.initialize(0.0, y, yp);
   const Index vc = system.velocity_index(control());
-  ida.set_roots(2, [&](Real, std::span<const Real> yy, std::span<const Real>, std::span<Real> g) {
-    g[0] = min_gap(yy.subspan(0, n)) - options.contact_gap;
-    g[1] = yy[vc];
-  });
+  StepVoltageEvents::set_roots(ida, n, vc, options.contact_gap,
+                               [this](std::span<const Real> u) { return min_gap(u); });
 
-  struct Raw {
-    Real t, u, v, gap, fe, fg;
-  };
-  std::vector<Raw> raw{{0.0, 0.0, 0.0, gap0_, load.total.y(), 0.0}};
+  std::vector<StepRecord> records{{0.0, 0.0, 0.0, gap0_, load.total.y(), 0.0}};
   DynamicRun out;
-  bool moved_down = false;
+  StepVoltageEvents events(options.stop_at_turning, 0.25 * first_period_);
   Real t_gas = 0;  // the gas's time: it advances every gas_every accepted steps
   int since_gas = 0;
   const bool strong = options.coupling == ImmersedCoupling::Strong;
@@ -405,21 +401,7 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
     const Real t = ida.time();
     const std::span<const Real> state = ida.y();
     const std::span<const Real> u = state.subspan(0, n);
-    out.extreme_control = std::min(out.extreme_control, u[control()]);
-    if (u[control()] < 0 && t >= 0.25 * first_period_) moved_down = true;
-    bool stop = status == IdaIntegrator::Status::Reached;
-    if (status == IdaIntegrator::Status::Root) {
-      const std::vector<int> found = ida.roots_found();
-      if (found[0] < 0) {
-        ++out.touch_downs;
-        out.pulled_in = true;
-        out.pull_in_time = t;
-        stop = true;
-      } else if (found[1] > 0 && moved_down && out.turning_time == 0) {
-        out.turning_time = t;
-        stop = stop || options.stop_at_turning;
-      }
-    }
+    const bool stop = events.after_step(ida, status, t, u[control()], out);
     // The coupled step's exchange: the IBM load and the gas at the accepted state.
     {
       if (!strong) {  // strong_step left the IBM load at IDA's internal state as reference
@@ -439,43 +421,11 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
         structure.set_held(to_structure(f));  // the lagged gas force
       }
     }
-    raw.push_back({t, u[control()], state[vc], min_gap(u), load.total.y(), gas_force});
+    records.push_back({t, u[control()], state[vc], min_gap(u), load.total.y(), gas_force});
     if (since_gas == 0) t_gas = t;
     if (stop) break;
   }
-  out.final_time = ida.time();
-  out.final_state = {ida.time(), std::vector<Real>(ida.y().begin(), ida.y().end()),
-                     std::vector<Real>(ida.yp().begin(), ida.yp().end())};
-  out.stats = ida.stats();
-
-  auto sample = [&](const Raw& r) {
-    DynamicSample s{r.t, r.u, r.gap, r.fe, r.fg};
-    s.voltage = voltage;
-    return s;
-  };
-  if (options.output_interval <= 0) {
-    for (const Raw& r : raw) out.history.push_back(sample(r));
-    return out;
-  }
-  // Uniform samples: cubic Hermite in (u, v) of the control; the other columns linear.
-  std::size_t j = 0;
-  for (Real t = 0; t <= out.final_time; t += options.output_interval) {
-    while (j + 2 < raw.size() && raw[j + 1].t < t) ++j;
-    const Raw& a = raw[j];
-    const Raw& b = raw[std::min(j + 1, raw.size() - 1)];
-    const Real h = b.t - a.t;
-    const Real s = h > 0 ? std::clamp((t - a.t) / h, 0.0, 1.0) : 0.0;
-    const Real h00 = 2 * s * s * s - 3 * s * s + 1, h10 = s * s * s - 2 * s * s + s;
-    const Real h01 = -2 * s * s * s + 3 * s * s, h11 = s * s * s - s * s;
-    Raw r{t,
-          h00 * a.u + h10 * h * a.v + h01 * b.u + h11 * h * b.v,
-          0,
-          (1 - s) * a.gap + s * b.gap,
-          (1 - s) * a.fe + s * b.fe,
-          (1 - s) * a.fg + s * b.fg};
-    out.history.push_back(sample(r));
-  }
-  out.history.push_back(sample(raw.back()));
+  finish_step_voltage_run(ida, records, voltage, options.output_interval, true, out);
   return out;
 }
 
