@@ -13,6 +13,7 @@
 #include "coupling/displacement_control_fixed_point.hpp"
 #include "coupling/gap_scaled_lagged_load.hpp"
 #include "coupling/step_voltage_run.hpp"
+#include "coupling/voltage_control_fixed_point.hpp"
 #include "ibm/force_transfer.hpp"
 #include "solvers/ida_integrator.hpp"
 #include "solvers/klu_factorization.hpp"
@@ -251,33 +252,31 @@ ImmersedLoad ImmersedSwitch::electrostatic_load(std::span<const Real> u, Real vo
 }
 
 ImmersedStatic ImmersedSwitch::solve_static(Real voltage, Real tolerance, int max_iterations) {
-  // Plain fixed point u <- K^-1 f(u): below pull-in it contracts (by about the ratio of the
-  // electrostatic to the elastic stiffness). Not Aitken: on a background where the beam's
-  // faces lie on grid lines the load jumps as slivers get cut (docs/immersed_switch.md), and
-  // Aitken's secant amplified the jumps (measured: omega between -8 and 15, no convergence).
-  // Converged when the control's deflection changes by <= tolerance of itself.
+  // The plain fixed point (voltage_control_fixed_point.hpp), not Aitken: on a background where
+  // the beam's faces lie on grid lines the load jumps as slivers get cut
+  // (docs/immersed_switch.md), and Aitken's secant amplified the jumps (measured: omega
+  // between -8 and 15, no convergence).
   const Index n = beam_.size();
-  std::vector<Real> k_values(beam_.stiffness_pattern().nnz()), u(n, 0.0);
-  beam_.stiffness(0.0, u, k_values);
+  std::vector<Real> k_values(beam_.stiffness_pattern().nnz()), rest(n, 0.0);
+  beam_.stiffness(0.0, rest, k_values);
   KluFactorization stiffness(beam_.stiffness_pattern(), k_values);
   ImmersedStatic out;
-  for (int it = 0; it < max_iterations; ++it) {
-    ImmersedLoad load = electrostatic_load(u, voltage);
-    out.force_y = load.total.y();
-    stiffness.solve(load.force);
-    const Real change = std::abs(load.force[control()] - u[control()]);
-    u = std::move(load.force);
-    out.iterations = it + 1;
-    if (change <= tolerance * std::abs(u[control()])) {
-      out.u = u;
-      out.control = u[control()];
-      return out;
-    }
-  }
-  throw SolverError(
-      fmt::format("immersed switch: static solve at {:g} V not converged in {} "
-                  "iterations (above the quasi-static pull-in?)",
-                  voltage, max_iterations));
+  auto load = [&](std::span<const Real> u) {
+    ImmersedLoad l = electrostatic_load(u, voltage);
+    out.force_y = l.total.y();
+    return std::move(l.force);
+  };
+  VoltageControlResult r =
+      relax_voltage_control(stiffness, load, n, control(), tolerance, max_iterations);
+  if (!r.converged)
+    throw SolverError(
+        fmt::format("immersed switch: static solve at {:g} V not converged in {} "
+                    "iterations (above the quasi-static pull-in?)",
+                    voltage, max_iterations));
+  out.iterations = r.iterations;
+  out.control = r.u[control()];
+  out.u = std::move(r.u);
+  return out;
 }
 
 QuasiStaticPullIn ImmersedSwitch::trace_quasi_static(const QuasiStaticOptions& options,

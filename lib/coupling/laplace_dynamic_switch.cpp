@@ -12,6 +12,7 @@
 #include "coupling/state_tolerances.hpp"
 #include "coupling/step_voltage_run.hpp"
 #include "coupling/switch_system.hpp"
+#include "coupling/voltage_control_fixed_point.hpp"
 #include "solvers/ida_integrator.hpp"
 #include "solvers/klu_factorization.hpp"
 
@@ -32,27 +33,26 @@ LaplaceDynamicSwitch::LaplaceDynamicSwitch(ElasticityOperator& beam,
 
 LaplaceStatic LaplaceDynamicSwitch::solve_static(Real voltage, Real tolerance, int max_iterations) {
   const Index n = beam_.size();
-  std::vector<Real> k_values(beam_.stiffness_pattern().nnz()), u(n, 0.0);
-  beam_.stiffness(0.0, u, k_values);
+  std::vector<Real> k_values(beam_.stiffness_pattern().nnz()), rest(n, 0.0);
+  beam_.stiffness(0.0, rest, k_values);
   KluFactorization stiffness(beam_.stiffness_pattern(), k_values);
-  LaplaceStatic out;
-  for (int it = 0; it < max_iterations; ++it) {
+  auto load = [&](std::span<const Real> u) {
     std::vector<Real> z = field_.load_per_volt2(u);
     for (Real& v : z) v *= voltage * voltage;
-    stiffness.solve(z);
-    const Real change = std::abs(z[control_] - u[control_]);
-    u = std::move(z);
-    out.iterations = it + 1;
-    if (change <= tolerance * std::abs(u[control_])) {
-      out.control = u[control_];
-      out.u = std::move(u);
-      return out;
-    }
-  }
-  throw SolverError(fmt::format(
-      "Laplace switch: static solve at {:g} V not converged in {} iterations (above the "
-      "quasi-static pull-in?)",
-      voltage, max_iterations));
+    return z;
+  };
+  VoltageControlResult r =
+      relax_voltage_control(stiffness, load, n, control_, tolerance, max_iterations);
+  if (!r.converged)
+    throw SolverError(fmt::format(
+        "Laplace switch: static solve at {:g} V not converged in {} iterations (above the "
+        "quasi-static pull-in?)",
+        voltage, max_iterations));
+  LaplaceStatic out;
+  out.iterations = r.iterations;
+  out.control = r.u[control_];
+  out.u = std::move(r.u);
+  return out;
 }
 
 DynamicRun LaplaceDynamicSwitch::run(Real voltage, const DynamicOptions& options,
