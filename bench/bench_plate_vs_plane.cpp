@@ -78,10 +78,7 @@ using Json = nlohmann::ordered_json;
 
 namespace {
 
-using rfmems::bench::cpu_now;
-using rfmems::bench::default_cases_dir;
-using rfmems::bench::emit;
-using rfmems::bench::now;
+using namespace rfmems::bench;
 
 constexpr double kLength = 400e-6, kThickness = 4e-6, kE = 200e9, kNu = 0.31, kRho = 7854,
                  kPressure = 1e3, kShearFactor = 5.0 / 6.0;

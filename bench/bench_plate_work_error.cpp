@@ -67,13 +67,7 @@ using Json = nlohmann::ordered_json;
 
 namespace {
 
-using rfmems::bench::add_integrator_stats;
-using rfmems::bench::cpu_now;
-using rfmems::bench::dense_stiffness;
-using rfmems::bench::max_relative_error;
-using rfmems::bench::default_cases_dir;
-using rfmems::bench::emit;
-using rfmems::bench::now;
+using namespace rfmems::bench;
 
 constexpr double kLength = 400e-6, kThickness = 2e-6, kE = 200e9, kNu = 0.0, kRho = 7854,
                  kPressure = -1.0;

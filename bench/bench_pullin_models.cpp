@@ -76,10 +76,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-using rfmems::bench::cpu_now;
-using rfmems::bench::default_cases_dir;
-using rfmems::bench::emit;
-using rfmems::bench::now;
+using namespace rfmems::bench;
 
 
 struct Timer {

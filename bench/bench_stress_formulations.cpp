@@ -61,10 +61,7 @@ using Json = nlohmann::ordered_json;
 
 namespace {
 
-using rfmems::bench::cpu_now;
-using rfmems::bench::default_cases_dir;
-using rfmems::bench::emit;
-using rfmems::bench::now;
+using namespace rfmems::bench;
 
 constexpr double kLength = 400e-6, kLoad = 1e3, kE = 200e9, kNu = 0.31, kTolerance = 1e-8;
 

@@ -79,13 +79,7 @@ using Json = nlohmann::ordered_json;
 
 namespace {
 
-using rfmems::bench::add_integrator_stats;
-using rfmems::bench::cpu_now;
-using rfmems::bench::dense_stiffness;
-using rfmems::bench::max_relative_error;
-using rfmems::bench::default_cases_dir;
-using rfmems::bench::emit;
-using rfmems::bench::now;
+using namespace rfmems::bench;
 
 constexpr double kLength = 2.0, kHeight = 0.04, kE = 200e9, kNu = 0.31, kRho = 7854,
                  kTraction = -1000.0, kRamp = 0.02;

@@ -24,7 +24,8 @@ def history(path):
         name = "transient" if "transient" in group else list(group.keys())[0]
         t = group[name]["time"][()]
         values = group[name]["values"][()]
-    return t, values  # columns: control, min_gap, electrostatic_force, gas_force
+    # columns: control, min_gap, electrostatic_force, gas_force, contact_force, voltage
+    return t, values
 
 
 def main():

@@ -6,18 +6,12 @@
 
 namespace rfmems {
 
-namespace {
-// A trial state with a cell's gap below this fraction of g0 is rejected. Well below the
-// touch-down roots (2 % of g0 by default), so that a step that carries the gap through the
-// root is accepted and the root located inside it (with 2 % itself, the step that would cross
-// the root failed every time and IDA cut its step without end).
-constexpr Real kClosedFraction = 1e-3;
-}  // namespace
-
-GapScaledLaggedLoad::GapScaledLaggedLoad(ElasticityOperator& beam, Real gap0)
-    : beam_(beam), gap0_(gap0) {
+GapScaledLaggedLoad::GapScaledLaggedLoad(ElasticityOperator& beam, Real gap0,
+                                         Real closed_fraction)
+    : beam_(beam), gap0_(gap0), closed_fraction_(closed_fraction) {
   const Index n = beam.size();
   force_.assign(n, 0.0);
+  held_.assign(n, 0.0);
   reference_gap_.assign(n / 2, gap0);
   loaded_.assign(n / 2, 0);
   const CsrPattern& p = beam.stiffness_pattern();
@@ -34,23 +28,38 @@ void GapScaledLaggedLoad::set_reference(std::vector<Real> force, std::span<const
 
 Real GapScaledLaggedLoad::scale(std::size_t c, std::span<const Real> u) const {
   const Real g = gap0_ + u[2 * c + 1];
-  if (!(g > kClosedFraction * gap0_))
-    throw RecoverableError(fmt::format("Laplace switch: gap {:.3e} m of cell {} closed", g, c));
+  if (!(g > closed_fraction_ * gap0_))
+    throw RecoverableError(
+        fmt::format("gap-scaled lagged load: gap {:.3e} m of cell {} closed", g, c));
   const Real s = reference_gap_[c] / g;
   return s * s;
+}
+
+std::vector<Real> GapScaledLaggedLoad::applied(std::span<const Real> u) const {
+  std::vector<Real> f(force_.size(), 0.0);
+  for (std::size_t c = 0; c < reference_gap_.size(); ++c) {
+    if (!loaded_[c]) continue;
+    f[2 * c] = force_[2 * c];
+    f[2 * c + 1] = force_[2 * c + 1] * scale(c, u);
+  }
+  return f;
 }
 
 void GapScaledLaggedLoad::internal_residual(Real t, std::span<const Real> u, std::span<Real> r) {
   beam_.internal_residual(t, u, r);
   if (exact_) {
     const std::vector<Real> f = exact_(u);
-    for (Index i = 0; i < size(); ++i) r[i] -= f[i];
+    for (Index i = 0; i < size(); ++i) r[i] -= f[i] + held_[i];
     return;
   }
   for (std::size_t c = 0; c < reference_gap_.size(); ++c) {
-    if (!loaded_[c]) continue;
-    r[2 * c] -= force_[2 * c];
-    r[2 * c + 1] -= force_[2 * c + 1] * scale(c, u);
+    if (!loaded_[c]) {
+      r[2 * c] -= held_[2 * c];
+      r[2 * c + 1] -= held_[2 * c + 1];
+      continue;
+    }
+    r[2 * c] -= force_[2 * c] + held_[2 * c];
+    r[2 * c + 1] -= force_[2 * c + 1] * scale(c, u) + held_[2 * c + 1];
   }
 }
 

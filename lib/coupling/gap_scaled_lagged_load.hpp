@@ -1,7 +1,7 @@
 // A plane beam under an electrostatic load that is recomputed only once per time step (a
 // field solve is too expensive for every residual call), for IDA:
 //
-//   M u'' + K u - f(u) = 0,   f_x,c = F_x,c,   f_y,c(u) = F_y,c (g_ref,c / g_c(u))^2,
+//   M u'' + K u - f(u) - f_held = 0,   f_x,c = F_x,c,   f_y,c(u) = F_y,c (g_ref,c / g_c(u))^2,
 //   g_c = g0 + u_y,c,
 //
 // F the field's force at the reference state u_ref (the state after the last accepted step)
@@ -9,13 +9,15 @@
 // dependence of the parallel-plate law, and the Jacobian carries the electrostatic spring
 // softening d(-f_y,c)/du_y,c = 2 F_y,c g_ref^2 / g^3 (F_y < 0: softening). The staggered
 // scheme refreshes F after every step IDA accepts; its error is first order in the step.
+// f_held is a load held fixed over the step (the immersed switch's lagged gas force; zero
+// unless set).
 //
 // With set_exact(load), the residual uses the exact load at u instead (the field solved in
 // every residual call: the implicit, strongly coupled reference), and the scaled lagged model
 // stays in the Jacobian (an inexact Newton).
 //
-// The same pattern drives the immersed-boundary switch (immersed_switch.cpp keeps its own
-// copy of this operator, LaggedLoadStructure, in its anonymous namespace).
+// It drives both field-coupled beams: the Laplace gap field (laplace_dynamic_switch.hpp) and
+// the immersed-boundary switch (immersed_switch.hpp).
 #pragma once
 #include <functional>
 #include <span>
@@ -29,12 +31,24 @@ namespace rfmems {
 class GapScaledLaggedLoad : public SecondOrderOperator {
  public:
   using ExactLoad = std::function<std::vector<Real>(std::span<const Real>)>;
-  // beam: a plane elasticity operator (unknowns u_x, u_y per cell); gap0: the gap at rest.
-  GapScaledLaggedLoad(ElasticityOperator& beam, Real gap0);
+  // A trial state with a loaded cell's gap below this fraction of g0 is rejected. Well below
+  // the touch-down roots (2 % of g0 by default), so that a step that carries the gap through
+  // the root is accepted and the root located inside it (with 2 % itself, the step that would
+  // cross the root failed every time and IDA cut its step without end).
+  static constexpr Real kClosedFraction = 1e-3;
+
+  // beam: a plane elasticity operator (unknowns u_x, u_y per cell); gap0: the gap at rest;
+  // closed_fraction: see kClosedFraction (the immersed switch keeps its 2 %).
+  GapScaledLaggedLoad(ElasticityOperator& beam, Real gap0,
+                      Real closed_fraction = kClosedFraction);
 
   // The field's force per unknown at the reference state u_ref [N/m].
   void set_reference(std::vector<Real> force, std::span<const Real> u_ref);
   void set_exact(ExactLoad exact) { exact_ = std::move(exact); }
+  // f_held per unknown [N/m], applied as it is until set again.
+  void set_held(std::vector<Real> held) { held_ = std::move(held); }
+  // The field load the residual applies at u (the scaled lagged model, without f_held).
+  std::vector<Real> applied(std::span<const Real> u) const;
 
   Index size() const override { return beam_.size(); }
   void internal_residual(Real t, std::span<const Real> u, std::span<Real> r) override;
@@ -43,11 +57,12 @@ class GapScaledLaggedLoad : public SecondOrderOperator {
   std::vector<Real> mass_diagonal() const override { return beam_.mass_diagonal(); }
 
  private:
-  // (g_ref / g)^2 of cell c; a gap below 0.1 % of g0 is a failed trial state (IDA retries).
+  // (g_ref / g)^2 of cell c; a gap below closed_fraction g0 is a failed trial state (IDA
+  // retries).
   Real scale(std::size_t c, std::span<const Real> u) const;
   ElasticityOperator& beam_;
-  Real gap0_;
-  std::vector<Real> force_, reference_gap_;
+  Real gap0_, closed_fraction_;
+  std::vector<Real> force_, held_, reference_gap_;
   std::vector<Index> diagonal_;  // value index of (u_y,c, u_y,c) in the stiffness
   std::vector<char> loaded_;     // cells with a nonzero reference force
   ExactLoad exact_;

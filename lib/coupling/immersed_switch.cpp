@@ -11,86 +11,14 @@
 #include "core/reduced_inertia_system.hpp"
 #include "coupling/aitken_relaxation.hpp"
 #include "coupling/displacement_control_fixed_point.hpp"
+#include "coupling/gap_scaled_lagged_load.hpp"
+#include "coupling/step_voltage_run.hpp"
+#include "coupling/voltage_control_fixed_point.hpp"
 #include "ibm/force_transfer.hpp"
 #include "solvers/ida_integrator.hpp"
 #include "solvers/klu_factorization.hpp"
 
 namespace rfmems {
-
-namespace {
-
-// M u'' + K u - f(u) - f_gas = 0 with the lagged, gap-scaled IBM load (see the header).
-class LaggedLoadStructure : public SecondOrderOperator {
- public:
-  LaggedLoadStructure(ElasticityOperator& beam, Real gap0) : beam_(beam), gap0_(gap0) {
-    const Index n = beam.size();
-    force_.assign(n, 0.0);
-    gas_.assign(n, 0.0);
-    reference_gap_.assign(n / 2, gap0);
-    const CsrPattern& p = beam.stiffness_pattern();
-    for (Index c = 0; c < n / 2; ++c) diagonal_.push_back(p.find(2 * c + 1, 2 * c + 1));
-  }
-  void set_reference(std::vector<Real> force, std::span<const Real> u) {
-    force_ = std::move(force);
-    for (std::size_t c = 0; c < reference_gap_.size(); ++c)
-      reference_gap_[c] = gap0_ + u[2 * c + 1];
-  }
-  void set_gas(std::vector<Real> gas) { gas_ = std::move(gas); }
-  // The electrostatic load the residual applies at u (the scaled lagged model).
-  std::vector<Real> applied(std::span<const Real> u) const {
-    std::vector<Real> f(force_.size());
-    for (std::size_t c = 0; c < reference_gap_.size(); ++c) {
-      f[2 * c] = force_[2 * c];
-      f[2 * c + 1] = force_[2 * c + 1] * scale(c, u);
-    }
-    return f;
-  }
-  // Implicit coupling: the exact load at u (replaces the scaled lagged one in the residual).
-  void set_exact(std::function<std::vector<Real>(std::span<const Real>)> exact) {
-    exact_ = std::move(exact);
-  }
-
-  Index size() const override { return beam_.size(); }
-  void internal_residual(Real t, std::span<const Real> u, std::span<Real> r) override {
-    beam_.internal_residual(t, u, r);
-    if (exact_) {
-      const std::vector<Real> f = exact_(u);
-      for (Index i = 0; i < size(); ++i) r[i] -= f[i] + gas_[i];
-      return;
-    }
-    for (std::size_t c = 0; c < reference_gap_.size(); ++c) {
-      r[2 * c] -= force_[2 * c] + gas_[2 * c];
-      r[2 * c + 1] -= force_[2 * c + 1] * scale(c, u) + gas_[2 * c + 1];
-    }
-  }
-  const CsrPattern& stiffness_pattern() const override { return beam_.stiffness_pattern(); }
-  void stiffness(Real t, std::span<const Real> u, std::span<Real> values) override {
-    beam_.stiffness(t, u, values);
-    for (std::size_t c = 0; c < reference_gap_.size(); ++c) {
-      if (force_[2 * c + 1] == 0) continue;
-      const Real g = gap0_ + u[2 * c + 1];
-      // d/du of -F (g_ref/g)^2 = 2 F g_ref^2 / g^3 (F < 0: softening).
-      values[diagonal_[c]] += 2 * force_[2 * c + 1] * scale(c, u) / g;
-    }
-  }
-  std::vector<Real> mass_diagonal() const override { return beam_.mass_diagonal(); }
-
- private:
-  Real scale(std::size_t c, std::span<const Real> u) const {
-    const Real g = gap0_ + u[2 * c + 1];
-    if (!(g > 0.02 * gap0_))
-      throw RecoverableError(fmt::format("immersed switch: gap {:.3e} m of cell {} closed", g, c));
-    const Real s = reference_gap_[c] / g;
-    return s * s;
-  }
-  ElasticityOperator& beam_;
-  Real gap0_;
-  std::vector<Real> force_, gas_, reference_gap_;
-  std::vector<Index> diagonal_;
-  std::function<std::vector<Real>(std::span<const Real>)> exact_;
-};
-
-}  // namespace
 
 Mesh make_switch_background(const ImmersedSwitchGeometry& g) {
   const int nx = g.background_cells[0], ny = g.background_cells[1];
@@ -335,33 +263,31 @@ ImmersedLoad ImmersedSwitch::electrostatic_load(std::span<const Real> u, Real vo
 }
 
 ImmersedStatic ImmersedSwitch::solve_static(Real voltage, Real tolerance, int max_iterations) {
-  // Plain fixed point u <- K^-1 f(u): below pull-in it contracts (by about the ratio of the
-  // electrostatic to the elastic stiffness). Not Aitken: on a background where the beam's
-  // faces lie on grid lines the load jumps as slivers get cut (docs/immersed_switch.md), and
-  // Aitken's secant amplified the jumps (measured: omega between -8 and 15, no convergence).
-  // Converged when the control's deflection changes by <= tolerance of itself.
+  // The plain fixed point (voltage_control_fixed_point.hpp), not Aitken: on a background where
+  // the beam's faces lie on grid lines the load jumps as slivers get cut
+  // (docs/immersed_switch.md), and Aitken's secant amplified the jumps (measured: omega
+  // between -8 and 15, no convergence).
   const Index n = beam_.size();
-  std::vector<Real> k_values(beam_.stiffness_pattern().nnz()), u(n, 0.0);
-  beam_.stiffness(0.0, u, k_values);
+  std::vector<Real> k_values(beam_.stiffness_pattern().nnz()), rest(n, 0.0);
+  beam_.stiffness(0.0, rest, k_values);
   KluFactorization stiffness(beam_.stiffness_pattern(), k_values);
   ImmersedStatic out;
-  for (int it = 0; it < max_iterations; ++it) {
-    ImmersedLoad load = electrostatic_load(u, voltage);
-    out.force_y = load.total.y();
-    stiffness.solve(load.force);
-    const Real change = std::abs(load.force[control()] - u[control()]);
-    u = std::move(load.force);
-    out.iterations = it + 1;
-    if (change <= tolerance * std::abs(u[control()])) {
-      out.u = u;
-      out.control = u[control()];
-      return out;
-    }
-  }
-  throw SolverError(
-      fmt::format("immersed switch: static solve at {:g} V not converged in {} "
-                  "iterations (above the quasi-static pull-in?)",
-                  voltage, max_iterations));
+  auto load = [&](std::span<const Real> u) {
+    ImmersedLoad l = electrostatic_load(u, voltage);
+    out.force_y = l.total.y();
+    return std::move(l.force);
+  };
+  VoltageControlResult r =
+      relax_voltage_control(stiffness, load, n, control(), tolerance, max_iterations);
+  if (!r.converged)
+    throw SolverError(
+        fmt::format("immersed switch: static solve at {:g} V not converged in {} "
+                    "iterations (above the quasi-static pull-in?)",
+                    voltage, max_iterations));
+  out.iterations = r.iterations;
+  out.control = r.u[control()];
+  out.u = std::move(r.u);
+  return out;
 }
 
 QuasiStaticPullIn ImmersedSwitch::trace_quasi_static(const QuasiStaticOptions& options,
@@ -398,7 +324,8 @@ QuasiStaticPullIn ImmersedSwitch::trace_quasi_static(const QuasiStaticOptions& o
 DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
                                ImmersedGasModel* gas) {
   const Index n = beam_.size();
-  LaggedLoadStructure structure(beam_, gap0_);
+  // The lagged, gap-scaled IBM load (see the header); a trial gap below 2 % of g0 is retried.
+  GapScaledLaggedLoad structure(beam_, gap0_, 0.02);
   ReducedInertiaSystem system(structure, {});
   std::vector<Real> y(system.size(), 0.0);
   ImmersedLoad load = electrostatic_load(std::span<const Real>(y.data(), n), voltage);
@@ -419,17 +346,12 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
   IdaIntegrator ida(system, ida_options);
   ida.initialize(0.0, y, yp);
   const Index vc = system.velocity_index(control());
-  ida.set_roots(2, [&](Real, std::span<const Real> yy, std::span<const Real>, std::span<Real> g) {
-    g[0] = min_gap(yy.subspan(0, n)) - options.contact_gap;
-    g[1] = yy[vc];
-  });
+  StepVoltageEvents::set_roots(ida, n, vc, options.contact_gap,
+                               [this](std::span<const Real> u) { return min_gap(u); });
 
-  struct Raw {
-    Real t, u, v, gap, fe, fg;
-  };
-  std::vector<Raw> raw{{0.0, 0.0, 0.0, gap0_, load.total.y(), 0.0}};
+  std::vector<StepRecord> records{{0.0, 0.0, 0.0, gap0_, load.total.y(), 0.0}};
   DynamicRun out;
-  bool moved_down = false;
+  StepVoltageEvents events(options.stop_at_turning, 0.25 * first_period_);
   Real t_gas = 0;  // the gas's time: it advances every gas_every accepted steps
   int since_gas = 0;
   const bool strong = options.coupling == ImmersedCoupling::Strong;
@@ -489,21 +411,7 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
     const Real t = ida.time();
     const std::span<const Real> state = ida.y();
     const std::span<const Real> u = state.subspan(0, n);
-    out.extreme_control = std::min(out.extreme_control, u[control()]);
-    if (u[control()] < 0 && t >= 0.25 * first_period_) moved_down = true;
-    bool stop = status == IdaIntegrator::Status::Reached;
-    if (status == IdaIntegrator::Status::Root) {
-      const std::vector<int> found = ida.roots_found();
-      if (found[0] < 0) {
-        ++out.touch_downs;
-        out.pulled_in = true;
-        out.pull_in_time = t;
-        stop = true;
-      } else if (found[1] > 0 && moved_down && out.turning_time == 0) {
-        out.turning_time = t;
-        stop = stop || options.stop_at_turning;
-      }
-    }
+    const bool stop = events.after_step(ida, status, t, u[control()], out);
     // The coupled step's exchange: the IBM load and the gas at the accepted state.
     {
       if (!strong) {  // strong_step left the IBM load at IDA's internal state as reference
@@ -520,46 +428,14 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
         ++times_.gas_steps;
         gas_force = 0;
         for (const Vec3& x : f) gas_force += x.y();
-        structure.set_gas(to_structure(f));
+        structure.set_held(to_structure(f));  // the lagged gas force
       }
     }
-    raw.push_back({t, u[control()], state[vc], min_gap(u), load.total.y(), gas_force});
+    records.push_back({t, u[control()], state[vc], min_gap(u), load.total.y(), gas_force});
     if (since_gas == 0) t_gas = t;
     if (stop) break;
   }
-  out.final_time = ida.time();
-  out.final_state = {ida.time(), std::vector<Real>(ida.y().begin(), ida.y().end()),
-                     std::vector<Real>(ida.yp().begin(), ida.yp().end())};
-  out.stats = ida.stats();
-
-  auto sample = [&](const Raw& r) {
-    DynamicSample s{r.t, r.u, r.gap, r.fe, r.fg};
-    s.voltage = voltage;
-    return s;
-  };
-  if (options.output_interval <= 0) {
-    for (const Raw& r : raw) out.history.push_back(sample(r));
-    return out;
-  }
-  // Uniform samples: cubic Hermite in (u, v) of the control; the other columns linear.
-  std::size_t j = 0;
-  for (Real t = 0; t <= out.final_time; t += options.output_interval) {
-    while (j + 2 < raw.size() && raw[j + 1].t < t) ++j;
-    const Raw& a = raw[j];
-    const Raw& b = raw[std::min(j + 1, raw.size() - 1)];
-    const Real h = b.t - a.t;
-    const Real s = h > 0 ? std::clamp((t - a.t) / h, 0.0, 1.0) : 0.0;
-    const Real h00 = 2 * s * s * s - 3 * s * s + 1, h10 = s * s * s - 2 * s * s + s;
-    const Real h01 = -2 * s * s * s + 3 * s * s, h11 = s * s * s - s * s;
-    Raw r{t,
-          h00 * a.u + h10 * h * a.v + h01 * b.u + h11 * h * b.v,
-          0,
-          (1 - s) * a.gap + s * b.gap,
-          (1 - s) * a.fe + s * b.fe,
-          (1 - s) * a.fg + s * b.fg};
-    out.history.push_back(sample(r));
-  }
-  out.history.push_back(sample(raw.back()));
+  finish_step_voltage_run(ida, records, voltage, options.output_interval, true, out);
   return out;
 }
 

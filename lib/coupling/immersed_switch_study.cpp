@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "coupling/immersed_esbgk_gas.hpp"
 #include "coupling/immersed_reynolds_film.hpp"
+#include "coupling/pull_in_results.hpp"
 #include "coupling/scene_validity.hpp"
 #include "io/probes.hpp"
 #include "physics/gas/kinetic/kinetic_case.hpp"
@@ -192,17 +193,6 @@ ImmersedSwitchCase read_immersed_switch_case(const CaseNode& root, const std::st
 
 namespace {
 
-void write_history(ResultWriter& writer, const std::string& name, const DynamicRun& run) {
-  std::vector<double> t;
-  std::vector<std::vector<double>> rows;
-  for (const DynamicSample& s : run.history) {
-    t.push_back(s.t);
-    rows.push_back({s.control, s.min_gap, s.electrostatic_force, s.gas_force});
-  }
-  writer.write_time_series("dynamic", name, t, rows,
-                           {"control", "min_gap", "electrostatic_force", "gas_force"});
-}
-
 Json times_json(const ImmersedPhysicsTimes& t) {
   return {{"move_s", t.move},
           {"marking_s", t.marking},
@@ -263,21 +253,14 @@ Json run_immersed_switch_study(ImmersedSwitchCase& c, const CaseNode& root, Resu
     write_displacement(writer, *c.beam, st.u);
   } else if (c.mode == "quasi_static") {
     const QuasiStaticPullIn qs = s.trace_quasi_static(c.quasi_static);
-    std::vector<double> delta;
-    std::vector<std::vector<double>> rows;
-    for (const PullInPoint& p : qs.curve) {
-      delta.push_back(p.displacement);
-      rows.push_back({p.voltage, p.min_gap, p.stable ? 1.0 : 0.0});
-    }
-    writer.write_time_series("pull_in", "curve", delta, rows, {"voltage", "min_gap", "stable"},
-                             "control_displacement");
+    write_pull_in_curve(writer, qs);
     j["quasi_static"] = {{"pull_in_voltage", qs.pull_in_voltage},
                          {"pull_in_displacement", qs.pull_in_displacement},
                          {"solves", qs.solves}};
     write_displacement(writer, *c.beam, qs.fold_state);
   } else if (c.mode == "transient") {
     const DynamicRun run = s.run(c.voltage, c.run, c.gas.get());
-    write_history(writer, "transient", run);
+    write_dynamic_history(writer, "transient", run);
     const FreeResponse fr = free_response(run.history);
     j["transient"] = {{"voltage", c.voltage},
                       {"pulled_in", run.pulled_in},
@@ -304,7 +287,7 @@ Json run_immersed_switch_study(ImmersedSwitchCase& c, const CaseNode& root, Resu
           return r;
         },
         c.bracket_low, c.bracket_high, c.tolerance, c.run.end_time);
-    write_history(writer, "pull_in", last);
+    write_dynamic_history(writer, "pull_in", last);
     j["dynamic"] = {{"pull_in_voltage", pi.voltage},
                     {"not_pulling_in", pi.lower},
                     {"pull_in_time", pi.pull_in_time},

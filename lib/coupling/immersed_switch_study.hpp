@@ -83,8 +83,8 @@ std::unique_ptr<ImmersedGasModel> make_case_gas(const CaseNode& root, const Imme
                                                 const ImmersedSwitchGeometry& geometry,
                                                 Real* mean_free_path = nullptr);
 
-// Runs the case's study; writes histories (/dynamic/<name>: time; control, min_gap,
-// electrostatic_force, gas_force) and the beam's displacement at the end (field 0); returns
+// Runs the case's study; writes the curve and histories (pull_in_results.hpp; the contact
+// force is 0) and the beam's displacement at the end (field 0); returns
 // the --json summary part, with the CPU per physics, the gas's largest Knudsen number and
 // validity_warnings (contact gap below a background cell; Reynolds film at Kn > 1 or followed
 // below half the gap).

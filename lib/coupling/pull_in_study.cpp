@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "coupling/coupling_settings.hpp"
 #include "coupling/laplace_pull_in.hpp"
+#include "coupling/pull_in_results.hpp"
 #include "physics/elasticity/elasticity_scene.hpp"
 
 namespace rfmems {
@@ -167,19 +168,6 @@ QuasiStaticPullIn quasi_static(SwitchScene& scene, const PullInSettings& setting
   return r.result;
 }
 
-void write_history(ResultWriter& writer, const std::string& name, const DynamicRun& run) {
-  std::vector<Real> t;
-  std::vector<std::vector<double>> values;
-  for (const DynamicSample& s : run.history) {
-    t.push_back(s.t);
-    values.push_back({s.control, s.min_gap, s.electrostatic_force, s.gas_force, s.contact_force,
-                      s.voltage});
-  }
-  writer.write_time_series("dynamic", name, t, values,
-                           {"control", "min_gap", "electrostatic_force", "gas_force",
-                            "contact_force", "voltage"});
-}
-
 // Mode transient: the step voltage from rest by the case's coupling scheme.
 void run_transient(SwitchScene& scene, const PullInSettings& settings, PullInReport& report) {
   const Real v = settings.transient_voltage;
@@ -233,13 +221,13 @@ void run_laplace_dynamic(SwitchScene& scene, const PullInSettings& settings, Res
   if (voltages.empty()) voltages = {0.97 * report.dynamic.voltage, 1.03 * report.dynamic.voltage};
   for (std::size_t k = 0; k < voltages.size(); ++k) {
     DynamicRun run = sw.run(voltages[k], whole, settings.laplace_coupling);
-    write_history(writer, fmt::format("V{}", k), run);
+    write_dynamic_history(writer, fmt::format("V{}", k), run);
     report.histories.emplace_back(voltages[k], std::move(run));
   }
   if (settings.small_signal > 0) {
     const Real v = settings.small_signal * qs.pull_in_voltage;
     const DynamicRun run = sw.run(v, whole, settings.laplace_coupling);
-    write_history(writer, "small_signal", run);
+    write_dynamic_history(writer, "small_signal", run);
     report.small_signal_voltage = v;
     report.small_signal = free_response(run.history);
   }
@@ -258,7 +246,7 @@ PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& setting
     const DynamicState& end = report.transient.final_state;
     if (end.y.size() >= static_cast<std::size_t>(n))
       model.write_fields(writer, 0, end.t, std::vector<Real>(end.y.begin(), end.y.begin() + n), {});
-    write_history(writer, "transient", report.transient);
+    write_dynamic_history(writer, "transient", report.transient);
     report.histories.emplace_back(settings.transient_voltage, report.transient);  // validity
     return report;
   }
@@ -267,14 +255,7 @@ PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& setting
   const QuasiStaticPullIn& qs = report.quasi_static;
   std::vector<Real> fold(qs.fold_state.begin(), qs.fold_state.begin() + n);
   model.write_fields(writer, 0, 0.0, fold, {});
-  std::vector<Real> delta;
-  std::vector<std::vector<double>> rows;
-  for (const PullInPoint& p : qs.curve) {
-    delta.push_back(p.displacement);
-    rows.push_back({p.voltage, p.min_gap, p.stable ? 1.0 : 0.0});
-  }
-  writer.write_time_series("pull_in", "curve", delta, rows, {"voltage", "min_gap", "stable"},
-                           "control_displacement");
+  write_pull_in_curve(writer, qs);
   if (!settings.dynamic) return report;
 
   if (scene.electrostatics == ElectrostaticsModel::Laplace) {
@@ -300,7 +281,7 @@ PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& setting
       o.stop_at_contact = !scene.contact.enabled();  // with contact: resting on the dielectric
       return o;
     }());
-    write_history(writer, fmt::format("V{}", k), run);
+    write_dynamic_history(writer, fmt::format("V{}", k), run);
     report.histories.emplace_back(v, std::move(run));
   }
   if (settings.small_signal > 0) {
@@ -308,7 +289,7 @@ PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& setting
     DynamicOptions o = settings.run;
     o.stop_at_turning = false;
     const DynamicRun run = run_dynamic(system, scene.control, [v](Real) { return v; }, o);
-    write_history(writer, "small_signal", run);
+    write_dynamic_history(writer, "small_signal", run);
     report.small_signal_voltage = v;
     report.small_signal = free_response(run.history);
   }
@@ -340,7 +321,7 @@ PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& setting
                            settings.run, r);
     DynamicRun both = report.approach.run;
     both.history.insert(both.history.end(), report.hold.history.begin(), report.hold.history.end());
-    write_history(writer, "release", both);
+    write_dynamic_history(writer, "release", both);
     report.has_release = true;
     if (settings.release_tolerance > 0) {
       // Default high end: the voltage that pulled in (holds: no drop). The dynamic pull-out

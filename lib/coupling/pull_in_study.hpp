@@ -126,11 +126,10 @@ struct PullInReport {
   double transient_wall_s = 0, transient_cpu_s = 0;
 };
 
-// Runs the study; writes the fold's fields (index 0), the curve (/pull_in/curve: abscissa
-// control_displacement, values voltage, min_gap, stable), with contact the contact branch
-// (/pull_in/contact_branch: abscissa voltage, values control, min_gap, contact_fraction) and
-// the histories (/dynamic/V<k>: time; control, min_gap, electrostatic_force, gas_force,
-// contact_force, voltage; the small-signal run is /dynamic/small_signal, the release
+// Runs the study; writes the fold's fields (index 0), the curve (/pull_in/curve,
+// pull_in_results.hpp), with contact the contact branch (/pull_in/contact_branch: abscissa
+// voltage, values control, min_gap, contact_fraction) and the histories (/dynamic/V<k>,
+// pull_in_results.hpp; the small-signal run is /dynamic/small_signal, the release
 // /dynamic/release: the approach and the hold) into `writer`.
 // Mode transient: only the run, /dynamic/transient, and the end state's fields (index 0).
 PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& settings,

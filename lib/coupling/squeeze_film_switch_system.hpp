@@ -39,10 +39,6 @@ class SqueezeFilmSwitchSystem : public SwitchSystem {
   void initial_state(Real t0, std::vector<Real>& y, std::vector<Real>& yp) override;
   Real displacement(std::span<const Real> y, Index i) const override { return y[i]; }
   Real velocity(std::span<const Real> y, std::span<const Real> yp, Index i) const override;
-  Real min_gap(std::span<const Real> y) const override { return actuation_.min_gap(y); }
-  Real electrostatic_force(Real t, std::span<const Real> y) const override {
-    return actuation_.total_force(actuation_.voltage_squared(t), y);
-  }
   Real gas_force(std::span<const Real> y) const override;
   ParallelPlateActuation& actuation() override { return actuation_; }
   const ParallelPlateActuation& actuation() const override { return actuation_; }

@@ -29,12 +29,15 @@ class SwitchSystem : public SystemOperator {
   // Structural displacement and velocity of unknown i of the structure.
   virtual Real displacement(std::span<const Real> y, Index i) const = 0;
   virtual Real velocity(std::span<const Real> y, std::span<const Real> yp, Index i) const = 0;
-  virtual Real min_gap(std::span<const Real> y) const = 0;
-  // Forces along the gap axis on the structure [N] (negative: closing).
-  virtual Real electrostatic_force(Real t, std::span<const Real> y) const = 0;
   virtual Real gas_force(std::span<const Real> /*y*/) const { return 0.0; }
   virtual ParallelPlateActuation& actuation() = 0;
   virtual const ParallelPlateActuation& actuation() const = 0;
+  // The actuation's smallest gap, and its force along the gap axis on the structure [N]
+  // (negative: closing); the structure's unknowns lead the state.
+  Real min_gap(std::span<const Real> y) const { return actuation().min_gap(y); }
+  Real electrostatic_force(Real t, std::span<const Real> y) const {
+    return actuation().total_force(actuation().voltage_squared(t), y);
+  }
   // The dielectric's contact force (positive: opening; contact_penalty.hpp) and the fraction
   // of the electrode's area in contact.
   Real contact_force(Real t, std::span<const Real> y) const {
@@ -69,10 +72,6 @@ class ActuatedStructureSystem : public SwitchSystem {
   void initial_state(Real t0, std::vector<Real>& y, std::vector<Real>& yp) override;
   Real displacement(std::span<const Real> y, Index i) const override { return y[i]; }
   Real velocity(std::span<const Real> y, std::span<const Real> yp, Index i) const override;
-  Real min_gap(std::span<const Real> y) const override { return actuation_.min_gap(y); }
-  Real electrostatic_force(Real t, std::span<const Real> y) const override {
-    return actuation_.total_force(actuation_.voltage_squared(t), y);
-  }
   ParallelPlateActuation& actuation() override { return actuation_; }
   const ParallelPlateActuation& actuation() const override { return actuation_; }
 

@@ -2,6 +2,7 @@
 // DistributedSystem contract: the distributed counterparts of core/structural_systems.hpp,
 // row for row the same equations on the owned unknowns.
 #pragma once
+#include "core/first_order_layout.hpp"
 #include "parallel/distributed_system.hpp"
 
 namespace rfmems {
@@ -30,19 +31,20 @@ class DistributedStaticSystem : public DistributedSystem {
   DistributedSecondOrderOperator& op_;
 };
 
-// First-order form for IDA, owned state Y = [y; v] (n + n, this rank's owned unknowns):
+// First-order form for IDA, owned state Y = [y; v] (n + n, this rank's owned unknowns), as
+// core/first_order_layout.hpp:
 //   F_y = y' - v,   F_v = M v' + R(t, y).
 // Local columns: [y owned; v owned; y ghosts] (only R reaches ghosts).
 class DistributedFirstOrderSystem : public DistributedSystem {
  public:
   explicit DistributedFirstOrderSystem(DistributedSecondOrderOperator& op);
   const Communicator& communicator() const override { return op_.communicator(); }
-  Index owned_size() const override { return 2 * n_; }
-  Index local_columns() const override { return 2 * n_ + n_ghost_; }
+  Index owned_size() const override { return 2 * layout_.n(); }
+  Index local_columns() const override { return 2 * layout_.n() + n_ghost_; }
   std::vector<Real> differential_components() const override;
   void residual(Real t, std::span<const Real> y, std::span<const Real> yp,
                 std::span<Real> r) override;
-  const CsrPattern& jacobian_pattern() const override { return pattern_; }
+  const CsrPattern& jacobian_pattern() const override { return layout_.pattern(); }
   void jacobian(Real t, Real c_j, std::span<const Real> y, std::span<const Real> yp,
                 std::span<Real> values) override;
   void exchange_ghosts(std::span<Real> x) const override;
@@ -50,12 +52,9 @@ class DistributedFirstOrderSystem : public DistributedSystem {
 
  private:
   DistributedSecondOrderOperator& op_;
-  Index n_, n_ghost_;
-  std::vector<Real> mass_;
-  CsrPattern pattern_;
-  std::vector<Index> mass_position_;       // value index of (n + i, n + i)
-  std::vector<Index> stiffness_position_;  // value index of each stiffness entry
-  std::vector<Real> k_values_, r_;
+  FirstOrderLayout layout_;
+  Index n_ghost_;
+  std::vector<Real> k_values_;
   mutable std::vector<Real> column_work_;
 };
 

@@ -1,5 +1,9 @@
-# Shared by the driver tests (sourced, not run): PASS/FAIL counting and the bad-input contract.
-# The sourcing script sets DRIVER (the program) and WORK (a scratch directory).
+# Shared by the driver tests (sourced, not run): the scratch directory WORK (removed on exit),
+# the Python PY, PASS/FAIL counting and the bad-input contract. The sourcing script sets
+# DRIVER (the program).
+PY=/usr/bin/python3
+WORK=$(mktemp -d)
+trap 'rm -rf "$WORK"' EXIT
 failures=0
 pass() { echo "PASS: $1"; }
 fail() { echo "FAIL: $1"; failures=$((failures + 1)); }

@@ -17,12 +17,9 @@ set -uo pipefail
 
 DRIVER="$1/rfmems-pullin"
 SRC="$2"
-PY=/usr/bin/python3
 PLATE="$SRC/cases/switch_plate/case.yaml"
 PLANE="$SRC/cases/switch_plane_laplace/case.yaml"
 
-WORK=$(mktemp -d)
-trap 'rm -rf "$WORK"' EXIT
 source "$SRC/test/drivers/common.sh"
 
 COARSE=(--set "mesh.cells=[20, 2]" --set pull_in.mode=transient

@@ -20,12 +20,9 @@ set -uo pipefail
 
 DRIVER="$1/rfmems-creep"
 SRC="$2"
-PY=/usr/bin/python3
 FIXED="$SRC/cases/creep_fixed_fixed/case.yaml"
 HOLD="$SRC/cases/creep_switch_hold/case.yaml"
 
-WORK=$(mktemp -d)
-trap 'rm -rf "$WORK"' EXIT
 source "$SRC/test/drivers/common.sh"
 
 # --- checkpoint / restart under SIGKILL ---------------------------------------------------

@@ -20,11 +20,8 @@ set -uo pipefail
 
 DRIVER="$1/rfmems-creep"
 SRC="$2"
-PY=/usr/bin/python3
 CASE="$SRC/cases/frogleg_varactor/case.yaml"
 
-WORK=$(mktemp -d)
-trap 'rm -rf "$WORK"' EXIT
 source "$SRC/test/drivers/common.sh"
 
 # --- the hold voltage for a 1.43 um gap ---------------------------------------------------

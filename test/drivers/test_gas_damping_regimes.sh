@@ -20,10 +20,7 @@ set -uo pipefail
 
 DRIVER="$1/rfmems-gas"
 SRC="$2"
-PY=/usr/bin/python3
 CASE="$SRC/cases/gas_damping_regimes/case.yaml"
-WORK=$(mktemp -d)
-trap 'rm -rf "$WORK"' EXIT
 source "$SRC/test/drivers/common.sh"
 
 R=208.13

@@ -11,13 +11,10 @@ set -uo pipefail
 
 DRIVER="$1/rfmems-gas"
 SRC="$2"
-PY=/usr/bin/python3
 COUETTE="$SRC/cases/gas_couette/case.yaml"
 HEAT="$SRC/cases/gas_heat_transfer/case.yaml"
 CAVITY="$SRC/cases/gas_cavity/case.yaml"
 
-WORK=$(mktemp -d)
-trap 'rm -rf "$WORK"' EXIT
 source "$SRC/test/drivers/common.sh"
 
 # ---- Couette, Kn = 0.1, 20 cells: slip solution within 2 % RMS, forces balance --------------

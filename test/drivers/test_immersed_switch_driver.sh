@@ -10,12 +10,9 @@ set -uo pipefail
 
 DRIVER="$1/rfmems-pullin"
 SRC="$2"
-PY=/usr/bin/python3
 CASE="$SRC/cases/cantilever_switch/case.yaml"
 COARSE=(--set "mesh.cells=[46, 4]" --set "immersed.background.cells=[101, 31]")
 
-WORK=$(mktemp -d)
-trap 'rm -rf "$WORK"' EXIT
 source "$SRC/test/drivers/common.sh"
 
 if "$DRIVER" "$CASE" "${COARSE[@]}" --set pull_in.mode=static -o "$WORK/static.h5" --json \

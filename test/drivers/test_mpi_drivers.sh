@@ -14,12 +14,9 @@ set -uo pipefail
 
 DRIVER="$1/rfmems-pullin"
 SRC="$2"
-PY=/usr/bin/python3
 CASE="$SRC/cases/switch_plate/case.yaml"
 MPIRUN=(mpirun --allow-run-as-root --oversubscribe -np 2)
 
-WORK=$(mktemp -d)
-trap 'rm -rf "$WORK"' EXIT
 source "$SRC/test/drivers/common.sh"
 
 "$DRIVER" "$CASE" --set pull_in.mode=quasi_static -o "$WORK/serial.h5" --json --quiet \

@@ -15,15 +15,12 @@ set -uo pipefail
 
 DRIVER="$1/rfmems-pullin"
 SRC="$2"
-PY=/usr/bin/python3
 CASE="$SRC/cases/cantilever_switch/case.yaml"
 ARGS=(--set "mesh.cells=[45, 3]" --set "immersed.background.cells=[76, 26]" --set gas.model=esbgk
       --set gas.velocities=6 --set gas.step_tolerance=1e-8 --set pull_in.mode=transient
       --set pull_in.transient.voltage=80V --set pull_in.transient.end_time=0.02us
       --set pull_in.transient.output_interval=1ns --json --quiet)
 
-WORK=$(mktemp -d)
-trap 'rm -rf "$WORK"' EXIT
 source "$SRC/test/drivers/common.sh"
 
 "$DRIVER" "$CASE" "${ARGS[@]}" -o "$WORK/serial.h5" >"$WORK/serial.json" 2>"$WORK/err" ||

@@ -9,12 +9,9 @@ set -uo pipefail
 
 DRIVER="$1/rfmems-solid"
 SRC="$2"
-PY=/usr/bin/python3
 CLAMPED="$SRC/cases/clamped_plate/case.yaml"
 VIBRATION="$SRC/cases/plate_vibration/case.yaml"
 
-WORK=$(mktemp -d)
-trap 'rm -rf "$WORK"' EXIT
 source "$SRC/test/drivers/common.sh"
 
 # ---- clamped square plate, a/h = 100: w = 1.269e-3 q a^4 / D, M_xx = 0.0229 q a^2 ----------

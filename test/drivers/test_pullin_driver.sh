@@ -9,12 +9,9 @@ set -uo pipefail
 
 DRIVER="$1/rfmems-pullin"
 SRC="$2"
-PY=/usr/bin/python3
 PLATE="$SRC/cases/switch_plate/case.yaml"
 PLANE="$SRC/cases/switch_plane_laplace/case.yaml"
 
-WORK=$(mktemp -d)
-trap 'rm -rf "$WORK"' EXIT
 source "$SRC/test/drivers/common.sh"
 
 for p in atm kPa; do

@@ -10,12 +10,9 @@ set -uo pipefail
 
 DRIVER="$1/rfmems-pullin"
 SRC="$2"
-PY=/usr/bin/python3
 PLANE="$SRC/cases/switch_plane_laplace/case.yaml"
 PLATE="$SRC/cases/switch_plate/case.yaml"
 
-WORK=$(mktemp -d)
-trap 'rm -rf "$WORK"' EXIT
 source "$SRC/test/drivers/common.sh"
 
 # Coarse beam (two cells through the thickness: V_PI ~550 V), per-kind error weights at

@@ -13,9 +13,6 @@ set -uo pipefail
 
 DRIVER="$1/rfmems-solid"
 SRC="$2"
-PY=/usr/bin/python3
-WORK=$(mktemp -d)
-trap 'rm -rf "$WORK"' EXIT
 source "$SRC/test/drivers/common.sh"
 MPIRUN=(mpirun --allow-run-as-root --oversubscribe)
 DIST=(--set 'solver={distributed: true}')

@@ -10,17 +10,11 @@ set -uo pipefail
 
 DRIVER="$1/rfmems-solid"
 SRC="$2"
-PY=/usr/bin/python3
 STATIC="$SRC/cases/cantilever_static/case.yaml"
 VIBRATION="$SRC/cases/cantilever_vibration/case.yaml"
 SMALL=(--set "mesh.cells=[20,4]")
 
-WORK=$(mktemp -d)
-trap 'rm -rf "$WORK"' EXIT
-failures=0
-
-pass() { echo "PASS: $1"; }
-fail() { echo "FAIL: $1"; failures=$((failures + 1)); }
+source "$SRC/test/drivers/common.sh"
 
 # ---- (a) a static run ------------------------------------------------------------------
 OUT="$WORK/static"

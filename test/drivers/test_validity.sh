@@ -14,11 +14,8 @@ set -uo pipefail
 
 DRIVER="$1/rfmems-pullin"
 SRC="$2"
-PY=/usr/bin/python3
 PLATE="$SRC/cases/switch_plate/case.yaml"
 
-WORK=$(mktemp -d)
-trap 'rm -rf "$WORK"' EXIT
 source "$SRC/test/drivers/common.sh"
 
 # run NAME ARGS...: the driver with --json; stdout to NAME.json, stderr to NAME.err.

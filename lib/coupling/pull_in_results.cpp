@@ -1,0 +1,31 @@
+#include "coupling/pull_in_results.hpp"
+
+#include <vector>
+
+namespace rfmems {
+
+void write_pull_in_curve(ResultWriter& writer, const QuasiStaticPullIn& quasi_static) {
+  std::vector<double> delta;
+  std::vector<std::vector<double>> rows;
+  for (const PullInPoint& p : quasi_static.curve) {
+    delta.push_back(p.displacement);
+    rows.push_back({p.voltage, p.min_gap, p.stable ? 1.0 : 0.0});
+  }
+  writer.write_time_series("pull_in", "curve", delta, rows, {"voltage", "min_gap", "stable"},
+                           "control_displacement");
+}
+
+void write_dynamic_history(ResultWriter& writer, const std::string& name, const DynamicRun& run) {
+  std::vector<double> t;
+  std::vector<std::vector<double>> rows;
+  for (const DynamicSample& s : run.history) {
+    t.push_back(s.t);
+    rows.push_back({s.control, s.min_gap, s.electrostatic_force, s.gas_force, s.contact_force,
+                    s.voltage});
+  }
+  writer.write_time_series("dynamic", name, t, rows,
+                           {"control", "min_gap", "electrostatic_force", "gas_force",
+                            "contact_force", "voltage"});
+}
+
+}  // namespace rfmems

@@ -1,0 +1,18 @@
+// The pull-in studies' curves and histories in a result file, one layout for every switch
+// (pull_in_study.hpp, immersed_switch_study.hpp):
+//   /pull_in/curve     abscissa control_displacement; values voltage, min_gap, stable (1 / 0)
+//   /dynamic/<name>    time; control, min_gap, electrostatic_force, gas_force, contact_force,
+//                      voltage
+#pragma once
+#include <string>
+
+#include "coupling/dynamic_pull_in.hpp"
+#include "coupling/quasi_static_pull_in.hpp"
+#include "io/result_writer.hpp"
+
+namespace rfmems {
+
+void write_pull_in_curve(ResultWriter& writer, const QuasiStaticPullIn& quasi_static);
+void write_dynamic_history(ResultWriter& writer, const std::string& name, const DynamicRun& run);
+
+}  // namespace rfmems

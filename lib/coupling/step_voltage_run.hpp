@@ -1,0 +1,59 @@
+// What the field-coupled beams (laplace_dynamic_switch.hpp, immersed_switch.hpp) share in a
+// step-voltage run from rest in IDA's one-step mode, where the field is exchanged after every
+// step IDA accepts:
+//
+//   roots    g0 = min_gap(u) - contact_gap: falls through 0 at touch-down (the pull-in time;
+//            the run ends); g1 = the control's velocity: rises through 0 after the control
+//            moved down (turned back: no pull-in for a step voltage), as run_dynamic's
+//            (dynamic_pull_in.hpp);
+//   events   after each step, the extreme deflection, the touch-down and the first turning
+//            recorded in the DynamicRun, and whether the run ends;
+//   history  one record per accepted step, kept as it is or resampled at output_interval:
+//            cubic Hermite in the control's deflection and velocity, the other columns linear.
+#pragma once
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "coupling/dynamic_pull_in.hpp"
+#include "solvers/ida_integrator.hpp"
+
+namespace rfmems {
+
+// The state after an accepted step (or at rest).
+struct StepRecord {
+  Real t, control, velocity, min_gap, electrostatic_force, gas_force;
+};
+
+class StepVoltageEvents {
+ public:
+  // turning_after: the control moving down counts from this time on (the immersed beam's
+  // higher modes can flip the control's velocity in the first quarter period).
+  explicit StepVoltageEvents(bool stop_at_turning, Real turning_after = 0)
+      : stop_at_turning_(stop_at_turning), turning_after_(turning_after) {}
+
+  // Installs g0 and g1 on ida: min_gap of the displacements (the state's first n entries),
+  // the control's velocity at state index velocity.
+  static void set_roots(IdaIntegrator& ida, Index n, Index velocity, Real contact_gap,
+                        std::function<Real(std::span<const Real>)> min_gap);
+
+  // After a step that returned status at time t with the control's deflection control:
+  // records the extreme, a touch-down and the first turning in run; true: the run ends.
+  bool after_step(const IdaIntegrator& ida, IdaIntegrator::Status status, Real t, Real control,
+                  DynamicRun& run);
+
+ private:
+  bool stop_at_turning_;
+  Real turning_after_;
+  bool moved_down_ = false;
+};
+
+// Fills run's final time, state and stats from ida and its history at voltage from records
+// (every record for output_interval <= 0). through_final_time: uniform samples up to and
+// including the final time (the immersed switch's), else before it; the last record closes
+// the history either way.
+void finish_step_voltage_run(const IdaIntegrator& ida, const std::vector<StepRecord>& records,
+                             Real voltage, Real output_interval, bool through_final_time,
+                             DynamicRun& run);
+
+}  // namespace rfmems
