@@ -1,11 +1,10 @@
 #include "physics/structure/distributed_analysis.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <memory>
 
 #include "core/error.hpp"
 #include "parallel/distributed_structural_systems.hpp"
+#include "physics/structure/output_schedule.hpp"
 #include "physics/elasticity/distributed_elasticity.hpp"
 #include "physics/plate/distributed_plate.hpp"
 #include "solvers/distributed_ida_integrator.hpp"
@@ -69,14 +68,10 @@ AnalysisStats run_transient(const AnalysisSettings& settings, DistributedSecondO
   };
   emit(0, 0.0);
   const Real dt = settings.output_interval, t_end = settings.end_time;
-  const long n_intervals = std::max(1L, static_cast<long>(std::ceil(t_end / dt - 1e-9)));
-  for (long k = 1; k <= n_intervals; ++k) {
-    const Real t = k == n_intervals ? t_end : static_cast<Real>(k) * dt;
-    ida.advance(t);
-    emit(static_cast<int>(k), t);
-    const IntegratorStats s = ida.stats();
-    if (root) progress.update(t, s.last_step, s.steps);
-  }
+  const long n_intervals =
+      advance_through_outputs(ida, dt, t_end, emit, [&](Real t, const IntegratorStats& s) {
+        if (root) progress.update(t, s.last_step, s.steps);
+      });
   stats.transient = ida.stats();
   stats.n_outputs = static_cast<int>(n_intervals) + 1;
   stats.final_time = t_end;

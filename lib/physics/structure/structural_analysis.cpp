@@ -4,7 +4,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cmath>
 #include <memory>
 #include <limits>
 #include <vector>
@@ -12,6 +11,7 @@
 #include "core/error.hpp"
 #include "core/reduced_inertia_system.hpp"
 #include "core/structural_systems.hpp"
+#include "physics/structure/output_schedule.hpp"
 #include "solvers/static_solve.hpp"
 
 namespace rfmems {
@@ -99,15 +99,10 @@ AnalysisStats run_transient(StructuralModel& model, const AnalysisSettings& sett
   };
   emit(0, 0.0);
 
-  // k dt up to end_time; a last, shorter interval if end_time is not a multiple of dt.
-  const long n_intervals = std::max(1L, static_cast<long>(std::ceil(t_end / dt - 1e-9)));
-  for (long k = 1; k <= n_intervals; ++k) {
-    const Real t = k == n_intervals ? t_end : static_cast<Real>(k) * dt;
-    ida.advance(t);
-    emit(static_cast<int>(k), t);
-    const IntegratorStats s = ida.stats();
-    progress.update(t, s.last_step, s.steps);
-  }
+  const long n_intervals =
+      advance_through_outputs(ida, dt, t_end, emit, [&](Real t, const IntegratorStats& s) {
+        progress.update(t, s.last_step, s.steps);
+      });
   stats.transient = ida.stats();
   stats.n_outputs = static_cast<int>(n_intervals) + 1;
   stats.final_time = t_end;
