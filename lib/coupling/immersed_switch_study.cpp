@@ -307,8 +307,7 @@ Json run_immersed_switch_study(ImmersedSwitchCase& c, const CaseNode& root, Resu
                     "the IB layer fills the gap before touch-down",
                     c.run.contact_gap, cell));
   // The film's limits are the Reynolds film's only; the kinetic gas holds at every Kn.
-  const std::string gas_model =
-      root.child_or_empty("gas").get_choice("model", {"none", "reynolds", "esbgk"}, "none");
+  const std::string gas_model = c.gas ? c.gas->name() : "none";
   if (gas_model == "reynolds" && j["gas_max_knudsen"].get<double>() > 1.0)
     warnings.push_back(
         fmt::format("Reynolds film at Kn up to {:.3g} (> 1): Veijola's viscosity "
@@ -321,7 +320,7 @@ Json run_immersed_switch_study(ImmersedSwitchCase& c, const CaseNode& root, Resu
         "displacement: the 1D film takes h from the deformed beam, no edge "
         "correction at the tip)");
   // ESBGK on the background: its cell size against the mean free path (scene_validity.hpp).
-  if (c.gas && gas_model == "esbgk") {
+  if (gas_model == "esbgk") {
     const ImmersedSwitchGeometry& g = c.geometry;
     const Real hx = (g.background_upper.x() - g.background_lower.x()) / g.background_cells[0];
     ValidityReport v;
