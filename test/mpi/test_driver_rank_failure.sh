@@ -7,9 +7,7 @@
 set -uo pipefail
 PROGRAM="$1"
 CASE="$2/cases/switch_plate/case.yaml"
-WORK=$(mktemp -d)
-trap 'rm -rf "$WORK"' EXIT
-failures=0
+source "$2/test/drivers/common.sh"
 
 for ranks in 1 2 3; do
   start=$(date +%s)
@@ -19,11 +17,9 @@ for ranks in 1 2 3; do
   seconds=$(( $(date +%s) - start ))
   last=$((ranks - 1))
   if [ "$code" -eq 1 ] && grep -q "^driver_rank_failure: error: injected failure on rank $last$" "$WORK/err"; then
-    echo "PASS: $ranks rank(s): exit 1 in ${seconds} s with the failing rank's line"
+    pass "$ranks rank(s): exit 1 in ${seconds} s with the failing rank's line"
   else
-    echo "FAIL: $ranks rank(s): exit $code after ${seconds} s (124 = hung), stderr:"
-    cat "$WORK/err"
-    failures=$((failures + 1))
+    fail "$ranks rank(s): exit $code after ${seconds} s (124 = hung), stderr: $(cat "$WORK/err")"
   fi
 done
 exit "$failures"
