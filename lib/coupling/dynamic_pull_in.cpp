@@ -37,12 +37,15 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
     if (!start) throw;
     ida.reinitialize(t0, y, yp);
   }
-  ida.set_roots(3, [&](Real, std::span<const Real> yy, std::span<const Real> yyp,
-                       std::span<Real> g) {
+  TurningBack turning(options.turning_retreat);
+  const int release_root = 1 + TurningBack::kRoots;
+  ida.set_roots(2 + TurningBack::kRoots, [&](Real, std::span<const Real> yy,
+                                             std::span<const Real> yyp, std::span<Real> g) {
     const Real gap = system.min_gap(yy);
     g[0] = gap - options.contact_gap;
-    g[1] = system.velocity(yy, yyp, control);
-    g[2] = options.release_gap > 0 ? gap - options.release_gap : 1.0;
+    turning.roots(system.displacement(yy, control), system.velocity(yy, yyp, control),
+                  g.subspan(1, TurningBack::kRoots));
+    g[release_root] = options.release_gap > 0 ? gap - options.release_gap : 1.0;
   });
 
   DynamicRun run;
@@ -56,13 +59,12 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
   sample(t0);
   Real next_output = first_output;
   Real stop_time = options.end_time;  // moves to touch-down + stop_after_contact
-  bool moved_down = false;
   while (true) {
     const IdaIntegrator::Status status = ida.advance(std::min(next_output, stop_time));
     const Real t = ida.time();
     const auto state = ida.y();
-    run.extreme_control = std::min(run.extreme_control, system.displacement(state, control));
-    if (system.displacement(state, control) < 0) moved_down = true;
+    const Real x = system.displacement(state, control);
+    run.extreme_control = std::min(run.extreme_control, x);
     if (status == IdaIntegrator::Status::Root) {
       const std::vector<int> found = ida.roots_found();
       if (found[0] < 0) {
@@ -78,14 +80,14 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
             stop_time = std::min(options.end_time, t + options.stop_after_contact);
         }
       }
-      if (found[2] > 0) {
+      if (found[release_root] > 0) {
         sample(t);
         run.released = true;
         run.release_time = t;
         break;
       }
-      if (found[1] > 0 && moved_down && run.turning_time == 0 && !run.pulled_in) {
-        run.turning_time = t;
+      if (turning.at_root(t, x, found[1], found[2]) && !run.pulled_in) {
+        run.turning_time = turning.turning_time();
         if (options.stop_at_turning) {
           sample(t);
           break;

@@ -6,11 +6,12 @@
 //                                                contact penalty, stop_at_contact false) goes
 //                                                on with the structure resting on the
 //                                                dielectric;
-//   turning:  velocity of the control unknown    rises through 0 after moving towards the
-//                                                electrode: the structure turned back before
-//                                                touching, so (for a step voltage, undamped or
-//                                                underdamped) it will not pull in; the run ends
-//                                                early unless told to go on (release studies);
+//   turning:  the control unknown retreated      from its extreme towards the electrode by
+//             (two roots, turning_back.hpp)      turning_retreat of that excursion: the
+//                                                structure turned back before touching, so
+//                                                (for a step voltage, undamped or underdamped)
+//                                                it will not pull in; the run ends early
+//                                                unless told to go on (release studies);
 //   release:  min_gap(y) - release_gap           rises through 0 (armed with release_gap > 0):
 //                                                the structure lifted off the dielectric, the
 //                                                run ends and reports the release time.
@@ -29,6 +30,7 @@
 
 #include "coupling/state_tolerances.hpp"
 #include "coupling/switch_system.hpp"
+#include "coupling/turning_back.hpp"
 #include "solvers/ida_integrator.hpp"
 
 namespace rfmems {
@@ -37,6 +39,8 @@ struct DynamicOptions {
   Real end_time = 0;            // the run gives up (not pulled in) here (absolute time)
   Real contact_gap = 0;         // touch-down when the smallest gap reaches this [m]
   bool stop_at_turning = true;  // end when the control unknown turns back (see above)
+  Real turning_retreat = kTurningRetreat;  // the retreat that counts as turned back
+                                           // (coupling/turning_back.hpp)
   bool stop_at_contact = true;  // end at touch-down (false: go on in contact; needs a penalty)
   Real stop_after_contact = -1; // >= 0 (with stop_at_contact false): end this long after
                                 // touch-down (where a release study drops the voltage)
