@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "coupling/step_response_fit.hpp"
 
 namespace rfmems {
 
@@ -108,7 +109,7 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
   return run;
 }
 
-FreeResponse free_response(const std::vector<DynamicSample>& h) {
+LogDecrement log_decrement(const std::vector<DynamicSample>& h) {
   // Extrema (time, value) by a parabola through each local extreme sample and its neighbours.
   std::vector<std::pair<Real, Real>> extrema;
   for (std::size_t i = 1; i + 1 < h.size(); ++i) {
@@ -119,7 +120,7 @@ FreeResponse free_response(const std::vector<DynamicSample>& h) {
     const Real shift = curvature != 0 ? 0.5 * (a - c) / curvature : 0.0;  // in samples
     extrema.emplace_back(h[i].t + shift * dt, b - 0.25 * (a - c) * shift);
   }
-  FreeResponse r;
+  LogDecrement r;
   if (extrema.size() < 3) return r;
   // ln s_k = ln s_0 - k delta / 2: least-squares slope.
   std::vector<Real> k, ln_s;
@@ -140,6 +141,27 @@ FreeResponse free_response(const std::vector<DynamicSample>& h) {
   r.damping_ratio = delta / std::sqrt(4 * M_PI * M_PI + delta * delta);
   r.frequency = 0.5 * (extrema.size() - 1) / (extrema.back().first - extrema.front().first);
   r.swings = static_cast<int>(k.size());
+  return r;
+}
+
+FreeResponse free_response(const std::vector<DynamicSample>& h) {
+  FreeResponse r;
+  r.log_decrement = log_decrement(h);
+  const LogDecrement& ld = r.log_decrement;
+  std::vector<Real> t, x;
+  for (const DynamicSample& s : h) {
+    t.push_back(s.t);
+    x.push_back(s.control);
+  }
+  const Real zeta_ld = std::min(ld.damping_ratio, 0.99);
+  const StepResponseFit fit = fit_step_response(
+      t, x, ld.swings > 0 ? zeta_ld : 0.0,
+      ld.swings > 0 ? 2 * M_PI * ld.frequency / std::sqrt(1 - zeta_ld * zeta_ld) : 0.0);
+  r.fitted = fit.fitted;
+  r.damping_ratio = fit.damping_ratio;
+  r.frequency = fit.damped_frequency;
+  r.natural_frequency = fit.natural_frequency;
+  r.residual = fit.residual;
   return r;
 }
 

@@ -76,16 +76,31 @@ struct DynamicRun {
   std::vector<DynamicSample> history;
 };
 
-// The damped free response in a recorded history (a step below pull-in): from the extrema
+// The logarithmic decrement of a recorded history (a step below pull-in): from the extrema
 // e_k of the control deflection, the half-swings s_k = |e_{k+1} - e_k| decay as
 // exp(-delta/2) per half period for x_eq + a exp(-zeta omega t) cos(omega_d t), so the
 // logarithmic decrement delta = 2 ln(s_k / s_{k+1}) (averaged over the swings by a
 // least-squares fit of ln s_k) gives zeta = delta / sqrt(4 pi^2 + delta^2), and the spacing
 // of the extrema the damped frequency. Extrema are located by parabolas through the samples.
-struct FreeResponse {
+// Valid while the extrema are the fundamental's (light damping); a weakly damped higher mode
+// on a heavily damped fundamental takes it over (free_response below).
+struct LogDecrement {
   Real damping_ratio = 0;
   Real frequency = 0;  // damped [Hz]
   int swings = 0;      // half-swings used (0: fewer than 2, nothing measured)
+};
+LogDecrement log_decrement(const std::vector<DynamicSample>& history);
+
+// The fundamental's small-signal response in a history of a step from rest below pull-in:
+// the damped oscillator's step response fitted to the control's deflection
+// (step_response_fit.hpp; the log decrement's figures are one of its starting points).
+struct FreeResponse {
+  bool fitted = false;        // false: too few samples or no motion, nothing measured
+  Real damping_ratio = 0;     // the fit's zeta
+  Real frequency = 0;         // damped [Hz] (0: overdamped, zeta >= 1)
+  Real natural_frequency = 0; // undamped [Hz]
+  Real residual = 0;          // the fit's rms misfit / |x_s - x_0|
+  LogDecrement log_decrement;
 };
 FreeResponse free_response(const std::vector<DynamicSample>& history);
 

@@ -28,4 +28,15 @@ void write_dynamic_history(ResultWriter& writer, const std::string& name, const 
                             "contact_force", "voltage"});
 }
 
+Json free_response_json(const FreeResponse& r) {
+  return {{"damping_ratio", r.damping_ratio},
+          {"frequency", r.frequency},
+          {"natural_frequency", r.natural_frequency},
+          {"fit_residual", r.residual},
+          {"log_decrement",
+           {{"damping_ratio", r.log_decrement.damping_ratio},
+            {"frequency", r.log_decrement.frequency},
+            {"swings", r.log_decrement.swings}}}};
+}
+
 }  // namespace rfmems

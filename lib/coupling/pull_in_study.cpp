@@ -425,11 +425,10 @@ Json pull_in_summary(const SwitchScene& scene, const PullInReport& report) {
       }
       j["dynamic"]["release"] = r;
     }
-    if (report.small_signal_voltage > 0)
-      j["dynamic"]["small_signal"] = {{"voltage", report.small_signal_voltage},
-                                      {"damping_ratio", report.small_signal.damping_ratio},
-                                      {"frequency", report.small_signal.frequency},
-                                      {"swings", report.small_signal.swings}};
+    if (report.small_signal_voltage > 0) {
+      j["dynamic"]["small_signal"] = free_response_json(report.small_signal);
+      j["dynamic"]["small_signal"]["voltage"] = report.small_signal_voltage;
+    }
   }
   return j;
 }
