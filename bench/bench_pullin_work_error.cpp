@@ -341,6 +341,8 @@ int main(int argc, char** argv) {
       j["frequency_hz"] = fr.frequency;
       j["damping_ratio"] = fr.damping_ratio;
       j["fit_residual"] = fr.residual;
+      j["fit_damping_ratio"] = fr.fit_damping_ratio;
+      j["fit_frequency_hz"] = fr.fit_frequency;
       j["log_decrement_damping_ratio"] = fr.log_decrement.damping_ratio;
       j["swings"] = fr.log_decrement.swings;
       j["omega_1_rad_s"] = omega_1;

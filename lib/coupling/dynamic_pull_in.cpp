@@ -158,10 +158,17 @@ FreeResponse free_response(const std::vector<DynamicSample>& h) {
       t, x, ld.swings > 0 ? zeta_ld : 0.0,
       ld.swings > 0 ? 2 * M_PI * ld.frequency / std::sqrt(1 - zeta_ld * zeta_ld) : 0.0);
   r.fitted = fit.fitted;
-  r.damping_ratio = fit.damping_ratio;
-  r.frequency = fit.damped_frequency;
+  r.fit_damping_ratio = r.damping_ratio = fit.damping_ratio;
+  r.fit_frequency = r.frequency = fit.damped_frequency;
   r.natural_frequency = fit.natural_frequency;
   r.residual = fit.residual;
+  r.from_log_decrement = fit.fitted && ld.swings >= 4 && fit.damped_frequency > 0 &&
+                         std::abs(ld.frequency / fit.damped_frequency - 1) <= 0.02;
+  if (r.from_log_decrement) {
+    r.damping_ratio = ld.damping_ratio;
+    r.frequency = ld.frequency;
+    r.natural_frequency = ld.frequency / std::sqrt(1 - std::pow(std::min(ld.damping_ratio, 0.99), 2));
+  }
   return r;
 }
 

@@ -93,13 +93,20 @@ LogDecrement log_decrement(const std::vector<DynamicSample>& history);
 
 // The fundamental's small-signal response in a history of a step from rest below pull-in:
 // the damped oscillator's step response fitted to the control's deflection
-// (step_response_fit.hpp; the log decrement's figures are one of its starting points).
+// (step_response_fit.hpp; the log decrement's figures are one of its starting points). Where
+// the log decrement is valid - at least 4 half-swings whose spacing gives the fit's damped
+// frequency within 2 %, so its extrema are the fundamental's - its zeta and frequency are
+// reported instead: at light damping they are the less biased by higher modes (a higher mode
+// of 1-2 % of the static deflection biases the fit's zeta 2-3x more, test_step_response_fit),
+// and they keep docs/BENCHMARKS.md 6e's figures.
 struct FreeResponse {
   bool fitted = false;        // false: too few samples or no motion, nothing measured
-  Real damping_ratio = 0;     // the fit's zeta
+  bool from_log_decrement = false;  // damping_ratio and frequency are the log decrement's
+  Real damping_ratio = 0;     // zeta
   Real frequency = 0;         // damped [Hz] (0: overdamped, zeta >= 1)
   Real natural_frequency = 0; // undamped [Hz]
   Real residual = 0;          // the fit's rms misfit / |x_s - x_0|
+  Real fit_damping_ratio = 0, fit_frequency = 0;  // the fit's zeta and damped frequency
   LogDecrement log_decrement;
 };
 FreeResponse free_response(const std::vector<DynamicSample>& history);

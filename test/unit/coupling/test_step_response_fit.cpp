@@ -54,12 +54,14 @@ TEST(StepResponseFit, RecoversTheFundamentalUnderAHigherMode) {
       // With the higher mode: its fast rise is part of the early motion, which alone carries
       // an overdamped response's zeta and w (4 % at zeta = 2).
       const double tol = higher == 0 ? 1e-6 : zeta < 1 ? 0.03 : 0.06;
-      EXPECT_NEAR(r.damping_ratio / zeta, 1.0, tol) << "zeta " << zeta << " higher " << higher;
-      EXPECT_NEAR(r.natural_frequency / kF, 1.0, tol) << "zeta " << zeta << " higher " << higher;
-      if (zeta < 1)
-        EXPECT_NEAR(r.frequency / (kF * std::sqrt(1 - zeta * zeta)), 1.0, tol) << zeta;
-      else
+      EXPECT_NEAR(r.fit_damping_ratio / zeta, 1.0, tol) << "zeta " << zeta << " higher " << higher;
+      if (zeta < 1) {
+        EXPECT_NEAR(r.fit_frequency / (kF * std::sqrt(1 - zeta * zeta)), 1.0, tol) << zeta;
+      } else {  // no log decrement to prefer: the fit's figures are the reported ones
+        EXPECT_FALSE(r.from_log_decrement);
+        EXPECT_NEAR(r.natural_frequency / kF, 1.0, tol) << "zeta " << zeta << " higher " << higher;
         EXPECT_EQ(r.frequency, 0.0);
+      }
       // The misfit is the higher mode's oscillation (rms ~ 0.7 of its amplitude at most).
       EXPECT_LT(r.residual, higher > 0 ? 0.8 * higher : 1e-6) << zeta;
     }
@@ -74,6 +76,16 @@ TEST(StepResponseFit, LogDecrementMeasuresTheHigherModeWhereTheFitDoesNot) {
   EXPECT_GT(r.log_decrement.frequency, 4 * kF);
   EXPECT_LT(r.log_decrement.damping_ratio, 0.1);
   EXPECT_NEAR(r.damping_ratio, 0.5, 0.015);
+}
+
+// Light damping: the log decrement's extrema are the fundamental's (its frequency is the
+// fit's), and its figures are reported; at zeta = 0.5 they are not (the higher mode's).
+TEST(StepResponseFit, LogDecrementReportedWhereItsExtremaAreTheFundamentals) {
+  const FreeResponse light = free_response(history(0.01, 0.005));
+  EXPECT_TRUE(light.from_log_decrement);
+  EXPECT_EQ(light.damping_ratio, light.log_decrement.damping_ratio);
+  EXPECT_NEAR(light.fit_damping_ratio / 0.01, 1.0, 0.03);
+  EXPECT_FALSE(free_response(history(0.5, 0.005)).from_log_decrement);
 }
 
 TEST(StepResponseFit, NothingToFitWithoutMotion) {
