@@ -330,7 +330,7 @@ int main(int argc, char** argv) {
       const DynamicRun r =
           run_dynamic(*system, scene.control, VoltageWaveform{}.at(free_voltage), o);
       const FreeResponse fr = free_response(r.history);
-      if (fr.swings < 2) {
+      if (!fr.fitted || fr.frequency <= 0) {
         std::fprintf(stderr, "  no free oscillation at %g V: give --velocity-rate\n",
                      free_voltage);
         return 1;
@@ -340,7 +340,11 @@ int main(int argc, char** argv) {
       j["variant"] = "omega_1";
       j["frequency_hz"] = fr.frequency;
       j["damping_ratio"] = fr.damping_ratio;
-      j["swings"] = fr.swings;
+      j["fit_residual"] = fr.residual;
+      j["fit_damping_ratio"] = fr.fit_damping_ratio;
+      j["fit_frequency_hz"] = fr.fit_frequency;
+      j["log_decrement_damping_ratio"] = fr.log_decrement.damping_ratio;
+      j["swings"] = fr.log_decrement.swings;
       j["omega_1_rad_s"] = omega_1;
       emit(j);
       std::fprintf(stderr, "  omega_1 = %.4e rad/s (f = %.1f kHz, zeta %.3g, %g V)\n", omega_1,

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "coupling/step_response_fit.hpp"
 
 namespace rfmems {
 
@@ -37,12 +38,15 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
     if (!start) throw;
     ida.reinitialize(t0, y, yp);
   }
-  ida.set_roots(3, [&](Real, std::span<const Real> yy, std::span<const Real> yyp,
-                       std::span<Real> g) {
+  TurningBack turning(options.turning_retreat);
+  const int release_root = 1 + TurningBack::kRoots;
+  ida.set_roots(2 + TurningBack::kRoots, [&](Real, std::span<const Real> yy,
+                                             std::span<const Real> yyp, std::span<Real> g) {
     const Real gap = system.min_gap(yy);
     g[0] = gap - options.contact_gap;
-    g[1] = system.velocity(yy, yyp, control);
-    g[2] = options.release_gap > 0 ? gap - options.release_gap : 1.0;
+    turning.roots(system.displacement(yy, control), system.velocity(yy, yyp, control),
+                  g.subspan(1, TurningBack::kRoots));
+    g[release_root] = options.release_gap > 0 ? gap - options.release_gap : 1.0;
   });
 
   DynamicRun run;
@@ -56,13 +60,12 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
   sample(t0);
   Real next_output = first_output;
   Real stop_time = options.end_time;  // moves to touch-down + stop_after_contact
-  bool moved_down = false;
   while (true) {
     const IdaIntegrator::Status status = ida.advance(std::min(next_output, stop_time));
     const Real t = ida.time();
     const auto state = ida.y();
-    run.extreme_control = std::min(run.extreme_control, system.displacement(state, control));
-    if (system.displacement(state, control) < 0) moved_down = true;
+    const Real x = system.displacement(state, control);
+    run.extreme_control = std::min(run.extreme_control, x);
     if (status == IdaIntegrator::Status::Root) {
       const std::vector<int> found = ida.roots_found();
       if (found[0] < 0) {
@@ -78,14 +81,14 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
             stop_time = std::min(options.end_time, t + options.stop_after_contact);
         }
       }
-      if (found[2] > 0) {
+      if (found[release_root] > 0) {
         sample(t);
         run.released = true;
         run.release_time = t;
         break;
       }
-      if (found[1] > 0 && moved_down && run.turning_time == 0 && !run.pulled_in) {
-        run.turning_time = t;
+      if (turning.at_root(t, x, found[1], found[2]) && !run.pulled_in) {
+        run.turning_time = turning.turning_time();
         if (options.stop_at_turning) {
           sample(t);
           break;
@@ -106,7 +109,7 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
   return run;
 }
 
-FreeResponse free_response(const std::vector<DynamicSample>& h) {
+LogDecrement log_decrement(const std::vector<DynamicSample>& h) {
   // Extrema (time, value) by a parabola through each local extreme sample and its neighbours.
   std::vector<std::pair<Real, Real>> extrema;
   for (std::size_t i = 1; i + 1 < h.size(); ++i) {
@@ -117,7 +120,7 @@ FreeResponse free_response(const std::vector<DynamicSample>& h) {
     const Real shift = curvature != 0 ? 0.5 * (a - c) / curvature : 0.0;  // in samples
     extrema.emplace_back(h[i].t + shift * dt, b - 0.25 * (a - c) * shift);
   }
-  FreeResponse r;
+  LogDecrement r;
   if (extrema.size() < 3) return r;
   // ln s_k = ln s_0 - k delta / 2: least-squares slope.
   std::vector<Real> k, ln_s;
@@ -138,6 +141,34 @@ FreeResponse free_response(const std::vector<DynamicSample>& h) {
   r.damping_ratio = delta / std::sqrt(4 * M_PI * M_PI + delta * delta);
   r.frequency = 0.5 * (extrema.size() - 1) / (extrema.back().first - extrema.front().first);
   r.swings = static_cast<int>(k.size());
+  return r;
+}
+
+FreeResponse free_response(const std::vector<DynamicSample>& h) {
+  FreeResponse r;
+  r.log_decrement = log_decrement(h);
+  const LogDecrement& ld = r.log_decrement;
+  std::vector<Real> t, x;
+  for (const DynamicSample& s : h) {
+    t.push_back(s.t);
+    x.push_back(s.control);
+  }
+  const Real zeta_ld = std::min(ld.damping_ratio, 0.99);
+  const StepResponseFit fit = fit_step_response(
+      t, x, ld.swings > 0 ? zeta_ld : 0.0,
+      ld.swings > 0 ? 2 * M_PI * ld.frequency / std::sqrt(1 - zeta_ld * zeta_ld) : 0.0);
+  r.fitted = fit.fitted;
+  r.fit_damping_ratio = r.damping_ratio = fit.damping_ratio;
+  r.fit_frequency = r.frequency = fit.damped_frequency;
+  r.natural_frequency = fit.natural_frequency;
+  r.residual = fit.residual;
+  r.from_log_decrement = fit.fitted && ld.swings >= 4 && fit.damped_frequency > 0 &&
+                         std::abs(ld.frequency / fit.damped_frequency - 1) <= 0.02;
+  if (r.from_log_decrement) {
+    r.damping_ratio = ld.damping_ratio;
+    r.frequency = ld.frequency;
+    r.natural_frequency = ld.frequency / std::sqrt(1 - std::pow(std::min(ld.damping_ratio, 0.99), 2));
+  }
   return r;
 }
 

@@ -6,11 +6,12 @@
 //                                                contact penalty, stop_at_contact false) goes
 //                                                on with the structure resting on the
 //                                                dielectric;
-//   turning:  velocity of the control unknown    rises through 0 after moving towards the
-//                                                electrode: the structure turned back before
-//                                                touching, so (for a step voltage, undamped or
-//                                                underdamped) it will not pull in; the run ends
-//                                                early unless told to go on (release studies);
+//   turning:  the control unknown retreated      from its extreme towards the electrode by
+//             (two roots, turning_back.hpp)      turning_retreat of that excursion: the
+//                                                structure turned back before touching, so
+//                                                (for a step voltage, undamped or underdamped)
+//                                                it will not pull in; the run ends early
+//                                                unless told to go on (release studies);
 //   release:  min_gap(y) - release_gap           rises through 0 (armed with release_gap > 0):
 //                                                the structure lifted off the dielectric, the
 //                                                run ends and reports the release time.
@@ -29,6 +30,7 @@
 
 #include "coupling/state_tolerances.hpp"
 #include "coupling/switch_system.hpp"
+#include "coupling/turning_back.hpp"
 #include "solvers/ida_integrator.hpp"
 
 namespace rfmems {
@@ -37,6 +39,8 @@ struct DynamicOptions {
   Real end_time = 0;            // the run gives up (not pulled in) here (absolute time)
   Real contact_gap = 0;         // touch-down when the smallest gap reaches this [m]
   bool stop_at_turning = true;  // end when the control unknown turns back (see above)
+  Real turning_retreat = kTurningRetreat;  // the retreat that counts as turned back
+                                           // (coupling/turning_back.hpp)
   bool stop_at_contact = true;  // end at touch-down (false: go on in contact; needs a penalty)
   Real stop_after_contact = -1; // >= 0 (with stop_at_contact false): end this long after
                                 // touch-down (where a release study drops the voltage)
@@ -72,16 +76,38 @@ struct DynamicRun {
   std::vector<DynamicSample> history;
 };
 
-// The damped free response in a recorded history (a step below pull-in): from the extrema
+// The logarithmic decrement of a recorded history (a step below pull-in): from the extrema
 // e_k of the control deflection, the half-swings s_k = |e_{k+1} - e_k| decay as
 // exp(-delta/2) per half period for x_eq + a exp(-zeta omega t) cos(omega_d t), so the
 // logarithmic decrement delta = 2 ln(s_k / s_{k+1}) (averaged over the swings by a
 // least-squares fit of ln s_k) gives zeta = delta / sqrt(4 pi^2 + delta^2), and the spacing
 // of the extrema the damped frequency. Extrema are located by parabolas through the samples.
-struct FreeResponse {
+// Valid while the extrema are the fundamental's (light damping); a weakly damped higher mode
+// on a heavily damped fundamental takes it over (free_response below).
+struct LogDecrement {
   Real damping_ratio = 0;
   Real frequency = 0;  // damped [Hz]
   int swings = 0;      // half-swings used (0: fewer than 2, nothing measured)
+};
+LogDecrement log_decrement(const std::vector<DynamicSample>& history);
+
+// The fundamental's small-signal response in a history of a step from rest below pull-in:
+// the damped oscillator's step response fitted to the control's deflection
+// (step_response_fit.hpp; the log decrement's figures are one of its starting points). Where
+// the log decrement is valid - at least 4 half-swings whose spacing gives the fit's damped
+// frequency within 2 %, so its extrema are the fundamental's - its zeta and frequency are
+// reported instead: at light damping they are the less biased by higher modes (a higher mode
+// of 1-2 % of the static deflection biases the fit's zeta 2-3x more, test_step_response_fit),
+// and they keep docs/BENCHMARKS.md 6e's figures.
+struct FreeResponse {
+  bool fitted = false;        // false: too few samples or no motion, nothing measured
+  bool from_log_decrement = false;  // damping_ratio and frequency are the log decrement's
+  Real damping_ratio = 0;     // zeta
+  Real frequency = 0;         // damped [Hz] (0: overdamped, zeta >= 1)
+  Real natural_frequency = 0; // undamped [Hz]
+  Real residual = 0;          // the fit's rms misfit / |x_s - x_0|
+  Real fit_damping_ratio = 0, fit_frequency = 0;  // the fit's zeta and damped frequency
+  LogDecrement log_decrement;
 };
 FreeResponse free_response(const std::vector<DynamicSample>& history);
 

@@ -346,12 +346,13 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
   IdaIntegrator ida(system, ida_options);
   ida.initialize(0.0, y, yp);
   const Index vc = system.velocity_index(control());
-  StepVoltageEvents::set_roots(ida, n, vc, options.contact_gap,
-                               [this](std::span<const Real> u) { return min_gap(u); });
+  StepVoltageEvents events(options.stop_at_turning, options.turning_retreat,
+                           0.25 * first_period_);
+  events.set_roots(ida, n, control(), vc, options.contact_gap,
+                   [this](std::span<const Real> u) { return min_gap(u); });
 
   std::vector<StepRecord> records{{0.0, 0.0, 0.0, gap0_, load.total.y(), 0.0}};
   DynamicRun out;
-  StepVoltageEvents events(options.stop_at_turning, 0.25 * first_period_);
   Real t_gas = 0;  // the gas's time: it advances every gas_every accepted steps
   int since_gas = 0;
   const bool strong = options.coupling == ImmersedCoupling::Strong;

@@ -86,6 +86,7 @@ struct ImmersedRunOptions {
   Real end_time = 0;
   Real contact_gap = 0;         // touch-down when the smallest gap reaches this [m]
   bool stop_at_turning = true;  // turning counts after a quarter of first_bending_period()
+  Real turning_retreat = kTurningRetreat;  // coupling/turning_back.hpp
   Real output_interval = 0;     // > 0: history resampled at this interval (cubic Hermite in
                                 // the control's deflection and velocity); else IDA's steps
   ImmersedCoupling coupling = ImmersedCoupling::Staggered;

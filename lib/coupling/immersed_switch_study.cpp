@@ -266,11 +266,9 @@ Json run_immersed_switch_study(ImmersedSwitchCase& c, const CaseNode& root, Resu
                       {"pulled_in", run.pulled_in},
                       {"pull_in_time", run.pull_in_time},
                       {"max_deflection", -run.extreme_control},
-                      {"damping_ratio", fr.damping_ratio},
-                      {"frequency", fr.frequency},
-                      {"swings", fr.swings},
                       {"steps", run.stats.steps},
                       {"final_time", run.final_time}};
+    j["transient"].update(free_response_json(fr));
     write_displacement(writer, *c.beam, std::span<const Real>(run.final_state.y).subspan(0, n));
   } else {
     DynamicRun last;

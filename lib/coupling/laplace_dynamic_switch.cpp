@@ -89,12 +89,12 @@ DynamicRun LaplaceDynamicSwitch::run(Real voltage, const DynamicOptions& options
   IdaIntegrator ida(system, ida_options);
   ida.initialize(0.0, y, yp);
   const Index vc = system.velocity_index(control_);
-  StepVoltageEvents::set_roots(ida, n, vc, options.contact_gap,
-                               [&](std::span<const Real> u) { return field_.cell_min_gap(u); });
+  StepVoltageEvents events(options.stop_at_turning, options.turning_retreat);
+  events.set_roots(ida, n, control_, vc, options.contact_gap,
+                   [&](std::span<const Real> u) { return field_.cell_min_gap(u); });
 
   std::vector<StepRecord> records{{0.0, 0.0, 0.0, field_.gap(), v2 * field_.last_force_y(), 0.0}};
   DynamicRun out;
-  StepVoltageEvents events(options.stop_at_turning);
   const double cpu0 = process_cpu_seconds();
   while (true) {
     const IdaIntegrator::Status status = ida.step(options.end_time);

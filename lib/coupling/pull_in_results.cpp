@@ -28,4 +28,19 @@ void write_dynamic_history(ResultWriter& writer, const std::string& name, const 
                             "contact_force", "voltage"});
 }
 
+Json free_response_json(const FreeResponse& r) {
+  return {{"damping_ratio", r.damping_ratio},
+          {"frequency", r.frequency},
+          {"natural_frequency", r.natural_frequency},
+          {"method", r.from_log_decrement ? "log_decrement" : "fit"},
+          {"fit", {{"damping_ratio", r.fit_damping_ratio},
+                   {"frequency", r.fit_frequency},
+                   {"residual", r.residual}}},
+          {"fit_residual", r.residual},
+          {"log_decrement",
+           {{"damping_ratio", r.log_decrement.damping_ratio},
+            {"frequency", r.log_decrement.frequency},
+            {"swings", r.log_decrement.swings}}}};
+}
+
 }  // namespace rfmems

@@ -8,11 +8,18 @@
 
 #include "coupling/dynamic_pull_in.hpp"
 #include "coupling/quasi_static_pull_in.hpp"
+#include "io/json_summary.hpp"
 #include "io/result_writer.hpp"
 
 namespace rfmems {
 
 void write_pull_in_curve(ResultWriter& writer, const QuasiStaticPullIn& quasi_static);
 void write_dynamic_history(ResultWriter& writer, const std::string& name, const DynamicRun& run);
+
+// A small-signal response in the summaries: damping_ratio, frequency (damped),
+// natural_frequency, method (fit | log_decrement: which gave them), the fit's (fit:
+// damping_ratio, frequency, residual; also fit_residual) and the log decrement's
+// (log_decrement: damping_ratio, frequency, swings).
+Json free_response_json(const FreeResponse& response);
 
 }  // namespace rfmems

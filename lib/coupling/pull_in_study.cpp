@@ -91,11 +91,12 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
     s.bracket_high = b[1];
   }
   s.tolerance = dyn.get_quantity("tolerance", Dimension::Voltage, 0.5, Range::positive());
-  // A run that turns back has not pulled in: true of an underdamped step response, not of a
-  // squeeze-film-dominated one, whose slow creep towards the fold carries the wiggles of
-  // weakly damped higher modes (the control's velocity changes sign on the way down; cases/
-  // switch_plate_damped). false: every bisection run goes to touch-down or end_time.
+  // A run that turns back (the control retreated from its extreme by turning_retreat of the
+  // excursion, coupling/turning_back.hpp) has not pulled in. false: every bisection run goes
+  // to touch-down or end_time.
   s.run.stop_at_turning = dyn.get_bool("stop_at_turning", true);
+  s.run.turning_retreat =
+      dyn.get_real("turning_retreat", kTurningRetreat, Range::open(0.0, 1.0));
   if (dyn.has("voltages")) s.voltages = dyn.get_quantities("voltages", Dimension::Voltage);
   s.small_signal = dyn.get_real("small_signal", 0.3, Range{0.0, 0.9, false, false});
   const bool laplace = scene.electrostatics == ElectrostaticsModel::Laplace;
@@ -424,11 +425,10 @@ Json pull_in_summary(const SwitchScene& scene, const PullInReport& report) {
       }
       j["dynamic"]["release"] = r;
     }
-    if (report.small_signal_voltage > 0)
-      j["dynamic"]["small_signal"] = {{"voltage", report.small_signal_voltage},
-                                      {"damping_ratio", report.small_signal.damping_ratio},
-                                      {"frequency", report.small_signal.frequency},
-                                      {"swings", report.small_signal.swings}};
+    if (report.small_signal_voltage > 0) {
+      j["dynamic"]["small_signal"] = free_response_json(report.small_signal);
+      j["dynamic"]["small_signal"]["voltage"] = report.small_signal_voltage;
+    }
   }
   return j;
 }

@@ -16,9 +16,10 @@
 //                                     # quasi-static V_PI, computed first)
 //       tolerance: 0.5 V              # on the dynamic pull-in voltage
 //       stop_at_turning: true         # a bisection run that turns back did not pull in
-//                                     # (false: run to touch-down or end_time; for heavily
-//                                     # damped switches, whose higher modes reverse the
-//                                     # control's velocity during the creep)
+//                                     # (false: run to touch-down or end_time)
+//       turning_retreat: 0.02         # turned back: the control retreated from its extreme
+//                                     # by this fraction of the excursion (turning_back.hpp;
+//                                     # a higher mode's wiggle on a damped creep does not)
 //       voltages: [170 V, 180 V]      # step voltages whose histories are recorded (default:
 //                                     # 0.97 and 1.03 x the dynamic V_PI)
 //       output_interval: 0.1 us       # sampling of the recorded histories

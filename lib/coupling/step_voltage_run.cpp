@@ -4,19 +4,20 @@
 
 namespace rfmems {
 
-void StepVoltageEvents::set_roots(IdaIntegrator& ida, Index n, Index velocity, Real contact_gap,
-                                  std::function<Real(std::span<const Real>)> min_gap) {
-  ida.set_roots(2, [n, velocity, contact_gap, min_gap = std::move(min_gap)](
-                       Real, std::span<const Real> yy, std::span<const Real>, std::span<Real> g) {
-    g[0] = min_gap(yy.subspan(0, n)) - contact_gap;
-    g[1] = yy[velocity];
-  });
+void StepVoltageEvents::set_roots(IdaIntegrator& ida, Index n, Index control, Index velocity,
+                                  Real contact_gap,
+                                  std::function<Real(std::span<const Real>)> min_gap) const {
+  ida.set_roots(1 + TurningBack::kRoots,
+                [this, n, control, velocity, contact_gap, min_gap = std::move(min_gap)](
+                    Real, std::span<const Real> yy, std::span<const Real>, std::span<Real> g) {
+                  g[0] = min_gap(yy.subspan(0, n)) - contact_gap;
+                  turning_.roots(yy[control], yy[velocity], g.subspan(1));
+                });
 }
 
 bool StepVoltageEvents::after_step(const IdaIntegrator& ida, IdaIntegrator::Status status, Real t,
                                    Real control, DynamicRun& run) {
   run.extreme_control = std::min(run.extreme_control, control);
-  if (control < 0 && t >= turning_after_) moved_down_ = true;
   bool stop = status == IdaIntegrator::Status::Reached;
   if (status == IdaIntegrator::Status::Root) {
     const std::vector<int> found = ida.roots_found();
@@ -25,8 +26,8 @@ bool StepVoltageEvents::after_step(const IdaIntegrator& ida, IdaIntegrator::Stat
       run.pulled_in = true;
       run.pull_in_time = t;
       stop = true;
-    } else if (found[1] > 0 && moved_down_ && run.turning_time == 0) {
-      run.turning_time = t;
+    } else if (turning_.at_root(t, control, found[1], found[2])) {
+      run.turning_time = turning_.turning_time();
       stop = stop || stop_at_turning_;
     }
   }

@@ -3,9 +3,9 @@
 // step IDA accepts:
 //
 //   roots    g0 = min_gap(u) - contact_gap: falls through 0 at touch-down (the pull-in time;
-//            the run ends); g1 = the control's velocity: rises through 0 after the control
-//            moved down (turned back: no pull-in for a step voltage), as run_dynamic's
-//            (dynamic_pull_in.hpp);
+//            the run ends); g1, g2 = the turning-back rule's (turning_back.hpp: the control
+//            retreated from its extreme by options.turning_retreat of its excursion; no
+//            pull-in for a step voltage), as run_dynamic's (dynamic_pull_in.hpp);
 //   events   after each step, the extreme deflection, the touch-down and the first turning
 //            recorded in the DynamicRun, and whether the run ends;
 //   history  one record per accepted step, kept as it is or resampled at output_interval:
@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "coupling/dynamic_pull_in.hpp"
+#include "coupling/turning_back.hpp"
 #include "solvers/ida_integrator.hpp"
 
 namespace rfmems {
@@ -27,15 +28,16 @@ struct StepRecord {
 
 class StepVoltageEvents {
  public:
-  // turning_after: the control moving down counts from this time on (the immersed beam's
-  // higher modes can flip the control's velocity in the first quarter period).
-  explicit StepVoltageEvents(bool stop_at_turning, Real turning_after = 0)
-      : stop_at_turning_(stop_at_turning), turning_after_(turning_after) {}
+  // turning_retreat: TurningBack's r; turning_after: extremes count from this time on (the
+  // immersed beam's higher modes can flip the control's velocity in the first quarter period).
+  StepVoltageEvents(bool stop_at_turning, Real turning_retreat, Real turning_after = 0)
+      : stop_at_turning_(stop_at_turning), turning_(turning_retreat, turning_after) {}
 
-  // Installs g0 and g1 on ida: min_gap of the displacements (the state's first n entries),
-  // the control's velocity at state index velocity.
-  static void set_roots(IdaIntegrator& ida, Index n, Index velocity, Real contact_gap,
-                        std::function<Real(std::span<const Real>)> min_gap);
+  // Installs g0..g2 on ida: min_gap of the displacements (the state's first n entries), the
+  // turning rule on the control's deflection and velocity at state indices control, velocity.
+  // The events object must outlive the integration.
+  void set_roots(IdaIntegrator& ida, Index n, Index control, Index velocity, Real contact_gap,
+                 std::function<Real(std::span<const Real>)> min_gap) const;
 
   // After a step that returned status at time t with the control's deflection control:
   // records the extreme, a touch-down and the first turning in run; true: the run ends.
@@ -44,8 +46,7 @@ class StepVoltageEvents {
 
  private:
   bool stop_at_turning_;
-  Real turning_after_;
-  bool moved_down_ = false;
+  TurningBack turning_;
 };
 
 // Fills run's final time, state and stats from ida and its history at voltage from records

@@ -39,7 +39,7 @@ assert abs(dyn["ratio_to_quasi_static"] - 0.91) < 0.02, dyn
 assert dyn["pull_in_time"] > 0
 h = dyn["histories"]
 assert len(h) == 2 and not h[0]["pulled_in"] and h[1]["pulled_in"], h
-assert dyn["small_signal"]["swings"] >= 3 and dyn["small_signal"]["damping_ratio"] < 0.01, dyn
+assert dyn["small_signal"]["log_decrement"]["swings"] >= 3 and dyn["small_signal"]["damping_ratio"] < 0.01, dyn
 with h5py.File(sys.argv[2]) as f:
     meta = f["metadata"].attrs
     text = lambda k: meta[k].decode() if isinstance(meta[k], bytes) else meta[k]

@@ -1,7 +1,7 @@
-// The free-response measurement (coupling/dynamic_pull_in.hpp: damping ratio from the
-// logarithmic decrement of the extrema, damped frequency from their spacing) on sampled
-// damped cosines x_eq + a exp(-zeta w t) cos(w_d t) with known zeta and w_d, and the voltage
-// waveforms' shapes.
+// The logarithmic decrement (coupling/dynamic_pull_in.hpp: damping ratio from the decay of
+// the extrema, damped frequency from their spacing) on sampled damped cosines x_eq + a
+// exp(-zeta w t) cos(w_d t) with known zeta and w_d, and the voltage waveforms' shapes. The
+// step-response fit that free_response reports: test_step_response_fit.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +10,7 @@
 
 using namespace rfmems;
 
-TEST(FreeResponse, RecoversDampingRatioAndFrequency) {
+TEST(LogDecrement, RecoversDampingRatioAndFrequency) {
   for (const double zeta : {0.001, 0.012, 0.1}) {
     const double f = 1.3e5, w = 2 * M_PI * f / std::sqrt(1 - zeta * zeta);  // f: damped
     std::vector<DynamicSample> h;
@@ -20,17 +20,17 @@ TEST(FreeResponse, RecoversDampingRatioAndFrequency) {
       const double x = -1e-7 - 2e-7 * std::exp(-zeta * w * t) * std::cos(2 * M_PI * f * t);
       h.push_back({t, x, 0, 0, 0});
     }
-    const FreeResponse r = free_response(h);
+    const LogDecrement r = log_decrement(h);
     EXPECT_GE(r.swings, 8);
     EXPECT_NEAR(r.damping_ratio, zeta, 2e-4 + 1e-2 * zeta) << "zeta " << zeta;
     EXPECT_NEAR(r.frequency / f, 1.0, 1e-3);
   }
 }
 
-TEST(FreeResponse, NothingToMeasureWithoutOscillation) {
+TEST(LogDecrement, NothingToMeasureWithoutOscillation) {
   std::vector<DynamicSample> h;
   for (int i = 0; i <= 100; ++i) h.push_back({i * 1e-8, -1e-7 * (1 - std::exp(-i / 20.0)), 0, 0, 0});
-  EXPECT_EQ(free_response(h).swings, 0);
+  EXPECT_EQ(log_decrement(h).swings, 0);
 }
 
 TEST(VoltageWaveform, Shapes) {

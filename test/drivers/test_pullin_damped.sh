@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# rfmems-pullin on a squeeze-film-dominated switch (cases/switch_plate_damped, coarsened to
+# 20 x 6 cells, a 20 us window): the dynamic pull-in by bisection with the default turning
+# rule (stop_at_turning: true; coupling/turning_back.hpp) agrees with transient runs to the
+# end of the window: its lower end does not pull in, its upper end does. The former rule (a
+# velocity zero of the control) took the higher modes' wiggles on the creep for a turning and
+# reported 85 V while 82.5 V pulls in (docs/BENCHMARKS.md sec. 39). The small-signal fit gives
+# the fundamental's damping ratio (~0.5; the log decrement the higher mode's, < 0.1).
+#
+# Usage: bash test_pullin_damped.sh <directory of rfmems-pullin> <source directory>
+set -uo pipefail
+
+DRIVER="$1/rfmems-pullin"
+SRC="$2"
+CASE="$SRC/cases/switch_plate_damped/case.yaml"
+COARSE=(--set "mesh.cells=[20, 6]")
+
+source "$SRC/test/drivers/common.sh"
+
+if "$DRIVER" "$CASE" "${COARSE[@]}" --set pull_in.dynamic.end_time=20us \
+    --set "pull_in.dynamic.bracket=[70 V, 90 V]" --set pull_in.dynamic.tolerance=0.5V \
+    -o "$WORK/dyn.h5" --json --quiet >"$WORK/dyn.json" 2>"$WORK/err"; then
+  pass "bisection on the coarse damped plate exits 0"
+else
+  fail "bisection: $(cat "$WORK/err")"
+fi
+read -r low high < <($PY -c '
+import json, sys
+d = json.load(open(sys.argv[1]))["pull_in"]["dynamic"]
+print(d["not_pulling_in"], d["pull_in_voltage"])' "$WORK/dyn.json")
+echo "bisection: ($low, $high] V"
+
+# transient V: pulled_in (True/False) of a step to V from rest over the same window.
+transient() {
+  "$DRIVER" "$CASE" "${COARSE[@]}" --set pull_in.mode=transient --set "pull_in.transient.voltage=$1 V" \
+      --set pull_in.transient.end_time=20us -o "$WORK/tr.h5" --json --quiet 2>"$WORK/err" |
+    $PY -c 'import json, sys; print(json.load(sys.stdin)["pull_in"]["transient"]["pulled_in"])'
+}
+lower_run=$(transient "$low")
+upper_run=$(transient "$high")
+if [ "$lower_run" = False ] && [ "$upper_run" = True ]; then
+  pass "transient runs: $low V does not pull in within 20 us, $high V does"
+else
+  fail "transient runs at $low V / $high V pulled in: $lower_run / $upper_run $(cat "$WORK/err")"
+fi
+
+if $PY - "$WORK/dyn.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))["pull_in"]
+dyn, s = d["dynamic"], d["dynamic"]["small_signal"]
+# The damped switch pulls in at about its static voltage; within a 20 us window a little above.
+assert 1.0 < dyn["ratio_to_quasi_static"] < 1.15, dyn
+h = dyn["histories"]  # 0.97 and 1.03 x V_dyn, to the end of the window
+assert not h[0]["pulled_in"] and h[1]["pulled_in"], h
+# The fundamental's zeta: 0.54 from the first overshoot on 40 x 12; the log decrement measures
+# the weakly damped higher mode riding on it.
+assert 0.4 < s["damping_ratio"] < 0.7 and s["fit_residual"] < 0.05, s
+assert s["log_decrement"]["damping_ratio"] < 0.1 and s["log_decrement"]["frequency"] > 3 * s["frequency"], s
+print(f"V_dyn {dyn['pull_in_voltage']:.3f} V ({dyn['ratio_to_quasi_static']:.4f} V_qs), {dyn['runs']} runs; "
+      f"zeta {s['damping_ratio']:.3f} at {s['frequency'] / 1e3:.1f} kHz (log decrement "
+      f"{s['log_decrement']['damping_ratio']:.3f} at {s['log_decrement']['frequency'] / 1e3:.0f} kHz)")
+PY
+then
+  pass "V_dyn, the histories and the fundamental's damping ratio"
+else
+  fail "damped figures"
+fi
+
+expect_input_error retreat_zero "pull_in.dynamic.turning_retreat" "$CASE" --set pull_in.dynamic.turning_retreat=0
+
+echo "$failures failure(s)"
+[ "$failures" -eq 0 ]
