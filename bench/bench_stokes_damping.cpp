@@ -12,8 +12,15 @@
 // with its observed order p = log2((c1 - c2) / (c2 - c3)), c -> c3 + (c3 - c2) / (2^p - 1),
 // and the estimated error of the finest mesh, |c_inf - c3|.
 //
+// --open-impedance C gives the open sides the normal impedance Z = C p / sqrt(2 R T) of the
+// kinetic pressure boundary (stokes_boundary.hpp; C = 2.05 for the case's ESBGK on 8^3
+// velocities, test_kinetic_pressure_boundary.cpp), p the solve's pressure (the no-slip solve:
+// the first of --pressures), and with --open velocity --open-slip adds the slip length lambda
+// to u_t = 0: the continuum limit of that boundary.
+//
 //   build/bench/bench_stokes_damping [--h 0.5,0.25,0.125] [--pressures 1e5,1e4]
 //                                    [--open zero_gradient|zero_stress|velocity]
+//                                    [--open-impedance C] [--open-slip]
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <map>
@@ -43,12 +50,26 @@ struct Solve {
   Index unknowns, nnz;
 };
 
-Solve damping(const MacGrid& grid, Real slip, OpenTangential open) {
+// The open sides of a solve at pressure p.
+struct OpenSides {
+  OpenTangential tangential = OpenTangential::ZeroGradient;
+  Real impedance_coefficient = 0;  // C of Z = C p / sqrt(2 R T)
+  bool slip = false;               // u_t slip length lambda (Velocity)
+
+  StokesSide at(Real p) const {
+    StokesSide s = StokesSide::open(0.0, tangential);
+    s.normal_impedance = impedance_coefficient * p / std::sqrt(2 * kR * kTemperature);
+    if (slip) s.tangential_slip_length = mean_free_path(p);
+    return s;
+  }
+};
+
+Solve damping(const MacGrid& grid, Real slip, const StokesSide& open) {
   const double start = bench::cpu_now();
   StokesBoundaries b;
   b.sides[static_cast<int>(Side::Left)] = StokesSide::symmetry();
-  b.sides[static_cast<int>(Side::Right)] = StokesSide::open(0.0, open);
-  b.sides[static_cast<int>(Side::Top)] = StokesSide::open(0.0, open);
+  b.sides[static_cast<int>(Side::Right)] = open;
+  b.sides[static_cast<int>(Side::Top)] = open;
   b.sides[static_cast<int>(Side::Bottom)] = StokesSide::make_wall({.slip_length = slip});
   b.blocks = {{[](const Point2&) { return Point2(0, -kSpeed); }, slip}};
   StokesOperator op(grid, {kMu, b, {}});
@@ -62,16 +83,20 @@ Solve damping(const MacGrid& grid, Real slip, OpenTangential open) {
 int main(int argc, char** argv) {
   std::vector<double> spacings{0.5, 0.25, 0.125}, pressures{1e5, 1e4};
   std::string open_name = "zero_gradient";
+  OpenSides sides;
   CLI::App app{"bench_stokes_damping: Stokes (no slip / Maxwell slip) damping of the beam"};
   app.add_option("--h", spacings, "grid spacings [um], halving")->delimiter(',');
   app.add_option("--pressures", pressures, "pressures of the slip solves [Pa]")->delimiter(',');
   app.add_option("--open", open_name, "tangential condition on the open sides")
       ->check(CLI::IsMember({"zero_gradient", "zero_stress", "velocity"}));
+  app.add_option("--open-impedance", sides.impedance_coefficient,
+                 "C of the open sides' normal impedance C p / sqrt(2 R T)");
+  app.add_flag("--open-slip", sides.slip, "slip length lambda on the open sides' u_t = 0");
   CLI11_PARSE(app, argc, argv);
   const std::map<std::string, OpenTangential> opens{{"zero_gradient", OpenTangential::ZeroGradient},
                                                     {"zero_stress", OpenTangential::ZeroStress},
                                                     {"velocity", OpenTangential::Velocity}};
-  const OpenTangential open = opens.at(open_name);
+  sides.tangential = opens.at(open_name);
   double load[1] = {-1};
   getloadavg(load, 1);
   // series[key]: c per mesh; key "no_slip" or "slip_<p>".
@@ -82,8 +107,10 @@ int main(int argc, char** argv) {
     j["h_um"] = h_um;
     j["cells"] = grid.fluid_cells();
     j["open"] = open_name;
+    j["open_impedance"] = sides.impedance_coefficient;
+    j["open_slip"] = sides.slip;
     j["load_average"] = load[0];
-    const Solve none = damping(grid, 0.0, open);
+    const Solve none = damping(grid, 0.0, sides.at(pressures.front()));
     j["unknowns"] = none.unknowns;
     j["nnz"] = none.nnz;
     j["c_no_slip"] = none.damping;
@@ -91,7 +118,7 @@ int main(int argc, char** argv) {
     series["no_slip"].push_back(none.damping);
     for (double p : pressures) {
       const std::string key = "slip_" + nlohmann::json(p).dump();
-      const Solve slip = damping(grid, maxwell_slip_length(1.0, mean_free_path(p)), open);
+      const Solve slip = damping(grid, maxwell_slip_length(1.0, mean_free_path(p)), sides.at(p));
       j["c_" + key] = slip.damping;
       j["cpu_seconds_" + key] = slip.cpu;
       j["knudsen_" + key] = mean_free_path(p) / kGap;
