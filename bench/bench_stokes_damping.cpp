@@ -8,7 +8,7 @@
 //
 // Prints one JSON line per mesh: h, cells, unknowns, c = F_y / V for the whole beam (twice the
 // half domain) without slip and with slip at each pressure, CPU seconds (assembly + solve per
-// solve); then, over the last three meshes (halving h), Richardson extrapolation of each c
+// solve), the share of the swept flux V b leaving through the right side (slip); then, over the last three meshes (halving h), Richardson extrapolation of each c
 // with its observed order p = log2((c1 - c2) / (c2 - c3)), c -> c3 + (c3 - c2) / (2^p - 1),
 // and the estimated error of the finest mesh, |c_inf - c3|.
 //
@@ -20,7 +20,8 @@
 //
 //   build/bench/bench_stokes_damping [--h 0.5,0.25,0.125] [--pressures 1e5,1e4]
 //                                    [--open zero_gradient|zero_stress|velocity]
-//                                    [--open-impedance C] [--open-slip]
+//                                    [--open-impedance C] [--open-slip] [--margin 3]
+// (--margin: the open sides' distance from the beam in gaps, 3 in the kinetic case.)
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <map>
@@ -38,7 +39,6 @@ using namespace rfmems;
 namespace {
 
 constexpr Real kUm = 1e-6, kB = 22.5 * kUm, kT = 1.5 * kUm, kGap = 7 * kUm;
-constexpr Real kWidth = kB + 3 * kGap, kHeight = kGap + kT + 3 * kGap;
 constexpr Real kMu = 2.117e-5, kR = 208.13, kTemperature = 273.15, kSpeed = 0.1;
 
 Real mean_free_path(Real p) {
@@ -48,6 +48,7 @@ Real mean_free_path(Real p) {
 struct Solve {
   Real damping, cpu;
   Index unknowns, nnz;
+  Real right_outflow;  // through the right side, of the half domain [m^2/s]
 };
 
 // The open sides of a solve at pressure p.
@@ -75,7 +76,8 @@ Solve damping(const MacGrid& grid, Real slip, const StokesSide& open) {
   StokesOperator op(grid, {kMu, b, {}});
   const std::vector<Real> x = solve_stokes(op);
   const Real force = boundary_force(op, x, Across::block(0)).y();
-  return {2 * force / kSpeed, bench::cpu_now() - start, op.size(), op.pattern().nnz()};
+  return {2 * force / kSpeed, bench::cpu_now() - start, op.size(), op.pattern().nnz(),
+          side_outflow(op, x, Side::Right)};
 }
 
 }  // namespace
@@ -84,6 +86,7 @@ int main(int argc, char** argv) {
   std::vector<double> spacings{0.5, 0.25, 0.125}, pressures{1e5, 1e4};
   std::string open_name = "zero_gradient";
   OpenSides sides;
+  double margin = 3;
   CLI::App app{"bench_stokes_damping: Stokes (no slip / Maxwell slip) damping of the beam"};
   app.add_option("--h", spacings, "grid spacings [um], halving")->delimiter(',');
   app.add_option("--pressures", pressures, "pressures of the slip solves [Pa]")->delimiter(',');
@@ -92,6 +95,7 @@ int main(int argc, char** argv) {
   app.add_option("--open-impedance", sides.impedance_coefficient,
                  "C of the open sides' normal impedance C p / sqrt(2 R T)");
   app.add_flag("--open-slip", sides.slip, "slip length lambda on the open sides' u_t = 0");
+  app.add_option("--margin", margin, "open sides' distance from the beam [gaps]");
   CLI11_PARSE(app, argc, argv);
   const std::map<std::string, OpenTangential> opens{{"zero_gradient", OpenTangential::ZeroGradient},
                                                     {"zero_stress", OpenTangential::ZeroStress},
@@ -102,13 +106,15 @@ int main(int argc, char** argv) {
   // series[key]: c per mesh; key "no_slip" or "slip_<p>".
   std::map<std::string, std::vector<Real>> series;
   for (double h_um : spacings) {
-    const MacGrid grid(kWidth, kHeight, h_um * kUm, {{0, kB, kGap, kGap + kT}});
+    const MacGrid grid(kB + margin * kGap, kGap + kT + margin * kGap, h_um * kUm,
+                       {{0, kB, kGap, kGap + kT}});
     nlohmann::json j;
     j["h_um"] = h_um;
     j["cells"] = grid.fluid_cells();
     j["open"] = open_name;
     j["open_impedance"] = sides.impedance_coefficient;
     j["open_slip"] = sides.slip;
+    j["margin_gaps"] = margin;
     j["load_average"] = load[0];
     const Solve none = damping(grid, 0.0, sides.at(pressures.front()));
     j["unknowns"] = none.unknowns;
@@ -121,6 +127,8 @@ int main(int argc, char** argv) {
       const Solve slip = damping(grid, maxwell_slip_length(1.0, mean_free_path(p)), sides.at(p));
       j["c_" + key] = slip.damping;
       j["cpu_seconds_" + key] = slip.cpu;
+      // The share of the beam's swept flux V b that leaves through the right side.
+      j["right_outflow_share_" + key] = slip.right_outflow / (kSpeed * kB);
       j["knudsen_" + key] = mean_free_path(p) / kGap;
       series[key].push_back(slip.damping);
     }
