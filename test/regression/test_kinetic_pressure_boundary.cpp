@@ -26,7 +26,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "mesh/structured_mesh.hpp"
+#include "../support/kinetic_slab.hpp"
 #include "physics/gas/comet/comet_kinetic_solver.hpp"
 #include "physics/gas/kinetic/kinetic_operator.hpp"
 
@@ -60,11 +60,7 @@ Real bulk_pressure(Real v, Real rho, const FaceGraph& g, const VelocityGrid& gri
 }
 
 Impedance measure(Real kn, int points) {
-  BoxSpec spec;
-  spec.upper = Vec3(kL, kL, 0);
-  spec.n[0] = 2;
-  spec.n[1] = 40;
-  const FaceGraph g = face_graph_of(make_structured_mesh(spec));
+  const FaceGraph g = test_support::kinetic_slab(kL, 2, 40);
   const KineticGas gas = KineticGas::argon();
   const Real c0 = gas.thermal_speed(kT);
   const VelocityGrid grid = VelocityGrid::uniform(points, points, points, 3.5 * c0);

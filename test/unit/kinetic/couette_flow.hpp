@@ -12,7 +12,7 @@
 #include <cmath>
 #include <vector>
 
-#include "mesh/structured_mesh.hpp"
+#include "../../support/kinetic_slab.hpp"
 #include "physics/gas/kinetic/sequential_solver.hpp"
 
 namespace rfmems::test_support {
@@ -32,11 +32,7 @@ inline CouetteRun run_couette(Real kn, int ny, CollisionModel model = CollisionM
                               int nv = 10, Real sigma = 1, int nx = 1,
                               TransportOrder order = TransportOrder::FirstOrder) {
   constexpr Real H = 1, U = 10, T0 = 273.15;
-  BoxSpec spec;
-  spec.upper = Vec3(H, H, 0);
-  spec.n[0] = nx;
-  spec.n[1] = ny;
-  const FaceGraph g = face_graph_of(make_structured_mesh(spec));
+  const FaceGraph g = kinetic_slab(H, nx, ny);
   const KineticGas gas = KineticGas::argon(model);
   std::vector<KineticBoundary> bcs(g.patch_names.size(), KineticBoundary::specular_wall());
   bcs[g.find_patch("bottom")] = KineticBoundary::diffuse_wall(T0, Vec3::Zero(), sigma);
