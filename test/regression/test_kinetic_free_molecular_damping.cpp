@@ -22,7 +22,7 @@
 #include <cstdio>
 #include <memory>
 
-#include "mesh/structured_mesh.hpp"
+#include "../support/kinetic_slab.hpp"
 #include "physics/gas/kinetic/free_molecular_wall.hpp"
 #include "physics/gas/kinetic/sequential_solver.hpp"
 
@@ -35,11 +35,7 @@ constexpr Real kT = 273.15, kL = 1e-3, kV = 0.1;
 // y component (normal) or z (tangential) of the bottom wall's force per unit area when it
 // moves at `velocity`.
 Vec3 slab_wall_traction(const Vec3& velocity, Real kn, const VelocityGrid& grid, Real& rho) {
-  BoxSpec spec;
-  spec.upper = Vec3(kL, kL, 0);
-  spec.n[0] = 1;
-  spec.n[1] = 4;
-  const FaceGraph g = face_graph_of(make_structured_mesh(spec));
+  const FaceGraph g = test_support::kinetic_slab(kL, 1, 4);
   const KineticGas gas = KineticGas::argon();
   rho = gas.density_for_knudsen(kn, kT, kL);
   std::vector<KineticBoundary> bcs(g.patch_names.size(), KineticBoundary::specular_wall());

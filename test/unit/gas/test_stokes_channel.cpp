@@ -12,6 +12,11 @@
 //     round-off (a conservative scheme: the pressure force on the gas is carried by the walls).
 //  3. A beam over a substrate (the damping case in miniature, slip on): the forces on all
 //     walls and sides sum to zero and the sides' net outflow is zero, to round-off.
+//  4. The continuum limit of the kinetic pressure boundary on an open side (normal impedance
+//     Z, slip length l on u_t = 0): a wall injecting V through it (uniform flow, p = p_a + Z V,
+//     the wall's normal force -(p_a + Z V) L), and Couette flow under it (u = U (H + l - y) /
+//     (H + l), the wall shear mu U / (H + l)), both to round-off; without the impedance the
+//     pressure is p_a.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -133,4 +138,43 @@ TEST(StokesChannel, BeamForcesAndFlowsBalance) {
     EXPECT_LT(std::abs(q), 1e-12 * 0.1 * 3e-6);
     EXPECT_GT(side_outflow(op, x, Side::Right), 0) << "the gap's gas leaves sideways";
   }
+}
+
+TEST(StokesChannel, OpenSideImpedanceAndSlipAreExact) {
+  const MacGrid g(kL, kH, kH / 8);
+  const Real p_a = 3.0, z = 600.0, v = 0.1, l = 0.1 * kH;
+  for (Real impedance : {0.0, z}) {
+    // A wall at the bottom injects v; the open top carries it out against p_a + Z v.
+    StokesBoundaries b;
+    b.sides[static_cast<int>(Side::Left)] = StokesSide::symmetry();
+    b.sides[static_cast<int>(Side::Right)] = StokesSide::symmetry();
+    b.sides[static_cast<int>(Side::Bottom)] =
+        StokesSide::make_wall({[v](const Point2&) { return Point2(0, v); }, 0.0});
+    b.sides[static_cast<int>(Side::Top)] = StokesSide::open(p_a, OpenTangential::Velocity);
+    b.sides[static_cast<int>(Side::Top)].normal_impedance = impedance;
+    const Real p = p_a + impedance * v;
+    StokesOperator op(g, {kMu, b, {}});
+    const std::vector<Real> x = solve_stokes(op);
+    for (int j = 0; j < g.ny(); ++j)
+      for (int i = 0; i < g.nx(); ++i)
+        EXPECT_NEAR(op.pressure(i, j).evaluate(x), p, 1e-10 * p) << "Z " << impedance;
+    const Point2 bottom = boundary_force(op, x, Across::side(Side::Bottom));
+    EXPECT_NEAR(bottom.y(), -p * kL, 1e-10 * p * kL);
+    EXPECT_NEAR(side_outflow(op, x, Side::Top), v * kL, 1e-12 * v * kL);
+  }
+  // Couette flow under an open top with u_t = 0 and slip length l: the slip wall's profile.
+  StokesBoundaries b;
+  b.sides[static_cast<int>(Side::Left)] = StokesSide::open(0.0);
+  b.sides[static_cast<int>(Side::Right)] = StokesSide::open(0.0);
+  b.sides[static_cast<int>(Side::Bottom)] =
+      StokesSide::make_wall({[](const Point2&) { return Point2(kU, 0); }, 0.0});
+  b.sides[static_cast<int>(Side::Top)] = StokesSide::open(0.0, OpenTangential::Velocity);
+  b.sides[static_cast<int>(Side::Top)].tangential_slip_length = l;
+  b.sides[static_cast<int>(Side::Top)].normal_impedance = z;
+  auto exact_u = [&](const Point2& q) { return kU * (kH + l - q.y()) / (kH + l); };
+  const ChannelRun r = run(g, b, exact_u, [](const Point2&) { return 0.0; });
+  const Real drag = kMu * kU / (kH + l) * kL;
+  EXPECT_LT(r.u_error, 1e-12 * kU);
+  EXPECT_LT(r.v_max, 1e-12 * kU);
+  EXPECT_NEAR(r.bottom.x(), -drag, 1e-11 * drag);
 }

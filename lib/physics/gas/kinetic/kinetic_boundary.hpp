@@ -12,6 +12,10 @@
 //   specular_wall, symmetry:  f_in(c) = f_owner(c') (eq. 5.33), the reflection map of
 //       VelocityGrid (exact for axis-aligned walls).
 //   pressure {p, T}:  f_in = the Maxwellian at rest with rho = p / (R T) (eq. 5.35).
+//       A reservoir, not a transparent side: a normal outflow u_n needs the interior pressure
+//       p + C p u_n / sqrt(2 R T), C ~ 2 at every Kn (the condensation jump; measured 2.05-2.09
+//       for ESBGK, test_kinetic_pressure_boundary.cpp), so near the continuum it is all but
+//       closed to normal flow (docs/gas_damping.md "Why ESBGK sat 10.5 % above ...").
 //   external: face values supplied from outside (external_face_values.hpp; the immersed
 //       boundary's IB faces); not available from case files, fill_boundary_face rejects it.
 // The Maxwellians are the DISCRETE equilibria of the gas's collision model (equilibrium.hpp:

@@ -23,6 +23,17 @@
 //                             length ~ lambda, negligible at Kn ~ 0.01).
 //             The three bracket what a truncated domain's side may impose; the damping study
 //             reports the spread (docs/gas_damping.md).
+//             Optionally a normal impedance Z: -p + 2 mu du_n/dn = -(p_a + Z u_n), u_n the
+//             outward velocity. It is the continuum limit of the kinetic pressure boundary
+//             (incoming half the ambient Maxwellian at rest): its Knudsen layer needs the jump
+//             p - p_a = C p u_n / sqrt(2 R T) to pass a normal flow, C = 2.13 for BGK (Sone,
+//             Molecular Gas Dynamics, 2007: the linearised condensation problem, quoted from
+//             memory), and C does not vanish with Kn, so Z L / mu ~ C L / lambda: near the
+//             continuum such a side is all but closed to normal flow
+//             (test_kinetic_pressure_boundary.cpp measures C of the kinetic code;
+//             docs/gas_damping.md). With Velocity, a slip length l, u_t - u_b = l du_t/dn
+//             (the Kramers layer of a diffuse wall, the same for that boundary), completes
+//             that limit.
 //
 // The tangential conditions act through ghost values at the mirror point h/2 beyond the
 // boundary line, on the nodes where the shear stress lives (tangential_ghost below).
@@ -58,6 +69,8 @@ struct StokesSide {
   ScalarField ambient_pressure = [](const Point2&) { return 0.0; };  // Open: p_a
   OpenTangential tangential = OpenTangential::ZeroGradient;          // Open
   ScalarField tangential_velocity = [](const Point2&) { return 0.0; };  // Open, Velocity
+  Real tangential_slip_length = 0;  // Open, Velocity: l [m]
+  Real normal_impedance = 0;        // Open: Z [Pa s/m]; 0: the ambient traction alone
 
   static StokesSide make_wall(StokesWall w) {
     StokesSide s;
@@ -94,7 +107,8 @@ struct StokesBoundaries {
 AffineForm wall_tangential_ghost(const StokesWall& wall, const Point2& at, int tangential,
                                  const AffineForm& inside, Real h);
 // Symmetry, or Open with ZeroGradient / ZeroStress (the caller zeroes the stress of the
-// latter): the mirror; Open with Velocity: 2 u_b - u_in.
+// latter): the mirror; Open with Velocity: the wall's ghost for u_b and the slip length
+// (2 u_b - u_in without slip).
 AffineForm side_tangential_ghost(const StokesSide& side, const Point2& at, int tangential,
                                  const AffineForm& inside, Real h);
 

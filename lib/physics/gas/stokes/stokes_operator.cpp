@@ -162,9 +162,11 @@ ControlVolumeBalance StokesOperator::balance(int i, int j, bool vertical) const 
     const Across a = across_cell(ci, cj, beyond);
     if (a.kind == Across::Kind::Side &&
         problem_.boundaries.sides[a.index].kind == StokesSide::Kind::Open) {
-      // Traction of the ambient gas, -p_a n, n = sign e_d.
-      const Real p_a = problem_.boundaries.sides[a.index].ambient_pressure(at);
-      b.edges.push_back({AffineForm::known(-sign * p_a * h), a});
+      // Traction of the ambient gas, -(p_a + Z u_n) n, n = sign e_d, u_n = sign u_face.
+      const StokesSide& side = problem_.boundaries.sides[a.index];
+      AffineForm traction = AffineForm::known(-sign * side.ambient_pressure(at) * h);
+      if (side.normal_impedance != 0) traction -= (side.normal_impedance * h) * *face(i, j, vertical);
+      b.edges.push_back({traction, a});
       return;
     }
     b.reaction = a;
