@@ -145,6 +145,11 @@ ImmersedSwitchCase read_immersed_switch_case(const CaseNode& root, const std::st
   c.run.strong_max_iterations =
       static_cast<int>(coupling.get_int("max_iterations", 20, Range::closed(1, 1000)));
   c.run.gas_every = static_cast<int>(coupling.get_int("gas_every", 1, Range::closed(1, 1000)));
+  c.run.strong_gas = coupling.get_bool("strong_gas", false);
+  coupling.require(!c.run.strong_gas || c.run.coupling == ImmersedCoupling::Strong, "strong_gas",
+                   "strong_gas: true needs scheme: strong (the gas inside its iterations)");
+  coupling.require(!c.run.strong_gas || c.run.gas_every == 1, "strong_gas",
+                   "strong_gas: true advances the gas over every step: gas_every must be 1");
   // Every block is checked whatever the mode (a case toggled by --set stays valid); the
   // active mode's block and required keys must be there.
   auto block = [&](const std::string& name) {
@@ -207,6 +212,7 @@ Json times_json(const ImmersedPhysicsTimes& t) {
           {"coupling_iterations", t.coupling_iterations},
           {"max_coupling_iterations", t.max_coupling_iterations},
           {"unconverged_coupling_steps", t.unconverged_steps},
+          {"max_coupling_residual", t.max_coupling_residual},
           {"structure_steps", t.structure_steps},
           {"gas_steps", t.gas_steps}};
 }
@@ -242,6 +248,7 @@ Json run_immersed_switch_study(ImmersedSwitchCase& c, const CaseNode& root, Resu
                   : c.run.coupling == ImmersedCoupling::Strong ? "strong"
                                                                : "staggered";
   j["gas_every"] = c.run.gas_every;
+  j["strong_gas"] = c.run.strong_gas;
   j["contact_gap"] = c.run.contact_gap;
   const std::size_t n = c.beam->op->size();
   if (c.mode == "static") {

@@ -443,6 +443,54 @@ std::vector<Vec3> ImmersedKineticGas::ib_face_forces() const {
   return forces;
 }
 
+struct ImmersedKineticGas::Checkpoint {
+  ImmersedSurface body;
+  std::vector<Vec3> segment_velocity;
+  std::vector<Real> f, f_previous, predictor_previous;
+  Real dt_previous = 0;
+  std::vector<Index> global_cell;  // distributed: per owned cell, its global FLUID cell
+  RemarkReport remark;
+};
+
+void ImmersedKineticGas::save_checkpoint() {
+  if (!body_ || !has_state_) throw InputError("immersed gas: checkpoint before initialize");
+  checkpoint_ = std::make_unique<Checkpoint>(Checkpoint{
+      *body_, segment_velocity_, f_, f_previous_, predictor_previous_, dt_previous_, {}, remark_});
+  if (part_)
+    checkpoint_->global_cell.assign(part_->global_cell.begin(),
+                                    part_->global_cell.begin() + fluid_->graph.n_owned_cells);
+}
+
+std::vector<Real> ImmersedKineticGas::to_current_layout(
+    const std::vector<Real>& v, const std::vector<Index>& global_cell) const {
+  if (!part_ || v.empty()) return v;  // serial: the same marking gives the same graph
+  const Index N = grid_.size();
+  std::vector<Real> w(fluid_->graph.n_cells() * N, 0.0);
+  for (std::size_t c = 0; c < global_cell.size(); ++c) {
+    const Index local = part_->local_of_global[global_cell[c]];
+    if (local < 0 || local >= fluid_->graph.n_owned_cells)
+      throw SolverError("immersed gas: a checkpointed cell is no longer owned here");
+    std::copy_n(v.data() + c * N, N, w.data() + local * N);
+  }
+  op_->exchange_ghosts(w);
+  return w;
+}
+
+void ImmersedKineticGas::restore_checkpoint() {
+  if (!checkpoint_) throw InputError("immersed gas: restore without a saved checkpoint");
+  const Checkpoint& s = *checkpoint_;
+  set_body(s.body, s.segment_velocity);  // the saved marking, graph and IB fits
+  f_ = to_current_layout(s.f, s.global_cell);
+  if (static_cast<Index>(f_.size()) != op_->size())
+    throw SolverError("immersed gas: the checkpoint's distribution does not fit the graph");
+  f_previous_ = to_current_layout(s.f_previous, s.global_cell);
+  predictor_previous_ = to_current_layout(s.predictor_previous, s.global_cell);
+  dt_previous_ = s.dt_previous;
+  remark_ = s.remark;
+  op_->update_boundary_values(f_);  // as set_body does, now from the saved f
+  op_->update_collision(f_);
+}
+
 std::vector<Vec3> ImmersedKineticGas::step(const ImmersedSurface& surface,
                                            std::span<const Vec3> segment_velocity, Real dt,
                                            GasStepReport* report) {
