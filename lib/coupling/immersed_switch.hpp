@@ -21,7 +21,8 @@
 // the load follows the dominant gap dependence of the parallel-plate law inside the step and
 // the Jacobian carries the electrostatic spring softening -2 F g_ref^2 / g^3. After every
 // step IDA accepts, the load is re-evaluated by the IBM at the new state (Staggered), and
-// the gas advanced over the step; the gas force is lagged by one step. Implicit: the IBM
+// the gas advanced over the step; the gas force is lagged by one step (Strong with
+// strong_gas: inside the iteration, not lagged; see run()). Implicit: the IBM
 // load is evaluated inside every residual call (the exact coupled system; the scaled lagged
 // model only in the Jacobian): the reference the staggered scheme's error is measured against
 // (docs/immersed_switch.md). Roots: the smallest gap reaching contact_gap (touch-down, the

@@ -135,6 +135,10 @@ ImmersedSwitchCase read_immersed_switch_case(const CaseNode& root, const std::st
   c.run.ida.rtol = solver.get_real("rtol", 1e-4, Range::open(0.0, 1.0));
   c.run.ida.atol = solver.get_quantity("atol", Dimension::Length, 1e-5 * gap, Range::positive());
   c.run.ida.max_order = static_cast<int>(solver.get_int("max_order", 2, Range::closed(1, 5)));
+  // Fixed steps (the coupling schemes' splitting error at a given step): cut to 1e-4 of it
+  // only after a failed Newton solve (the 1/g^2 touch-down), as bench_pullin_work_error does.
+  c.run.ida.fixed_step = solver.get_quantity("fixed_step", Dimension::Time, 0.0, Range::non_negative());
+  c.run.ida.fixed_step_min = 1e-4 * c.run.ida.fixed_step;
   const CaseNode coupling = root.child_or_empty("coupling");
   const std::string scheme =
       coupling.get_choice("scheme", {"staggered", "implicit", "strong"}, "staggered");

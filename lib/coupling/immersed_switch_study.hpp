@@ -54,6 +54,8 @@
 //                                     # boundary_reconstruction as for rfmems-gas's solver
 //                                     # (kinetic_case.hpp; immersed_kinetic_gas.hpp)
 //   solver: {rtol: 1e-4, atol: 1.5e-11 m, max_order: 2}
+//     fixed_step: 0                   # > 0: IDA at this fixed step (no error test; cut to
+//                                     # 1e-4 of it only after a failed Newton solve)
 #pragma once
 #include <memory>
 #include <string>
