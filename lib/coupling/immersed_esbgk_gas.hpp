@@ -54,6 +54,7 @@ class ImmersedEsbgkGas : public ImmersedGasModel {
   // step solved, redone ones included (the work).
   void save_checkpoint() override;
   void restore_checkpoint() override;
+  void hold_marking(bool hold) override { gas_->hold_marking(hold); }
 
   Real mean_free_path() const;
   const ImmersedKineticGas& kinetic() const { return *gas_; }

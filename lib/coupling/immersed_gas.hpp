@@ -40,6 +40,11 @@ class ImmersedGasModel {
   // Models without one throw; the coupling asks only with coupling.strong_gas.
   virtual void save_checkpoint() { no_checkpoint(); }
   virtual void restore_checkpoint() { no_checkpoint(); }
+  // A gas on a marked background keeps the cell marking of its last advance for the next
+  // advances while held (the strong iteration's iterates within a step, whose bodies differ
+  // by far less than a cell; a class change between iterates makes the force jump). Others
+  // ignore it.
+  virtual void hold_marking(bool /*hold*/) {}
   // Largest Knudsen number and film pressure excursion seen so far (validity report).
   virtual Real max_knudsen() const { return 0; }
 

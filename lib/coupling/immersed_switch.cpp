@@ -414,6 +414,7 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
           gas->restore_checkpoint();
         }
         gas_load = advance_gas(y_end, t_end);
+        if (k == 0) gas->hold_marking(true);  // the later iterates on iterate 0's marking
       }
       ++times_.coupling_iterations;
       std::vector<Real> residual(n);
@@ -431,6 +432,7 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
         if (f2 > 0)
           times_.max_coupling_residual = std::max(times_.max_coupling_residual, std::sqrt(r2 / f2));
         structure.set_reference(load.force, u_end);  // the next step's k = 0
+        if (gas_inside) gas->hold_marking(false);
         if (gas_steps) {
           held = std::move(gas_load);
           structure.set_held(held);

@@ -210,7 +210,7 @@ void ImmersedKineticGas::set_body(const ImmersedSurface& body, std::vector<Vec3>
   if (static_cast<Index>(segment_velocity.size()) != body.n_segments())
     throw InputError("immersed gas: one velocity per surface segment");
   double t0 = process_cpu_seconds();
-  CellMarking marking = marker_.mark(body);
+  CellMarking marking = held_marking_ ? *held_marking_ : marker_.mark(body);
   const bool reclassify = !fluid_ || marking.cell != marking_.cell;
   if (values_) op_->set_external_face_values(nullptr);
   local_values_.reset();
@@ -445,6 +445,7 @@ std::vector<Vec3> ImmersedKineticGas::ib_face_forces() const {
 
 struct ImmersedKineticGas::Checkpoint {
   ImmersedSurface body;
+  CellMarking marking;  // the body's, or a held one (hold_marking)
   std::vector<Vec3> segment_velocity;
   std::vector<Real> f, f_previous, predictor_previous;
   Real dt_previous = 0;
@@ -455,7 +456,8 @@ struct ImmersedKineticGas::Checkpoint {
 void ImmersedKineticGas::save_checkpoint() {
   if (!body_ || !has_state_) throw InputError("immersed gas: checkpoint before initialize");
   checkpoint_ = std::make_unique<Checkpoint>(Checkpoint{
-      *body_, segment_velocity_, f_, f_previous_, predictor_previous_, dt_previous_, {}, remark_});
+      *body_, marking_, segment_velocity_, f_, f_previous_, predictor_previous_, dt_previous_, {},
+      remark_});
   if (part_)
     checkpoint_->global_cell.assign(part_->global_cell.begin(),
                                     part_->global_cell.begin() + fluid_->graph.n_owned_cells);
@@ -479,7 +481,10 @@ std::vector<Real> ImmersedKineticGas::to_current_layout(
 void ImmersedKineticGas::restore_checkpoint() {
   if (!checkpoint_) throw InputError("immersed gas: restore without a saved checkpoint");
   const Checkpoint& s = *checkpoint_;
+  std::optional<CellMarking> held = std::move(held_marking_);
+  held_marking_ = s.marking;
   set_body(s.body, s.segment_velocity);  // the saved marking, graph and IB fits
+  held_marking_ = std::move(held);
   f_ = to_current_layout(s.f, s.global_cell);
   if (static_cast<Index>(f_.size()) != op_->size())
     throw SolverError("immersed gas: the checkpoint's distribution does not fit the graph");
@@ -489,6 +494,13 @@ void ImmersedKineticGas::restore_checkpoint() {
   remark_ = s.remark;
   op_->update_boundary_values(f_);  // as set_body does, now from the saved f
   op_->update_collision(f_);
+}
+
+void ImmersedKineticGas::hold_marking(bool hold) {
+  if (hold)
+    held_marking_ = marking_;
+  else
+    held_marking_.reset();
 }
 
 std::vector<Vec3> ImmersedKineticGas::step(const ImmersedSurface& surface,
