@@ -367,8 +367,8 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
     ScopedCpuTimer timer{times_.gas};
     std::vector<Real> v(n);
     for (Index i = 0; i < n; ++i) v[i] = state[system.velocity_index(i)];
-    const std::vector<Vec3> f =
-        gas->advance(moved_surface(state.subspan(0, n)), segment_velocities(v), t_gas, t_end - t_gas);
+    const std::vector<Vec3> f = gas->advance(moved_surface(state.subspan(0, n)),
+                                             segment_velocities(v), t_gas, t_end - t_gas);
     ++times_.gas_steps;
     gas_force = 0;
     for (const Vec3& x : f) gas_force += x.y();
