@@ -455,15 +455,13 @@ struct ImmersedKineticGas::Checkpoint {
 
 void ImmersedKineticGas::save_checkpoint() {
   if (!body_ || !has_state_) throw InputError("immersed gas: checkpoint before initialize");
-  checkpoint_ = std::make_unique<Checkpoint>(Checkpoint{*body_,
-                                                        marking_,
-                                                        segment_velocity_,
-                                                        f_,
-                                                        f_previous_,
-                                                        predictor_previous_,
-                                                        dt_previous_,
-                                                        {},
-                                                        remark_});
+  checkpoint_ = std::make_unique<Checkpoint>(Checkpoint{*body_, marking_, segment_velocity_});
+  Checkpoint& c = *checkpoint_;
+  c.f = f_;
+  c.f_previous = f_previous_;
+  c.predictor_previous = predictor_previous_;
+  c.dt_previous = dt_previous_;
+  c.remark = remark_;
   if (part_)
     checkpoint_->global_cell.assign(part_->global_cell.begin(),
                                     part_->global_cell.begin() + fluid_->graph.n_owned_cells);
