@@ -444,6 +444,8 @@ std::vector<Vec3> ImmersedKineticGas::ib_face_forces() const {
 }
 
 struct ImmersedKineticGas::Checkpoint {
+  Checkpoint(ImmersedSurface b, CellMarking m, std::vector<Vec3> v)
+      : body(std::move(b)), marking(std::move(m)), segment_velocity(std::move(v)) {}
   ImmersedSurface body;
   CellMarking marking;  // the body's, or a held one (hold_marking)
   std::vector<Vec3> segment_velocity;
@@ -455,7 +457,7 @@ struct ImmersedKineticGas::Checkpoint {
 
 void ImmersedKineticGas::save_checkpoint() {
   if (!body_ || !has_state_) throw InputError("immersed gas: checkpoint before initialize");
-  checkpoint_ = std::make_unique<Checkpoint>(Checkpoint{*body_, marking_, segment_velocity_});
+  checkpoint_ = std::make_unique<Checkpoint>(*body_, marking_, segment_velocity_);
   Checkpoint& c = *checkpoint_;
   c.f = f_;
   c.f_previous = f_previous_;
