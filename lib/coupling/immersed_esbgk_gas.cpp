@@ -56,6 +56,18 @@ void ImmersedEsbgkGas::reset(const ImmersedSurface& surface, Real /*t0*/) {
   track_gap(surface);
 }
 
+void ImmersedEsbgkGas::save_checkpoint() {
+  if (!gas_) throw InputError("esbgk gas: checkpoint before reset");
+  gas_->save_checkpoint();
+  saved_max_knudsen_ = max_knudsen_;
+}
+
+void ImmersedEsbgkGas::restore_checkpoint() {
+  if (!gas_) throw InputError("esbgk gas: restore before reset");
+  gas_->restore_checkpoint();
+  max_knudsen_ = saved_max_knudsen_;
+}
+
 std::vector<Vec3> ImmersedEsbgkGas::advance(const ImmersedSurface& surface,
                                             std::span<const Vec3> segment_velocity, Real /*t*/,
                                             Real dt) {

@@ -50,6 +50,11 @@ class ImmersedEsbgkGas : public ImmersedGasModel {
                             Real t, Real dt) override;
   // lambda(p0, T0) over the smallest beam-substrate gap seen.
   Real max_knudsen() const override { return max_knudsen_; }
+  // ImmersedKineticGas's checkpoint (and the Knudsen maximum); stats() keeps counting every
+  // step solved, redone ones included (the work).
+  void save_checkpoint() override;
+  void restore_checkpoint() override;
+  void hold_marking(bool hold) override { gas_->hold_marking(hold); }
 
   Real mean_free_path() const;
   const ImmersedKineticGas& kinetic() const { return *gas_; }
@@ -64,7 +69,7 @@ class ImmersedEsbgkGas : public ImmersedGasModel {
   std::unique_ptr<ImmersedKineticGas> gas_;
   GasStepReport last_;
   ImmersedEsbgkStats stats_;
-  Real max_knudsen_ = 0;
+  Real max_knudsen_ = 0, saved_max_knudsen_ = 0;
 };
 
 }  // namespace rfmems

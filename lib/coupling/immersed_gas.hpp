@@ -5,7 +5,9 @@
 // Per coupled step the manager hands the gas the body's surface at the end of the step and
 // its segment velocities there, and asks for the gas force on each surface segment after
 // advancing the gas over [t, t + dt]. The force is applied to the structure, lagged, during
-// the next structural step (explicit, first order in the coupling; docs/immersed_switch.md).
+// the next structural step (explicit, first order in the coupling; docs/immersed_switch.md),
+// or, with coupling.strong_gas, the step is redone from a checkpoint of the gas (and of IDA)
+// until the combined interface load converges (strong coupling with the gas).
 //
 // Models here: none (no call at all), reynolds (immersed_reynolds_film.hpp, a 1D squeeze film
 // along the beam's facing side). An ESBGK model implements the same three calls on the
@@ -16,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/types.hpp"
 #include "ibm/immersed_surface.hpp"
 
@@ -31,8 +34,24 @@ class ImmersedGasModel {
   // at segment_velocity [m/s] per segment; returns the gas force per segment [N/m] at t + dt.
   virtual std::vector<Vec3> advance(const ImmersedSurface& surface,
                                     std::span<const Vec3> segment_velocity, Real t, Real dt) = 0;
+  // One checkpoint of the gas's state after the last advance (or reset): save, then restore
+  // any number of times to redo the next advance with a corrected body motion, as if the
+  // advances since the save had not been made (the strong coupling's iterate per step).
+  // Models without one throw; the coupling asks only with coupling.strong_gas.
+  virtual void save_checkpoint() { no_checkpoint(); }
+  virtual void restore_checkpoint() { no_checkpoint(); }
+  // A gas on a marked background keeps the cell marking of its last advance for the next
+  // advances while held (the strong iteration's iterates within a step, whose bodies differ
+  // by far less than a cell; a class change between iterates makes the force jump). Others
+  // ignore it.
+  virtual void hold_marking(bool /*hold*/) {}
   // Largest Knudsen number and film pressure excursion seen so far (validity report).
   virtual Real max_knudsen() const { return 0; }
+
+ private:
+  [[noreturn]] void no_checkpoint() const {
+    throw InputError("gas model '" + name() + "' keeps no checkpoint (coupling.strong_gas)");
+  }
 };
 
 }  // namespace rfmems

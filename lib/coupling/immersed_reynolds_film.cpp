@@ -43,6 +43,16 @@ void ImmersedReynoldsFilm::reset(const ImmersedSurface& surface, Real) {
   geometry(surface, h_, x, dx);
   p_.assign(h_.size(), gas_.ambient_pressure);
   max_knudsen_ = 0;
+  saved_ = {};
+}
+
+void ImmersedReynoldsFilm::save_checkpoint() { saved_ = {p_, h_, max_knudsen_, true}; }
+
+void ImmersedReynoldsFilm::restore_checkpoint() {
+  if (!saved_.valid) throw InputError("Reynolds film: restore without a saved checkpoint");
+  p_ = saved_.p;
+  h_ = saved_.h;
+  max_knudsen_ = saved_.max_knudsen;
 }
 
 std::vector<Vec3> ImmersedReynoldsFilm::advance(const ImmersedSurface& surface,

@@ -34,6 +34,9 @@ class ImmersedReynoldsFilm : public ImmersedGasModel {
   std::vector<Vec3> advance(const ImmersedSurface& surface, std::span<const Vec3> segment_velocity,
                             Real t, Real dt) override;
   Real max_knudsen() const override { return max_knudsen_; }
+  // The film's pressure and gaps at the last step's end (and the Knudsen maximum).
+  void save_checkpoint() override;
+  void restore_checkpoint() override;
 
   const std::vector<Real>& pressure() const { return p_; }
 
@@ -45,6 +48,11 @@ class ImmersedReynoldsFilm : public ImmersedGasModel {
   Real substrate_y_, wall_x_, tip_x_;
   std::vector<Real> p_, h_;  // per film cell at the last step's end
   Real max_knudsen_ = 0;
+  struct Saved {
+    std::vector<Real> p, h;
+    Real max_knudsen = 0;
+    bool valid = false;
+  } saved_;
 };
 
 }  // namespace rfmems

@@ -356,16 +356,43 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
   Real t_gas = 0;  // the gas's time: it advances every gas_every accepted steps
   int since_gas = 0;
   const bool strong = options.coupling == ImmersedCoupling::Strong;
+  if (options.strong_gas && !strong)
+    throw InputError("immersed switch: strong_gas needs the strong coupling");
+  const bool gas_inside = strong && options.strong_gas && gas;
+  if (gas_inside && options.gas_every != 1)
+    throw InputError("immersed switch: strong_gas advances the gas over every step (gas_every 1)");
+  std::vector<Real> held(n, 0.0);  // the gas load in the structure's residual
+  // The gas over [t_gas, t_end] with the body at state's displacement and velocity (its end
+  // state); the gas force per structure unknown.
+  auto advance_gas = [&](std::span<const Real> state, Real t_end) {
+    ScopedCpuTimer timer{times_.gas};
+    std::vector<Real> v(n);
+    for (Index i = 0; i < n; ++i) v[i] = state[system.velocity_index(i)];
+    const std::vector<Vec3> f = gas->advance(moved_surface(state.subspan(0, n)),
+                                             segment_velocities(v), t_gas, t_end - t_gas);
+    ++times_.gas_steps;
+    gas_force = 0;
+    for (const Vec3& x : f) gas_force += x.y();
+    return to_structure(f);
+  };
   // Strong coupling per step (block Gauss-Seidel with Aitken relaxation, Kuettler & Wall 2008):
   // the step is redone from IDA's checkpoint with the interface load G_k, applied in the
   // residual as G_k (g_k / g(u))^2 with g_k the gap of iterate k's end state (k = 0 is the
   // staggered step: G_0 = F(u_n) at g_n), until the IBM load F(u_k) at the step's end state
   // (IDA's t_n, also after a root return) matches the load A_k applied there:
   // |r_k| <= tol |F(u_k)|, r_k = F(u_k) - A_k; then G_{k+1} = A_k + omega_k r_k, omega_0 = 1 and
-  // Aitken's factor after. The gas (if any) is advanced once, after the converged step
-  // (lagged, as in the staggered scheme): the gas models keep no checkpoint to redo a step.
+  // Aitken's factor after. Without strong_gas the gas is advanced once, after the converged
+  // step (lagged, as in the staggered scheme). With it, every iterate also redoes the gas's
+  // step from the gas's checkpoint with u_k and its velocity, and the interface load is the
+  // sum: F = F_e(u_k) + F_g(u_k), A_k = A_e,k + H_k (H_k the gas load held over iterate k,
+  // H_0 the last step's gas force), one Aitken factor on the summed residual, each part
+  // relaxed by it (G_e = A_e + omega r_e, H = H_k + omega r_g).
   auto strong_step = [&]() {
     ida.save_checkpoint();
+    if (gas_inside) {
+      ScopedCpuTimer t{times_.gas};
+      gas->save_checkpoint();
+    }
     std::vector<Real> residual_prev;
     Real omega = 1;
     for (int k = 0;; ++k) {
@@ -374,28 +401,54 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
         ScopedCpuTimer t{times_.structure};
         status = ida.step(options.end_time);
       }
-      const std::span<const Real> u_end = ida.internal_y().subspan(0, n);
+      const std::span<const Real> y_end = ida.internal_y();
+      const std::span<const Real> u_end = y_end.subspan(0, n);
       const std::vector<Real> applied = structure.applied(u_end);
       load = electrostatic_load(u_end, voltage);
+      // After a root return IDA's next call may end at the same t_n: the gas is there already.
+      const Real t_end = ida.internal_time();
+      const bool gas_steps = gas_inside && t_end > t_gas;
+      std::vector<Real> gas_load = held;
+      if (gas_steps) {
+        if (k > 0) {
+          ScopedCpuTimer t{times_.gas};
+          gas->restore_checkpoint();
+        }
+        gas_load = advance_gas(y_end, t_end);
+        if (k == 0) gas->hold_marking(true);  // the later iterates on iterate 0's marking
+      }
       ++times_.coupling_iterations;
       std::vector<Real> residual(n);
       Real r2 = 0, f2 = 0;
       for (Index i = 0; i < n; ++i) {
-        residual[i] = load.force[i] - applied[i];
+        const Real total = load.force[i] + (gas_inside ? gas_load[i] : 0);
+        residual[i] = total - applied[i] - (gas_inside ? held[i] : 0);
         r2 += residual[i] * residual[i];
-        f2 += load.force[i] * load.force[i];
+        f2 += total * total;
       }
       const bool converged = r2 <= options.strong_tolerance * options.strong_tolerance * f2;
       if (converged || k + 1 >= options.strong_max_iterations) {
         times_.unconverged_steps += !converged;
         times_.max_coupling_iterations = std::max(times_.max_coupling_iterations, k + 1);
+        if (f2 > 0)
+          times_.max_coupling_residual = std::max(times_.max_coupling_residual, std::sqrt(r2 / f2));
         structure.set_reference(load.force, u_end);  // the next step's k = 0
+        if (gas_inside) gas->hold_marking(false);
+        if (gas_steps) {
+          held = std::move(gas_load);
+          structure.set_held(held);
+          t_gas = t_end;
+        }
         return status;
       }
       if (k > 0) omega = std::clamp(aitken_factor(omega, residual, residual_prev), 0.01, 4.0);
       std::vector<Real> next(n);
-      for (Index i = 0; i < n; ++i) next[i] = applied[i] + omega * residual[i];
+      for (Index i = 0; i < n; ++i) next[i] = applied[i] + omega * (load.force[i] - applied[i]);
       structure.set_reference(std::move(next), u_end);
+      if (gas_steps) {
+        for (Index i = 0; i < n; ++i) held[i] += omega * (gas_load[i] - held[i]);
+        structure.set_held(held);
+      }
       residual_prev = std::move(residual);
       ida.restore_checkpoint();
     }
@@ -414,26 +467,17 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
     const std::span<const Real> u = state.subspan(0, n);
     const bool stop = events.after_step(ida, status, t, u[control()], out);
     // The coupled step's exchange: the IBM load and the gas at the accepted state.
-    {
-      if (!strong) {  // strong_step left the IBM load at IDA's internal state as reference
-        load = electrostatic_load(u, voltage);
-        structure.set_reference(load.force, u);
-      }
-      if (gas && t > t_gas && (++since_gas >= options.gas_every || stop)) {
-        since_gas = 0;
-        ScopedCpuTimer timer{times_.gas};
-        std::vector<Real> v(n);
-        for (Index i = 0; i < n; ++i) v[i] = state[system.velocity_index(i)];
-        const ImmersedSurface surface = moved_surface(u);
-        const std::vector<Vec3> f = gas->advance(surface, segment_velocities(v), t_gas, t - t_gas);
-        ++times_.gas_steps;
-        gas_force = 0;
-        for (const Vec3& x : f) gas_force += x.y();
-        structure.set_held(to_structure(f));  // the lagged gas force
-      }
+    if (!strong) {  // strong_step left the IBM load at IDA's internal state as reference
+      load = electrostatic_load(u, voltage);
+      structure.set_reference(load.force, u);
+    }
+    if (gas && !gas_inside && t > t_gas && (++since_gas >= options.gas_every || stop)) {
+      since_gas = 0;
+      held = advance_gas(state, t);
+      structure.set_held(held);  // the lagged gas force
     }
     records.push_back({t, u[control()], state[vc], min_gap(u), load.total.y(), gas_force});
-    if (since_gas == 0) t_gas = t;
+    if (since_gas == 0 && !gas_inside) t_gas = t;
     if (stop) break;
   }
   finish_step_voltage_run(ida, records, voltage, options.output_interval, true, out);

@@ -21,7 +21,8 @@
 // the load follows the dominant gap dependence of the parallel-plate law inside the step and
 // the Jacobian carries the electrostatic spring softening -2 F g_ref^2 / g^3. After every
 // step IDA accepts, the load is re-evaluated by the IBM at the new state (Staggered), and
-// the gas advanced over the step; the gas force is lagged by one step. Implicit: the IBM
+// the gas advanced over the step; the gas force is lagged by one step (Strong with
+// strong_gas: inside the iteration, not lagged; see run()). Implicit: the IBM
 // load is evaluated inside every residual call (the exact coupled system; the scaled lagged
 // model only in the Jacobian): the reference the staggered scheme's error is measured against
 // (docs/immersed_switch.md). Roots: the smallest gap reaching contact_gap (touch-down, the
@@ -65,10 +66,12 @@ struct ImmersedPhysicsTimes {
   long load_evaluations = 0, gas_steps = 0, structure_steps = 0;
   long electrostatic_analyses = 0;  // solves on a new pattern (the rest refactor the kept LU)
   long electrostatic_krylov_iterations = 0;  // distributed field: GMRES iterations
-  // Strong coupling: iterations over all steps (one IBM evaluation each), the most in a step,
-  // and the steps left at strong_max_iterations unconverged.
+  // Strong coupling: iterations over all steps (one IBM evaluation each, and one gas step with
+  // strong_gas), the most in a step, and the steps left at strong_max_iterations unconverged;
+  // the largest relative interface residual |r| / |F| a step ended with (strong only).
   long coupling_iterations = 0, unconverged_steps = 0;
   int max_coupling_iterations = 0;
+  double max_coupling_residual = 0;
 };
 
 struct ImmersedLoad {
@@ -79,7 +82,9 @@ struct ImmersedLoad {
 
 // Strong: per step, Aitken-relaxed fixed-point iterations on the electrostatic interface load
 // (see run()), the step redone from IDA's checkpoint until the load changes by less than
-// strong_tolerance; converges to the implicit scheme's step.
+// strong_tolerance; converges to the implicit scheme's step. With strong_gas the gas is inside
+// the iteration too (redone from its own checkpoint with each iterate's motion; the fixed
+// point is on the electrostatic + gas load).
 enum class ImmersedCoupling { Staggered, Implicit, Strong };
 
 struct ImmersedRunOptions {
@@ -92,6 +97,10 @@ struct ImmersedRunOptions {
   ImmersedCoupling coupling = ImmersedCoupling::Staggered;
   Real strong_tolerance = 1e-6;  // |F_IBM(u) - F_applied(u)| / |F_IBM(u)| at the step's end
   int strong_max_iterations = 20;
+  // Strong only: the gas advanced inside every iterate over the step (needs gas_every 1 and a
+  // gas model with a checkpoint); false: the gas advanced once after the converged step,
+  // its force lagged.
+  bool strong_gas = false;
   // The gas advanced over [t_gas, t] every gas_every accepted structure steps (one gas step
   // spanning them), its force held in between: the gas's step decoupled from IDA's, whose
   // steps (~2e-9 s near pull-in) are far below what the gas's accuracy needs.

@@ -135,6 +135,10 @@ ImmersedSwitchCase read_immersed_switch_case(const CaseNode& root, const std::st
   c.run.ida.rtol = solver.get_real("rtol", 1e-4, Range::open(0.0, 1.0));
   c.run.ida.atol = solver.get_quantity("atol", Dimension::Length, 1e-5 * gap, Range::positive());
   c.run.ida.max_order = static_cast<int>(solver.get_int("max_order", 2, Range::closed(1, 5)));
+  // Fixed steps (the coupling schemes' splitting error at a given step): cut to 1e-4 of it
+  // only after a failed Newton solve (the 1/g^2 touch-down), as bench_pullin_work_error does.
+  c.run.ida.fixed_step = solver.get_quantity("fixed_step", Dimension::Time, 0.0, Range::non_negative());
+  c.run.ida.fixed_step_min = 1e-4 * c.run.ida.fixed_step;
   const CaseNode coupling = root.child_or_empty("coupling");
   const std::string scheme =
       coupling.get_choice("scheme", {"staggered", "implicit", "strong"}, "staggered");
@@ -145,6 +149,11 @@ ImmersedSwitchCase read_immersed_switch_case(const CaseNode& root, const std::st
   c.run.strong_max_iterations =
       static_cast<int>(coupling.get_int("max_iterations", 20, Range::closed(1, 1000)));
   c.run.gas_every = static_cast<int>(coupling.get_int("gas_every", 1, Range::closed(1, 1000)));
+  c.run.strong_gas = coupling.get_bool("strong_gas", false);
+  coupling.require(!c.run.strong_gas || c.run.coupling == ImmersedCoupling::Strong, "strong_gas",
+                   "strong_gas: true needs scheme: strong (the gas inside its iterations)");
+  coupling.require(!c.run.strong_gas || c.run.gas_every == 1, "strong_gas",
+                   "strong_gas: true advances the gas over every step: gas_every must be 1");
   // Every block is checked whatever the mode (a case toggled by --set stays valid); the
   // active mode's block and required keys must be there.
   auto block = [&](const std::string& name) {
@@ -207,6 +216,7 @@ Json times_json(const ImmersedPhysicsTimes& t) {
           {"coupling_iterations", t.coupling_iterations},
           {"max_coupling_iterations", t.max_coupling_iterations},
           {"unconverged_coupling_steps", t.unconverged_steps},
+          {"max_coupling_residual", t.max_coupling_residual},
           {"structure_steps", t.structure_steps},
           {"gas_steps", t.gas_steps}};
 }
@@ -242,6 +252,7 @@ Json run_immersed_switch_study(ImmersedSwitchCase& c, const CaseNode& root, Resu
                   : c.run.coupling == ImmersedCoupling::Strong ? "strong"
                                                                : "staggered";
   j["gas_every"] = c.run.gas_every;
+  j["strong_gas"] = c.run.strong_gas;
   j["contact_gap"] = c.run.contact_gap;
   const std::size_t n = c.beam->op->size();
   if (c.mode == "static") {

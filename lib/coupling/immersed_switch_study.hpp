@@ -31,6 +31,9 @@
 //     max_iterations: 20              # max_iterations per step)
 //     gas_every: 1                    # the gas advanced over every k-th accepted step (one
 //                                     # gas step spanning k structure steps, force held)
+//     strong_gas: false               # scheme strong: true puts the gas inside the
+//                                     # iterations (redone per iterate, the fixed point on
+//                                     # the electrostatic + gas load; gas_every 1)
 //   gas:                              # the gas slot: none (default) | reynolds | esbgk
 //     model: reynolds                 # 1D film under the beam, open at the tip
 //     pressure: 1.36e4 Pa
@@ -51,6 +54,8 @@
 //                                     # boundary_reconstruction as for rfmems-gas's solver
 //                                     # (kinetic_case.hpp; immersed_kinetic_gas.hpp)
 //   solver: {rtol: 1e-4, atol: 1.5e-11 m, max_order: 2}
+//     fixed_step: 0                   # > 0: IDA at this fixed step (no error test; cut to
+//                                     # 1e-4 of it only after a failed Newton solve)
 #pragma once
 #include <memory>
 #include <string>

@@ -210,7 +210,7 @@ void ImmersedKineticGas::set_body(const ImmersedSurface& body, std::vector<Vec3>
   if (static_cast<Index>(segment_velocity.size()) != body.n_segments())
     throw InputError("immersed gas: one velocity per surface segment");
   double t0 = process_cpu_seconds();
-  CellMarking marking = marker_.mark(body);
+  CellMarking marking = held_marking_ ? *held_marking_ : marker_.mark(body);
   const bool reclassify = !fluid_ || marking.cell != marking_.cell;
   if (values_) op_->set_external_face_values(nullptr);
   local_values_.reset();
@@ -441,6 +441,72 @@ std::vector<Vec3> ImmersedKineticGas::ib_face_forces() const {
   if (part_ && !forces.empty())
     options_.comm.sum_in_place(std::span<Real>(forces.front().data(), 3 * forces.size()));
   return forces;
+}
+
+struct ImmersedKineticGas::Checkpoint {
+  Checkpoint(ImmersedSurface b, CellMarking m, std::vector<Vec3> v)
+      : body(std::move(b)), marking(std::move(m)), segment_velocity(std::move(v)) {}
+  ImmersedSurface body;
+  CellMarking marking;  // the body's, or a held one (hold_marking)
+  std::vector<Vec3> segment_velocity;
+  std::vector<Real> f, f_previous, predictor_previous;
+  Real dt_previous = 0;
+  std::vector<Index> global_cell;  // distributed: per owned cell, its global FLUID cell
+  RemarkReport remark;
+};
+
+void ImmersedKineticGas::save_checkpoint() {
+  if (!body_ || !has_state_) throw InputError("immersed gas: checkpoint before initialize");
+  checkpoint_ = std::make_unique<Checkpoint>(*body_, marking_, segment_velocity_);
+  Checkpoint& c = *checkpoint_;
+  c.f = f_;
+  c.f_previous = f_previous_;
+  c.predictor_previous = predictor_previous_;
+  c.dt_previous = dt_previous_;
+  c.remark = remark_;
+  if (part_)
+    checkpoint_->global_cell.assign(part_->global_cell.begin(),
+                                    part_->global_cell.begin() + fluid_->graph.n_owned_cells);
+}
+
+std::vector<Real> ImmersedKineticGas::to_current_layout(
+    const std::vector<Real>& v, const std::vector<Index>& global_cell) const {
+  if (!part_ || v.empty()) return v;  // serial: the same marking gives the same graph
+  const Index N = grid_.size();
+  std::vector<Real> w(fluid_->graph.n_cells() * N, 0.0);
+  for (std::size_t c = 0; c < global_cell.size(); ++c) {
+    const Index local = part_->local_of_global[global_cell[c]];
+    if (local < 0 || local >= fluid_->graph.n_owned_cells)
+      throw SolverError("immersed gas: a checkpointed cell is no longer owned here");
+    std::copy_n(v.data() + c * N, N, w.data() + local * N);
+  }
+  op_->exchange_ghosts(w);
+  return w;
+}
+
+void ImmersedKineticGas::restore_checkpoint() {
+  if (!checkpoint_) throw InputError("immersed gas: restore without a saved checkpoint");
+  const Checkpoint& s = *checkpoint_;
+  std::optional<CellMarking> held = std::move(held_marking_);
+  held_marking_ = s.marking;
+  set_body(s.body, s.segment_velocity);  // the saved marking, graph and IB fits
+  held_marking_ = std::move(held);
+  f_ = to_current_layout(s.f, s.global_cell);
+  if (static_cast<Index>(f_.size()) != op_->size())
+    throw SolverError("immersed gas: the checkpoint's distribution does not fit the graph");
+  f_previous_ = to_current_layout(s.f_previous, s.global_cell);
+  predictor_previous_ = to_current_layout(s.predictor_previous, s.global_cell);
+  dt_previous_ = s.dt_previous;
+  remark_ = s.remark;
+  op_->update_boundary_values(f_);  // as set_body does, now from the saved f
+  op_->update_collision(f_);
+}
+
+void ImmersedKineticGas::hold_marking(bool hold) {
+  if (hold)
+    held_marking_ = marking_;
+  else
+    held_marking_.reset();
 }
 
 std::vector<Vec3> ImmersedKineticGas::step(const ImmersedSurface& surface,

@@ -197,6 +197,23 @@ class ImmersedKineticGas {
   std::vector<Vec3> step(const ImmersedSurface& surface, std::span<const Vec3> segment_velocity,
                          Real dt, GasStepReport* report = nullptr);
 
+  // One checkpoint of the gas after the last step: the body, its velocity and its marking (so
+  // the FLUID graph, its part and the IB fits), f^n, the BDF2 / predictor history f^(n-1) and
+  // its dt. restore_checkpoint() puts the body back by set_body on the saved marking (the
+  // graph rebuilt only if a step since changed the classes) and then the saved
+  // distributions, so that the next step
+  // is the one that would have followed the save (the strong coupling's redo of a step).
+  // Under MPI the owned cells are put back by global FLUID cell and the ghosts exchanged (the
+  // band may have been widened since; collective, every rank together).
+  void save_checkpoint();
+  void restore_checkpoint();
+  // Held: set_body keeps the marking of the body at the call (classes, IB faces, cut lists)
+  // and fits the IB faces to each new body on it; restore_checkpoint puts back the saved
+  // marking. For the strong coupling's iterates within a step, whose bodies differ by far less
+  // than a cell: a cell changing class between two iterates made the gas force jump by
+  // 5 % (measured, coarse switch), and the fixed point did not exist.
+  void hold_marking(bool hold);
+
   // Gas force on each IB face (marking order) and per surface segment (ForceTransfer).
   std::vector<Vec3> ib_face_forces() const;
   std::vector<Vec3> segment_forces() const;
@@ -231,6 +248,13 @@ class ImmersedKineticGas {
                                const std::vector<Real>& from, RemarkReport* report) const;
   void sweep(Real b, std::span<const Real> h);
   GasStepReport advance_ida(Real dt);
+
+  struct Checkpoint;
+  std::unique_ptr<Checkpoint> checkpoint_;
+  std::optional<CellMarking> held_marking_;
+  // v (this part's layout at the save, owned cells global_cell) on the current part's layout.
+  std::vector<Real> to_current_layout(const std::vector<Real>& v,
+                                      const std::vector<Index>& global_cell) const;
 
   const Mesh& background_;
   FaceGraph background_graph_;

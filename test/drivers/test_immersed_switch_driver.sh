@@ -2,7 +2,8 @@
 # rfmems-pullin on the immersed-boundary cantilever switch (cases/cantilever_switch, issue 8),
 # on a coarse mesh (46 x 4 beam, 101 x 31 background): a static solve at 50 V exits 0, writes
 # its file and a tip deflection within 10 % of the 185 x 11 scene's (-46.3 nm); the quasi-static
-# pull-in within 8 % of the distributed closed form (132.5 V); and the bad-input contract of
+# pull-in within 8 % of the distributed closed form (132.5 V); a short transient with the
+# Reynolds film inside the strong iteration (coupling.strong_gas); and the bad-input contract of
 # the immersed keys (one line naming file, key and value; exit 2; no result file).
 #
 # Usage: bash test_immersed_switch_driver.sh <directory of rfmems-pullin> <source directory>
@@ -39,6 +40,27 @@ then pass "static deflection and quasi-static V_PI near their references"
 else fail "static / quasi-static figures"
 fi
 
+# The gas inside the strong iteration (coupling.strong_gas, Reynolds film, 0.2 us at 125 V):
+# every step ends with the summed interface residual below the tolerance.
+if "$DRIVER" "$CASE" "${COARSE[@]}" --set pull_in.mode=transient \
+    --set pull_in.transient.voltage=125V --set pull_in.transient.end_time=0.2us \
+    --set gas.model=reynolds --set coupling.scheme=strong --set coupling.strong_gas=true \
+    -o "$WORK/strong_gas.h5" --json --quiet >"$WORK/strong_gas.json" 2>"$WORK/err" &&
+  $PY - "$WORK/strong_gas.json" <<'PY'
+import json, sys
+im = json.load(open(sys.argv[1]))["immersed"]
+cpu = im["cpu"]
+assert im["strong_gas"] is True and im["gas"] == "reynolds", im
+assert cpu["unconverged_coupling_steps"] == 0, cpu
+assert 0 < cpu["max_coupling_residual"] <= 1e-6, cpu
+assert cpu["gas_steps"] == cpu["coupling_iterations"] > cpu["structure_steps"], cpu
+PY
+then
+  pass "strong_gas: the gas in every iterate, every step converged"
+else
+  fail "strong_gas run: $(cat "$WORK/err")"
+fi
+
 expect_input_error bad_cells "cells" "$CASE" --set "immersed.background.cells=[2, 50]"
 expect_input_error bad_electrode "x" "$CASE" --set "immersed.electrode.x=[50 um, 40 um]"
 expect_input_error bad_anchor "anchor_patch" "$CASE" --set immersed.anchor_patch=wall
@@ -47,6 +69,11 @@ expect_input_error bad_scheme "scheme" "$CASE" --set coupling.scheme=monolithic
 expect_input_error bad_bracket "bracket" "$CASE" --set "pull_in.dynamic.bracket=[140 V, 100 V]"
 expect_input_error bad_contact "contact_gap" "$CASE" --set pull_in.contact_gap=2um
 expect_input_error outside "background" "$CASE" --set "immersed.background.upper=[40 um, 10 um]"
+expect_input_error strong_gas_value "strong_gas" "$CASE" --set coupling.strong_gas=maybe
+expect_input_error strong_gas_staggered "strong_gas" "$CASE" --set coupling.strong_gas=true
+expect_input_error strong_gas_every "strong_gas" "$CASE" --set coupling.scheme=strong \
+  --set coupling.strong_gas=true --set coupling.gas_every=2
+expect_input_error bad_fixed_step "fixed_step" "$CASE" --set solver.fixed_step=-1ns
 expect_input_error typo "immersed.electrodes" "$CASE" --set "immersed.electrodes={x: [0, 1]}"
 
 exit $((failures > 0))

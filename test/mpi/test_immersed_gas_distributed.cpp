@@ -20,6 +20,10 @@
 //    force to 1e-7 of p0 times the beam's perimeter (the step tolerance is relative to the whole
 //    distribution, i.e. to the ambient pressure, while the net force is ~1e-4 of p0 times the
 //    perimeter here: measured 2.4e-9 N/m of 1.29 N/m on 2 ranks, 1.5e-5 of the net force itself).
+//  - the same coupled switch with the gas inside the strong iteration (coupling.strong_gas:
+//    each iterate restores the gas's checkpoint, on every rank together, and redoes its step):
+//    the serial IDA steps, coupling iterations and gas steps, every step converged, the tip
+//    to 1e-6 relative and the gas force to 1e-7 of p0 times the perimeter, as above;
 //  - a band started at 1 ring is widened until it covers every IB stencil, with the serial
 //    segment forces (1e-8);
 //  - the closed box with second-order transport (the slopes of ghost cells from their owners,
@@ -200,15 +204,35 @@ ImmersedEsbgkSettings air(const Communicator& comm) {
   return s;
 }
 
-TEST(ImmersedGasDistributed, CoupledCoarseSwitchGivesTheSerialTipDeflection) {
+class CoupledCoarseSwitch : public ::testing::TestWithParam<bool> {};  // strong_gas
+
+TEST_P(CoupledCoarseSwitch, GivesTheSerialTipDeflection) {
   using namespace rfmems::test;
   const Communicator world = Communicator::world();
   Cantilever c(45, 3, 76, 26);
   ImmersedRunOptions o = run_options(1.2e-8, 1e-2);
+  if (GetParam()) {
+    o.coupling = ImmersedCoupling::Strong;
+    o.strong_gas = true;
+  }
   ImmersedEsbgkGas serial(c.scene->background(), air(Communicator::serial()), 0.0);
   ImmersedEsbgkGas parallel(c.scene->background(), air(world), 0.0);
+  c.scene->reset_times();
   const DynamicRun r1 = c.scene->run(80.0, o, &serial);
+  const ImmersedPhysicsTimes t1 = c.scene->times();
+  c.scene->reset_times();
   const DynamicRun rP = c.scene->run(80.0, o, &parallel);
+  const ImmersedPhysicsTimes tP = c.scene->times();
+  if (GetParam()) {
+    EXPECT_EQ(tP.coupling_iterations, t1.coupling_iterations);
+    EXPECT_EQ(tP.gas_steps, t1.gas_steps);
+    EXPECT_GT(tP.gas_steps, tP.structure_steps);  // the gas redone inside the iterations
+    EXPECT_EQ(tP.unconverged_steps + t1.unconverged_steps, 0);
+    EXPECT_LE(tP.max_coupling_residual, o.strong_tolerance);
+    if (world.is_root())
+      std::printf("strong_gas: %ld steps, %ld coupling iterations (at most %d in a step)\n",
+                  tP.structure_steps, tP.coupling_iterations, tP.max_coupling_iterations);
+  }
   ASSERT_GT(parallel.stats().steps, 1);
   EXPECT_EQ(parallel.stats().steps, serial.stats().steps);
   EXPECT_EQ(parallel.stats().unconverged + serial.stats().unconverged, 0);
@@ -235,6 +259,11 @@ TEST(ImmersedGasDistributed, CoupledCoarseSwitchGivesTheSerialTipDeflection) {
   EXPECT_LE(d_tip, 1e-6 * scale);
   EXPECT_LE(d_gas, 1e-7 * gas_scale);
 }
+
+INSTANTIATE_TEST_SUITE_P(ImmersedGasDistributed, CoupledCoarseSwitch, ::testing::Bool(),
+                         [](const auto& info) {
+                           return std::string(info.param ? "StrongGas" : "Staggered");
+                         });
 
 }  // namespace
 }  // namespace rfmems
