@@ -7,9 +7,9 @@
 //                 relaxation + Newton down the contact branch, quasi_static_pull_out.hpp);
 //   hold:         the drop to --hold, until release or --window;
 //   dynamic_pull_out: bisection on the hold voltage in [0, --voltage] to --tolerance;
-//   --touching-only: only the touching point of the no-contact branch (displacement control,
-//                 the control cell at g0 - g_c), which the quasi-static pull-out approaches
-//                 as delta -> 0: its mesh dependence without any dynamics.
+//   --touching-only: only the touching point of the no-contact branch (the smallest gap of the
+//                 reconstructed surface at g_c; touching_point.hpp), which the quasi-static
+//                 pull-out approaches as delta -> 0: its mesh dependence without any dynamics.
 //
 //   bench_plate_release --cells 40,4 --gas reynolds
 #include <CLI/CLI.hpp>
@@ -24,6 +24,7 @@
 #include "coupling/quasi_static_pull_in.hpp"
 #include "coupling/quasi_static_pull_out.hpp"
 #include "coupling/switch_scene.hpp"
+#include "coupling/touching_point.hpp"
 #include "io/case_file.hpp"
 
 using namespace rfmems;
@@ -61,14 +62,16 @@ int main(int argc, char** argv) {
     const double c = bench::cpu_now();
     const QuasiStaticPullIn in =
         trace_pull_in(*scene.actuation, scene.control, settings.quasi_static);
-    const std::vector<Real> touching = follow_displacement(
-        *scene.actuation, scene.control, in.fold_state, {-(scene.gap - scene.contact.gap)});
+    const TouchingPoint touching = find_touching_point(*scene.actuation, in.fold_state,
+                                                       scene.contact.gap, 1e-4 * scene.contact.gap);
     Json t = base;
     t["phase"] = "touching_point";
     t["cpu_s"] = bench::cpu_now() - c;
     t["pull_in_voltage"] = in.pull_in_voltage;
-    t["touching_voltage"] = std::sqrt(touching.back());
-    t["min_gap"] = scene.actuation->min_gap(touching);
+    t["touching_voltage"] = touching.voltage;
+    t["min_gap"] = scene.actuation->min_gap(touching.state);
+    t["control_cell"] = touching.control / 3;
+    t["solves"] = touching.iterations;
     bench::emit(t);
     return 0;
   }

@@ -39,7 +39,7 @@ struct CoarsePlate {
 
 // The structure's stiffness diagonal at rest (the relaxation's pseudo-mass).
 inline std::vector<double> rest_diagonal(ParallelPlateActuation& act) {
-  const CsrPattern& k = act.stiffness_pattern();
+  const CsrPattern& k = act.structure().stiffness_pattern();
   std::vector<double> values(k.nnz()), zero(act.size(), 0.0), d(act.size());
   act.structure().stiffness(0.0, zero, values);
   for (Index i = 0; i < act.size(); ++i) d[i] = std::abs(values[k.find(i, i)]);
