@@ -28,6 +28,7 @@
 
 #include "../../support/coarse_plate_contact.hpp"
 #include "coupling/quasi_static_pull_out.hpp"
+#include "coupling/touching_point.hpp"
 #include "physics/electrostatics/permittivity.hpp"
 #include "solvers/kinsol_solver.hpp"
 
@@ -125,12 +126,11 @@ TEST(PlateContact, QuasiStaticAndDynamicPullOut) {
   EXPECT_LT(out.pull_out_voltage - out.released_voltage, 0.011);
   EXPECT_GT(out.branch.front().contact_fraction, 2 * out.branch.back().contact_fraction);
 
-  // The touching point of the no-contact branch: the control cell (next to the centre, with
-  // its mirror image the smallest gap) at g0 - g_c by displacement control.
+  // The touching point of the no-contact branch: the smallest gap of the reconstructed surface
+  // (at the free edges' corners over the centre) at g_c (touching_point.hpp).
   const QuasiStaticPullIn in = trace_pull_in(act, plate.scene.control, QuasiStaticOptions{});
-  const std::vector<double> touching = follow_displacement(act, plate.scene.control, in.fold_state,
-                                                           {-(act.initial_gap() - kContactGap)});
-  const double v_touch = std::sqrt(touching.back());
+  const double v_touch =
+      find_touching_point(act, in.fold_state, kContactGap, 1e-4 * kContactGap).voltage;
   std::printf(
       "touching point of the no-contact branch %.3f V (pull-out / touching - 1 = "
       "%.2e); quasi-static pull-in %.2f V; the rigid plate on springs: %.2f V\n",
