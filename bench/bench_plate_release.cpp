@@ -50,13 +50,16 @@ int main(int argc, char** argv) {
   app.add_flag("--pull-out-from-touching", touching_pull_out,
                "with --touching-only: also the quasi-static pull-out from 1.25 x the touching "
                "point (no dynamic approach)");
+  std::vector<std::string> sets;
+  app.add_option("--set", sets, "further case overrides key=value (e.g. material.nu=0)");
   CLI11_PARSE(app, argc, argv);
 
   const std::string path = bench::default_cases_dir() + "/switch_plate/case.yaml";
-  const CaseFile cf =
-      CaseFile::load(path, {"mesh.cells=[" + cells + "]", "gas.model=" + gas,
-                            "actuation.dielectric={thickness: 0.1 um, permittivity: 7.6}",
-                            "actuation.contact={gap: 75 nm, penetration: 7.5 nm}"});
+  std::vector<std::string> overrides{"mesh.cells=[" + cells + "]", "gas.model=" + gas,
+                                     "actuation.dielectric={thickness: 0.1 um, permittivity: 7.6}",
+                                     "actuation.contact={gap: 75 nm, penetration: 7.5 nm}"};
+  overrides.insert(overrides.end(), sets.begin(), sets.end());
+  const CaseFile cf = CaseFile::load(path, overrides);
   SwitchScene scene = build_switch_scene(cf.root(), bench::default_cases_dir() + "/switch_plate",
                                          AnalysisType::Transient);
   const PullInSettings settings = read_pull_in_settings(cf.root(), scene);
