@@ -7,9 +7,11 @@
 //                 relaxation + Newton down the contact branch, quasi_static_pull_out.hpp);
 //   hold:         the drop to --hold, until release or --window;
 //   dynamic_pull_out: bisection on the hold voltage in [0, --voltage] to --tolerance;
-//   --touching-only: only the touching point of the no-contact branch (displacement control,
-//                 the control cell at g0 - g_c), which the quasi-static pull-out approaches
-//                 as delta -> 0: its mesh dependence without any dynamics.
+//   --touching-only: only the touching point of the no-contact branch (the smallest gap of the
+//                 reconstructed surface at g_c; touching_point.hpp), which the quasi-static
+//                 pull-out approaches as delta -> 0: its mesh dependence without any dynamics;
+//                 with --pull-out-from-touching also the quasi-static pull-out from the plate
+//                 pressed on at 1.25 x that voltage.
 //
 //   bench_plate_release --cells 40,4 --gas reynolds
 #include <CLI/CLI.hpp>
@@ -24,6 +26,7 @@
 #include "coupling/quasi_static_pull_in.hpp"
 #include "coupling/quasi_static_pull_out.hpp"
 #include "coupling/switch_scene.hpp"
+#include "coupling/touching_point.hpp"
 #include "io/case_file.hpp"
 
 using namespace rfmems;
@@ -33,7 +36,7 @@ int main(int argc, char** argv) {
   CLI::App app("contact, hold and pull-out of the plate switch: cost per phase");
   std::string cells = "40,4", gas = "reynolds";
   double voltage = 180, hold = 10, tolerance = 0.5, delay = 2e-6, window = 20e-6;
-  bool bisect = true, touching_only = false;
+  bool bisect = true, touching_only = false, touching_pull_out = false;
   app.add_option("--cells", cells, "plate cells nx,ny");
   app.add_option("--gas", gas, "none | reynolds");
   app.add_option("--voltage", voltage, "the step that pulls in [V]");
@@ -44,13 +47,19 @@ int main(int argc, char** argv) {
   app.add_flag("!--no-bisection", bisect, "skip the dynamic pull-out bisection");
   app.add_flag("--touching-only", touching_only,
                "only the touching point of the no-contact branch");
+  app.add_flag("--pull-out-from-touching", touching_pull_out,
+               "with --touching-only: also the quasi-static pull-out from 1.25 x the touching "
+               "point (no dynamic approach)");
+  std::vector<std::string> sets;
+  app.add_option("--set", sets, "further case overrides key=value (e.g. material.nu=0)");
   CLI11_PARSE(app, argc, argv);
 
   const std::string path = bench::default_cases_dir() + "/switch_plate/case.yaml";
-  const CaseFile cf =
-      CaseFile::load(path, {"mesh.cells=[" + cells + "]", "gas.model=" + gas,
-                            "actuation.dielectric={thickness: 0.1 um, permittivity: 7.6}",
-                            "actuation.contact={gap: 75 nm, penetration: 7.5 nm}"});
+  std::vector<std::string> overrides{"mesh.cells=[" + cells + "]", "gas.model=" + gas,
+                                     "actuation.dielectric={thickness: 0.1 um, permittivity: 7.6}",
+                                     "actuation.contact={gap: 75 nm, penetration: 7.5 nm}"};
+  overrides.insert(overrides.end(), sets.begin(), sets.end());
+  const CaseFile cf = CaseFile::load(path, overrides);
   SwitchScene scene = build_switch_scene(cf.root(), bench::default_cases_dir() + "/switch_plate",
                                          AnalysisType::Transient);
   const PullInSettings settings = read_pull_in_settings(cf.root(), scene);
@@ -61,15 +70,36 @@ int main(int argc, char** argv) {
     const double c = bench::cpu_now();
     const QuasiStaticPullIn in =
         trace_pull_in(*scene.actuation, scene.control, settings.quasi_static);
-    const std::vector<Real> touching = follow_displacement(
-        *scene.actuation, scene.control, in.fold_state, {-(scene.gap - scene.contact.gap)});
+    const TouchingPoint touching = find_touching_point(*scene.actuation, in.fold_state,
+                                                       scene.contact.gap, 1e-4 * scene.contact.gap);
     Json t = base;
     t["phase"] = "touching_point";
     t["cpu_s"] = bench::cpu_now() - c;
     t["pull_in_voltage"] = in.pull_in_voltage;
-    t["touching_voltage"] = std::sqrt(touching.back());
-    t["min_gap"] = scene.actuation->min_gap(touching);
+    t["touching_voltage"] = touching.voltage;
+    t["min_gap"] = scene.actuation->min_gap(touching.state);
+    t["control_cell"] = touching.control / 3;
+    t["solves"] = touching.iterations;
     bench::emit(t);
+    if (!touching_pull_out) return 0;
+    // The quasi-static pull-out from the plate pressed on at 1.25 x the touching point (the
+    // relaxation from the touching state: a small contact, the last one to lift).
+    const double c1 = bench::cpu_now();
+    PullOutOptions po;
+    po.start_voltage = 1.25 * touching.voltage;
+    po.voltage_tolerance = settings.quasi_static.voltage_tolerance;
+    const QuasiStaticPullOut out =
+        trace_pull_out(*scene.actuation, touching.control, touching.state, po);
+    Json p = base;
+    p["phase"] = "pull_out_from_touching";
+    p["cpu_s"] = bench::cpu_now() - c1;
+    p["pull_out_voltage"] = out.pull_out_voltage;
+    p["released_voltage"] = out.released_voltage;
+    p["pull_out_over_touching"] = out.pull_out_voltage / touching.voltage;
+    p["contact_fraction_at_start"] = out.branch.front().contact_fraction;
+    p["contact_fraction_at_pull_out"] = out.branch.back().contact_fraction;
+    p["solves"] = out.solves;
+    bench::emit(p);
     return 0;
   }
   ReleaseOptions r;

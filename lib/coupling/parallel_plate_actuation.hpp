@@ -1,20 +1,27 @@
 // A structure pulled towards an electrode by the parallel-plate law
 // (physics/electrostatics/parallel_plate.hpp), as one SecondOrderOperator:
 //
-//   M y'' + R(t, y) + V(t)^2 sum_e A_e p1(g_e) n_e = 0,    g_e = g0 + y[dof_e]
+//   M y'' + R(t, y) + V(t)^2 sum_e A_e sum_q a_q p1(g_q) n_e = 0,
+//   g_q = g0 + u_q(y),   u_q = offset_q + sum_k w_qk y[k]
 //
 // where each element e of the surface facing the electrode (StructuralModel::gap_elements,
-// with its area A_e already multiplied by the fraction of it over the electrode) moves with the
-// unknown y[dof_e] along the gap axis (positive: opening), p1 is the pressure per V^2 and
-// n_e = the unit vector of dof_e: the force -A p1 V^2 closes the gap. Its Jacobian adds
-// V^2 A_e p1'(g_e) (negative: the electrostatic spring softening) on the diagonal of the
-// structure's stiffness. The coupling is monolithic and local: one Newton step of a static
-// solve or an IDA step sees the exact tangent.
+// with its area A_e already multiplied by the fraction of it over the electrode) carries the
+// force of its quadrature points q (area fractions a_q; GapPoint) on its unknown y[dof_e]
+// along the gap axis (positive: opening), p1 is the pressure per V^2 and n_e = the unit vector
+// of dof_e: the force -A p1 V^2 closes the gap. The displacement u_q at a point is the
+// structure's reconstruction of its surface there (a plate: its w polynomial, Simpson points
+// on the cell's edges and corners; plate_scene.cpp), or the element's own unknown (one point,
+// a continuum's faces). The Jacobian adds V^2 A_e a_q p1'(g_q) w_qk (negative: the
+// electrostatic spring softening) in row dof_e, column k: the diagonal and, for reconstructed
+// points, the reconstruction's stencil (stiffness_pattern() is the structure's pattern with
+// those entries). The coupling is monolithic: one Newton step of a static solve or an IDA step
+// sees the exact tangent.
 //
-// With a contact penalty (contact_penalty.hpp) each element also carries the contact pressure
+// With a contact penalty (contact_penalty.hpp) each point also carries the contact pressure
 // p_c(g, V) = V^2 p1(g_c) phi((g_c - g)/delta), opening: the residual adds
-// -V^2 A_e p1(g_c) phi(s_e) n_e and the diagonal +V^2 A_e p1(g_c) phi'(s_e)/delta, so the
-// structure can rest on the dielectric and the exact tangent includes the contact stiffness.
+// -V^2 A_e a_q p1(g_c) phi(s_q) n_e and the tangent +V^2 A_e a_q p1(g_c) phi'(s_q)/delta w_qk,
+// so the structure can rest on the dielectric, contact is sensed where the reconstructed
+// surface is closest, and the exact tangent includes the contact stiffness.
 //
 // Without contact, a gap that closes to g_e <= 0 (electrical gap) raises RecoverableError: IDA
 // retries with a smaller step, KINSOL backtracks; without contact a run that really touches down is
@@ -58,20 +65,26 @@ class ParallelPlateActuation : public SecondOrderOperator {
 
   Index size() const override { return structure_.size(); }
   void internal_residual(Real t, std::span<const Real> y, std::span<Real> r) override;
-  const CsrPattern& stiffness_pattern() const override { return structure_.stiffness_pattern(); }
+  const CsrPattern& stiffness_pattern() const override { return pattern_; }
   void stiffness(Real t, std::span<const Real> y, std::span<Real> values) override;
   std::vector<Real> mass_diagonal() const override { return structure_.mass_diagonal(); }
 
-  // d(residual)/d(V^2) = sum_e A_e (p1(g_e) - p_c(g_e)/V^2) n_e (the force per V^2, with the
-  // residual's sign).
+  // d(residual)/d(V^2) = sum_e A_e sum_q a_q (p1(g_q) - p_c(g_q)/V^2) n_e (the force per V^2,
+  // with the residual's sign).
   void residual_per_volt2(std::span<const Real> y, std::span<Real> out) const;
-  // Air gap of element e, the smallest over the elements, and the electrostatic force along
-  // the gap axis summed over the elements (negative: closing) at V^2.
+  // Air gap at element e's unknown, and at its point q.
   Real gap(std::span<const Real> y, std::size_t e) const { return gap0_ + y[elements_[e].dof]; }
+  Real gap(std::span<const Real> y, const GapPoint& q) const {
+    Real u = q.offset;
+    for (const GapTerm& t : q.terms) u += t.weight * y[t.dof];
+    return gap0_ + u;
+  }
+  // The smallest air gap over the points (the touching criterion), and the electrostatic force
+  // along the gap axis summed over the points (negative: closing) at V^2.
   Real min_gap(std::span<const Real> y) const;
   Real total_force(Real voltage_squared, std::span<const Real> y) const;
-  // The contact force along the gap axis summed over the elements (positive: opening) at V^2,
-  // and the fraction of the electrode's area in contact (g_e < g_c).
+  // The contact force along the gap axis summed over the points (positive: opening) at V^2,
+  // and the fraction of the electrode's area in contact (g_q < g_c).
   Real contact_force(Real voltage_squared, std::span<const Real> y) const;
   Real contact_fraction(std::span<const Real> y) const;
 
@@ -82,6 +95,13 @@ class ParallelPlateActuation : public SecondOrderOperator {
 
  private:
   void check_gap(Real g, std::size_t e) const;
+  // sum_q a_q f(g_q) over element e's points.
+  template <class F>
+  Real point_sum(std::span<const Real> y, std::size_t e, F f) const {
+    Real sum = 0;
+    for (const GapPoint& q : elements_[e].points) sum += q.area_fraction * f(gap(y, q));
+    return sum;
+  }
   // Electrostatic pressure per V^2 at air gap g, and its derivative. Off the dielectric the
   // parallel-plate law. In contact (g < g_c) the surfaces touch: the penetration g_c - g is the
   // penalty's regularisation, not a thinner gap, so the field stays that of the dielectric's
@@ -121,7 +141,10 @@ class ParallelPlateActuation : public SecondOrderOperator {
   Real p1_contact_ = 0;     // p1(g_c)
   Real slope_contact_ = 0;  // -p1'(g_c)
   std::function<Real(Real)> voltage_squared_;
-  std::vector<Index> diagonal_position_;  // per element: value index of (dof, dof)
+  CsrPattern pattern_;                     // the structure's, with the points' stencils
+  std::vector<Index> structure_position_;  // per structure entry: its index in pattern_
+  std::vector<Index> term_position_;       // per (element, point, term): index of (dof_e, k)
+  std::vector<Real> structure_values_;
 };
 
 }  // namespace rfmems

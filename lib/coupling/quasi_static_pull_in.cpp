@@ -66,7 +66,7 @@ class DisplacementControlSystem : public SystemOperator {
 }  // namespace
 
 Real stiffness_scale(ParallelPlateActuation& act) {
-  const CsrPattern& k = act.stiffness_pattern();
+  const CsrPattern& k = act.structure().stiffness_pattern();
   std::vector<Real> values(k.nnz());
   std::vector<Real> zero(act.size(), 0.0);
   act.structure().stiffness(0.0, zero, values);

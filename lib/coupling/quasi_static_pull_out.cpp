@@ -18,7 +18,7 @@ namespace {
 
 // The structure's stiffness diagonal at rest: the pseudo-mass of the relaxation.
 std::vector<Real> rest_stiffness_diagonal(ParallelPlateActuation& act) {
-  const CsrPattern& k = act.stiffness_pattern();
+  const CsrPattern& k = act.structure().stiffness_pattern();
   std::vector<Real> values(k.nnz()), zero(act.size(), 0.0), d(act.size());
   act.structure().stiffness(0.0, zero, values);
   for (Index i = 0; i < act.size(); ++i) d[i] = std::abs(values[k.find(i, i)]);

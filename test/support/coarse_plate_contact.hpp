@@ -1,4 +1,4 @@
-// The plate switch of cases/switch_plate on a coarse 20 x 2 mesh with the dielectric (0.1 um,
+// The plate switch of cases/switch_plate on a coarse 20 x 2 mesh (or `cells`) with the dielectric (0.1 um,
 // eps_r = 7.6) and the contact penalty (g_c = 75 nm, delta = 7.5 nm), for the contact tests
 // (test/unit/coupling/test_plate_contact.cpp, test/study/test_plate_release.cpp).
 #pragma once
@@ -25,9 +25,9 @@ inline constexpr double kDielectricGap = 0.1e-6 / 7.6;  // t_d / eps_r
 struct CoarsePlate {
   CaseFile cf;
   SwitchScene scene;
-  explicit CoarsePlate(const std::string& gas = "none")
+  explicit CoarsePlate(const std::string& gas = "none", const std::string& cells = "[20, 2]")
       : cf(CaseFile::load(std::string(RFMEMS_SOURCE_DIR) + "/cases/switch_plate/case.yaml",
-                          {"mesh.cells=[20, 2]", "gas.model=" + gas,
+                          {"mesh.cells=" + cells, "gas.model=" + gas,
                            "actuation.dielectric={thickness: 0.1 um, permittivity: 7.6}",
                            "actuation.contact={gap: 75 nm, penetration: 7.5 nm}"})),
         scene(build_switch_scene(cf.root(), std::string(RFMEMS_SOURCE_DIR) + "/cases/switch_plate",
@@ -39,7 +39,7 @@ struct CoarsePlate {
 
 // The structure's stiffness diagonal at rest (the relaxation's pseudo-mass).
 inline std::vector<double> rest_diagonal(ParallelPlateActuation& act) {
-  const CsrPattern& k = act.stiffness_pattern();
+  const CsrPattern& k = act.structure().stiffness_pattern();
   std::vector<double> values(k.nnz()), zero(act.size(), 0.0), d(act.size());
   act.structure().stiffness(0.0, zero, values);
   for (Index i = 0; i < act.size(); ++i) d[i] = std::abs(values[k.find(i, i)]);

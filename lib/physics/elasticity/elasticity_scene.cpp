@@ -286,7 +286,7 @@ std::vector<GapElement> ElasticityScene::gap_elements(const std::string& patch_n
     if (owner >= mesh->n_owned_cells()) continue;
     GapElement e{owner * dim + (dim - 1), mesh->face_area(f).norm(),
                  Vec3::Constant(std::numeric_limits<Real>::infinity()),
-                 Vec3::Constant(-std::numeric_limits<Real>::infinity())};
+                 Vec3::Constant(-std::numeric_limits<Real>::infinity()), {}};
     for (Index node : mesh->face_nodes(f)) {
       e.lo = e.lo.cwiseMin(mesh->nodes()[node]);
       e.hi = e.hi.cwiseMax(mesh->nodes()[node]);

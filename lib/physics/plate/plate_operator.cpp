@@ -583,6 +583,27 @@ Real PlateOperator::deflection_at(Index c, const Vec3& x, Real t, std::span<cons
   return w;
 }
 
+Real PlateOperator::deflection_weights(Index c, const Vec3& x, Real t,
+                                       std::vector<DofWeight>& terms) const {
+  std::vector<Real> value;
+  std::vector<Vec3> gradient;
+  w_rec_->weights_at(c, x, value, gradient);
+  auto points = w_rec_->points(c);
+  terms.clear();
+  Real constant = 0, own = 1;
+  for (std::size_t j = 0; j < points.size(); ++j) {
+    const StencilPoint& p = points[j];
+    own -= value[j];
+    if (p.kind == StencilPoint::Kind::Cell)
+      terms.push_back({3 * p.cell + kW, value[j]});
+    else
+      constant +=
+          value[j] * bc_value(boundaries_[mesh_.face_patch(p.face)], mesh_.face_centroid(p.face), t)[0];
+  }
+  terms.push_back({3 * c + kW, own});
+  return constant;
+}
+
 // ---- for operators built on the plate ------------------------------------------------------
 
 std::vector<PlateOperator::CellWeight> PlateOperator::centroid_gradient_weights(Index c) const {

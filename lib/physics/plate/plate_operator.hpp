@@ -123,6 +123,14 @@ class PlateOperator : public SecondOrderOperator {
   // Deflection at x from cell c's reconstruction of w (same degree; prescribed w on the
   // supported edges enters it as data).
   Real deflection_at(Index c, const Vec3& x, Real t, std::span<const Real> y) const;
+  // deflection_at() as an affine map of the unknowns: w(x) = constant + sum_k weight_k y[dof_k]
+  // over the w of the stencil's cells; the constant is the prescribed w of its boundary points
+  // at t. Returns the constant. For operators that evaluate w inside a cell (gap quadrature).
+  struct DofWeight {
+    Index dof;
+    Real weight;
+  };
+  Real deflection_weights(Index c, const Vec3& x, Real t, std::vector<DofWeight>& terms) const;
 
   // ---- For operators built on the plate (physics/creep) ------------------------------------
   const std::vector<PlateBoundary>& boundaries() const { return boundaries_; }

@@ -67,7 +67,7 @@ struct Lumped {
   LumpedSpring spring;
   ParallelPlateActuation act;
   explicit Lumped(double penetration)
-      : act(spring, {GapElement{0, kArea, Vec3::Zero(), Vec3::Zero()}}, kGap, [] {
+      : act(spring, {GapElement{0, kArea, Vec3::Zero(), Vec3::Zero(), {}}}, kGap, [] {
           ParallelPlateLaw law;
           law.dielectric_thickness = kDielectric;
           law.dielectric_permittivity = kEpsR;

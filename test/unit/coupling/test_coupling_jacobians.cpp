@@ -150,6 +150,20 @@ void press(const ParallelPlateActuation& act, std::vector<double>& y) {
     y[act.elements()[e].dof] = kContactGap - s[e % 4] * kPenetration - kGap;
 }
 
+// The contact part of element e's diagonal entry, -V^2 A_e sum_q a_q p_c'(g_q) w_q,dof_e, over
+// its quadrature points (the reconstructed surface: each point's own-cell weight).
+double contact_diagonal_part(const ParallelPlateActuation& act, std::span<const double> y,
+                             const GapElement& e, double v2) {
+  const double p1c = act.law().pressure_per_volt2(kContactGap);
+  double part = 0;
+  for (const GapPoint& q : e.points)
+    for (const GapTerm& t : q.terms)
+      if (t.dof == e.dof)
+        part -= v2 * e.area * q.area_fraction *
+                act.contact().pressure_per_volt2_derivative(act.gap(y, q), p1c) * t.weight;
+  return part;
+}
+
 // The static system with the contact part of each pressed diagonal entry off by 0.1 %: the
 // check of the contact entries below must see it.
 class PerturbedContact : public SystemOperator {
@@ -167,13 +181,9 @@ class PerturbedContact : public SystemOperator {
   void jacobian(Real t, Real c_j, std::span<const Real> y, std::span<const Real> yp,
                 std::span<Real> values) override {
     base_.jacobian(t, c_j, y, yp, values);
-    const double p1c = act_.law().pressure_per_volt2(kContactGap);
-    for (const GapElement& e : act_.elements()) {
-      const double g = act_.initial_gap() + y[e.dof];
-      const double contact_part = -act_.voltage_squared(t) * e.area *
-                                  act_.contact().pressure_per_volt2_derivative(g, p1c);
-      values[jacobian_pattern().find(e.dof, e.dof)] += 1e-3 * contact_part;
-    }
+    for (const GapElement& e : act_.elements())
+      values[jacobian_pattern().find(e.dof, e.dof)] +=
+          1e-3 * contact_diagonal_part(act_, y, e, act_.voltage_squared(t));
   }
 
  private:
@@ -205,11 +215,8 @@ TEST(CouplingJacobian, ContactPenaltyStiffness) {
   // measure above would let a 0.1 % error in it pass).
   auto contact_error = [&](SystemOperator& op) {
     const std::vector<double> values = test_support::analytic_jacobian(op, 1e-6, 0.0, y, yp);
-    const double p1c = f.act->law().pressure_per_volt2(kContactGap);
     std::vector<double> part(y.size(), 0.0);
-    for (const GapElement& e : f.act->elements())
-      part[e.dof] -= v2 * e.area *
-                     f.act->contact().pressure_per_volt2_derivative(kGap + y[e.dof], p1c);
+    for (const GapElement& e : f.act->elements()) part[e.dof] += contact_diagonal_part(*f.act, y, e, v2);
     double worst = 0;
     test_support::for_each_jacobian_entry(
         op, 1e-6, 0.0, y, yp, steps, values, [&](Index i, Index j, double fd, double an) {

@@ -10,16 +10,16 @@
 //    monotonically with the penetration to 20 delta: no depth at which the electrode pulls a
 //    cell through (the old law, 1/g_e^2 continued into the penetration, did at delta = g_c/5).
 //  - QuasiStaticAndDynamicPullOut: voltage control down the contact branch from 200 V.
-//    Newton alone stops at the first local fold (109.5 V measured: the contact front's first
-//    cell lifting off); with the relaxation the contact shrinks cell by cell (50 % -> 10 % of
-//    the electrode) to the pull-out, 21.50 V, which is the touching point of the no-contact
-//    branch (displacement control at g0 - g_c, 21.56 V: the last contact lifts with a vanishing
-//    contact force) to within the penalty's O((delta/g_ec)^2) (-0.28 %; lumped: -0.32 %). The
-//    rigid plate on springs gives 10.7 V: the flexible plate's electrostatic load concentrates
-//    where it is closest, so it needs twice the voltage to hold the last contact.
+//    Newton alone stops at the first local fold (117.7 V measured: the contact front's first
+//    cell lifting off); with the relaxation the contact shrinks cell by cell (30 % -> 2 % of
+//    the electrode) to the pull-out, 29.01 V, 0.51 % below the touching point of the
+//    no-contact branch (the reconstructed surface's smallest gap at g_c, 29.15 V;
+//    touching_point.hpp). The rigid plate on springs gives 10.7 V: the flexible plate's
+//    electrostatic load concentrates where it is closest, so it needs ~3x the voltage to hold
+//    the last contact.
 //    Then the dynamic pull-out from rest in contact at 1.5 V_PO (contact 10 %, zero velocity;
 //    no damping), bisected to 0.1 V: a hold below the static pull-out releases (no equilibrium
-//    in contact), and the dynamic pull-out lies above it by less than 10 % (measured 4.7 %):
+//    in contact), and the dynamic pull-out lies above it by less than 10 % (measured 8.4 %):
 //    at the drop the penalty is compressed more than at rest under the hold voltage, and the
 //    undamped rebound carries the plate past the barrier above g_c (as the lumped actuator's,
 //    test_contact_pull_out.cpp: 7.8-11.5 %). From a zipped state far above (200 V) the unzipping
@@ -28,6 +28,7 @@
 
 #include "../../support/coarse_plate_contact.hpp"
 #include "coupling/quasi_static_pull_out.hpp"
+#include "coupling/touching_point.hpp"
 #include "physics/electrostatics/permittivity.hpp"
 #include "solvers/kinsol_solver.hpp"
 
@@ -69,16 +70,24 @@ TEST(PlateContact, ContactEquilibriumConvergesInNewton) {
   kin.residual_scale = stiffness_scale(act) * g0;
   KinsolSolver newton(system, kin);
   const NonlinearStats st = newton.solve(0.0, y);
+  double cell_min_gap = 1e300;
+  for (std::size_t e = 0; e < act.elements().size(); ++e)
+    cell_min_gap = std::min(cell_min_gap, act.gap(y, e));
   std::printf(
       "Newton from the relaxed state: %ld iterations, ||F|| %.2e -> %.2e N (tolerance "
-      "%.2e); contact over %.0f %% of the electrode, min gap %.2f nm\n",
+      "%.2e); contact over %.0f %% of the electrode, min gap %.2f nm (cell centres %.2f nm)\n",
       st.newton_iters, st.initial_residual, st.final_residual, tolerance, 100 * fraction,
-      1e9 * act.min_gap(y));
+      1e9 * act.min_gap(y), 1e9 * cell_min_gap);
   EXPECT_LE(st.final_residual, tolerance);
   EXPECT_LE(st.newton_iters, 4);
   // At rest the penetration is delta (1 + delta/(2 g_ec)) under a uniform load, more at the
-  // contact edge (a plate resting on a flat carries a line reaction there): within 2.5 delta.
-  EXPECT_GT(act.min_gap(y), kContactGap - 2.5 * kPenetration);
+  // contact edge (a plate resting on a flat carries a line reaction there): at the cell
+  // centres within 2.5 delta (measured 1.05 delta). The penalty spreads that line reaction over
+  // the area of the points that carry it, so at the Simpson points (the reconstructed surface
+  // at the cells' edges, parallel_plate_actuation.hpp) it goes deeper, as a penalty's does
+  // under a line load as its sampling refines (Wriggers 2006): within 4 delta (measured 3.47).
+  EXPECT_GT(cell_min_gap, kContactGap - 2.5 * kPenetration);
+  EXPECT_GT(act.min_gap(y), kContactGap - 4 * kPenetration);
 
   // The net opening pressure per V^2 of one cell, contact minus electrostatic, rises with the
   // penetration s delta past s = delta / g_ec, to 20 delta.
@@ -125,19 +134,23 @@ TEST(PlateContact, QuasiStaticAndDynamicPullOut) {
   EXPECT_LT(out.pull_out_voltage - out.released_voltage, 0.011);
   EXPECT_GT(out.branch.front().contact_fraction, 2 * out.branch.back().contact_fraction);
 
-  // The touching point of the no-contact branch: the control cell (next to the centre, with
-  // its mirror image the smallest gap) at g0 - g_c by displacement control.
+  // The touching point of the no-contact branch: the smallest gap of the reconstructed surface
+  // (at the free edges' corners over the centre) at g_c (touching_point.hpp).
   const QuasiStaticPullIn in = trace_pull_in(act, plate.scene.control, QuasiStaticOptions{});
-  const std::vector<double> touching = follow_displacement(act, plate.scene.control, in.fold_state,
-                                                           {-(act.initial_gap() - kContactGap)});
-  const double v_touch = std::sqrt(touching.back());
+  const double v_touch =
+      find_touching_point(act, in.fold_state, kContactGap, 1e-4 * kContactGap).voltage;
   std::printf(
       "touching point of the no-contact branch %.3f V (pull-out / touching - 1 = "
       "%.2e); quasi-static pull-in %.2f V; the rigid plate on springs: %.2f V\n",
       v_touch, out.pull_out_voltage / v_touch - 1, in.pull_in_voltage,
       rigid_plate_pull_out(act.initial_gap()));
+  // Below the touching point by more than the penalty's O((delta/g_ec)^2) (lumped: 0.32 %):
+  // the plate first touches at the free edges' midpoints, and before the last contact lifts
+  // it spreads across the width (the anticlastic curl pressed flat), which holds the plate at
+  // a lower voltage. Measured 0.51 % here (2 cells across), 6.3 % and 6.5 % on 40 x 4 and
+  // 80 x 8 (docs/BENCHMARKS.md section 38).
   EXPECT_LT(out.pull_out_voltage, v_touch);
-  EXPECT_GT(out.pull_out_voltage / v_touch, 1 - 5e-3);
+  EXPECT_GT(out.pull_out_voltage / v_touch, 1 - 1e-2);
 
   // Dynamic: from rest in contact at 1.5 V_PO.
   const double v_rest = 1.5 * out.pull_out_voltage;

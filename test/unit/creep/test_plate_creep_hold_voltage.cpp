@@ -57,7 +57,7 @@ std::unique_ptr<Plate> make_plate(Real pressure, bool hold) {
     h.voltage = kVoltage;
     for (Index c = 0; c < p->mesh.n_cells(); ++c)
       h.elements.push_back({3 * c + PlateOperator::kW, p->mesh.cell_volume(c), Vec3::Zero(),
-                            Vec3::Zero()});
+                            Vec3::Zero(), {}});
     p->system->set_hold_voltage(h);
   }
   Real best = 1e300;

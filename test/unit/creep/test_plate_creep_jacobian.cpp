@@ -186,7 +186,7 @@ CreepHoldVoltage hold_on_every_cell(const Mesh& mesh, Real gap, Real voltage,
   hold.voltage = voltage;
   for (Index c = 0; c < mesh.n_cells(); ++c)
     hold.elements.push_back(
-        {3 * c + PlateOperator::kW, mesh.cell_volume(c), Vec3::Zero(), Vec3::Zero()});
+        {3 * c + PlateOperator::kW, mesh.cell_volume(c), Vec3::Zero(), Vec3::Zero(), {}});
   return hold;
 }
 

@@ -108,7 +108,7 @@ TEST(PlateCreepSchurComplement, SolvesTheJacobianExactly) {
       h.initial_gap = 2e-4;
       h.voltage = 3e3;
       for (Index c = 0; c < mesh.n_cells(); ++c)
-        h.elements.push_back({3 * c, mesh.cell_volume(c), Vec3::Zero(), Vec3::Zero()});
+        h.elements.push_back({3 * c, mesh.cell_volume(c), Vec3::Zero(), Vec3::Zero(), {}});
       system.set_hold_voltage(h);
     }
     // c_j = 10, 1 /s: steps of 0.1 s and 1 s, J well conditioned (~1e12 in these units).
