@@ -167,7 +167,7 @@ FreeResponse free_response(const std::vector<DynamicSample>& h) {
   if (r.from_log_decrement) {
     r.damping_ratio = ld.damping_ratio;
     r.frequency = ld.frequency;
-    r.natural_frequency = ld.frequency / std::sqrt(1 - std::pow(std::min(ld.damping_ratio, 0.99), 2));
+    r.natural_frequency = ld.frequency / std::sqrt(1 - zeta_ld * zeta_ld);
   }
   return r;
 }

@@ -566,20 +566,9 @@ std::vector<Vec3> PlateOperator::shear_forces(Real t, std::span<const Real> y) c
 }
 
 Real PlateOperator::deflection_at(Index c, const Vec3& x, Real t, std::span<const Real> y) const {
-  std::vector<Real> value;
-  std::vector<Vec3> gradient;
-  w_rec_->weights_at(c, x, value, gradient);
-  auto points = w_rec_->points(c);
-  const Real wc = y[3 * c + kW];
-  Real w = wc;
-  for (std::size_t j = 0; j < points.size(); ++j) {
-    const StencilPoint& p = points[j];
-    const Real wj =
-        p.kind == StencilPoint::Kind::Cell
-            ? y[3 * p.cell + kW]
-            : bc_value(boundaries_[mesh_.face_patch(p.face)], mesh_.face_centroid(p.face), t)[0];
-    w += value[j] * (wj - wc);
-  }
+  std::vector<DofWeight> terms;
+  Real w = deflection_weights(c, x, t, terms);
+  for (const DofWeight& term : terms) w += term.weight * y[term.dof];
   return w;
 }
 
