@@ -272,14 +272,15 @@ Json run_immersed_switch_study(ImmersedSwitchCase& c, const CaseNode& root, Resu
   } else if (c.mode == "transient") {
     const DynamicRun run = s.run(c.voltage, c.run, c.gas.get());
     write_dynamic_history(writer, "transient", run);
-    const FreeResponse fr = free_response(run.history);
     j["transient"] = {{"voltage", c.voltage},
                       {"pulled_in", run.pulled_in},
                       {"pull_in_time", run.pull_in_time},
                       {"max_deflection", -run.extreme_control},
                       {"steps", run.stats.steps},
                       {"final_time", run.final_time}};
-    j["transient"].update(free_response_json(fr));
+    // A history that ends in contact has no small-signal response to fit: the damping figures
+    // are written only for runs that stay up.
+    if (!run.pulled_in) j["transient"].update(free_response_json(free_response(run.history)));
     write_displacement(writer, *c.beam, std::span<const Real>(run.final_state.y).subspan(0, n));
   } else {
     DynamicRun last;
