@@ -25,8 +25,8 @@ struct CouetteRun {
   KineticSolveResult solve;
 };
 
-// nx > 1 columns (across the same width H) give the second-order reconstruction its stencil
-// (on one column its least-squares matrix is singular and the slopes are zero: first order);
+// nx columns across the same width H (on one column the second-order reconstruction's
+// least-squares gradient is the one along the column: second_order_transport.cpp);
 // coarse_fine_difference needs nx = 1.
 inline CouetteRun run_couette(Real kn, int ny, CollisionModel model = CollisionModel::Esbgk,
                               int nv = 10, Real sigma = 1, int nx = 1,

@@ -72,15 +72,18 @@ LinearReconstruction::LinearReconstruction(const FaceGraph& g, const Communicato
       M += w * d * d.transpose();
       weights_[i] = w * d;
     }
-    // Normal matrix of the dim components; a stencil that does not span them (a cell with one
-    // neighbour) gets no gradient: first order there.
+    // Minimum-norm least squares: the pseudo-inverse of the normal matrix on the directions the
+    // stencil spans. A stencil that spans all dim directions gets the full LS gradient; one
+    // that spans fewer (a one-column mesh, a cell with one neighbour) gets the gradient along
+    // the directions it sees and none across them, where the data carry no variation to
+    // reconstruct. So a one-column mesh stays second order along its column.
+    const Eigen::SelfAdjointEigenSolver<Mat3> eigen(M);
+    const Real largest = eigen.eigenvalues().cwiseAbs().maxCoeff();
     Mat3 inverse = Mat3::Zero();
-    if (dim_ == 2) {
-      const Eigen::Matrix2d m = M.topLeftCorner<2, 2>();
-      if (std::abs(m.determinant()) > 1e-12 * m.squaredNorm())
-        inverse.topLeftCorner<2, 2>() = m.inverse();
-    } else if (std::abs(M.determinant()) > 1e-12 * std::pow(M.norm(), 3)) {
-      inverse = M.inverse();
+    for (int k = 0; k < 3; ++k) {
+      const Real lambda = eigen.eigenvalues()[k];
+      if (lambda > 1e-12 * largest)
+        inverse += eigen.eigenvectors().col(k) * eigen.eigenvectors().col(k).transpose() / lambda;
     }
     for (Index i = g.cell_face_offsets[c]; i < g.cell_face_offsets[c + 1]; ++i)
       weights_[i] = inverse * weights_[i];
