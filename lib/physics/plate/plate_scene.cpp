@@ -207,7 +207,6 @@ std::vector<GapPoint> quadrilateral_gap_points(const Mesh& mesh, const PlateOper
   for (int i = 0; i < 4; ++i) x[i] = mesh.nodes()[nodes[i]];
   const std::array<Real, 3> s{-1, 0, 1}, w{1.0 / 3, 4.0 / 3, 1.0 / 3};
   std::vector<GapPoint> points;
-  std::vector<PlateOperator::DofWeight> terms;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
       const Real xi = s[i], eta = s[j];
@@ -222,8 +221,8 @@ std::vector<GapPoint> quadrilateral_gap_points(const Mesh& mesh, const PlateOper
         d_eta += n_eta[k] * x[k];
       }
       const Real det = std::abs(d_xi.x() * d_eta.y() - d_xi.y() * d_eta.x());
-      GapPoint g{w[i] * w[j] * det / mesh.cell_volume(c), op.deflection_weights(c, p, 0.0, terms), {}};
-      for (const auto& t : terms) g.terms.push_back({t.dof, t.weight});
+      GapPoint g{w[i] * w[j] * det / mesh.cell_volume(c), 0.0, {}};
+      g.offset = op.deflection_weights(c, p, 0.0, g.terms);
       points.push_back(std::move(g));
     }
   return points;
@@ -231,20 +230,24 @@ std::vector<GapPoint> quadrilateral_gap_points(const Mesh& mesh, const PlateOper
 
 }  // namespace
 
-std::vector<GapElement> PlateScene::gap_elements(const std::string&) const {
+std::vector<GapElement> plate_gap_elements(const Mesh& mesh, const PlateOperator& op) {
   std::vector<GapElement> elements;
-  for (Index c = 0; c < mesh->n_owned_cells(); ++c) {
-    GapElement e{3 * c + PlateOperator::kW, mesh->cell_volume(c),
+  for (Index c = 0; c < mesh.n_owned_cells(); ++c) {
+    GapElement e{3 * c + PlateOperator::kW, mesh.cell_volume(c),
                  Vec3::Constant(std::numeric_limits<Real>::infinity()),
                  Vec3::Constant(-std::numeric_limits<Real>::infinity()), {}};
-    for (Index node : mesh->cell_nodes(c)) {
-      e.lo = e.lo.cwiseMin(mesh->nodes()[node]);
-      e.hi = e.hi.cwiseMax(mesh->nodes()[node]);
+    for (Index node : mesh.cell_nodes(c)) {
+      e.lo = e.lo.cwiseMin(mesh.nodes()[node]);
+      e.hi = e.hi.cwiseMax(mesh.nodes()[node]);
     }
-    e.points = quadrilateral_gap_points(*mesh, *op, c);
+    e.points = quadrilateral_gap_points(mesh, op, c);
     elements.push_back(e);
   }
   return elements;
+}
+
+std::vector<GapElement> PlateScene::gap_elements(const std::string&) const {
+  return plate_gap_elements(*mesh, *op);
 }
 
 }  // namespace rfmems
