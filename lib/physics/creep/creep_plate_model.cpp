@@ -28,10 +28,8 @@ const GapPoint& lowest_point(const CreepCase& c, std::span<const Real> state) {
 CreepRunModel make_plate_creep_model(const CreepCase& c) {
   CreepRunModel m;
   m.make_system = [&c]() -> std::unique_ptr<CreepSystem> {
-    auto system = std::make_unique<PlateCreepSystem>(*c.plate->op, c.law, c.thickness_intervals,
-                                                     c.shear_creep);
-    if (c.hold) system->set_hold_voltage(*c.hold);
-    return system;
+    return std::make_unique<PlateCreepSystem>(*c.plate->op, c.law, c.thickness_intervals,
+                                              c.shear_creep, c.hold);
   };
   if (c.has_gap) {
     m.min_gap = [&c](std::span<const Real> state) {

@@ -17,7 +17,8 @@ namespace rfmems {
 using Kind = PlateBoundary::Kind;
 
 PlateCreepSystem::PlateCreepSystem(PlateOperator& plate, const CreepLaw& law,
-                                   int thickness_intervals, bool shear_creep)
+                                   int thickness_intervals, bool shear_creep,
+                                   std::optional<CreepHoldVoltage> hold)
     : plate_(plate),
       law_(law),
       quadrature_(ThicknessQuadrature::simpson(plate.section().thickness, thickness_intervals)),
@@ -53,6 +54,7 @@ PlateCreepSystem::PlateCreepSystem(PlateOperator& plate, const CreepLaw& law,
     }
   }
   build_plastic_source();
+  if (hold) install_hold(std::move(*hold));
   build_pattern();
 
   const std::vector<Real> zero(plate.size(), 0.0);
@@ -530,6 +532,13 @@ void PlateCreepSystem::initial_state(Real t, std::vector<Real>& state,
 }
 
 void PlateCreepSystem::set_hold_voltage(CreepHoldVoltage hold) {
+  if (!install_hold(std::move(hold))) return;  // another voltage: the factors' pattern stays
+  tangent_lu_.reset();
+  schur_.reset();
+  build_pattern();
+}
+
+bool PlateCreepSystem::install_hold(CreepHoldVoltage hold) {
   if (!(hold.initial_gap > 0) || !(hold.voltage >= 0))
     throw InputError(
         fmt::format("plate creep hold voltage: need a gap > 0 and V >= 0 (g0 = {}, "
@@ -551,17 +560,12 @@ void PlateCreepSystem::set_hold_voltage(CreepHoldVoltage hold) {
                                                        hold.law);
   const Real v2 = hold.voltage * hold.voltage;
   load->set_voltage_squared([v2](Real) { return v2; });
-  // A new pattern (other elements) needs new factors; the same one (another voltage, as the
-  // hold voltage search's trials) keeps them.
   const CsrPattern& before = structural_pattern();
   const bool same_pattern = load->stiffness_pattern().row_ptr == before.row_ptr &&
                             load->stiffness_pattern().col_idx == before.col_idx;
   hold_ = std::move(hold);
   hold_load_ = std::move(load);
-  if (same_pattern) return;
-  tangent_lu_.reset();
-  schur_.reset();
-  build_pattern();
+  return !same_pattern;
 }
 
 Real PlateCreepSystem::min_gap(std::span<const Real> state) const {

@@ -80,8 +80,9 @@ class PlateCreepSystem : public CreepSystem {
   // Per point: bending-only creep has kPerPoint = 4 states, shear creep adds kXZ, kYZ.
   static constexpr int kXX = 0, kYY = 1, kXY = 2, kEff = 3, kPerPoint = 4, kXZ = 4, kYZ = 5;
 
+  // hold: as set_hold_voltage, at construction (the Jacobian's pattern is built once).
   PlateCreepSystem(PlateOperator& plate, const CreepLaw& law, int thickness_intervals = 20,
-                   bool shear_creep = false);
+                   bool shear_creep = false, std::optional<CreepHoldVoltage> hold = std::nullopt);
   ~PlateCreepSystem() override;
 
   // Layout.
@@ -189,6 +190,8 @@ class PlateCreepSystem : public CreepSystem {
 
   void build_plastic_source();
   void build_pattern();
+  // Validates and installs the hold load; true if it changed structural_pattern().
+  bool install_hold(CreepHoldVoltage hold);
   // Plastic moments of one cell from its points (Voigt xx, yy, xy).
   Vec3 cell_plastic_moment(std::span<const Real> state, Index c) const;
   // sigma = C (z kappa - eps_p) of point (c, i), Voigt.
