@@ -61,8 +61,9 @@ struct PlateScene : StructuralModel {
 };
 
 // The gap elements of a plate (PlateScene::gap_elements): every cell, its w the unknown, its
-// points the plate's w reconstruction at 3 x 3 Simpson points on a quadrilateral (one point at
-// the cell's own w on other cells; plate_scene.cpp).
+// points the plate's w reconstruction at 3 x 3 Simpson points on a quadrilateral, 7 points
+// (corners, edge midpoints, centroid) on a triangle, one point at the cell's own w on other
+// cells (plate_scene.cpp).
 std::vector<GapElement> plate_gap_elements(const Mesh& mesh, const PlateOperator& op);
 
 // Reads the keys above from the case root (model.structure must be plate, or absent).
