@@ -38,7 +38,7 @@ ParallelPlateActuation::ParallelPlateActuation(SecondOrderOperator& structure,
   std::vector<std::vector<Index>> extra(static_cast<std::size_t>(k.n_rows()));
   for (const GapElement& e : elements_)
     for (const GapPoint& q : e.points)
-      for (const GapTerm& t : q.terms) extra[e.dof].push_back(t.dof);
+      for (const DofWeight& t : q.terms) extra[e.dof].push_back(t.dof);
   pattern_.row_ptr.assign(1, 0);
   structure_position_.resize(k.nnz());
   for (Index i = 0; i < k.n_rows(); ++i) {
@@ -53,7 +53,7 @@ ParallelPlateActuation::ParallelPlateActuation(SecondOrderOperator& structure,
   }
   for (const GapElement& e : elements_)
     for (const GapPoint& q : e.points)
-      for (const GapTerm& t : q.terms) term_position_.push_back(pattern_.find(e.dof, t.dof));
+      for (const DofWeight& t : q.terms) term_position_.push_back(pattern_.find(e.dof, t.dof));
   structure_values_.resize(k.nnz());
 }
 
@@ -97,7 +97,7 @@ void ParallelPlateActuation::stiffness(Real t, std::span<const Real> y, std::spa
       const Real g = gap(y, q);
       check_gap(g, e);
       const Real dp = v2 * elements_[e].area * q.area_fraction * net_pressure_per_volt2_derivative(g);
-      for (const GapTerm& k : q.terms) values[term_position_[term++]] += dp * k.weight;
+      for (const DofWeight& k : q.terms) values[term_position_[term++]] += dp * k.weight;
     }
 }
 
@@ -112,10 +112,8 @@ void ParallelPlateActuation::residual_per_volt2(std::span<const Real> y,
 }
 
 Real ParallelPlateActuation::min_gap(std::span<const Real> y) const {
-  Real g = std::numeric_limits<Real>::infinity();
-  for (const GapElement& e : elements_)
-    for (const GapPoint& q : e.points) g = std::min(g, gap(y, q));
-  return g;
+  const LowestGapPoint lowest = lowest_gap_point(elements_, y);
+  return lowest.point ? gap(y, *lowest.point) : std::numeric_limits<Real>::infinity();
 }
 
 Real ParallelPlateActuation::total_force(Real voltage_squared, std::span<const Real> y) const {

@@ -75,9 +75,7 @@ class ParallelPlateActuation : public SecondOrderOperator {
   // Air gap at element e's unknown, and at its point q.
   Real gap(std::span<const Real> y, std::size_t e) const { return gap0_ + y[elements_[e].dof]; }
   Real gap(std::span<const Real> y, const GapPoint& q) const {
-    Real u = q.offset;
-    for (const GapTerm& t : q.terms) u += t.weight * y[t.dof];
-    return gap0_ + u;
+    return gap0_ + gap_displacement(q, y);
   }
   // The smallest air gap over the points (the touching criterion), and the electrostatic force
   // along the gap axis summed over the points (negative: closing) at V^2.

@@ -13,15 +13,8 @@ namespace {
 
 // The unknown of the element whose points hold the smallest gap.
 Index smallest_gap_unknown(const ParallelPlateActuation& act, std::span<const Real> y) {
-  Real best = std::numeric_limits<Real>::infinity();
-  Index dof = -1;
-  for (const GapElement& e : act.elements())
-    for (const GapPoint& q : e.points)
-      if (act.gap(y, q) < best) {
-        best = act.gap(y, q);
-        dof = e.dof;
-      }
-  return dof;
+  const LowestGapPoint lowest = lowest_gap_point(act.elements(), y);
+  return lowest.point ? act.elements()[lowest.element].dof : -1;
 }
 
 }  // namespace

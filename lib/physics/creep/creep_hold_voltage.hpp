@@ -3,7 +3,10 @@
 // (physics/electrostatics/parallel_plate.hpp; the same law and conventions as
 // coupling/parallel_plate_actuation.hpp):
 //
-//   F_u += V^2 A_e p1(g_e) n_e,     g_e = g0 + u[dof_e]    (n_e: the unit vector of dof_e)
+//   F_u += V^2 A_e sum_q a_q p1(g_q) n_e,   g_q = g0 + u_q(y)   (n_e: the unit vector of dof_e)
+//
+// at the elements' gap points (GapElement::points: a plate's w reconstruction at 3 x 3 Simpson
+// points per quadrilateral, as the pull-in samples it; none: one point, u = y[dof_e]).
 //
 // The load grows as creep closes the gap (p1 ~ 1/g^2), which is what shortens a held switch's
 // life; its tangent V^2 A_e p1'(g_e) (negative: electrostatic spring softening) makes the

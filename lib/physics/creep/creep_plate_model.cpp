@@ -17,12 +17,10 @@ Real von_mises(const Vec3& s) {
 
 PlateCreepSystem& as_plate(CreepSystem& system) { return dynamic_cast<PlateCreepSystem&>(system); }
 
-// The element with the smallest gap (first of equals).
-std::size_t smallest_gap_element(const CreepCase& c, std::span<const Real> state) {
-  std::size_t best = 0;
-  for (std::size_t e = 1; e < c.gap_elements.size(); ++e)
-    if (state[c.gap_elements[e].dof] < state[c.gap_elements[best].dof]) best = e;
-  return best;
+// The gap point where the plate is lowest: the smallest gap, sampled where the hold load and
+// the pull-in sample it (ParallelPlateActuation::elements(): Simpson points on quadrilaterals).
+const GapPoint& lowest_point(const CreepCase& c, std::span<const Real> state) {
+  return *lowest_gap_point(c.gap_elements, state).point;
 }
 
 }  // namespace
@@ -30,17 +28,15 @@ std::size_t smallest_gap_element(const CreepCase& c, std::span<const Real> state
 CreepRunModel make_plate_creep_model(const CreepCase& c) {
   CreepRunModel m;
   m.make_system = [&c]() -> std::unique_ptr<CreepSystem> {
-    auto system = std::make_unique<PlateCreepSystem>(*c.plate->op, c.law, c.thickness_intervals,
-                                                     c.shear_creep);
-    if (c.hold) system->set_hold_voltage(*c.hold);
-    return system;
+    return std::make_unique<PlateCreepSystem>(*c.plate->op, c.law, c.thickness_intervals,
+                                              c.shear_creep, c.hold);
   };
   if (c.has_gap) {
     m.min_gap = [&c](std::span<const Real> state) {
-      return c.initial_gap + state[c.gap_elements[smallest_gap_element(c, state)].dof];
+      return c.initial_gap + gap_displacement(lowest_point(c, state), state);
     };
     m.min_gap_rate = [&c](std::span<const Real> state, std::span<const Real> state_dot) {
-      return state_dot[c.gap_elements[smallest_gap_element(c, state)].dof];
+      return weighted_sum(lowest_point(c, state).terms, state_dot);  // u_q is affine in y
     };
   }
   for (const Probe& p : c.probes) m.series_columns.push_back(p.name);

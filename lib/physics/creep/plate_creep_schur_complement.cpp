@@ -20,11 +20,11 @@ Eigen::Matrix<Real, 3, 2> curvature_map(const Vec3& w) {
 PlateCreepSchurComplement::PlateCreepSchurComplement(const PlateCreepSystem& system)
     : system_(system) {
   const Index n_cells = system.n_cells(), ns = 3 * n_cells;
-  const CsrPattern& plate = system.plate_.stiffness_pattern();
+  const CsrPattern& structural = system.structural_pattern();  // K's (with the hold's stencils)
   std::vector<std::vector<Index>> rows(ns);
   for (Index row = 0; row < ns; ++row)
-    rows[row].assign(plate.col_idx.begin() + plate.row_ptr[row],
-                     plate.col_idx.begin() + plate.row_ptr[row + 1]);
+    rows[row].assign(structural.col_idx.begin() + structural.row_ptr[row],
+                     structural.col_idx.begin() + structural.row_ptr[row + 1]);
   for (const auto& b : system.source_)
     for (const auto& w : system.curvature_weights_[b.col])
       for (int a = 1; a <= 2; ++a)
@@ -36,8 +36,8 @@ PlateCreepSchurComplement::PlateCreepSchurComplement(const PlateCreepSystem& sys
     pattern_.row_ptr.push_back(pattern_.nnz());
   }
   for (Index row = 0; row < ns; ++row)
-    for (Index p = plate.row_ptr[row]; p < plate.row_ptr[row + 1]; ++p)
-      plate_position_.push_back(pattern_.find(row, plate.col_idx[p]));
+    for (Index p = structural.row_ptr[row]; p < structural.row_ptr[row + 1]; ++p)
+      plate_position_.push_back(pattern_.find(row, structural.col_idx[p]));
   for (const auto& b : system.source_) {
     coupling_offset_.push_back(static_cast<Index>(coupling_position_.size()));
     for (const auto& w : system.curvature_weights_[b.col])

@@ -67,7 +67,7 @@ class PlateCreepSchurComplement {
 
   const PlateCreepSystem& system_;
   CsrPattern pattern_;
-  std::vector<Index> plate_position_;  // plate stiffness entry -> S value index
+  std::vector<Index> plate_position_;  // structural tangent entry -> S value index
   // Per source block (r, k), per curvature stencil cell s of k, the 2 x 2 positions of
   // (beta rows of r, beta columns of s) in S's values, row-major.
   std::vector<Index> coupling_position_;

@@ -17,7 +17,8 @@ namespace rfmems {
 using Kind = PlateBoundary::Kind;
 
 PlateCreepSystem::PlateCreepSystem(PlateOperator& plate, const CreepLaw& law,
-                                   int thickness_intervals, bool shear_creep)
+                                   int thickness_intervals, bool shear_creep,
+                                   std::optional<CreepHoldVoltage> hold)
     : plate_(plate),
       law_(law),
       quadrature_(ThicknessQuadrature::simpson(plate.section().thickness, thickness_intervals)),
@@ -53,6 +54,7 @@ PlateCreepSystem::PlateCreepSystem(PlateOperator& plate, const CreepLaw& law,
     }
   }
   build_plastic_source();
+  if (hold) install_hold(std::move(*hold));
   build_pattern();
 
   const std::vector<Real> zero(plate.size(), 0.0);
@@ -146,6 +148,7 @@ void PlateCreepSystem::build_plastic_source() {
 
 void PlateCreepSystem::build_pattern() {
   const CsrPattern& plate_pattern = plate_.stiffness_pattern();
+  const CsrPattern& structural = structural_pattern();
   const Index np = n_points();
   std::vector<std::vector<Index>> source_cols(n_cells_), shear_cols(n_cells_);
   for (const SourceBlock& b : source_) source_cols[b.row].push_back(b.col);
@@ -154,8 +157,8 @@ void PlateCreepSystem::build_pattern() {
   pattern_ = CsrPattern{};
   std::vector<Index> cols;
   for (Index row = 0; row < 3 * n_cells_; ++row) {
-    cols.assign(plate_pattern.col_idx.begin() + plate_pattern.row_ptr[row],
-                plate_pattern.col_idx.begin() + plate_pattern.row_ptr[row + 1]);
+    cols.assign(structural.col_idx.begin() + structural.row_ptr[row],
+                structural.col_idx.begin() + structural.row_ptr[row + 1]);
     if (row % 3 != PlateOperator::kW)
       for (Index k : source_cols[row / 3])
         for (Index i = 0; i < np; ++i)
@@ -169,6 +172,10 @@ void PlateCreepSystem::build_pattern() {
     pattern_.row_ptr.push_back(pattern_.nnz());
   }
   structural_nnz_ = pattern_.nnz();
+  tangent_position_.clear();
+  for (Index row = 0; row < 3 * n_cells_; ++row)
+    for (Index p = structural.row_ptr[row]; p < structural.row_ptr[row + 1]; ++p)
+      tangent_position_.push_back(pattern_.find(row, structural.col_idx[p]));
   for (Index c = 0; c < n_cells_; ++c)
     for (Index i = 0; i < np; ++i)
       for (int j = 0; j < per_point_; ++j) {
@@ -330,9 +337,8 @@ void PlateCreepSystem::creep_rates(Real t, std::span<const Real> state, std::spa
 void PlateCreepSystem::residual(Real t, std::span<const Real> y, std::span<const Real> yp,
                                 std::span<Real> r) {
   const Index ns = structural_size();
-  plate_.internal_residual(t, y.first(ns), r.first(ns));
+  structural_residual(t, y, r);
   add_plastic_source(y, r);
-  add_hold_load(y, r);
   std::span<Real> rq = r.subspan(ns);
   creep_rates(t, y, rq);
   for (Index k = 0; k < size() - ns; ++k) rq[k] = yp[ns + k] - rq[k];
@@ -341,13 +347,12 @@ void PlateCreepSystem::residual(Real t, std::span<const Real> y, std::span<const
 void PlateCreepSystem::jacobian(Real t, Real c_j, std::span<const Real> y, std::span<const Real>,
                                 std::span<Real> values) {
   std::copy(structural_values_.begin(), structural_values_.end(), values.begin());
-  if (hold_) {
-    const Real v2 = hold_->voltage * hold_->voltage;
-    for (std::size_t e = 0; e < hold_->elements.size(); ++e) {
-      const GapElement& el = hold_->elements[e];
-      values[hold_diagonal_[e]] +=
-          v2 * el.area * hold_->law.pressure_per_volt2_derivative(hold_->initial_gap + y[el.dof]);
-    }
+  if (hold_load_) {
+    // The y columns of the y rows are the structural tangent alone (the sources are in q
+    // columns): overwrite the constant K there with K + the hold load's tangent.
+    structural_tangent(y, tangent_values_);
+    for (std::size_t p = 0; p < tangent_values_.size(); ++p)
+      values[tangent_position_[p]] = tangent_values_[p];
   }
   const std::vector<Vec3> kappa = curvatures(t, y);
   if (shear_creep()) {
@@ -488,9 +493,8 @@ void PlateCreepSystem::equilibrate(Real t, std::span<Real> state) {
   const int max_iterations = hold_ ? 50 : 1;
   for (int iteration = 0; iteration < max_iterations; ++iteration) {
     scratch_.assign(ns, 0.0);
-    plate_.internal_residual(t, state.first(ns), scratch_);
+    structural_residual(t, state, scratch_);
     add_plastic_source(state, scratch_);
-    add_hold_load(state, scratch_);
     structural_factors(state).solve(scratch_);
     Real update = 0, size = 0;
     for (Index k = 0; k < ns; ++k) {
@@ -528,56 +532,68 @@ void PlateCreepSystem::initial_state(Real t, std::vector<Real>& state,
 }
 
 void PlateCreepSystem::set_hold_voltage(CreepHoldVoltage hold) {
+  if (!install_hold(std::move(hold))) return;  // another voltage: the factors' pattern stays
+  tangent_lu_.reset();
+  schur_.reset();
+  build_pattern();
+}
+
+bool PlateCreepSystem::install_hold(CreepHoldVoltage hold) {
   if (!(hold.initial_gap > 0) || !(hold.voltage >= 0))
     throw InputError(
         fmt::format("plate creep hold voltage: need a gap > 0 and V >= 0 (g0 = {}, "
                     "V = {})",
                     hold.initial_gap, hold.voltage));
-  std::vector<Index> diagonal, plate_diagonal;
+  auto structural = [&](Index dof) { return dof >= 0 && dof < structural_size(); };
   for (const GapElement& e : hold.elements) {
-    const Index a = e.dof >= 0 && e.dof < structural_size() ? pattern_.find(e.dof, e.dof) : -1;
-    const Index b = a >= 0 ? plate_.stiffness_pattern().find(e.dof, e.dof) : -1;
-    if (b < 0)
+    if (!structural(e.dof) || plate_.stiffness_pattern().find(e.dof, e.dof) < 0)
       throw InputError(fmt::format(
           "plate creep hold voltage: dof {} is not a plate unknown with a diagonal entry", e.dof));
-    diagonal.push_back(a);
-    plate_diagonal.push_back(b);
+    for (const GapPoint& q : e.points)
+      for (const DofWeight& term : q.terms)
+        if (!structural(term.dof))
+          throw InputError(fmt::format(
+              "plate creep hold voltage: a gap point of dof {} reads dof {}, not a plate unknown",
+              e.dof, term.dof));
   }
+  auto load = std::make_unique<ParallelPlateActuation>(plate_, hold.elements, hold.initial_gap,
+                                                       hold.law);
+  const Real v2 = hold.voltage * hold.voltage;
+  load->set_voltage_squared([v2](Real) { return v2; });
+  const CsrPattern& before = structural_pattern();
+  const bool same_pattern = load->stiffness_pattern().row_ptr == before.row_ptr &&
+                            load->stiffness_pattern().col_idx == before.col_idx;
   hold_ = std::move(hold);
-  hold_diagonal_ = std::move(diagonal);
-  hold_plate_diagonal_ = std::move(plate_diagonal);
+  hold_load_ = std::move(load);
+  return !same_pattern;
 }
 
 Real PlateCreepSystem::min_gap(std::span<const Real> state) const {
-  Real g = std::numeric_limits<Real>::infinity();
-  if (hold_)
-    for (const GapElement& e : hold_->elements) g = std::min(g, hold_->initial_gap + state[e.dof]);
-  return g;
+  return hold_load_ ? hold_load_->min_gap(state.first(structural_size()))
+                    : std::numeric_limits<Real>::infinity();
 }
 
-void PlateCreepSystem::add_hold_load(std::span<const Real> state, std::span<Real> r) const {
-  if (!hold_) return;
-  const Real v2 = hold_->voltage * hold_->voltage;
-  for (std::size_t e = 0; e < hold_->elements.size(); ++e) {
-    const GapElement& el = hold_->elements[e];
-    const Real g = hold_->initial_gap + state[el.dof];
-    if (hold_->law.electrical_gap(g) <= 0)
-      throw RecoverableError(
-          fmt::format("plate creep: the gap closed (g = {:.3e} m at element {})", g, e));
-    r[el.dof] += v2 * el.area * hold_->law.pressure_per_volt2(g);
-  }
+void PlateCreepSystem::structural_residual(Real t, std::span<const Real> state,
+                                           std::span<Real> r) {
+  const Index ns = structural_size();
+  if (hold_load_)
+    hold_load_->internal_residual(t, state.first(ns), r.first(ns));
+  else
+    plate_.internal_residual(t, state.first(ns), r.first(ns));
+}
+
+const CsrPattern& PlateCreepSystem::structural_pattern() const {
+  return hold_load_ ? hold_load_->stiffness_pattern() : plate_.stiffness_pattern();
 }
 
 void PlateCreepSystem::structural_tangent(std::span<const Real> state,
                                           std::vector<Real>& values) const {
-  values = plate_stiffness_;
-  if (!hold_) return;
-  const Real v2 = hold_->voltage * hold_->voltage;
-  for (std::size_t e = 0; e < hold_->elements.size(); ++e) {
-    const GapElement& el = hold_->elements[e];
-    values[hold_plate_diagonal_[e]] +=
-        v2 * el.area * hold_->law.pressure_per_volt2_derivative(hold_->initial_gap + state[el.dof]);
+  if (!hold_load_) {
+    values = plate_stiffness_;
+    return;
   }
+  values.resize(hold_load_->stiffness_pattern().nnz());
+  hold_load_->stiffness(0, state.first(structural_size()), values);
 }
 
 KluFactorization& PlateCreepSystem::structural_factors(std::span<const Real> state) {
@@ -590,7 +606,7 @@ KluFactorization& PlateCreepSystem::structural_factors(std::span<const Real> sta
   if (tangent_lu_)
     tangent_lu_->refactor(tangent_values_);
   else
-    tangent_lu_ = std::make_unique<KluFactorization>(plate_.stiffness_pattern(), tangent_values_);
+    tangent_lu_ = std::make_unique<KluFactorization>(structural_pattern(), tangent_values_);
   return *tangent_lu_;
 }
 

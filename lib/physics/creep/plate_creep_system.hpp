@@ -48,15 +48,21 @@
 // Schur-complement preconditioner in this mode (it assumes 4 states per point): use KLU.
 //
 // Hold voltage (set_hold_voltage, physics/creep/creep_hold_voltage.hpp): the parallel-plate
-// pressure V^2 A_e p1(g0 + w_e) on the gap elements is added to their w rows, so F_y is
-// nonlinear in w: the Jacobian's y rows are the constant ones plus V^2 A_e p1'(g_e) on those
-// diagonals, and equilibrate() becomes a Newton iteration on the plate's tangent.
+// pressure on the gap elements, sampled where the pull-in samples it
+// (coupling/parallel_plate_actuation.hpp, which this system holds for it): on a plate's
+// quadrilateral cells at 3 x 3 Simpson points of its w reconstruction,
+//   F_w,e += V^2 A_e sum_q a_q p1(g0 + u_q(y)),   u_q = offset_q + sum_k weight_qk w_k,
+// one point u = w_e on other cells (plate_scene.cpp; docs/BENCHMARKS.md sections 38, 45). F_y
+// is nonlinear in w: the Jacobian's y rows are the constant ones but for the structural tangent
+// K + V^2 A_e a_q p1'(g_q) weight_qk (row w_e, the columns of the reconstruction's stencil, so
+// the y rows' pattern is the actuation's), and equilibrate() becomes a Newton iteration on it.
 #pragma once
 #include <Eigen/Dense>
 #include <memory>
 #include <optional>
 #include <vector>
 
+#include "coupling/parallel_plate_actuation.hpp"
 #include "fv/polynomial_reconstruction.hpp"
 #include "materials/creep_law.hpp"
 #include "physics/creep/creep_hold_voltage.hpp"
@@ -74,8 +80,9 @@ class PlateCreepSystem : public CreepSystem {
   // Per point: bending-only creep has kPerPoint = 4 states, shear creep adds kXZ, kYZ.
   static constexpr int kXX = 0, kYY = 1, kXY = 2, kEff = 3, kPerPoint = 4, kXZ = 4, kYZ = 5;
 
+  // hold: as set_hold_voltage, at construction (the Jacobian's pattern is built once).
   PlateCreepSystem(PlateOperator& plate, const CreepLaw& law, int thickness_intervals = 20,
-                   bool shear_creep = false);
+                   bool shear_creep = false, std::optional<CreepHoldVoltage> hold = std::nullopt);
   ~PlateCreepSystem() override;
 
   // Layout.
@@ -116,11 +123,13 @@ class PlateCreepSystem : public CreepSystem {
   void equilibrate(Real t, std::span<Real> state) override;
   void initial_state(Real t, std::vector<Real>& state, std::vector<Real>& state_dot) override;
 
-  // The electrostatic hold load (replaces a previous one). Throws InputError for a dof that is
-  // not a structural unknown with a diagonal entry, a gap <= 0 or a negative voltage.
+  // The electrostatic hold load (replaces a previous one; before a solver is built on the
+  // system, as it may widen jacobian_pattern() by the points' stencils). Throws InputError for
+  // a dof (element or point term) that is not a structural unknown, an element dof without a
+  // diagonal entry, a gap <= 0 or a negative voltage.
   void set_hold_voltage(CreepHoldVoltage hold);
   const std::optional<CreepHoldVoltage>& hold_voltage() const { return hold_; }
-  // Smallest air gap g0 + u[dof_e] over the hold voltage's elements; +infinity without one.
+  // Smallest air gap g0 + u_q over the hold voltage's gap points; +infinity without one.
   Real min_gap(std::span<const Real> state) const;
 
   // Post-processing.
@@ -181,6 +190,8 @@ class PlateCreepSystem : public CreepSystem {
 
   void build_plastic_source();
   void build_pattern();
+  // Validates and installs the hold load; true if it changed structural_pattern().
+  bool install_hold(CreepHoldVoltage hold);
   // Plastic moments of one cell from its points (Voigt xx, yy, xy).
   Vec3 cell_plastic_moment(std::span<const Real> state, Index c) const;
   // sigma = C (z kappa - eps_p) of point (c, i), Voigt.
@@ -188,9 +199,13 @@ class PlateCreepSystem : public CreepSystem {
   static Mat3 stress_tensor(const Vec3& s);
   static Vec3 curvature(const Mat3& G);
   void add_plastic_source(std::span<const Real> state, std::span<Real> r) const;
-  // The hold voltage's load on the w rows (RecoverableError if a gap has closed).
-  void add_hold_load(std::span<const Real> state, std::span<Real> r) const;
-  // dR_y/dy in the plate's stiffness pattern: K plus the hold load's tangent.
+  // R_y without the plastic source: the plate's, plus the hold load on the w rows
+  // (RecoverableError if a gap has closed).
+  void structural_residual(Real t, std::span<const Real> state, std::span<Real> r);
+  // The pattern of dR_y/dy: the plate's stiffness pattern, widened by the hold load's point
+  // stencils (the actuation's).
+  const CsrPattern& structural_pattern() const;
+  // dR_y/dy in structural_pattern(): K plus the hold load's tangent.
   void structural_tangent(std::span<const Real> state, std::vector<Real>& values) const;
   // The factorised structural tangent at the state (the plate's own factors without a hold).
   KluFactorization& structural_factors(std::span<const Real> state);
@@ -214,8 +229,8 @@ class PlateCreepSystem : public CreepSystem {
   std::vector<Real> plate_stiffness_;
   std::unique_ptr<KluFactorization> plate_lu_;  // dR_plate/dy, factorised once (linear), lazily
   std::optional<CreepHoldVoltage> hold_;
-  std::vector<Index> hold_diagonal_;        // per element: value index of (dof, dof) in pattern_
-  std::vector<Index> hold_plate_diagonal_;  // ... and in the plate's stiffness pattern
+  std::unique_ptr<ParallelPlateActuation> hold_load_;  // the plate under the hold voltage
+  std::vector<Index> tangent_position_;  // per structural_pattern() entry: its index in pattern_
   std::unique_ptr<KluFactorization> tangent_lu_;  // K + hold tangent, refactorised per use
   std::vector<Real> tangent_values_;
   std::unique_ptr<PlateCreepSchurComplement> schur_;

@@ -567,9 +567,8 @@ std::vector<Vec3> PlateOperator::shear_forces(Real t, std::span<const Real> y) c
 
 Real PlateOperator::deflection_at(Index c, const Vec3& x, Real t, std::span<const Real> y) const {
   std::vector<DofWeight> terms;
-  Real w = deflection_weights(c, x, t, terms);
-  for (const DofWeight& term : terms) w += term.weight * y[term.dof];
-  return w;
+  const Real constant = deflection_weights(c, x, t, terms);
+  return weighted_sum(terms, y, constant);
 }
 
 Real PlateOperator::deflection_weights(Index c, const Vec3& x, Real t,

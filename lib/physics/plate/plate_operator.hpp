@@ -69,6 +69,7 @@
 #include <vector>
 
 #include "core/system_operator.hpp"
+#include "fv/dof_weight.hpp"
 #include "fv/polynomial_reconstruction.hpp"
 #include "materials/plate_section.hpp"
 #include "mesh/mesh.hpp"
@@ -126,10 +127,6 @@ class PlateOperator : public SecondOrderOperator {
   // deflection_at() as an affine map of the unknowns: w(x) = constant + sum_k weight_k y[dof_k]
   // over the w of the stencil's cells; the constant is the prescribed w of its boundary points
   // at t. Returns the constant. For operators that evaluate w inside a cell (gap quadrature).
-  struct DofWeight {
-    Index dof;
-    Real weight;
-  };
   Real deflection_weights(Index c, const Vec3& x, Real t, std::vector<DofWeight>& terms) const;
 
   // ---- For operators built on the plate (physics/creep) ------------------------------------

@@ -189,25 +189,40 @@ std::vector<Vec3> PlateScene::probe_values(const std::vector<Probe>& probes, Rea
 
 namespace {
 
-// The gap quadrature of a quadrilateral cell: Simpson's rule in each direction of the bilinear
-// map x(xi, eta) of its nodes (3 x 3 Gauss-Lobatto points: corners, edge midpoints, centre;
-// weights (1, 4, 1)/3 on [-1, 1], times det J / area), with the deflection there from the
-// plate's own reconstruction of w (PlateOperator::deflection_weights; cubic by default).
-// Why: near the last contact the electrostatic pressure eps0 V^2 / (2 g_e^2) (g_e ~ 88 nm)
-// and the contact penalty act over a few um where the gap varies within a cell by more than
-// g_e (the free long edges curl towards the electrode: w_y = nu w_xx y, anticlastic), so one
-// point at the centroid senses the contact half a cell inside the edge, an O(h) error in the
-// touching point and the pull-out (docs/BENCHMARKS.md section 38). With points on the cell's
-// edges and corners the smallest gap of the reconstructed surface is a quadrature point, and
-// the pressure integral is of order 4. Other cell shapes keep the one-point rule.
-std::vector<GapPoint> quadrilateral_gap_points(const Mesh& mesh, const PlateOperator& op, Index c) {
+// The gap quadrature of a cell, with the deflection at its points from the plate's own
+// reconstruction of w (PlateOperator::deflection_weights; cubic by default). Quadrilaterals:
+// Simpson's rule in each direction of the bilinear map x(xi, eta) of its nodes (3 x 3
+// Gauss-Lobatto points: corners, edge midpoints, centre; weights (1, 4, 1)/3 on [-1, 1], times
+// det J / area). Triangles: the 7-point rule on the corners (area fractions 1/20), edge
+// midpoints (2/15) and centroid (9/20), exact for cubics (Zienkiewicz & Taylor, The Finite
+// Element Method, vol. 1, Table 9.2). Why: near the last contact the electrostatic pressure
+// eps0 V^2 / (2 g_e^2) (g_e ~ 88 nm) and the contact penalty act over a few um where the gap
+// varies within a cell by more than g_e (the free long edges curl towards the electrode:
+// w_y = nu w_xx y, anticlastic), so one point at the centroid senses the contact half a cell
+// inside the edge, an O(h) error in the touching point and the pull-out (docs/BENCHMARKS.md
+// section 38). With points on the cell's edges and corners the smallest gap of the
+// reconstructed surface is a quadrature point, and the pressure integral is of order 4. Other
+// cell shapes keep the one-point rule (empty: the cell's own w).
+std::vector<GapPoint> cell_gap_points(const Mesh& mesh, const PlateOperator& op, Index c) {
   const auto nodes = mesh.cell_nodes(c);
+  std::vector<GapPoint> points;
+  auto add = [&](Real area_fraction, const Vec3& p) {
+    GapPoint g{area_fraction, 0.0, {}};
+    g.offset = op.deflection_weights(c, p, 0.0, g.terms);
+    points.push_back(std::move(g));
+  };
+  if (nodes.size() == 3) {
+    const Vec3 &a = mesh.nodes()[nodes[0]], &b = mesh.nodes()[nodes[1]], &d = mesh.nodes()[nodes[2]];
+    for (const Vec3& corner : {a, b, d}) add(1.0 / 20, corner);
+    for (const Vec3& midpoint : {Vec3(0.5 * (a + b)), Vec3(0.5 * (b + d)), Vec3(0.5 * (d + a))})
+      add(2.0 / 15, midpoint);
+    add(9.0 / 20, (a + b + d) / 3);
+    return points;
+  }
   if (nodes.size() != 4) return {};
   std::array<Vec3, 4> x;
   for (int i = 0; i < 4; ++i) x[i] = mesh.nodes()[nodes[i]];
   const std::array<Real, 3> s{-1, 0, 1}, w{1.0 / 3, 4.0 / 3, 1.0 / 3};
-  std::vector<GapPoint> points;
-  std::vector<PlateOperator::DofWeight> terms;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
       const Real xi = s[i], eta = s[j];
@@ -222,29 +237,31 @@ std::vector<GapPoint> quadrilateral_gap_points(const Mesh& mesh, const PlateOper
         d_eta += n_eta[k] * x[k];
       }
       const Real det = std::abs(d_xi.x() * d_eta.y() - d_xi.y() * d_eta.x());
-      GapPoint g{w[i] * w[j] * det / mesh.cell_volume(c), op.deflection_weights(c, p, 0.0, terms), {}};
-      for (const auto& t : terms) g.terms.push_back({t.dof, t.weight});
-      points.push_back(std::move(g));
+      add(w[i] * w[j] * det / mesh.cell_volume(c), p);
     }
   return points;
 }
 
 }  // namespace
 
-std::vector<GapElement> PlateScene::gap_elements(const std::string&) const {
+std::vector<GapElement> plate_gap_elements(const Mesh& mesh, const PlateOperator& op) {
   std::vector<GapElement> elements;
-  for (Index c = 0; c < mesh->n_owned_cells(); ++c) {
-    GapElement e{3 * c + PlateOperator::kW, mesh->cell_volume(c),
+  for (Index c = 0; c < mesh.n_owned_cells(); ++c) {
+    GapElement e{3 * c + PlateOperator::kW, mesh.cell_volume(c),
                  Vec3::Constant(std::numeric_limits<Real>::infinity()),
                  Vec3::Constant(-std::numeric_limits<Real>::infinity()), {}};
-    for (Index node : mesh->cell_nodes(c)) {
-      e.lo = e.lo.cwiseMin(mesh->nodes()[node]);
-      e.hi = e.hi.cwiseMax(mesh->nodes()[node]);
+    for (Index node : mesh.cell_nodes(c)) {
+      e.lo = e.lo.cwiseMin(mesh.nodes()[node]);
+      e.hi = e.hi.cwiseMax(mesh.nodes()[node]);
     }
-    e.points = quadrilateral_gap_points(*mesh, *op, c);
+    e.points = cell_gap_points(mesh, op, c);
     elements.push_back(e);
   }
   return elements;
+}
+
+std::vector<GapElement> PlateScene::gap_elements(const std::string&) const {
+  return plate_gap_elements(*mesh, *op);
 }
 
 }  // namespace rfmems

@@ -60,6 +60,12 @@ struct PlateScene : StructuralModel {
   std::vector<GapElement> gap_elements(const std::string& patch) const override;
 };
 
+// The gap elements of a plate (PlateScene::gap_elements): every cell, its w the unknown, its
+// points the plate's w reconstruction at 3 x 3 Simpson points on a quadrilateral, 7 points
+// (corners, edge midpoints, centroid) on a triangle, one point at the cell's own w on other
+// cells (plate_scene.cpp).
+std::vector<GapElement> plate_gap_elements(const Mesh& mesh, const PlateOperator& op);
+
 // Reads the keys above from the case root (model.structure must be plate, or absent).
 // case_dir locates relative mesh files. InputError on anything wrong.
 PlateScene build_plate_scene(const CaseNode& root, const std::string& case_dir,

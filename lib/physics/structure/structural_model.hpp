@@ -15,6 +15,7 @@
 #include "io/probes.hpp"
 #include "io/result_writer.hpp"
 #include "mesh/mesh.hpp"
+#include "physics/structure/gap_element.hpp"
 
 namespace rfmems {
 
@@ -23,30 +24,6 @@ std::string to_string(AnalysisType type);  // "static", "transient"
 
 struct AnalysisSettings;
 struct AnalysisStats;
-
-// A piece of the structure's surface that faces an electrode across a gap (the electrode
-// below it, normal to the last axis: y in 2D, z for plates and 3D): the unknown that moves it
-// along that axis (positive: the gap opens), its area, and its bounding box (to intersect it
-// with the electrode's extent).
-// A quadrature point of a gap element: its share of the element's area and the displacement
-// along the gap axis there as an affine map of the unknowns, u = offset + sum_k weight_k y[dof_k]
-// (a reconstruction of the surface within the element).
-struct GapTerm {
-  Index dof;
-  Real weight;
-};
-struct GapPoint {
-  Real area_fraction;
-  Real offset = 0;
-  std::vector<GapTerm> terms;
-};
-
-struct GapElement {
-  Index dof;
-  Real area;
-  Vec3 lo, hi;
-  std::vector<GapPoint> points;  // empty: one point, u = y[dof] (the element's own unknown)
-};
 
 class StructuralModel {
  public:

@@ -157,7 +157,7 @@ double contact_diagonal_part(const ParallelPlateActuation& act, std::span<const 
   const double p1c = act.law().pressure_per_volt2(kContactGap);
   double part = 0;
   for (const GapPoint& q : e.points)
-    for (const GapTerm& t : q.terms)
+    for (const DofWeight& t : q.terms)
       if (t.dof == e.dof)
         part -= v2 * e.area * q.area_fraction *
                 act.contact().pressure_per_volt2_derivative(act.gap(y, q), p1c) * t.weight;

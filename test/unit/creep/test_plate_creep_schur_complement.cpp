@@ -2,7 +2,7 @@
 // physics/creep/plate_creep_schur_complement.hpp) is the exact inverse: z = J^-1 r against a
 // dense LU of the assembled J, on a small distorted mesh with clamped, hard simply supported,
 // free and loaded edges, at a random state with strongly varying hardening, with and without
-// a hold voltage, for a c_j of an IDA step of seconds and one of hours.
+// a hold voltage (at each cell's w, and at the plate's gap points), for a c_j of an IDA step of seconds and one of hours.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -12,6 +12,7 @@
 
 #include "mesh/structured_mesh.hpp"
 #include "physics/creep/plate_creep_system.hpp"
+#include "physics/plate/plate_scene.hpp"
 
 using namespace rfmems;
 using Kind = PlateBoundary::Kind;
@@ -102,13 +103,22 @@ TEST(PlateCreepSchurComplement, SolvesTheJacobianExactly) {
   PlateCreepSystem system(plate, CreepLaw{1e-3, 3e3, 2.5, 1.5, 1e9}, 6);
   ASSERT_TRUE(system.has_preconditioner());
   system.set_schur_refactor_tolerance(0);  // exact at every setup
-  for (bool hold : {false, true}) {
-    if (hold) {
+  // hold 0: none; 1: one point per cell (its w); 2: the plate's gap points (3 x 3 Simpson
+  // points of the w reconstruction: K's w rows widened by the stencils, a new S pattern).
+  for (int hold : {0, 1, 2}) {
+    if (hold > 0) {
       CreepHoldVoltage h;
       h.initial_gap = 2e-4;
       h.voltage = 3e3;
       for (Index c = 0; c < mesh.n_cells(); ++c)
         h.elements.push_back({3 * c, mesh.cell_volume(c), Vec3::Zero(), Vec3::Zero(), {}});
+      if (hold == 2) {
+        // The random w's reconstruction dips below -2e-4 m at some points: a wider gap, the
+        // same pressure.
+        h.elements = plate_gap_elements(mesh, plate);
+        h.initial_gap = 5e-4;
+        h.voltage = 7.5e3;
+      }
       system.set_hold_voltage(h);
     }
     // c_j = 10, 1 /s: steps of 0.1 s and 1 s, J well conditioned (~1e12 in these units).
