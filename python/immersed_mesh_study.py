@@ -1,0 +1,92 @@
+#!/usr/bin/python3
+"""Mesh-refinement table of rfmems-pullin runs of the immersed switch (docs/BENCHMARKS.md 46).
+
+For three or more runs of one refinement family (coarse to fine), each a --json result with
+its .h5 history: pull-in time, tip deflection at fixed times, change per refinement, and the
+observed order p and limit t_inf of t = t_inf + C h^p through the finest three (h = 1 / cells
+along x of the refined mesh, so a ratio that is not constant is allowed).
+
+Usage: immersed_mesh_study.py --mesh background|beam RUN.json[:RUN.h5] ... [--times 0.5 1.0 1.2]
+"""
+import argparse
+import json
+import math
+
+import h5py
+import numpy as np
+
+
+def load(arg, mesh):
+    path, _, h5 = arg.partition(":")
+    with open(path) as f:
+        j = json.load(f)
+    im = j["immersed"]
+    h5 = h5 or j["output"]["h5"]
+    with h5py.File(h5, "r") as f:
+        g = f["dynamic"]["transient"]
+        t, control = g["time"][()], g["values"][()][:, 0]
+    cells = im["background_cells"] if mesh == "background" else im["beam_cells"]
+    return {"name": path, "cells": cells, "t_pi": im["transient"]["pull_in_time"],
+            "steps": im["transient"]["steps"], "cpu": im["cpu"], "t": t, "control": control,
+            "contact_gap": im["contact_gap"]}
+
+
+def three_point_fit(h, v):
+    """t_inf, C, p of v = t_inf + C h^p through three points (h decreasing)."""
+    def ratio_error(p):  # (v0 - v1) / (v1 - v2) against (h0^p - h1^p) / (h1^p - h2^p)
+        return (h[0] ** p - h[1] ** p) / (h[1] ** p - h[2] ** p) - (v[0] - v[1]) / (v[1] - v[2])
+    if (v[0] - v[1]) * (v[1] - v[2]) <= 0:
+        return None  # not monotone: no order
+    lo, hi = 0.05, 12.0
+    if ratio_error(lo) * ratio_error(hi) > 0:
+        return None
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if ratio_error(lo) * ratio_error(mid) <= 0:
+            hi = mid
+        else:
+            lo = mid
+    p = 0.5 * (lo + hi)
+    c = (v[1] - v[2]) / (h[1] ** p - h[2] ** p)
+    return v[2] - c * h[2] ** p, c, p
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("runs", nargs="+", help="RUN.json[:RUN.h5], coarse to fine")
+    parser.add_argument("--mesh", choices=["background", "beam"], required=True)
+    parser.add_argument("--times", type=float, nargs="+", default=[0.5, 1.0, 1.2], help="us")
+    args = parser.parse_args()
+    runs = [load(a, args.mesh) for a in args.runs]
+    print("| cells | t_PI [us] | change per refinement | IDA / gas steps | tip at "
+          + " / ".join(f"{x:g}" for x in args.times) + " us [nm] | gas CPU rank 0 [s] |")
+    print("|---|---|---|---|---|---|")
+    prev = None
+    for r in runs:
+        tips = [np.interp(x * 1e-6, r["t"], r["control"]) * 1e9 for x in args.times]
+        change = f"{100 * (r['t_pi'] / prev - 1):+.3f} %" if prev else ""
+        prev = r["t_pi"]
+        print(f"| {r['cells'][0]} x {r['cells'][1]} | {r['t_pi'] * 1e6:.6f} | {change} | "
+              f"{r['steps']} / {r['cpu']['gas_steps']} | "
+              + " / ".join(f"{x:.2f}" for x in tips)
+              + f" | {r['cpu']['gas_s']:.1f} |")
+    gaps = {r["contact_gap"] for r in runs}
+    print("contact gaps [m]:", sorted(gaps))
+    if len(runs) >= 3:
+        last = runs[-3:]
+        h = [1.0 / r["cells"][0] for r in last]
+        for label, values in [("t_PI", [r["t_pi"] for r in last])] + [
+                (f"tip {x:g} us", [np.interp(x * 1e-6, r["t"], r["control"]) for r in last])
+                for x in args.times]:
+            fit = three_point_fit(h, values)
+            if fit is None:
+                print(f"{label}: not monotone (or no order in [0.05, 12]): no extrapolation")
+                continue
+            t_inf, _, p = fit
+            print(f"{label}: order p = {p:.2f}, limit {t_inf:.6e}, finest "
+                  f"{100 * (values[-1] / t_inf - 1):+.3f} %, middle "
+                  f"{100 * (values[-2] / t_inf - 1):+.3f} % from the limit")
+
+
+if __name__ == "__main__":
+    main()
