@@ -6,7 +6,8 @@ its .h5 history: pull-in time, tip deflection at fixed times, change per refinem
 observed order p and limit t_inf of t = t_inf + C h^p through the finest three (h = 1 / cells
 along x of the refined mesh, so a ratio that is not constant is allowed).
 
-Usage: immersed_mesh_study.py --mesh background|beam RUN.json[:RUN.h5] ... [--times 0.5 1.0 1.2]
+Usage: immersed_mesh_study.py --mesh background|beam RUN.json[:RUN.h5][@NXxNY] ... [--times ...]
+(the JSON gives the beam's cell count only: @NXxNY names the beam mesh's cells)
 """
 import argparse
 import json
@@ -17,6 +18,7 @@ import numpy as np
 
 
 def load(arg, mesh):
+    arg, _, named = arg.partition("@")
     path, _, h5 = arg.partition(":")
     with open(path) as f:
         j = json.load(f)
@@ -26,6 +28,10 @@ def load(arg, mesh):
         g = f["dynamic"]["transient"]
         t, control = g["time"][()], g["values"][()][:, 0]
     cells = im["background_cells"] if mesh == "background" else im["beam_cells"]
+    if named:
+        cells = [int(x) for x in named.split("x")]
+    if not isinstance(cells, list):
+        raise SystemExit(f"{path}: the beam's cells are a count ({cells}): name them, RUN.json@NXxNY")
     return {"name": path, "cells": cells, "t_pi": im["transient"]["pull_in_time"],
             "steps": im["transient"]["steps"], "cpu": im["cpu"], "t": t, "control": control,
             "contact_gap": im["contact_gap"]}
@@ -53,7 +59,7 @@ def three_point_fit(h, v):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("runs", nargs="+", help="RUN.json[:RUN.h5], coarse to fine")
+    parser.add_argument("runs", nargs="+", help="RUN.json[:RUN.h5][@NXxNY], coarse to fine")
     parser.add_argument("--mesh", choices=["background", "beam"], required=True)
     parser.add_argument("--times", type=float, nargs="+", default=[0.5, 1.0, 1.2], help="us")
     args = parser.parse_args()
