@@ -42,7 +42,7 @@ def three_point_fit(h, v):
     def ratio_error(p):  # (v0 - v1) / (v1 - v2) against (h0^p - h1^p) / (h1^p - h2^p)
         return (h[0] ** p - h[1] ** p) / (h[1] ** p - h[2] ** p) - (v[0] - v[1]) / (v[1] - v[2])
     if (v[0] - v[1]) * (v[1] - v[2]) <= 0:
-        return None  # not monotone: no order
+        return None  # the changes alternate in sign: no order
     lo, hi = 0.05, 12.0
     if ratio_error(lo) * ratio_error(hi) > 0:
         return None
@@ -62,8 +62,14 @@ def main():
     parser.add_argument("runs", nargs="+", help="RUN.json[:RUN.h5][@NXxNY], coarse to fine")
     parser.add_argument("--mesh", choices=["background", "beam"], required=True)
     parser.add_argument("--times", type=float, nargs="+", default=[0.5, 1.0, 1.2], help="us")
+    parser.add_argument("--histories", help="write each run's tip history (t, tip [m]) here")
     args = parser.parse_args()
     runs = [load(a, args.mesh) for a in args.runs]
+    if args.histories:
+        with open(args.histories, "w") as f:
+            json.dump({"mesh": args.mesh, "runs": [
+                {"cells": r["cells"], "pull_in_time": r["t_pi"], "time": r["t"].tolist(),
+                 "tip": r["control"].tolist()} for r in runs]}, f)
     print("| cells | t_PI [us] | change per refinement | IDA / gas steps | tip at "
           + " / ".join(f"{x:g}" for x in args.times) + " us [nm] | gas CPU rank 0 [s] |")
     print("|---|---|---|---|---|---|")
@@ -86,7 +92,8 @@ def main():
                 for x in args.times]:
             fit = three_point_fit(h, values)
             if fit is None:
-                print(f"{label}: not monotone (or no order in [0.05, 12]): no extrapolation")
+                print(f"{label}: the changes do not fall monotonely (no order in [0.05, 12]): "
+                      "no extrapolation")
                 continue
             t_inf, _, p = fit
             print(f"{label}: order p = {p:.2f}, limit {t_inf:.6e}, finest "
