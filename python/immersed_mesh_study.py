@@ -57,12 +57,35 @@ def three_point_fit(h, v):
     return v[2] - c * h[2] ** p, c, p
 
 
+def plot(path, mesh, runs, h, fit):
+    import matplotlib
+    matplotlib.use("Agg")  # files only
+    import matplotlib.pyplot as plt
+    t_inf, c, p = fit
+    hs = np.array([1.0 / r["cells"][0] for r in runs])
+    fig, ax = plt.subplots(figsize=(5.6, 3.8))
+    ax.plot(hs * 1e3, [r["t_pi"] * 1e6 for r in runs], "o", label="runs")
+    x = np.linspace(0, hs.max(), 100)
+    ax.plot(x * 1e3, (t_inf + c * x ** p) * 1e6, "-", label=f"fit, p = {p:.2f}")
+    ax.axhline(t_inf * 1e6, ls=":", color="gray", label=f"limit {t_inf * 1e6:.5f} us")
+    for r in runs:
+        ax.annotate(f"{r['cells'][0]}x{r['cells'][1]}", (1e3 / r["cells"][0], r["t_pi"] * 1e6),
+                    textcoords="offset points", xytext=(4, 4), fontsize=8)
+    ax.set_xlabel(f"1000 / {mesh} cells along x")
+    ax.set_ylabel("pull-in time at 125 V [us]")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("runs", nargs="+", help="RUN.json[:RUN.h5][@NXxNY], coarse to fine")
     parser.add_argument("--mesh", choices=["background", "beam"], required=True)
     parser.add_argument("--times", type=float, nargs="+", default=[0.5, 1.0, 1.2], help="us")
     parser.add_argument("--histories", help="write each run's tip history (t, tip [m]) here")
+    parser.add_argument("--plot", help="t_PI against h with the fit through the finest three (PNG)")
     args = parser.parse_args()
     runs = [load(a, args.mesh) for a in args.runs]
     if args.histories:
@@ -96,6 +119,8 @@ def main():
                       "no extrapolation")
                 continue
             t_inf, _, p = fit
+            if label == "t_PI" and args.plot:
+                plot(args.plot, args.mesh, runs, h, fit)
             print(f"{label}: order p = {p:.2f}, limit {t_inf:.6e}, finest "
                   f"{100 * (values[-1] / t_inf - 1):+.3f} %, middle "
                   f"{100 * (values[-2] / t_inf - 1):+.3f} % from the limit")
