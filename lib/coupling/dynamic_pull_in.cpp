@@ -72,7 +72,7 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
     run.extreme_control = std::min(run.extreme_control, x);
     if (status == IdaIntegrator::Status::Stepped) {
       if (!run.pulled_in &&
-          settle.at_step(x, system.velocity(state, ida.yp(), control), system.gas_force(state),
+          settle.at_step(t, x, system.velocity(state, ida.yp(), control), system.gas_force(state),
                          system.electrostatic_force(t, state))) {
         run.settled = true;
         sample(t);

@@ -7,9 +7,12 @@
 // The structure's equation M a + F_gas(v) = F_el(u, V) - K u says that it is at a static
 // equilibrium when inertia and damping have died out. Three conditions, each with the reason:
 //
-//   at rest      |v| <= s v_peak: the control's velocity has decayed to a fraction s of the
-//                run's peak velocity (for an exponential approach x - x_eq ~ -v tau, so the
-//                distance left is about s of the excursion);
+//   at rest      |v| <= s v_peak and |a| <= s a_peak: the control's velocity and
+//                acceleration (the difference of v over the last accepted step) have decayed to
+//                a fraction s of the run's peaks (for an exponential approach x - x_eq ~ -v tau,
+//                the distance left is about s of the excursion). The acceleration is what an
+//                underdamped swing's extreme fails: v = 0 and no film force there, but the
+//                inertia M a carries the static imbalance;
 //   balanced     |F_gas| <= s |F_el|: the film, which carries the difference of the
 //                electrostatic and elastic forces while the structure creeps, has let go -
 //                the static residual F_el - K u is small. This is what a slow passage just
@@ -42,15 +45,17 @@ class SettledAtRest {
 
   bool armed() const { return tolerance_ > 0 && fold_control_ != 0; }
 
-  // After an accepted step with the control's deflection x and velocity v and the gas and
-  // electrostatic forces on the structure: true when it has settled (the first time only).
-  bool at_step(Real x, Real v, Real gas_force, Real electrostatic_force);
+  // After an accepted step ending at t with the control's deflection x and velocity v and the
+  // gas and electrostatic forces on the structure: true when it has settled (the first time
+  // only).
+  bool at_step(Real t, Real x, Real v, Real gas_force, Real electrostatic_force);
 
   bool settled() const { return settled_; }
 
  private:
   Real tolerance_, fold_control_;
-  Real peak_velocity_ = 0;
+  Real peak_velocity_ = 0, peak_acceleration_ = 0;
+  Real last_t_ = 0, last_v_ = 0;  // the previous step's
   bool settled_ = false;
 };
 

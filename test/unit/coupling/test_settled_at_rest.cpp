@@ -4,7 +4,8 @@
 //     once |v| <= s v_peak, i.e. at t = tau ln(1/s), within s |x_s| of x_eq;
 //   - just above the fold (the saddle-node normal form x' = -(mu + (x - x_f)^2 / l)), where the
 //     motion slows down near x_f but the film still carries the imbalance mu c: never settles;
-//   - at rest beyond the fold (near the saddle): never settles.
+//   - at rest beyond the fold (near the saddle): never settles;
+//   - an underdamped swing's extreme (v = 0, no film force, above the fold): not at rest.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -33,7 +34,7 @@ Watched watch(const std::function<double(double)>& rate, double dt, double t_end
   for (double t = dt; t <= t_end; t += dt) {
     const double v = rate(x);
     x += dt * v;
-    if (rule.at_step(x, v, c * v, kElectrostatic)) return {true, t, x};
+    if (rule.at_step(t, x, v, c * v, kElectrostatic)) return {true, t, x};
   }
   return out;
 }
@@ -65,4 +66,15 @@ TEST(SettledAtRest, RestBeyondTheFoldIsNotStable) {
 TEST(SettledAtRest, OffWithoutTheFoldOrTolerance) {
   EXPECT_FALSE(SettledAtRest(kSettleTolerance, 0.0).armed());
   EXPECT_FALSE(SettledAtRest(0.0, kFold).armed());
+}
+
+TEST(SettledAtRest, UnderdampedExtremeIsNotAtRest) {
+  // x = x_s (1 - cos w t): the first extreme at t = pi / w, 2 x_s above the fold, no film.
+  const double w = 2 * M_PI * 1e5, x_s = 0.4 * kFold;
+  SettledAtRest rule(kSettleTolerance, kFold);
+  bool settled = false;
+  for (double t = 1e-3 / w; t <= 1.5 * M_PI / w; t += 1e-3 / w)
+    settled = settled || rule.at_step(t, x_s * (1 - std::cos(w * t)), x_s * w * std::sin(w * t),
+                                      0.0, kElectrostatic);
+  EXPECT_FALSE(settled);
 }
