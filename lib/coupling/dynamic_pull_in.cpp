@@ -39,6 +39,8 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
     ida.reinitialize(t0, y, yp);
   }
   TurningBack turning(options.turning_retreat);
+  SettledAtRest settle(options.stop_at_turning ? options.settle_tolerance : 0.0,
+                       options.fold_control);
   const int release_root = 1 + TurningBack::kRoots;
   ida.set_roots(2 + TurningBack::kRoots, [&](Real, std::span<const Real> yy,
                                              std::span<const Real> yyp, std::span<Real> g) {
@@ -61,11 +63,23 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
   Real next_output = first_output;
   Real stop_time = options.end_time;  // moves to touch-down + stop_after_contact
   while (true) {
-    const IdaIntegrator::Status status = ida.advance(std::min(next_output, stop_time));
+    // The settle rule looks at every accepted step (IDA's one-step mode: the same steps).
+    const Real t_out = std::min(next_output, stop_time);
+    const IdaIntegrator::Status status = settle.armed() ? ida.step(t_out) : ida.advance(t_out);
     const Real t = ida.time();
     const auto state = ida.y();
     const Real x = system.displacement(state, control);
     run.extreme_control = std::min(run.extreme_control, x);
+    if (status == IdaIntegrator::Status::Stepped) {
+      if (!run.pulled_in &&
+          settle.at_step(t, x, system.velocity(state, ida.yp(), control), system.gas_force(state),
+                         system.electrostatic_force(t, state))) {
+        run.settled = true;
+        sample(t);
+        break;
+      }
+      continue;
+    }
     if (status == IdaIntegrator::Status::Root) {
       const std::vector<int> found = ida.roots_found();
       if (found[0] < 0) {
@@ -197,6 +211,7 @@ DynamicPullIn find_dynamic_pull_in(const PullInRunner& runner, Real low, Real hi
   auto run_at = [&](Real v) {
     DynamicRun run = runner(v);
     ++result.runs;
+    result.settled_runs += run.settled;
     result.steps += run.stats.steps;
     result.residual_evals += run.stats.residual_evals;
     return run;

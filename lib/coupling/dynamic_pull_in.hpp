@@ -12,6 +12,10 @@
 //                                                (for a step voltage, undamped or underdamped)
 //                                                it will not pull in; the run ends early
 //                                                unless told to go on (release studies);
+//   settled:  at rest at a stable static        checked after every accepted step (with
+//             equilibrium (settled_at_rest.hpp)  stop_at_turning and the fold's deflection
+//                                                known): a damped creep below V_dyn that
+//                                                never turns back has not pulled in;
 //   release:  min_gap(y) - release_gap           rises through 0 (armed with release_gap > 0):
 //                                                the structure lifted off the dielectric, the
 //                                                run ends and reports the release time.
@@ -30,6 +34,7 @@
 
 #include "coupling/state_tolerances.hpp"
 #include "coupling/switch_system.hpp"
+#include "coupling/settled_at_rest.hpp"
 #include "coupling/turning_back.hpp"
 #include "solvers/ida_integrator.hpp"
 
@@ -41,6 +46,10 @@ struct DynamicOptions {
   bool stop_at_turning = true;  // end when the control unknown turns back (see above)
   Real turning_retreat = kTurningRetreat;  // the retreat that counts as turned back
                                            // (coupling/turning_back.hpp)
+  Real settle_tolerance = kSettleTolerance;  // with stop_at_turning: end when settled at a
+                                             // stable equilibrium (settled_at_rest.hpp; 0: off)
+  Real fold_control = 0;        // the control's deflection at the quasi-static fold (0:
+                                // unknown, no settle rule)
   bool stop_at_contact = true;  // end at touch-down (false: go on in contact; needs a penalty)
   Real stop_after_contact = -1; // >= 0 (with stop_at_contact false): end this long after
                                 // touch-down (where a release study drops the voltage)
@@ -69,6 +78,7 @@ struct DynamicRun {
   bool released = false;
   Real release_time = 0;        // time of lift-off (released)
   Real turning_time = 0;        // time of the first turning point (0: none)
+  bool settled = false;         // came to rest at a stable equilibrium (final_time: when)
   Real extreme_control = 0;     // the control unknown's most negative value
   Real final_time = 0;
   DynamicState final_state;
@@ -121,6 +131,7 @@ struct DynamicPullIn {
   Real lower = 0;               // the largest found not to
   Real pull_in_time = 0;        // at `voltage`
   int runs = 0;
+  int settled_runs = 0;         // runs ended by the settle rule
   long steps = 0, residual_evals = 0;  // summed over the runs
 };
 

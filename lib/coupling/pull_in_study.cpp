@@ -97,6 +97,11 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
   s.run.stop_at_turning = dyn.get_bool("stop_at_turning", true);
   s.run.turning_retreat =
       dyn.get_real("turning_retreat", kTurningRetreat, Range::open(0.0, 1.0));
+  // With stop_at_turning, a run that has come to rest at a stable static equilibrium (velocity
+  // and film force below this fraction of their scales, on the quasi-static stable branch;
+  // coupling/settled_at_rest.hpp) has not pulled in either. 0: off.
+  s.run.settle_tolerance =
+      dyn.get_real("settle_tolerance", kSettleTolerance, Range{0.0, 1.0, false, true});
   if (dyn.has("voltages")) s.voltages = dyn.get_quantities("voltages", Dimension::Voltage);
   s.small_signal = dyn.get_real("small_signal", 0.3, Range{0.0, 0.9, false, false});
   const bool laplace = scene.electrostatics == ElectrostaticsModel::Laplace;
@@ -267,8 +272,10 @@ PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& setting
   SwitchSystem& system = *transient;
   const Real low = settings.bracket_high > 0 ? settings.bracket_low : 0.8 * qs.pull_in_voltage;
   const Real high = settings.bracket_high > 0 ? settings.bracket_high : 1.02 * qs.pull_in_voltage;
+  DynamicOptions bisection = settings.run;
+  bisection.fold_control = qs.pull_in_displacement;  // the settle rule's stable branch
   report.dynamic = find_dynamic_pull_in(system, scene.control, low, high, settings.tolerance,
-                                        settings.run, settings.waveform);
+                                        bisection, settings.waveform);
   report.has_dynamic = true;
   static const char* names[] = {"step", "ramp", "pulse"};
   report.waveform = names[static_cast<int>(settings.waveform.kind)];
@@ -387,6 +394,7 @@ Json pull_in_summary(const SwitchScene& scene, const PullInReport& report) {
                     {"pull_in_time", d.pull_in_time},
                     {"ratio_to_quasi_static", d.voltage / qs.pull_in_voltage},
                     {"runs", d.runs},
+                    {"settled_runs", d.settled_runs},
                     {"steps", d.steps},
                     {"residual_evals", d.residual_evals},
                     {"electrostatics",

@@ -67,6 +67,7 @@ else
 fi
 
 expect_input_error retreat_zero "pull_in.dynamic.turning_retreat" "$CASE" --set pull_in.dynamic.turning_retreat=0
+expect_input_error settle_one "pull_in.dynamic.settle_tolerance" "$CASE" --set pull_in.dynamic.settle_tolerance=1
 
 echo "$failures failure(s)"
 [ "$failures" -eq 0 ]
