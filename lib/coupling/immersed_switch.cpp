@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <map>
 
 #include "core/error.hpp"
@@ -477,23 +476,7 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
     const bool stop = events.after_step(ida, status, t, u[control()], out);
     // The coupled step's exchange: the IBM load and the gas at the accepted state.
     if (!strong) {  // strong_step left the IBM load at IDA's internal state as reference
-      const std::vector<Real> before = structure.applied(u);
       load = electrostatic_load(u, voltage);
-      if (std::getenv("RFMEMS_TRACE")) {
-        Real d2 = 0, f2 = 0, dmax = 0; Index dc = -1;
-        for (Index i = 0; i < n; ++i) {
-          const Real d = load.force[i] - before[i];
-          d2 += d * d; f2 += load.force[i] * load.force[i];
-          if (std::abs(d) > dmax) { dmax = std::abs(d); dc = i; }
-        }
-        Real g = 1e300; Index gc = -1;
-        for (Index c : facing_cells_) if (gap0_ + u[2 * c + 1] < g) { g = gap0_ + u[2 * c + 1]; gc = c; }
-        const IntegratorStats st = ida.stats();
-        fmt::print(stderr, "TR {:.6e} h {:.3e} q {} etf {} ncf {} gap {:.5e} c {} tip {:.5e} jump {:.3e} max {:.3e} at {} F {:.4e} ib {} os {}\n",
-                   t, st.last_step, st.last_order, st.error_test_fails, st.newton_fails,
-                   g, gc, u[control()], std::sqrt(d2 / f2), dmax, dc,
-                   load.total.y(), load.ib_faces, load.one_sided);
-      }
       structure.set_reference(load.force, u);
     }
     if (gas && !gas_inside && t > t_gas && (++since_gas >= options.gas_every || stop)) {
