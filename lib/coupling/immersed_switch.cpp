@@ -173,9 +173,10 @@ bool ImmersedSwitch::electrostatics_distributed() const {
 std::vector<Vec3> ImmersedSwitch::vertex_displacements(std::span<const Real> u) const {
   // Vertex k joins segments k-1 and k: the mean of their cells' linear reconstructions, so
   // that a segment moves with its own cell and both neighbours alike and the load stiffness
-  // between neighbouring cells stays symmetric (a vertex moved by one of its cells only
-  // coupled cell c's load to cell c+1's motion but not the reverse: a non-conservative
-  // stiffness whose two-cell mode grew at the clamp, docs/BENCHMARKS.md section 47).
+  // between neighbouring cells is nearly symmetric, as a conservative force's must be (a
+  // vertex moved by one of its cells only made cell c's load follow cell c+1's motion but
+  // hardly the reverse, and left cell 0 at the clamp nearly without its own stiffness;
+  // docs/BENCHMARKS.md section 47).
   const std::vector<Mat3> gradients = beam_.cell_gradients(0.0, u);
   const Mesh& mesh = beam_.mesh();
   const std::size_t n = vertex_node_.size();
