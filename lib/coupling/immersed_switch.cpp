@@ -103,7 +103,6 @@ ImmersedSwitch::ImmersedSwitch(ElasticityOperator& beam, const ImmersedSwitchGeo
         node = candidate;
     if (node < 0) throw MeshError("immersed switch: a surface vertex is not a node of its face");
     vertex_node_.push_back(node);
-    vertex_cell_.push_back(mesh.face_owner(f));
     segment_cell_.push_back(mesh.face_owner(f));
     thickness_lo = std::min(thickness_lo, vertices[k].y());
     thickness_hi = std::max(thickness_hi, vertices[k].y());
@@ -171,29 +170,39 @@ bool ImmersedSwitch::electrostatics_distributed() const {
   return kernel_->electrostatics.distributed();
 }
 
-ImmersedSurface ImmersedSwitch::moved_surface(std::span<const Real> u) const {
+std::vector<Vec3> ImmersedSwitch::vertex_displacements(std::span<const Real> u) const {
+  // Vertex k joins segments k-1 and k: the mean of their cells' linear reconstructions, so
+  // that a segment moves with its own cell and both neighbours alike and the load stiffness
+  // between neighbouring cells is nearly symmetric, as a conservative force's must be (a
+  // vertex moved by one of its cells only made cell c's load follow cell c+1's motion but
+  // hardly the reverse, and left cell 0 at the clamp nearly without its own stiffness;
+  // docs/BENCHMARKS.md section 47).
   const std::vector<Mat3> gradients = beam_.cell_gradients(0.0, u);
-  std::vector<Vec3> vertices = rest_surface_.vertices();
   const Mesh& mesh = beam_.mesh();
-  for (std::size_t k = 0; k < vertices.size(); ++k) {
+  const std::size_t n = vertex_node_.size();
+  std::vector<Vec3> out(n, Vec3::Zero());
+  for (std::size_t k = 0; k < n; ++k) {
     if (vertex_anchored_[k]) continue;
-    const Index node = vertex_node_[k];
-    vertices[k] += beam_.displacement_at(vertex_cell_[k], mesh.nodes()[node], u, gradients);
+    const Vec3& x = mesh.nodes()[vertex_node_[k]];
+    const Index before = segment_cell_[(k + n - 1) % n], after = segment_cell_[k];
+    out[k] = 0.5 * (beam_.displacement_at(before, x, u, gradients) +
+                    beam_.displacement_at(after, x, u, gradients));
   }
-  ImmersedSurface moved = rest_surface_;
-  moved.set_vertices(std::move(vertices));
-  return moved;
+  return out;
+}
+
+ImmersedSurface ImmersedSwitch::moved_surface(std::span<const Real> u) const {
+  const std::vector<Vec3> moved = vertex_displacements(u);
+  std::vector<Vec3> vertices = rest_surface_.vertices();
+  for (std::size_t k = 0; k < vertices.size(); ++k) vertices[k] += moved[k];
+  ImmersedSurface surface = rest_surface_;
+  surface.set_vertices(std::move(vertices));
+  return surface;
 }
 
 std::vector<Vec3> ImmersedSwitch::segment_velocities(std::span<const Real> v) const {
-  const std::vector<Mat3> gradients = beam_.cell_gradients(0.0, v);
-  const Mesh& mesh = beam_.mesh();
-  const std::size_t n = vertex_node_.size();
-  std::vector<Vec3> vertex(n, Vec3::Zero());
-  for (std::size_t k = 0; k < n; ++k)
-    if (!vertex_anchored_[k])
-      vertex[k] =
-          beam_.displacement_at(vertex_cell_[k], mesh.nodes()[vertex_node_[k]], v, gradients);
+  const std::vector<Vec3> vertex = vertex_displacements(v);
+  const std::size_t n = vertex.size();
   std::vector<Vec3> out(n);
   for (std::size_t k = 0; k < n; ++k) out[k] = 0.5 * (vertex[k] + vertex[(k + 1) % n]);
   return out;

@@ -4,9 +4,10 @@
 // and, through the gas slot (immersed_gas.hpp), the gas.
 //
 // One electrostatic load evaluation (electrostatic_load):
-//   move    the beam's boundary nodes by the structure's displacement (each node from its
-//           face owner's linear reconstruction; the anchored face stays, shifted
-//           anchor_extension into the wall so that the surface leaves the background there)
+//   move    the beam's boundary nodes by the structure's displacement (each node the mean of
+//           the linear reconstructions of the two cells whose faces meet there, so that the
+//           load stiffness between neighbouring cells is symmetric; the anchored face stays,
+//           shifted anchor_extension into the wall so that the surface leaves the background)
 //   mark    CellMarker::mark (FLUID / SOLID / IB)
 //   interpolate   IbInterpolation on the new marking (rings capped so that the wall points'
 //           reach stays inside the beam's thickness, ib_interpolation.hpp's limitation)
@@ -134,6 +135,9 @@ class ImmersedSwitch {
   // control's sign in the first quarter period before the first mode dominates).
   Real first_bending_period() const { return first_period_; }
 
+  // Displacement of each surface vertex: the mean of the linear reconstructions of the two
+  // cells whose segments meet there (zero on the anchored patch).
+  std::vector<Vec3> vertex_displacements(std::span<const Real> u) const;
   ImmersedSurface moved_surface(std::span<const Real> u) const;
   std::vector<Vec3> segment_velocities(std::span<const Real> v) const;
   Real min_gap(std::span<const Real> u) const;
@@ -175,7 +179,7 @@ class ImmersedSwitch {
   std::unique_ptr<Mesh> background_;
   std::unique_ptr<Kernel> kernel_;
   ImmersedSurface rest_surface_;
-  std::vector<Index> vertex_node_, vertex_cell_;  // per surface vertex
+  std::vector<Index> vertex_node_;  // per surface vertex
   std::vector<bool> vertex_anchored_;
   std::vector<Index> segment_cell_;  // per segment: the structure cell
   std::vector<Index> facing_cells_;  // cells owning a facing face
