@@ -27,22 +27,6 @@ using namespace rfmems;
 
 namespace {
 
-// Dense K of a linear operator, column by column from its residual.
-Eigen::MatrixXd dense_stiffness(SecondOrderOperator& op) {
-  const Index n = op.size();
-  Eigen::MatrixXd K(n, n);
-  std::vector<Real> u(n, 0.0), r0(n), r1(n);
-  op.internal_residual(0, u, r0);
-  const Real unit = 1e-9;  // m; the operator is linear, so the size only sets round-off
-  for (Index j = 0; j < n; ++j) {
-    u[j] = unit;
-    op.internal_residual(0, u, r1);
-    u[j] = 0;
-    for (Index i = 0; i < n; ++i) K(i, j) = (r1[i] - r0[i]) / unit;
-  }
-  return K;
-}
-
 nlohmann::json growth(const std::string& name, const Eigen::MatrixXd& K,
                       const std::vector<Real>& mass) {
   Eigen::VectorXd inverse_mass(K.rows());
@@ -95,11 +79,11 @@ int main(int argc, char** argv) {
   ElasticityOperator& op = *c.beam->op;
   const std::vector<Real> mass = op.mass_diagonal();
 
-  const Eigen::MatrixXd K = dense_stiffness(op);
+  const Eigen::MatrixXd K = bench::dense_stiffness(op);
   bench::emit(growth("case", K, mass));
   for (int degree : {1, 2, 3}) {
     ElasticityOperator other(op.mesh(), op.material(), op.boundaries(), op.body_force(), degree);
-    bench::emit(growth("degree " + std::to_string(degree), dense_stiffness(other), mass));
+    bench::emit(growth("degree " + std::to_string(degree), bench::dense_stiffness(other), mass));
   }
   const Index n = op.size();
   const Real delta = 1e-4 * c.scene->rest_gap();
