@@ -97,9 +97,9 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
   s.run.stop_at_turning = dyn.get_bool("stop_at_turning", true);
   s.run.turning_retreat =
       dyn.get_real("turning_retreat", kTurningRetreat, Range::open(0.0, 1.0));
-  // With stop_at_turning, a run that has come to rest at a stable static equilibrium (velocity
-  // and film force below this fraction of their scales, on the quasi-static stable branch;
-  // coupling/settled_at_rest.hpp) has not pulled in either. 0: off.
+  // With stop_at_turning, a run that has come to rest at a stable static equilibrium (velocity,
+  // acceleration and film force below this fraction of their scales, on the quasi-static stable
+  // branch; coupling/settled_at_rest.hpp) has not pulled in either. 0: off.
   s.run.settle_tolerance =
       dyn.get_real("settle_tolerance", kSettleTolerance, Range{0.0, 1.0, false, true});
   if (dyn.has("voltages")) s.voltages = dyn.get_quantities("voltages", Dimension::Voltage);

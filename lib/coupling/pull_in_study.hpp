@@ -17,9 +17,10 @@
 //       tolerance: 0.5 V              # on the dynamic pull-in voltage
 //       stop_at_turning: true         # a bisection run that turns back did not pull in
 //                                     # (false: run to touch-down or end_time)
-//       settle_tolerance: 1e-2        # settled, no pull-in: velocity and film force below
-//                                     # this fraction of the peak velocity and electrostatic
-//                                     # force, on the stable branch (settled_at_rest.hpp; 0: off)
+//       settle_tolerance: 1e-2        # settled, no pull-in: velocity, acceleration and film
+//                                     # force below this fraction of the peak velocity, peak
+//                                     # acceleration and electrostatic force, on the stable
+//                                     # branch (settled_at_rest.hpp; 0: off)
 //       turning_retreat: 0.02         # turned back: the control retreated from its extreme
 //                                     # by this fraction of the excursion (turning_back.hpp;
 //                                     # a higher mode's wiggle on a damped creep does not)
