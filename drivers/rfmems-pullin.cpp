@@ -29,6 +29,8 @@
 // Output: out/<name>.h5 (+ .xdmf): the structure's fields at the fold (step 0),
 // /pull_in/curve, /dynamic/V<k> (see coupling/pull_in_study.hpp). Exit codes as rfmems-solid:
 // 0 success; 2 bad input (one line on stderr, no result file); 1 other failures.
+#include <fmt/format.h>
+
 #include <cstdio>
 #include <iostream>
 #include <map>
@@ -214,14 +216,19 @@ int run(const DriverOptions& options) {
       std::printf("  quasi-static pull-out at %.2f V (resting on the dielectric over %.1f %% of the "
                   "electrode just above it)\n",
                   report.pull_out.pull_out_voltage, 100 * report.pull_out.branch.back().contact_fraction);
-    if (report.has_dynamic)
+    if (report.has_dynamic) {
+      const std::string time =
+          report.dynamic.upper_past_fold
+              ? std::string("ended past the unstable equilibrium (no touch-down time)")
+              : fmt::format("pull-in time {:.3f} us", report.dynamic.pull_in_time * 1e6);
       std::printf("  dynamic pull-in (%s voltage, %s%s%s) at %.2f V (%.3f of quasi-static; %.2f V "
-                  "does not), pull-in time %.3f us; %d runs\n",
+                  "does not), %s; %d runs\n",
                   report.waveform.c_str(),
                   summary["pull_in"]["dynamic"]["electrostatics"].get<std::string>().c_str(),
                   report.dynamic_coupling.empty() ? "" : ", ", report.dynamic_coupling.c_str(),
                   report.dynamic.voltage, report.dynamic.voltage / qs.pull_in_voltage,
-                  report.dynamic.lower, report.dynamic.pull_in_time * 1e6, report.dynamic.runs);
+                  report.dynamic.lower, time.c_str(), report.dynamic.runs);
+    }
     if (report.has_release) {
       const DynamicRun& h = report.hold;
       std::printf("  release: step to %.2f V, touch-down at %.3f us, drop to %.2f V at %.3f us: %s",

@@ -10,6 +10,15 @@
 
 namespace rfmems {
 
+SettledAtRest early_settle(const DynamicOptions& options) {
+  return {options.stop_at_turning ? options.settle_tolerance : 0.0, options.fold.control};
+}
+
+PastUnstableEquilibrium early_past_fold(const DynamicOptions& options) {
+  if (!options.stop_at_turning || !options.stop_past_fold) return {};
+  return {options.fold, options.past_fold_margin};
+}
+
 DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(Real)> voltage,
                        const DynamicOptions& options, const DynamicState* start) {
   system.actuation().set_voltage_squared([voltage](Real t) {
@@ -39,8 +48,8 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
     ida.reinitialize(t0, y, yp);
   }
   TurningBack turning(options.turning_retreat);
-  SettledAtRest settle(options.stop_at_turning ? options.settle_tolerance : 0.0,
-                       options.fold_control);
+  SettledAtRest settle = early_settle(options);
+  PastUnstableEquilibrium past = early_past_fold(options);
   const int release_root = 1 + TurningBack::kRoots;
   ida.set_roots(2 + TurningBack::kRoots, [&](Real, std::span<const Real> yy,
                                              std::span<const Real> yyp, std::span<Real> g) {
@@ -63,18 +72,25 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
   Real next_output = first_output;
   Real stop_time = options.end_time;  // moves to touch-down + stop_after_contact
   while (true) {
-    // The settle rule looks at every accepted step (IDA's one-step mode: the same steps).
+    // The settle and past-fold rules look at every accepted step (IDA's one-step mode: the
+    // same steps).
     const Real t_out = std::min(next_output, stop_time);
-    const IdaIntegrator::Status status = settle.armed() ? ida.step(t_out) : ida.advance(t_out);
+    const IdaIntegrator::Status status =
+        settle.armed() || past.armed() ? ida.step(t_out) : ida.advance(t_out);
     const Real t = ida.time();
     const auto state = ida.y();
     const Real x = system.displacement(state, control);
     run.extreme_control = std::min(run.extreme_control, x);
     if (status == IdaIntegrator::Status::Stepped) {
-      if (!run.pulled_in &&
-          settle.at_step(t, x, system.velocity(state, ida.yp(), control), system.gas_force(state),
-                         system.electrostatic_force(t, state))) {
+      if (run.pulled_in) continue;
+      const Real v = system.velocity(state, ida.yp(), control);
+      if (settle.at_step(t, x, v, system.gas_force(state), system.electrostatic_force(t, state))) {
         run.settled = true;
+        sample(t);
+        break;
+      }
+      if (past.at_step(voltage(t), x, v)) {
+        run.pulled_in = run.past_fold = true;
         sample(t);
         break;
       }
@@ -200,6 +216,8 @@ DynamicPullIn find_dynamic_pull_in(SwitchSystem& system, Index control, Real low
                                    const VoltageWaveform& waveform) {
   DynamicOptions quiet = options;
   quiet.output_interval = 0;
+  // A pulse's drop can release a structure that was past the unstable equilibrium of its step.
+  quiet.stop_past_fold = options.stop_past_fold && waveform.kind != VoltageWaveform::Kind::Pulse;
   return find_dynamic_pull_in(
       [&](Real v) { return run_dynamic(system, control, waveform.at(v), quiet); }, low, high,
       tolerance, options.end_time);
@@ -212,6 +230,7 @@ DynamicPullIn find_dynamic_pull_in(const PullInRunner& runner, Real low, Real hi
     DynamicRun run = runner(v);
     ++result.runs;
     result.settled_runs += run.settled;
+    result.past_fold_runs += run.past_fold;
     result.steps += run.stats.steps;
     result.residual_evals += run.stats.residual_evals;
     return run;
@@ -234,6 +253,7 @@ DynamicPullIn find_dynamic_pull_in(const PullInRunner& runner, Real low, Real hi
     }
   }
   result.pull_in_time = at_high.pull_in_time;
+  result.upper_past_fold = at_high.past_fold;
   result.voltage = high;
   result.lower = low;
   return result;

@@ -16,6 +16,12 @@
 //             equilibrium (settled_at_rest.hpp)  stop_at_turning and the fold's deflection
 //                                                known): a damped creep below V_dyn that
 //                                                never turns back has not pulled in;
+//   past fold: beyond the unstable equilibrium    checked after every accepted step (with
+//             of the step voltage, moving down   stop_at_turning, stop_past_fold and the
+//             (past_unstable_equilibrium.hpp)    fold's branch known): pull-in is certain, the
+//                                                run ends pulled in, without a touch-down
+//                                                time (a creep past the fold of a damped
+//                                                switch that end_time would cut short);
 //   release:  min_gap(y) - release_gap           rises through 0 (armed with release_gap > 0):
 //                                                the structure lifted off the dielectric, the
 //                                                run ends and reports the release time.
@@ -33,8 +39,9 @@
 #include <vector>
 
 #include "coupling/state_tolerances.hpp"
-#include "coupling/switch_system.hpp"
+#include "coupling/past_unstable_equilibrium.hpp"
 #include "coupling/settled_at_rest.hpp"
+#include "coupling/switch_system.hpp"
 #include "coupling/turning_back.hpp"
 #include "solvers/ida_integrator.hpp"
 
@@ -48,8 +55,13 @@ struct DynamicOptions {
                                            // (coupling/turning_back.hpp)
   Real settle_tolerance = kSettleTolerance;  // with stop_at_turning: end when settled at a
                                              // stable equilibrium (settled_at_rest.hpp; 0: off)
-  Real fold_control = 0;        // the control's deflection at the quasi-static fold (0:
-                                // unknown, no settle rule)
+  // The quasi-static fold and its unstable branch (quasi_static_pull_in.hpp; unknown: neither
+  // the settle rule, which needs the fold's deflection, nor the past-fold rule).
+  FoldBranch fold;
+  bool stop_past_fold = true;   // with stop_at_turning: end pulled in when past the unstable
+                                // equilibrium (past_unstable_equilibrium.hpp; needs a voltage
+                                // that does not fall)
+  Real past_fold_margin = kPastFoldMargin;  // beyond it by this fraction of |x_fold|
   bool stop_at_contact = true;  // end at touch-down (false: go on in contact; needs a penalty)
   Real stop_after_contact = -1; // >= 0 (with stop_at_contact false): end this long after
                                 // touch-down (where a release study drops the voltage)
@@ -73,7 +85,8 @@ struct DynamicState {
 
 struct DynamicRun {
   bool pulled_in = false;
-  Real pull_in_time = 0;        // time of (the first) touch-down (pulled_in)
+  Real pull_in_time = 0;        // time of (the first) touch-down (pulled_in; 0 if past_fold)
+  bool past_fold = false;       // pulled in: ended past the unstable equilibrium, before contact
   int touch_downs = 0;          // contact root crossings downwards (bounces count again)
   bool released = false;
   Real release_time = 0;        // time of lift-off (released)
@@ -121,6 +134,11 @@ struct FreeResponse {
 };
 FreeResponse free_response(const std::vector<DynamicSample>& history);
 
+// The settle and past-fold rules of a run with these options (off without stop_at_turning,
+// or with the fold unknown; the past-fold rule also without stop_past_fold).
+SettledAtRest early_settle(const DynamicOptions& options);
+PastUnstableEquilibrium early_past_fold(const DynamicOptions& options);
+
 // `voltage(t)` [V] is installed into the system's actuation; control indexes the structure.
 // From rest at t = 0, or from `start`.
 DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(Real)> voltage,
@@ -129,9 +147,11 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
 struct DynamicPullIn {
   Real voltage = 0;             // the smallest voltage found to pull in (upper bracket end)
   Real lower = 0;               // the largest found not to
-  Real pull_in_time = 0;        // at `voltage`
+  Real pull_in_time = 0;        // at `voltage`, its touch-down (0: upper_past_fold)
+  bool upper_past_fold = false; // the run at `voltage` ended past the unstable equilibrium
   int runs = 0;
   int settled_runs = 0;         // runs ended by the settle rule
+  int past_fold_runs = 0;       // runs ended pulled in by the past-fold rule
   long steps = 0, residual_evals = 0;  // summed over the runs
 };
 

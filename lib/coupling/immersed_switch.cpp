@@ -355,8 +355,11 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
   IdaIntegrator ida(system, ida_options);
   ida.initialize(0.0, y, yp);
   const Index vc = system.velocity_index(control());
-  StepVoltageEvents events(options.stop_at_turning, options.turning_retreat,
-                           0.25 * first_period_);
+  StepVoltageEvents events(
+      options.stop_at_turning, options.turning_retreat, 0.25 * first_period_,
+      {options.stop_at_turning ? options.settle_tolerance : 0.0, options.fold.control},
+      options.stop_at_turning ? PastUnstableEquilibrium(options.fold, options.past_fold_margin)
+                              : PastUnstableEquilibrium());
   events.set_roots(ida, n, control(), vc, options.contact_gap,
                    [this](std::span<const Real> u) { return min_gap(u); });
 
@@ -487,7 +490,7 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
     }
     records.push_back({t, u[control()], state[vc], min_gap(u), load.total.y(), gas_force});
     if (since_gas == 0 && !gas_inside) t_gas = t;
-    if (stop) break;
+    if (stop || events.after_record(records.back(), voltage, out)) break;
   }
   finish_step_voltage_run(ida, records, voltage, options.output_interval, true, out);
   return out;

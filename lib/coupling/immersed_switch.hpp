@@ -93,6 +93,13 @@ struct ImmersedRunOptions {
   Real contact_gap = 0;         // touch-down when the smallest gap reaches this [m]
   bool stop_at_turning = true;  // turning counts after a quarter of first_bending_period()
   Real turning_retreat = kTurningRetreat;  // coupling/turning_back.hpp
+  // With stop_at_turning and the fold known: the settle rule (settled_at_rest.hpp) and the
+  // past-fold rule (past_unstable_equilibrium.hpp; pulled in, beyond the unstable equilibrium
+  // by past_fold_margin of |x_fold|). The immersed study traces no quasi-static curve in its
+  // dynamic mode, so it leaves the fold unknown (both off).
+  Real settle_tolerance = kSettleTolerance;
+  FoldBranch fold;
+  Real past_fold_margin = kPastFoldMargin;
   Real output_interval = 0;     // > 0: history resampled at this interval (cubic Hermite in
                                 // the control's deflection and velocity); else IDA's steps
   ImmersedCoupling coupling = ImmersedCoupling::Staggered;

@@ -89,7 +89,8 @@ DynamicRun LaplaceDynamicSwitch::run(Real voltage, const DynamicOptions& options
   IdaIntegrator ida(system, ida_options);
   ida.initialize(0.0, y, yp);
   const Index vc = system.velocity_index(control_);
-  StepVoltageEvents events(options.stop_at_turning, options.turning_retreat);
+  StepVoltageEvents events(options.stop_at_turning, options.turning_retreat, 0.0,
+                           early_settle(options), early_past_fold(options));
   events.set_roots(ida, n, control_, vc, options.contact_gap,
                    [&](std::span<const Real> u) { return field_.cell_min_gap(u); });
 
@@ -110,7 +111,7 @@ DynamicRun LaplaceDynamicSwitch::run(Real voltage, const DynamicOptions& options
     }
     records.push_back(
         {t, u[control_], state[vc], field_.cell_min_gap(u), v2 * field_.last_force_y(), 0.0});
-    if (stop) break;
+    if (stop || events.after_record(records.back(), voltage, out)) break;
   }
   // The structure's share excludes the field solves made inside residual calls (implicit).
   const double field_cpu = field_.move_seconds() - move0 + field_.field_seconds() - field0;

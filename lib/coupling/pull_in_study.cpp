@@ -102,6 +102,11 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
   // branch; coupling/settled_at_rest.hpp) has not pulled in either. 0: off.
   s.run.settle_tolerance =
       dyn.get_real("settle_tolerance", kSettleTolerance, Range{0.0, 1.0, false, true});
+  // With stop_at_turning, a run beyond the unstable equilibrium of its voltage by this fraction
+  // of the fold's deflection, moving towards the electrode, has pulled in
+  // (coupling/past_unstable_equilibrium.hpp).
+  s.run.past_fold_margin =
+      dyn.get_real("past_fold_margin", kPastFoldMargin, Range::closed(0.0, 1.0));
   if (dyn.has("voltages")) s.voltages = dyn.get_quantities("voltages", Dimension::Voltage);
   s.small_signal = dyn.get_real("small_signal", 0.3, Range{0.0, 0.9, false, false});
   const bool laplace = scene.electrostatics == ElectrostaticsModel::Laplace;
@@ -215,6 +220,7 @@ void run_laplace_dynamic(SwitchScene& scene, const PullInSettings& settings, Res
   const Real high = settings.bracket_high > 0 ? settings.bracket_high : 1.02 * qs.pull_in_voltage;
   DynamicOptions quiet = settings.run;
   quiet.output_interval = 0;
+  quiet.fold = FoldBranch::of(qs);  // the settle and past-fold rules
   report.dynamic = find_dynamic_pull_in(
       [&](Real v) { return sw.run(v, quiet, settings.laplace_coupling); }, low, high,
       settings.tolerance, settings.run.end_time);
@@ -273,7 +279,7 @@ PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& setting
   const Real low = settings.bracket_high > 0 ? settings.bracket_low : 0.8 * qs.pull_in_voltage;
   const Real high = settings.bracket_high > 0 ? settings.bracket_high : 1.02 * qs.pull_in_voltage;
   DynamicOptions bisection = settings.run;
-  bisection.fold_control = qs.pull_in_displacement;  // the settle rule's stable branch
+  bisection.fold = FoldBranch::of(qs);  // the settle and past-fold rules
   report.dynamic = find_dynamic_pull_in(system, scene.control, low, high, settings.tolerance,
                                         bisection, settings.waveform);
   report.has_dynamic = true;
@@ -389,12 +395,15 @@ Json pull_in_summary(const SwitchScene& scene, const PullInReport& report) {
   }
   if (report.has_dynamic) {
     const DynamicPullIn& d = report.dynamic;
+    // An upper end that ended past the unstable equilibrium has no touch-down time.
     j["dynamic"] = {{"pull_in_voltage", d.voltage},
                     {"not_pulling_in", d.lower},
-                    {"pull_in_time", d.pull_in_time},
+                    {"pull_in_time", d.upper_past_fold ? Json() : Json(d.pull_in_time)},
+                    {"upper_past_fold", d.upper_past_fold},
                     {"ratio_to_quasi_static", d.voltage / qs.pull_in_voltage},
                     {"runs", d.runs},
                     {"settled_runs", d.settled_runs},
+                    {"past_fold_runs", d.past_fold_runs},
                     {"steps", d.steps},
                     {"residual_evals", d.residual_evals},
                     {"electrostatics",

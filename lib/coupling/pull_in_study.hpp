@@ -21,6 +21,10 @@
 //                                     # force below this fraction of the peak velocity, peak
 //                                     # acceleration and electrostatic force, on the stable
 //                                     # branch (settled_at_rest.hpp; 0: off)
+//       past_fold_margin: 0.05        # pulled in (no touch-down time): beyond the unstable
+//                                     # equilibrium of the step voltage by this fraction of
+//                                     # the fold's deflection, moving towards the electrode;
+//                                     # above V_qs once it moves (past_unstable_equilibrium.hpp)
 //       turning_retreat: 0.02         # turned back: the control retreated from its extreme
 //                                     # by this fraction of the excursion (turning_back.hpp;
 //                                     # a higher mode's wiggle on a damped creep does not)

@@ -34,6 +34,19 @@ bool StepVoltageEvents::after_step(const IdaIntegrator& ida, IdaIntegrator::Stat
   return stop;
 }
 
+bool StepVoltageEvents::after_record(const StepRecord& r, Real voltage, DynamicRun& run) {
+  if (run.pulled_in) return false;
+  if (settle_.at_step(r.t, r.control, r.velocity, r.gas_force, r.electrostatic_force)) {
+    run.settled = true;
+    return true;
+  }
+  if (past_.at_step(voltage, r.control, r.velocity)) {
+    run.pulled_in = run.past_fold = true;
+    return true;
+  }
+  return false;
+}
+
 void finish_step_voltage_run(const IdaIntegrator& ida, const std::vector<StepRecord>& records,
                              Real voltage, Real output_interval, bool through_final_time,
                              DynamicRun& run) {

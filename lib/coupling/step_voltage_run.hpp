@@ -7,15 +7,22 @@
 //            retreated from its extreme by options.turning_retreat of its excursion; no
 //            pull-in for a step voltage), as run_dynamic's (dynamic_pull_in.hpp);
 //   events   after each step, the extreme deflection, the touch-down and the first turning
-//            recorded in the DynamicRun, and whether the run ends;
+//            recorded in the DynamicRun, and whether the run ends; then, on the step's record
+//            (its forces at the accepted state), the settle rule (settled_at_rest.hpp: at rest
+//            at a stable equilibrium, no pull-in) and the past-fold rule
+//            (past_unstable_equilibrium.hpp: beyond the unstable equilibrium, pulled in), as
+//            run_dynamic's;
 //   history  one record per accepted step, kept as it is or resampled at output_interval:
 //            cubic Hermite in the control's deflection and velocity, the other columns linear.
 #pragma once
 #include <functional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "coupling/dynamic_pull_in.hpp"
+#include "coupling/past_unstable_equilibrium.hpp"
+#include "coupling/settled_at_rest.hpp"
 #include "coupling/turning_back.hpp"
 #include "solvers/ida_integrator.hpp"
 
@@ -30,8 +37,14 @@ class StepVoltageEvents {
  public:
   // turning_retreat: TurningBack's r; turning_after: extremes count from this time on (the
   // immersed beam's higher modes can flip the control's velocity in the first quarter period).
-  StepVoltageEvents(bool stop_at_turning, Real turning_retreat, Real turning_after = 0)
-      : stop_at_turning_(stop_at_turning), turning_(turning_retreat, turning_after) {}
+  // settle, past: the step rules (off by default; early_settle and early_past_fold in
+  // dynamic_pull_in.hpp make them from a run's options).
+  StepVoltageEvents(bool stop_at_turning, Real turning_retreat, Real turning_after = 0,
+                    SettledAtRest settle = {0.0, 0.0}, PastUnstableEquilibrium past = {})
+      : stop_at_turning_(stop_at_turning),
+        turning_(turning_retreat, turning_after),
+        settle_(settle),
+        past_(std::move(past)) {}
 
   // Installs g0..g2 on ida: min_gap of the displacements (the state's first n entries), the
   // turning rule on the control's deflection and velocity at state indices control, velocity.
@@ -44,9 +57,15 @@ class StepVoltageEvents {
   bool after_step(const IdaIntegrator& ida, IdaIntegrator::Status status, Real t, Real control,
                   DynamicRun& run);
 
+  // Then, for a run that after_step did not end, on the accepted state's record at the step
+  // voltage: records settled or pulled in past the fold in run; true: the run ends.
+  bool after_record(const StepRecord& record, Real voltage, DynamicRun& run);
+
  private:
   bool stop_at_turning_;
   TurningBack turning_;
+  SettledAtRest settle_;
+  PastUnstableEquilibrium past_;
 };
 
 // Fills run's final time, state and stats from ida and its history at voltage from records
