@@ -218,8 +218,8 @@ int run(const DriverOptions& options) {
                   report.pull_out.pull_out_voltage, 100 * report.pull_out.branch.back().contact_fraction);
     if (report.has_dynamic) {
       const std::string time =
-          report.dynamic.upper_past_fold
-              ? std::string("ended past the unstable equilibrium (no touch-down time)")
+          report.dynamic.pull_in_time == 0
+              ? std::string("no touch-down by end_time (past the unstable equilibrium)")
               : fmt::format("pull-in time {:.3f} us", report.dynamic.pull_in_time * 1e6);
       std::printf("  dynamic pull-in (%s voltage, %s%s%s) at %.2f V (%.3f of quasi-static; %.2f V "
                   "does not), %s; %d runs\n",

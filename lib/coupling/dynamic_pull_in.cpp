@@ -218,16 +218,19 @@ DynamicPullIn find_dynamic_pull_in(SwitchSystem& system, Index control, Real low
   quiet.output_interval = 0;
   // A pulse's drop can release a structure that was past the unstable equilibrium of its step.
   quiet.stop_past_fold = options.stop_past_fold && waveform.kind != VoltageWaveform::Kind::Pulse;
+  DynamicOptions to_contact = quiet;
+  to_contact.stop_past_fold = false;
   return find_dynamic_pull_in(
       [&](Real v) { return run_dynamic(system, control, waveform.at(v), quiet); }, low, high,
-      tolerance, options.end_time);
+      tolerance, options.end_time,
+      [&](Real v) { return run_dynamic(system, control, waveform.at(v), to_contact); });
 }
 
 DynamicPullIn find_dynamic_pull_in(const PullInRunner& runner, Real low, Real high,
-                                   Real tolerance, Real end_time) {
+                                   Real tolerance, Real end_time, const PullInRunner& to_contact) {
   DynamicPullIn result;
-  auto run_at = [&](Real v) {
-    DynamicRun run = runner(v);
+  auto run_at = [&](Real v, const PullInRunner& by = {}) {
+    DynamicRun run = (by ? by : runner)(v);
     ++result.runs;
     result.settled_runs += run.settled;
     result.past_fold_runs += run.past_fold;
@@ -252,8 +255,18 @@ DynamicPullIn find_dynamic_pull_in(const PullInRunner& runner, Real low, Real hi
       low = mid;
     }
   }
-  result.pull_in_time = at_high.pull_in_time;
   result.upper_past_fold = at_high.past_fold;
+  if (at_high.past_fold && to_contact) {
+    // The upper end's touch-down time: its step again, to contact or end_time. Turning back or
+    // settling instead would say the rule's margin is too small for this structure.
+    at_high = run_at(high, to_contact);
+    if (at_high.turning_time > 0 || at_high.settled)
+      throw SolverError(fmt::format(
+          "dynamic pull-in: {:.4g} V passed the unstable equilibrium but then {} (raise "
+          "pull_in.dynamic.past_fold_margin)",
+          high, at_high.settled ? "settled" : "turned back"));
+  }
+  result.pull_in_time = at_high.pull_in_time;
   result.voltage = high;
   result.lower = low;
   return result;

@@ -147,8 +147,9 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
 struct DynamicPullIn {
   Real voltage = 0;             // the smallest voltage found to pull in (upper bracket end)
   Real lower = 0;               // the largest found not to
-  Real pull_in_time = 0;        // at `voltage`, its touch-down (0: upper_past_fold)
-  bool upper_past_fold = false; // the run at `voltage` ended past the unstable equilibrium
+  Real pull_in_time = 0;        // at `voltage`, its touch-down (0: none by end_time)
+  bool upper_past_fold = false; // the bisection's run at `voltage` ended past the unstable
+                                // equilibrium (pull_in_time: from its step run again)
   int runs = 0;
   int settled_runs = 0;         // runs ended by the settle rule
   int past_fold_runs = 0;       // runs ended pulled in by the past-fold rule
@@ -171,14 +172,18 @@ struct VoltageWaveform {
 
 // Bisection on the amplitude of the waveform (a step by default) in [low, high] (low must
 // not pull in, high must) until high - low <= tolerance. SolverError if the bracket is wrong.
+// An upper end that ended past the unstable equilibrium is run once more without that rule,
+// for its touch-down time (counted in runs, steps and residual_evals).
 DynamicPullIn find_dynamic_pull_in(SwitchSystem& system, Index control, Real low, Real high,
                                    Real tolerance, const DynamicOptions& options,
                                    const VoltageWaveform& waveform = {});
 
 // The same bisection with any run: runner(amplitude) integrates from rest (e.g. a partitioned
-// scheme, coupling/partitioned_switch.hpp); end_time only for the message.
+// scheme, coupling/partitioned_switch.hpp); end_time only for the message. to_contact: the
+// same run without the past-fold rule (empty: an upper end past the fold keeps no time).
 using PullInRunner = std::function<DynamicRun(Real amplitude)>;
 DynamicPullIn find_dynamic_pull_in(const PullInRunner& runner, Real low, Real high,
-                                   Real tolerance, Real end_time);
+                                   Real tolerance, Real end_time,
+                                   const PullInRunner& to_contact = {});
 
 }  // namespace rfmems

@@ -221,9 +221,12 @@ void run_laplace_dynamic(SwitchScene& scene, const PullInSettings& settings, Res
   DynamicOptions quiet = settings.run;
   quiet.output_interval = 0;
   quiet.fold = FoldBranch::of(qs);  // the settle and past-fold rules
+  DynamicOptions to_contact = quiet;
+  to_contact.stop_past_fold = false;
   report.dynamic = find_dynamic_pull_in(
       [&](Real v) { return sw.run(v, quiet, settings.laplace_coupling); }, low, high,
-      settings.tolerance, settings.run.end_time);
+      settings.tolerance, settings.run.end_time,
+      [&](Real v) { return sw.run(v, to_contact, settings.laplace_coupling); });
   report.has_dynamic = true;
   report.waveform = "step";
   report.dynamic_coupling = laplace_coupling_name(settings.laplace_coupling);
@@ -395,10 +398,10 @@ Json pull_in_summary(const SwitchScene& scene, const PullInReport& report) {
   }
   if (report.has_dynamic) {
     const DynamicPullIn& d = report.dynamic;
-    // An upper end that ended past the unstable equilibrium has no touch-down time.
+    // null: the upper end (past the unstable equilibrium) did not touch down by end_time.
     j["dynamic"] = {{"pull_in_voltage", d.voltage},
                     {"not_pulling_in", d.lower},
-                    {"pull_in_time", d.upper_past_fold ? Json() : Json(d.pull_in_time)},
+                    {"pull_in_time", d.pull_in_time > 0 ? Json(d.pull_in_time) : Json()},
                     {"upper_past_fold", d.upper_past_fold},
                     {"ratio_to_quasi_static", d.voltage / qs.pull_in_voltage},
                     {"runs", d.runs},
