@@ -29,8 +29,11 @@
 // back). The margin m (pull_in.dynamic.past_fold_margin, a fraction of the fold's deflection;
 // default 0.05) asks for the control to be that much further; a higher mode's share of the
 // control's deflection (~1e-10 m on the damped plate, against |x_fold| ~ 6e-7 m) is far below
-// it, and on the underdamped default plate the runs that turn back stay > 0.1 |x_fold| short of
-// x_u (test_past_unstable_equilibrium). Above V_qs the margin is not needed: there is no
+// it; on the underdamped default plate (zeta 0.012) the bisection's lower end, 0.2 % below
+// V_dyn, turns back at 1.39 |x_fold|, short of x_u (between 1.42 and 1.47 |x_fold|) and 0.13
+// |x_fold| short of the threshold (test_past_unstable_equilibrium). And a bisection checks its
+// upper end: run again without the rule for its touch-down time, it must not turn back or
+// settle (find_dynamic_pull_in). Above V_qs the margin is not needed: there is no
 // equilibrium whatever the shape (V_qs is the sampled maximum, below the true fold voltage by
 // less than the quasi-static voltage_tolerance).
 //
