@@ -11,7 +11,8 @@
 namespace rfmems {
 
 SettledAtRest early_settle(const DynamicOptions& options) {
-  return {options.stop_at_turning ? options.settle_tolerance : 0.0, options.fold.control};
+  return {options.stop_at_turning ? options.settle_tolerance : 0.0, options.fold.control,
+          options.fold.voltage};
 }
 
 PastUnstableEquilibrium early_past_fold(const DynamicOptions& options) {
@@ -84,7 +85,8 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
     if (status == IdaIntegrator::Status::Stepped) {
       if (run.pulled_in) continue;
       const Real v = system.velocity(state, ida.yp(), control);
-      if (settle.at_step(t, x, v, system.gas_force(state), system.electrostatic_force(t, state))) {
+      if (settle.at_step(t, x, v, system.gas_force(state), system.electrostatic_force(t, state),
+                         voltage(t))) {
         run.settled = true;
         sample(t);
         break;

@@ -357,7 +357,8 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
   const Index vc = system.velocity_index(control());
   StepVoltageEvents events(
       options.stop_at_turning, options.turning_retreat, 0.25 * first_period_,
-      {options.stop_at_turning ? options.settle_tolerance : 0.0, options.fold.control},
+      {options.stop_at_turning ? options.settle_tolerance : 0.0, options.fold.control,
+       options.fold.voltage},
       options.stop_at_turning ? PastUnstableEquilibrium(options.fold, options.past_fold_margin)
                               : PastUnstableEquilibrium());
   events.set_roots(ida, n, control(), vc, options.contact_gap,

@@ -5,7 +5,8 @@
 
 namespace rfmems {
 
-bool SettledAtRest::at_step(Real t, Real x, Real v, Real gas_force, Real electrostatic_force) {
+bool SettledAtRest::at_step(Real t, Real x, Real v, Real gas_force, Real electrostatic_force,
+                            Real voltage) {
   const Real a = t > last_t_ ? (v - last_v_) / (t - last_t_) : 0.0;
   last_t_ = t;
   last_v_ = v;
@@ -15,7 +16,8 @@ bool SettledAtRest::at_step(Real t, Real x, Real v, Real gas_force, Real electro
   settled_ = std::abs(v) <= tolerance_ * peak_velocity_ &&
              std::abs(a) <= tolerance_ * peak_acceleration_ &&
              std::abs(gas_force) <= tolerance_ * std::abs(electrostatic_force) &&
-             std::abs(x) < std::abs(fold_control_);
+             std::abs(x) < std::abs(fold_control_) &&
+             (fold_voltage_ == 0 || voltage <= fold_voltage_);
   return settled_;
 }
 

@@ -36,7 +36,7 @@ bool StepVoltageEvents::after_step(const IdaIntegrator& ida, IdaIntegrator::Stat
 
 bool StepVoltageEvents::after_record(const StepRecord& r, Real voltage, DynamicRun& run) {
   if (run.pulled_in) return false;
-  if (settle_.at_step(r.t, r.control, r.velocity, r.gas_force, r.electrostatic_force)) {
+  if (settle_.at_step(r.t, r.control, r.velocity, r.gas_force, r.electrostatic_force, voltage)) {
     run.settled = true;
     return true;
   }

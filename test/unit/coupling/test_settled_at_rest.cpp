@@ -5,7 +5,9 @@
 //   - just above the fold (the saddle-node normal form x' = -(mu + (x - x_f)^2 / l)), where the
 //     motion slows down near x_f but the film still carries the imbalance mu c: never settles;
 //   - at rest beyond the fold (near the saddle): never settles;
-//   - an underdamped swing's extreme (v = 0, no film force, above the fold): not at rest.
+//   - an underdamped swing's extreme (v = 0, no film force, above the fold): not at rest;
+//   - a slow passage within 0.1 % above the fold voltage, whose film share falls below s: looks
+//     settled by the forces alone, not once the rule knows V > V_qs.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -26,15 +28,17 @@ struct Watched {
 
 // Integrates x' = rate(x) from 0 by forward Euler in dt; the film force is c x' with c such
 // that the initial film force equals the electrostatic force (no elastic force at rest).
-Watched watch(const std::function<double(double)>& rate, double dt, double t_end) {
-  SettledAtRest rule(kSettleTolerance, kFold);
+// voltage, fold_voltage: the run's step and V_qs (0: the rule without the bound).
+Watched watch(const std::function<double(double)>& rate, double dt, double t_end,
+              double voltage = 0, double fold_voltage = 0) {
+  SettledAtRest rule(kSettleTolerance, kFold, fold_voltage);
   const double c = kElectrostatic / rate(0.0);
   Watched out;
   double x = 0;
   for (double t = dt; t <= t_end; t += dt) {
     const double v = rate(x);
     x += dt * v;
-    if (rule.at_step(t, x, v, c * v, kElectrostatic)) return {true, t, x};
+    if (rule.at_step(t, x, v, c * v, kElectrostatic, voltage)) return {true, t, x};
   }
   return out;
 }
@@ -77,4 +81,18 @@ TEST(SettledAtRest, UnderdampedExtremeIsNotAtRest) {
     settled = settled || rule.at_step(t, x_s * (1 - std::cos(w * t)), x_s * w * std::sin(w * t),
                                       0.0, kElectrostatic);
   EXPECT_FALSE(settled);
+}
+
+TEST(SettledAtRest, NoRestAboveTheFoldVoltage) {
+  // mu = 2 (V / V_qs - 1) = 0.1 % of the initial rate: the film's share at the bottleneck is
+  // below s = 1 %, so the forces alone cannot tell the passage from a rest.
+  const double r0 = -1.0, mu = 1e-3, l = kFold * kFold / (1 - mu);
+  auto rate = [&](double x) { return r0 * (mu + (x - kFold) * (x - kFold) / l); };
+  const double v_qs = 50, v = v_qs * (1 + mu / 2);
+  EXPECT_TRUE(watch(rate, 1e-10, 2e-5).settled);
+  EXPECT_FALSE(watch(rate, 1e-10, 2e-5, v, v_qs).settled);
+  // Below V_qs the bound does not get in the way (the creep of the first test).
+  const double tau = 1e-6, x_s = 0.6 * kFold;
+  EXPECT_TRUE(watch([&](double x) { return (x_s - x) / tau; }, 1e-3 * tau, 50 * tau, 0.99 * v_qs,
+                    v_qs).settled);
 }
