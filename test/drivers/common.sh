@@ -22,3 +22,15 @@ expect_input_error() {
     fail "$name: exit $code, stderr: $(cat "$WORK/$name.err")"
   fi
 }
+
+# expect_json_run NAME TEXT ARGS...: the driver run with ARGS writes $WORK/NAME.h5 and its
+# --json summary $WORK/NAME.json, and exits 0 ("TEXT exits 0"; else the failure with stderr).
+expect_json_run() {
+  local name="$1" text="$2"
+  shift 2
+  if "$DRIVER" "$@" -o "$WORK/$name.h5" --json --quiet >"$WORK/$name.json" 2>"$WORK/err"; then
+    pass "$text exits 0"
+  else
+    fail "$text: $(cat "$WORK/err")"
+  fi
+}

@@ -16,12 +16,8 @@ source "$SRC/test/drivers/common.sh"
 
 for p in atm kPa; do
   pressure=$([ $p = atm ] && echo "1 atm" || echo "1 kPa")
-  if "$DRIVER" "$PLATE" --set "gas.pressure=$pressure" --set "pull_in.dynamic.voltages=[178 V]" \
-      -o "$WORK/$p.h5" --json --quiet >"$WORK/$p.json" 2>"$WORK/err"; then
-    pass "switch_plate at $pressure exits 0"
-  else
-    fail "switch_plate at $pressure: $(cat "$WORK/err")"
-  fi
+  expect_json_run "$p" "switch_plate at $pressure" "$PLATE" --set "gas.pressure=$pressure" \
+    --set "pull_in.dynamic.voltages=[178 V]"
 done
 if $PY - "$WORK/atm.json" "$WORK/kPa.json" <<'PY'
 import json, sys

@@ -21,12 +21,8 @@ SCENE=(--set gas.pressure=10atm --set actuation.gap=1.5um --set "mesh.cells=[20,
 source "$SRC/test/drivers/common.sh"
 
 for t in 50 1000; do
-  if "$DRIVER" "$CASE" "${SCENE[@]}" --set "pull_in.dynamic.end_time=$t us" -o "$WORK/t$t.h5" \
-      --json --quiet >"$WORK/t$t.json" 2>"$WORK/err"; then
-    pass "overdamped bisection, end_time $t us, exits 0"
-  else
-    fail "overdamped bisection, end_time $t us: $(cat "$WORK/err")"
-  fi
+  expect_json_run "t$t" "overdamped bisection, end_time $t us," "$CASE" "${SCENE[@]}" \
+    --set "pull_in.dynamic.end_time=$t us"
 done
 
 if $PY - "$WORK/t50.json" "$WORK/t1000.json" <<'PY'
