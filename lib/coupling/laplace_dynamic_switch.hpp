@@ -51,7 +51,8 @@ class LaplaceDynamicSwitch {
                        const LaplaceGapOptions& options = {});
 
   // A step voltage from rest to options.end_time, touch-down or (stop_at_turning) turning
-  // back. Uses end_time, contact_gap, stop_at_turning, output_interval (> 0: the history
+  // back, settling or passing the unstable equilibrium (with options.fold; step_voltage_run.hpp).
+  // Uses end_time, contact_gap, stop_at_turning, output_interval (> 0: the history
   // resampled at it, cubic Hermite in the control's deflection and velocity; else every
   // step), ida and tolerances (per-kind atols: displacement, velocity_rate).
   DynamicRun run(Real voltage, const DynamicOptions& options,
