@@ -58,9 +58,11 @@ void DistributedLinearization::setup(Real t, Real c_j, std::span<const Real> y,
   }
   ++setups_;
   if (schwarz_) system_.overlap_jacobian(t, c_j, y, yp, overlap_values_);  // collective
-  if (structure_) {  // K + c^2 M of the local rows
+  if (structure_) {  // (1 + c beta) K + c^2 M of the local rows (beta: the damping C = beta K)
     structure_->overlap_stiffness(t, y.subspan(0, structure_->owned_size()), overlap_values_);
     schur_c_ = c_j;
+    if (const Real beta = structure_->damping_time(); beta > 0)
+      for (Real& value : overlap_values_) value *= 1 + c_j * beta;
     for (std::size_t i = 0; i < overlap_diagonal_.size(); ++i)
       overlap_values_[overlap_diagonal_[i]] += c_j * c_j * overlap_mass_[i];
   }
@@ -103,7 +105,10 @@ void DistributedLinearization::apply(Real c_j, std::span<const Real> v, std::spa
 void DistributedLinearization::precondition(std::span<const Real> r, std::span<Real> z) {
   const Index n = system_.owned_size();
   if (structure_) {
-    // (K + c^2 M) dy = r_v + c M r_y on the overlap, then dv = c dy - r_y.
+    // (K + c^2 M) dy = r_v + c M r_y on the overlap, then dv = c dy - r_y. With damping the
+    // matrix is (1 + c beta) K + c^2 M and the right side lacks beta K r_y (a preconditioner:
+    // the Krylov iteration corrects it; r_y, the kinematic residual, is small after the first
+    // Newton iteration).
     const Index m = structure_->owned_size();
     for (Index i = 0; i < m; ++i) schur_work_[i] = r[m + i] + schur_c_ * owned_mass_[i] * r[i];
     structure_->exchange_ghosts(schur_work_);
