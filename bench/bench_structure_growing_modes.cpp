@@ -17,18 +17,36 @@
 #include <CLI/CLI.hpp>
 #include <Eigen/Eigenvalues>
 #include <complex>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "bench_support.hpp"
 #include "coupling/immersed_switch_study.hpp"
 #include "io/case_file.hpp"
+#include "physics/elasticity/kelvin_voigt_modes.hpp"
 
 using namespace rfmems;
 
 namespace {
 
+// The smallest beta (to 1 %) with every mode decaying: damped_growth <= 0 for all lambda.
+Real required_damping_time(const Eigen::VectorXcd& lambdas) {
+  auto all_decay = [&](Real beta) {
+    for (Index i = 0; i < lambdas.size(); ++i)
+      if (kelvin_voigt_growth_rate(lambdas[i], beta) > 1e-9 * std::sqrt(std::abs(lambdas[i])))
+        return false;
+    return true;
+  };
+  if (all_decay(0)) return 0;
+  Real high = 1e-15;
+  while (!all_decay(high)) high *= 2;
+  Real low = high / 2;
+  while (high - low > 0.01 * high) (all_decay(0.5 * (low + high)) ? high : low) = 0.5 * (low + high);
+  return high;
+}
+
 nlohmann::json growth(const std::string& name, const Eigen::MatrixXd& K,
-                      const std::vector<Real>& mass) {
+                      const std::vector<Real>& mass, Real beta) {
   Eigen::VectorXd inverse_mass(K.rows());
   for (Index i = 0; i < K.rows(); ++i) inverse_mass[i] = 1 / mass[i];
   const Eigen::EigenSolver<Eigen::MatrixXd> es(inverse_mass.asDiagonal() * K);
@@ -54,10 +72,24 @@ nlohmann::json growth(const std::string& name, const Eigen::MatrixXd& K,
                        {"frequency", modes[k].omega},
                        {"cell", modes[k].cell},
                        {"component", modes[k].component}});
+  // With the damping C = beta K: the fastest rate over all modes (< 0: every mode decays),
+  // and the damping ratio of the slowest mode (the first bending mode).
+  Real damped = -std::numeric_limits<Real>::infinity();
+  Index slowest = 0;
+  for (Index i = 0; i < K.rows(); ++i) {
+    damped = std::max(damped, kelvin_voigt_growth_rate(es.eigenvalues()[i], beta));
+    if (std::abs(es.eigenvalues()[i]) < std::abs(es.eigenvalues()[slowest])) slowest = i;
+  }
+  const Real omega_1 = std::sqrt(std::abs(es.eigenvalues()[slowest]));
   return {{"operator", name},
           {"asymmetry", (K - K.transpose()).norm() / K.norm()},
           {"complex_eigenvalues", complex_eigenvalues},
-          {"fastest_growing", fastest}};
+          {"fastest_growing", fastest},
+          {"required_damping_time", required_damping_time(es.eigenvalues())},
+          {"damping_time", beta},
+          {"damped_fastest_rate", damped},
+          {"first_frequency", omega_1},
+          {"first_damping_ratio", beta * omega_1 / 2}};
 }
 
 }  // namespace
@@ -70,6 +102,9 @@ int main(int argc, char** argv) {
   app.add_option("case", path)->required();
   app.add_option("--set", sets, "key=value overrides");
   app.add_option("--voltage", voltage);
+  bool all_degrees = true, with_load = true;
+  app.add_flag("!--case-only", all_degrees, "only the case's reconstruction degree");
+  app.add_flag("!--no-load", with_load, "skip K - J");
   CLI11_PARSE(app, argc, argv);
   sets.push_back("gas.model=none");
 
@@ -79,12 +114,16 @@ int main(int argc, char** argv) {
   ElasticityOperator& op = *c.beam->op;
   const std::vector<Real> mass = op.mass_diagonal();
 
-  const Eigen::MatrixXd K = bench::dense_stiffness(op);
-  bench::emit(growth("case", K, mass));
-  for (int degree : {1, 2, 3}) {
-    ElasticityOperator other(op.mesh(), op.material(), op.boundaries(), op.body_force(), degree);
-    bench::emit(growth("degree " + std::to_string(degree), bench::dense_stiffness(other), mass));
-  }
+  const Real beta = op.damping_time();
+  const Eigen::MatrixXd K = dense_stiffness(op);
+  bench::emit(growth("case", K, mass, beta));
+  if (all_degrees)
+    for (int degree : {1, 2, 3}) {
+      ElasticityOperator other(op.mesh(), op.material(), op.boundaries(), op.body_force(), degree);
+      bench::emit(
+          growth("degree " + std::to_string(degree), dense_stiffness(other), mass, beta));
+    }
+  if (!with_load) return 0;
   const Index n = op.size();
   const Real delta = 1e-4 * c.scene->rest_gap();
   Eigen::MatrixXd J(n, n);
@@ -97,7 +136,7 @@ int main(int argc, char** argv) {
     u[j] = 0;
     for (Index i = 0; i < n; ++i) J(i, j) = (up[i] - down[i]) / (2 * delta);
   }
-  nlohmann::json coupled = growth("case, K - J", K - J, mass);
+  nlohmann::json coupled = growth("case, K - J", K - J, mass, beta);
   coupled["voltage"] = voltage;
   coupled["load_asymmetry"] = (J - J.transpose()).norm() / J.norm();
   coupled["load_over_stiffness"] = J.norm() / K.norm();

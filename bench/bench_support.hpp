@@ -12,6 +12,7 @@
 
 #include <Eigen/Dense>
 
+#include "core/dense_stiffness.hpp"
 #include "core/system_operator.hpp"
 #include "solvers/ida_integrator.hpp"
 
@@ -50,19 +51,6 @@ void add_integrator_stats(J& j, const IntegratorStats& s) {
   j["newton_iters"] = s.newton_iters;
   j["error_test_fails"] = s.error_test_fails;
   j["newton_fails"] = s.newton_fails;
-}
-
-// The stiffness dR/dy of a linear operator at y = 0, as a dense matrix (modal references).
-inline Eigen::MatrixXd dense_stiffness(SecondOrderOperator& op) {
-  const Index n = op.size();
-  const CsrPattern& pattern = op.stiffness_pattern();
-  std::vector<double> zero(n, 0.0), values(pattern.nnz(), 0.0);
-  op.stiffness(0, zero, values);
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
-  for (Index i = 0; i < n; ++i)
-    for (Index k = pattern.row_ptr[i]; k < pattern.row_ptr[i + 1]; ++k)
-      K(i, pattern.col_idx[k]) = values[k];
-  return K;
 }
 
 // max_k |w_k - reference(t_k)| / max_k |reference(t_k)| over a run's (t, w) samples.

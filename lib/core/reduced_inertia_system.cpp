@@ -1,5 +1,8 @@
 #include "core/reduced_inertia_system.hpp"
 
+#include <algorithm>
+#include <utility>
+
 #include <fmt/format.h>
 
 #include "core/error.hpp"
@@ -36,14 +39,31 @@ ReducedInertiaSystem::ReducedInertiaSystem(SecondOrderOperator& op, std::vector<
     }
     pattern_.row_ptr.push_back(pattern_.nnz());
   }
+  // Damping C = beta K: row v_i also reaches the velocities of row i's stiffness columns
+  // (every component inertial), after the stiffness columns (all < n), its diagonal sharing
+  // the mass's position.
+  beta_ = op_.damping_time();
+  if (beta_ > 0 && static_cast<Index>(inertial_.size()) != n_)
+    throw InputError("reduced inertia: damping needs every component inertial");
+  if (beta_ > 0) damping_position_.assign(k.nnz(), -1);
   for (Index i : inertial_) {
     copy_stiffness_row(velocity_[i], i);
-    mass_position_.push_back(pattern_.nnz());
-    pattern_.col_idx.push_back(velocity_[i]);  // after the stiffness columns (all < n)
+    // (velocity column, stiffness entry of its damping or -1), the mass's column included.
+    std::vector<std::pair<Index, Index>> v_columns{{velocity_[i], -1}};
+    if (beta_ > 0)
+      for (Index p = k.row_ptr[i]; p < k.row_ptr[i + 1]; ++p)
+        if (k.col_idx[p] != i) v_columns.emplace_back(velocity_[k.col_idx[p]], p);
+    std::sort(v_columns.begin(), v_columns.end());
+    for (const auto& [column, p] : v_columns) {
+      (p >= 0 ? damping_position_[p] : mass_position_.emplace_back()) = pattern_.nnz();
+      pattern_.col_idx.push_back(column);
+    }
+    damping_diagonal_.push_back(beta_ > 0 ? k.find(i, i) : -1);
     pattern_.row_ptr.push_back(pattern_.nnz());
   }
   k_values_.resize(k.nnz());
   r_.resize(n_);
+  if (beta_ > 0) v_.resize(n_);
 }
 
 std::vector<Real> ReducedInertiaSystem::differential_components() const {
@@ -56,6 +76,10 @@ std::vector<Real> ReducedInertiaSystem::differential_components() const {
 void ReducedInertiaSystem::residual(Real t, std::span<const Real> y, std::span<const Real> yp,
                                     std::span<Real> r) {
   op_.internal_residual(t, y.subspan(0, n_), r_);
+  if (beta_ > 0) {
+    for (Index i = 0; i < n_; ++i) v_[i] = y[velocity_[i]];
+    op_.add_damping_force(t, v_, r_);
+  }
   for (Index i = 0; i < n_; ++i) {
     const Index v = velocity_[i];
     if (v < 0) {
@@ -88,6 +112,13 @@ void ReducedInertiaSystem::jacobian(Real t, Real c_j, std::span<const Real> y,
   }
   for (std::size_t k_ = 0; k_ < inertial_.size(); ++k_)
     values[mass_position_[k_]] = c_j * mass_[inertial_[k_]];
+  if (beta_ > 0) {
+    for (std::size_t p = 0; p < damping_position_.size(); ++p)
+      if (damping_position_[p] >= 0) values[damping_position_[p]] = beta_ * k_values_[p];
+    for (std::size_t k_ = 0; k_ < inertial_.size(); ++k_)
+      if (damping_diagonal_[k_] >= 0)
+        values[mass_position_[k_]] += beta_ * k_values_[damping_diagonal_[k_]];
+  }
 }
 
 std::vector<Real> ReducedInertiaSystem::consistent_derivative(Real t, std::span<const Real> y) {

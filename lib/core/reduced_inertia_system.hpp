@@ -2,14 +2,15 @@
 // components is neglected: they become quasi-static (algebraic) unknowns. For IDA.
 //
 //   inertial i      F_i       = y_i' - v_k           (differential)
-//                   F_{n+k}   = M_i v_k' + R_i(t, y)  (differential)
+//                   F_{n+k}   = M_i v_k' + (C v)_i + R_i(t, y)  (differential)
 //   quasi-static i  F_i       = R_i(t, y)             (algebraic, IDASetId 0)
 //
 // State Y = [y (n); v (m)], one velocity per inertial component, k numbering them in order.
 // Jacobian rows: inertial i [c_j at i, -1 at n+k]; quasi-static i the stiffness row i;
-// n+k the stiffness row i plus c_j M_i at n+k. Index 1 as long as the stiffness block of
-// the quasi-static components is non-singular (true for the plate's rotations: bending plus
-// shear).
+// n+k the stiffness row i plus c_j M_i at n+k (and with the operator's damping C = beta K,
+// which needs every component inertial, beta times the stiffness row i in the v columns).
+// Index 1 as long as the stiffness block of the quasi-static components is non-singular
+// (true for the plate's rotations: bending plus shear).
 //
 // Why (the Mindlin plate): rotary inertia rho h^3/12 puts a thickness-shear branch at
 // omega = sqrt(12 k G / rho) / h (5.5e9 rad/s for a 2 um steel plate, 1e4 times the first
@@ -55,7 +56,11 @@ class ReducedInertiaSystem : public SystemOperator {
   CsrPattern pattern_;
   std::vector<Index> row_stiffness_offset_;  // per row: where the stiffness row starts, or -1
   std::vector<Index> mass_position_;         // per velocity: value index of c_j M_i
-  std::vector<Real> k_values_, r_;
+  Real beta_ = 0;                            // the operator's damping C = beta K
+  std::vector<Index> damping_position_;      // per stiffness entry: value index of beta K in
+                                             // the v columns (-1: the diagonal, at the mass's)
+  std::vector<Index> damping_diagonal_;      // per velocity: the stiffness entry of (i, i)
+  std::vector<Real> k_values_, r_, v_;
 };
 
 }  // namespace rfmems

@@ -28,7 +28,7 @@ void StaticSystem::jacobian(Real t, Real, std::span<const Real> y, std::span<con
 }
 
 FirstOrderSystem::FirstOrderSystem(SecondOrderOperator& op)
-    : op_(op), layout_(op.stiffness_pattern(), op.mass_diagonal()),
+    : op_(op), layout_(op.stiffness_pattern(), op.mass_diagonal(), op.damping_time()),
       k_values_(op.stiffness_pattern().nnz()) {}
 
 std::vector<Real> FirstOrderSystem::differential_components() const {
@@ -39,6 +39,7 @@ void FirstOrderSystem::residual(Real t, std::span<const Real> y, std::span<const
                                 std::span<Real> r) {
   const Index n = layout_.n();
   op_.internal_residual(t, y.subspan(0, n), r.subspan(n, n));
+  if (layout_.damping_time() > 0) op_.add_damping_force(t, y.subspan(n, n), r.subspan(n, n));
   layout_.complete_residual(y, yp, r);
 }
 

@@ -22,8 +22,8 @@ class StaticSystem : public SystemOperator {
 };
 
 // First-order form for IDA, state Y = [y; v] (n + n), as core/first_order_layout.hpp:
-//   F_y = y' - v,   F_v = M v' + R(t, y).
-// Jacobian rows y: [c_j I, -I]; rows v: [dR/dy, c_j M].
+//   F_y = y' - v,   F_v = M v' + C v + R(t, y).
+// Jacobian rows y: [c_j I, -I]; rows v: [dR/dy, c_j M + C].
 class FirstOrderSystem : public SystemOperator {
  public:
   explicit FirstOrderSystem(SecondOrderOperator& op);

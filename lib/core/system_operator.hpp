@@ -44,9 +44,10 @@ class SystemOperator {
   virtual void preconditioner_solve(std::span<const Real> /*r*/, std::span<Real> /*z*/) {}
 };
 
-// A structural system M y'' + R(t, y) = 0 with a diagonal (lumped FV) mass matrix. The
-// adaptors in core/structural_systems.hpp turn it into a static system R(t, y) = 0 for KINSOL
-// or the first-order system [y' - v; M v' + R(t, y)] for IDA.
+// A structural system M y'' + C y' + R(t, y) = 0 with a diagonal (lumped FV) mass matrix and
+// an optional damping C (most operators: none). The adaptors in core/structural_systems.hpp turn
+// it into a static system R(t, y) = 0 for KINSOL or the first-order system
+// [y' - v; M v' + C v + R(t, y)] for IDA.
 class SecondOrderOperator {
  public:
   virtual ~SecondOrderOperator() = default;
@@ -56,6 +57,13 @@ class SecondOrderOperator {
   // Values of dR/dy in stiffness_pattern() order.
   virtual void stiffness(Real t, std::span<const Real> y, std::span<Real> values) = 0;
   virtual std::vector<Real> mass_diagonal() const = 0;
+
+  // Optional stiffness-proportional (Kelvin-Voigt) damping C = beta K, K = dR/dy at
+  // homogeneous boundary data: the structure's equation becomes M y'' + C y' + R(t, y) = 0.
+  // beta [s]; 0: undamped (the default), and add_damping_force is then never called.
+  virtual Real damping_time() const { return 0; }
+  // r += C v for the velocities v.
+  virtual void add_damping_force(Real /*t*/, std::span<const Real> /*v*/, std::span<Real> /*r*/) {}
 };
 
 }  // namespace rfmems

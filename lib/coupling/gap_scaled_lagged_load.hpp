@@ -55,6 +55,10 @@ class GapScaledLaggedLoad : public SecondOrderOperator {
   const CsrPattern& stiffness_pattern() const override { return beam_.stiffness_pattern(); }
   void stiffness(Real t, std::span<const Real> u, std::span<Real> values) override;
   std::vector<Real> mass_diagonal() const override { return beam_.mass_diagonal(); }
+  Real damping_time() const override { return beam_.damping_time(); }
+  void add_damping_force(Real t, std::span<const Real> v, std::span<Real> r) override {
+    beam_.add_damping_force(t, v, r);
+  }
 
  private:
   // (g_ref / g)^2 of cell c; a gap below closed_fraction g0 is a failed trial state (IDA

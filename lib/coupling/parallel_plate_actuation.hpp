@@ -68,6 +68,10 @@ class ParallelPlateActuation : public SecondOrderOperator {
   const CsrPattern& stiffness_pattern() const override { return pattern_; }
   void stiffness(Real t, std::span<const Real> y, std::span<Real> values) override;
   std::vector<Real> mass_diagonal() const override { return structure_.mass_diagonal(); }
+  Real damping_time() const override { return structure_.damping_time(); }
+  void add_damping_force(Real t, std::span<const Real> v, std::span<Real> r) override {
+    structure_.add_damping_force(t, v, r);
+  }
 
   // d(residual)/d(V^2) = sum_e A_e sum_q a_q (p1(g_q) - p_c(g_q)/V^2) n_e (the force per V^2,
   // with the residual's sign).

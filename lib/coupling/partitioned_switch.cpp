@@ -40,6 +40,10 @@ class GasLoadedStructure : public SecondOrderOperator {
     act_.stiffness(t, y, values);
   }
   std::vector<Real> mass_diagonal() const override { return act_.mass_diagonal(); }
+  Real damping_time() const override { return act_.damping_time(); }
+  void add_damping_force(Real t, std::span<const Real> v, std::span<Real> r) override {
+    act_.add_damping_force(t, v, r);
+  }
 
  private:
   ParallelPlateActuation& act_;

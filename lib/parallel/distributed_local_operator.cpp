@@ -10,8 +10,9 @@ DistributedLocalOperator::DistributedLocalOperator(const Mesh& global, const Com
     : comm_(comm), block_(block), n_global_(global.n_cells()) {
   mesh_ = std::make_unique<DistributedMesh>(distribute_mesh(global, comm, ghost_layers));
   n_owned_ = mesh_->local.mesh.n_owned_cells();
+  if (n_owned_ > 0) local_ = build(mesh_->local);
+  damping_time_ = comm_.max(local_ ? local_->damping_time() : 0.0);  // collective
   if (n_owned_ == 0) return;  // an empty part (more ranks than cells): no rows, no columns
-  local_ = build(mesh_->local);
   // Owned cells come first, so their rows are the first rows of the local pattern.
   const CsrPattern& full = local_->stiffness_pattern();
   const Index rows = owned_size();
@@ -33,6 +34,15 @@ void DistributedLocalOperator::internal_residual(Real t, std::span<const Real> u
   if (!local_) return;
   local_->internal_residual(t, u_local_, r_local_);
   std::copy(r_local_.begin(), r_local_.begin() + owned_size(), r.begin());
+}
+
+void DistributedLocalOperator::add_damping_force(Real t, std::span<const Real> v,
+                                                 std::span<Real> r) {
+  load(v);  // collective
+  if (!local_) return;
+  std::fill(r_local_.begin(), r_local_.end(), 0.0);
+  local_->add_damping_force(t, u_local_, r_local_);
+  for (Index i = 0; i < owned_size(); ++i) r[i] += r_local_[i];
 }
 
 void DistributedLocalOperator::stiffness(Real t, std::span<const Real> u, std::span<Real> values) {

@@ -44,6 +44,8 @@ class DistributedLocalOperator : public DistributedSecondOrderOperator {
   std::vector<Real> overlap_mass_diagonal() const override {
     return local_ ? local_->mass_diagonal() : std::vector<Real>{};
   }
+  Real damping_time() const override { return damping_time_; }
+  void add_damping_force(Real t, std::span<const Real> v, std::span<Real> r) override;
   std::vector<Real> gather_to_root(std::span<const Real> owned) const override;
   std::vector<Real> owned_part(std::span<const Real> global) const override;
 
@@ -56,6 +58,7 @@ class DistributedLocalOperator : public DistributedSecondOrderOperator {
   Communicator comm_;
   int block_;
   Index n_owned_ = 0, n_global_ = 0;
+  Real damping_time_ = 0;  // the local operator's, the same on every rank
   std::unique_ptr<DistributedMesh> mesh_;  // on the heap: local_ keeps a reference to it
   std::unique_ptr<SecondOrderOperator> local_;
   CsrPattern owned_pattern_;

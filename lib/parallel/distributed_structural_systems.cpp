@@ -20,7 +20,8 @@ void DistributedStaticSystem::jacobian(Real t, Real, std::span<const Real> y, st
 
 DistributedFirstOrderSystem::DistributedFirstOrderSystem(DistributedSecondOrderOperator& op)
     : op_(op),
-      layout_(op.stiffness_pattern(), op.mass_diagonal()),
+      layout_(op.stiffness_pattern(), op.mass_diagonal(), op.damping_time(),
+              op.local_columns() - op.owned_size()),
       n_ghost_(op.local_columns() - op.owned_size()),
       k_values_(op.stiffness_pattern().nnz()),
       column_work_(op.local_columns()) {}
@@ -33,6 +34,7 @@ void DistributedFirstOrderSystem::residual(Real t, std::span<const Real> y,
                                            std::span<const Real> yp, std::span<Real> r) {
   const Index n = layout_.n();
   op_.internal_residual(t, y.subspan(0, n), r.subspan(n, n));
+  if (layout_.damping_time() > 0) op_.add_damping_force(t, y.subspan(n, n), r.subspan(n, n));
   layout_.complete_residual(y, yp, r);
 }
 
@@ -43,11 +45,17 @@ void DistributedFirstOrderSystem::jacobian(Real t, Real c_j, std::span<const Rea
 }
 
 void DistributedFirstOrderSystem::exchange_ghosts(std::span<Real> x) const {
-  // The structure's columns are [y owned; y ghosts]: exchange those, v has no ghosts.
+  // The structure's columns are [y owned; y ghosts]: exchange those; v has ghosts (after the
+  // y ghosts) only with damping, C v reaching the neighbours' velocities.
   const Index n = layout_.n();
   std::copy(x.begin(), x.begin() + n, column_work_.begin());
   op_.exchange_ghosts(column_work_);
   std::copy(column_work_.begin() + n, column_work_.end(), x.begin() + 2 * n);
+  if (layout_.damping_time() > 0) {
+    std::copy(x.begin() + n, x.begin() + 2 * n, column_work_.begin());
+    op_.exchange_ghosts(column_work_);
+    std::copy(column_work_.begin() + n, column_work_.end(), x.begin() + 2 * n + n_ghost_);
+  }
 }
 
 }  // namespace rfmems

@@ -33,14 +33,17 @@ class DistributedStaticSystem : public DistributedSystem {
 
 // First-order form for IDA, owned state Y = [y; v] (n + n, this rank's owned unknowns), as
 // core/first_order_layout.hpp:
-//   F_y = y' - v,   F_v = M v' + R(t, y).
-// Local columns: [y owned; v owned; y ghosts] (only R reaches ghosts).
+//   F_y = y' - v,   F_v = M v' + C v + R(t, y).
+// Local columns: [y owned; v owned; y ghosts] (only R reaches ghosts), and the v ghosts after
+// them when the operator has damping C.
 class DistributedFirstOrderSystem : public DistributedSystem {
  public:
   explicit DistributedFirstOrderSystem(DistributedSecondOrderOperator& op);
   const Communicator& communicator() const override { return op_.communicator(); }
   Index owned_size() const override { return 2 * layout_.n(); }
-  Index local_columns() const override { return 2 * layout_.n() + n_ghost_; }
+  Index local_columns() const override {
+    return 2 * layout_.n() + (layout_.damping_time() > 0 ? 2 : 1) * n_ghost_;
+  }
   std::vector<Real> differential_components() const override;
   void residual(Real t, std::span<const Real> y, std::span<const Real> yp,
                 std::span<Real> r) override;

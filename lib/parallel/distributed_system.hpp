@@ -76,6 +76,10 @@ class DistributedSecondOrderOperator {
                                  std::span<Real> /*values*/) {}
   // The lumped mass of all local rows (owned and ghost), with overlap_stiffness_pattern().
   virtual std::vector<Real> overlap_mass_diagonal() const { return {}; }
+  // Optional damping C = beta K, as SecondOrderOperator's (the same beta on every rank):
+  // owned rows r += C v (collective).
+  virtual Real damping_time() const { return 0; }
+  virtual void add_damping_force(Real /*t*/, std::span<const Real> /*v*/, std::span<Real> /*r*/) {}
   // The owned values of every rank in global order on the root (empty elsewhere), and the
   // reverse: the owned part of a global vector known on every rank.
   virtual std::vector<Real> gather_to_root(std::span<const Real> owned) const = 0;

@@ -26,6 +26,7 @@ DistributedLinearization::DistributedLinearization(DistributedSystem& system,
     owned_mass_ = structure_->mass_diagonal();
     overlap_mass_ = structure_->overlap_mass_diagonal();
     schur_work_.resize(structure_->local_columns());
+    if (structure_->damping_time() > 0) damping_work_.resize(structure_->local_columns());
   }
   const CsrPattern& full = system_.jacobian_pattern();
   const Index n = system_.owned_size();
@@ -58,9 +59,13 @@ void DistributedLinearization::setup(Real t, Real c_j, std::span<const Real> y,
   }
   ++setups_;
   if (schwarz_) system_.overlap_jacobian(t, c_j, y, yp, overlap_values_);  // collective
-  if (structure_) {  // K + c^2 M of the local rows
+  if (structure_) {  // (1 + c beta) K + c^2 M of the local rows (beta: the damping C = beta K)
     structure_->overlap_stiffness(t, y.subspan(0, structure_->owned_size()), overlap_values_);
     schur_c_ = c_j;
+    if (const Real beta = structure_->damping_time(); beta > 0) {
+      overlap_stiffness_ = overlap_values_;  // K, for the right side's beta K r_y
+      for (Real& value : overlap_values_) value *= 1 + c_j * beta;
+    }
     for (std::size_t i = 0; i < overlap_diagonal_.size(); ++i)
       overlap_values_[overlap_diagonal_[i]] += c_j * c_j * overlap_mass_[i];
   }
@@ -103,9 +108,18 @@ void DistributedLinearization::apply(Real c_j, std::span<const Real> v, std::spa
 void DistributedLinearization::precondition(std::span<const Real> r, std::span<Real> z) {
   const Index n = system_.owned_size();
   if (structure_) {
-    // (K + c^2 M) dy = r_v + c M r_y on the overlap, then dv = c dy - r_y.
+    // (K + c^2 M) dy = r_v + c M r_y on the overlap, then dv = c dy - r_y. With damping
+    // C = beta K: ((1 + c beta) K + c^2 M) dy = r_v + (c M + beta K) r_y.
     const Index m = structure_->owned_size();
     for (Index i = 0; i < m; ++i) schur_work_[i] = r[m + i] + schur_c_ * owned_mass_[i] * r[i];
+    if (const Real beta = structure_->damping_time(); beta > 0) {
+      std::copy(r.begin(), r.begin() + m, damping_work_.begin());
+      structure_->exchange_ghosts(damping_work_);
+      const CsrPattern& p = *structure_->overlap_stiffness_pattern();
+      for (Index i = 0; i < m; ++i)  // the owned rows come first in the overlap
+        for (Index e = p.row_ptr[i]; e < p.row_ptr[i + 1]; ++e)
+          schur_work_[i] += beta * overlap_stiffness_[e] * damping_work_[p.col_idx[e]];
+    }
     structure_->exchange_ghosts(schur_work_);
     if (lu_) lu_->solve(schur_work_);
     for (Index i = 0; i < m; ++i) {

@@ -22,7 +22,9 @@
 // For a first-order structural system [y' - v; M v' + R] (DistributedSystem::second_order)
 // with J = [c I, -I; K, c M], eliminating dv = c dy - r_y leaves (K + c^2 M) dy = r_v + c M r_y:
 // the Schur variant solves that by restricted additive Schwarz on the structure's overlap
-// (K and M of the local rows, c of the last setup) and recovers dv.
+// (K and M of the local rows, c of the last setup) and recovers dv. With the structure's
+// damping C = beta K (J's v block c M + beta K) it is ((1 + c beta) K + c^2 M) dy =
+// r_v + (c M + beta K) r_y.
 #pragma once
 #include <memory>
 #include <span>
@@ -60,6 +62,7 @@ class DistributedLinearization {
   bool schwarz_;
   DistributedSecondOrderOperator* structure_ = nullptr;  // the Schur variant's
   std::vector<Real> overlap_values_, owned_mass_, overlap_mass_, schur_work_;
+  std::vector<Real> overlap_stiffness_, damping_work_;  // with damping: K, and r_y with ghosts
   std::vector<Index> overlap_diagonal_;
   Real schur_c_ = 0;
   std::vector<Real> a_, b_;  // J(0) and J(1) - J(0) on jacobian_pattern()

@@ -14,9 +14,11 @@ std::unique_ptr<SecondOrderOperator> local_elasticity(const ElasticityOperator& 
     boundaries.push_back(g >= 0 ? global.boundaries()[g]
                                 : ElasticityBoundary{ElasticityBoundary::Kind::Fixed, {}});
   }
-  return std::make_unique<ElasticityOperator>(part.mesh, global.material(), std::move(boundaries),
-                                              global.body_force(),
-                                              global.requested_reconstruction_degree());
+  auto local = std::make_unique<ElasticityOperator>(part.mesh, global.material(),
+                                                    std::move(boundaries), global.body_force(),
+                                                    global.requested_reconstruction_degree());
+  local->set_damping_time(global.damping_time());  // the global mesh's beta, not the part's
+  return local;
 }
 
 }  // namespace

@@ -1,6 +1,9 @@
 #include "physics/elasticity/elasticity_operator.hpp"
 
 #include <fmt/format.h>
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <set>
 
 #include "core/error.hpp"
@@ -110,14 +113,20 @@ Vec3 ElasticityOperator::point_value(const StencilPoint& p, Real t, std::span<co
   return point_map(p) * cell_u(u, p.cell);
 }
 
-void ElasticityOperator::compute_point_deltas(Real t, std::span<const Real> u) const {
+void ElasticityOperator::compute_point_deltas(Real t, std::span<const Real> u,
+                                              bool homogeneous) const {
   for (Index c = 0; c < mesh_.n_cells(); ++c) {
     const Vec3 uc = cell_u(u, c);
     auto points = reconstruction_->points(c);
     Vec3* delta = point_delta_.data() + point_offset_[c];
-    for (std::size_t j = 0; j < points.size(); ++j)
-      delta[j] = (points[j].kind == StencilPoint::Kind::Cell ? cell_u(u, points[j].cell)
-                                                             : point_value(points[j], t, u)) - uc;
+    for (std::size_t j = 0; j < points.size(); ++j) {
+      const StencilPoint& p = points[j];
+      const Vec3 v = p.kind == StencilPoint::Kind::Cell ? cell_u(u, p.cell)
+                     : homogeneous && p.kind == StencilPoint::Kind::BoundaryValue
+                         ? Vec3(Vec3::Zero())
+                         : point_value(p, t, u);
+      delta[j] = v - uc;
+    }
   }
 }
 
@@ -147,10 +156,27 @@ Vec3 ElasticityOperator::face_force(const Mat3& G, const Vec3& S) const {
 
 void ElasticityOperator::internal_residual(Real t, std::span<const Real> u, std::span<Real> r) {
   std::fill(r.begin(), r.end(), 0.0);
+  add_internal_forces(t, u, false, 1.0, r);
+}
+
+void ElasticityOperator::add_damping_force(Real t, std::span<const Real> v, std::span<Real> r) {
+  if (damping_time_ > 0) add_internal_forces(t, v, true, damping_time_, r);
+}
+
+Real ElasticityOperator::grid_damping_time(Real zeta) const {
+  if (!(material_.rho > 0) || !(zeta > 0)) return 0;
+  Real h = std::numeric_limits<Real>::infinity();
+  for (Index f = 0; f < mesh_.n_faces(); ++f)
+    h = std::min(h, mesh_.face_neighbour(f) >= 0 ? face_d_[f] : 2 * face_d_[f]);
+  return zeta * h / std::sqrt((lambda_ + 2 * mu_) / material_.rho);
+}
+
+void ElasticityOperator::add_internal_forces(Real t, std::span<const Real> u, bool homogeneous,
+                                             Real scale, std::span<Real> r) const {
   auto add = [&](Index c, const Vec3& v) {
-    for (int k = 0; k < dim_; ++k) r[c * dim_ + k] += v[k];
+    for (int k = 0; k < dim_; ++k) r[c * dim_ + k] += scale * v[k];
   };
-  compute_point_deltas(t, u);
+  compute_point_deltas(t, u, homogeneous);
   Vec3 vp, vn;
   Mat3 gp, gn;
   for (Index f = 0; f < mesh_.n_faces(); ++f) {
@@ -168,18 +194,19 @@ void ElasticityOperator::internal_residual(Real t, std::span<const Real> u, std:
     }
     const ElasticityBoundary& bc = boundaries_[mesh_.face_patch(f)];
     if (bc.kind == Kind::Traction) {
-      add(p, -bc.at(mesh_.face_centroid(f), t) * S.norm());
+      if (!homogeneous) add(p, -bc.at(mesh_.face_centroid(f), t) * S.norm());
       continue;
     }
     evaluate_side(side(f, 0), u, vp, gp);
     if (bc.kind == Kind::Fixed) {
-      add(p, -face_force(gp + (bc.at(mesh_.face_centroid(f), t) - vp) * inv_d * e.transpose(), S));
+      const Vec3 ub = homogeneous ? Vec3(Vec3::Zero()) : bc.at(mesh_.face_centroid(f), t);
+      add(p, -face_force(gp + (ub - vp) * inv_d * e.transpose(), S));
     } else {  // symmetry: no normal displacement, only the normal force is transmitted
       Mat3 nn = normal_projector(S);
       add(p, -(nn * face_force(gp - (nn * vp) * inv_d * e.transpose(), S)));
     }
   }
-  if (body_force_)
+  if (body_force_ && !homogeneous)
     for (Index c = 0; c < mesh_.n_cells(); ++c)
       add(c, -body_force_(mesh_.cell_centroid(c), t) * mesh_.cell_volume(c));
 }

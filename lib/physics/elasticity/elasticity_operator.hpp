@@ -57,6 +57,19 @@ class ElasticityOperator : public SecondOrderOperator {
   void stiffness(Real t, std::span<const Real> u, std::span<Real> values) override;
   std::vector<Real> mass_diagonal() const override;
 
+  // Kelvin-Voigt damping sigma = C : (eps + beta eps'), i.e. C = beta K (the stiffness at
+  // homogeneous boundary data). Its purpose here is numerical: the cell-centred stiffness is
+  // not symmetric, and near clamped and free faces a few of its grid-scale modes form complex
+  // pairs that grow (docs/BENCHMARKS.md section 50); beta damps them at a rate beta omega^2 / 2,
+  // while the bending modes, 1e3-1e4 times slower, keep damping ratios beta omega / 2 ~ 1e-5.
+  Real damping_time() const override { return damping_time_; }
+  void set_damping_time(Real beta) { damping_time_ = beta; }
+  void add_damping_force(Real t, std::span<const Real> v, std::span<Real> r) override;
+  // The beta that gives damping ratio zeta at the grid's highest frequency omega_h = 2 c_p /
+  // h_min (P-wave speed c_p = sqrt((lambda + 2 mu) / rho), h_min the smallest distance between
+  // neighbouring centroids): beta = 2 zeta / omega_h. 0 without a density.
+  Real grid_damping_time(Real zeta) const;
+
   // Least-squares displacement gradient of every cell.
   std::vector<Mat3> cell_gradients(Real t, std::span<const Real> u) const;
   // Displacement at point x from the nearest cell's linear reconstruction.
@@ -95,8 +108,12 @@ class ElasticityOperator : public SecondOrderOperator {
   // Value of a stencil point and the matrix that maps its source cell's u to it.
   Vec3 point_value(const StencilPoint& p, Real t, std::span<const Real> u) const;
   Mat3 point_map(const StencilPoint& p) const;
-  // Fills point_delta_ with v_j - u_c for every stencil point of every cell.
-  void compute_point_deltas(Real t, std::span<const Real> u) const;
+  // Fills point_delta_ with v_j - u_c for every stencil point of every cell (homogeneous:
+  // prescribed boundary values taken as 0).
+  void compute_point_deltas(Real t, std::span<const Real> u, bool homogeneous = false) const;
+  // r += scale * R(t, u); homogeneous: without boundary data, tractions and body force (K u).
+  void add_internal_forces(Real t, std::span<const Real> u, bool homogeneous, Real scale,
+                           std::span<Real> r) const;
   // p_c(x_f) and grad p_c(x_f) for one face side (after compute_point_deltas).
   void evaluate_side(const FaceSide& s, std::span<const Real> u, Vec3& value,
                      Mat3& gradient) const;
@@ -124,6 +141,7 @@ class ElasticityOperator : public SecondOrderOperator {
   std::vector<Vec3> centroid_gradient_;     // parallel to the stencil points
   std::vector<Vec3> face_e_;                // unit vector P -> N (or P -> face centroid)
   std::vector<Real> face_d_;                // |d|
+  Real damping_time_ = 0;                   // beta of the Kelvin-Voigt damping
 };
 
 }  // namespace rfmems

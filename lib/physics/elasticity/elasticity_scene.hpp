@@ -8,6 +8,9 @@
 //     structure: plane              # plane (2D meshes, default there) | solid3d (3D meshes)
 //     hypothesis: plane_stress      # plane_stress (default) | plane_strain (plane) | 3d (solid3d)
 //     stress: coupled               # coupled (default) | segregated (static analyses only)
+//     reconstruction: default       # default (cubic 2D, quadratic 3D) | linear | quadratic | cubic
+//     grid_damping: 0.2             # damping ratio at the grid's highest frequency, in [0, 1]
+//                                   # (numerical Kelvin-Voigt damping; 0: none)
 //   boundaries:                     # one entry per mesh patch, no more, no fewer
 //     left:   {type: fixed}                                    # u = value (default 0)
 //     right:  {type: traction, value: [0, -1000 Pa], ramp: 0.02 s}
@@ -35,6 +38,9 @@
 namespace rfmems {
 
 enum class StressMethod { Coupled, Segregated };
+
+// The default model.grid_damping (docs/BENCHMARKS.md section 50).
+inline constexpr Real kGridDamping = 0.2;
 
 std::string to_string(StressMethod method);  // "coupled", "segregated"
 

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "../../support/jacobian_check.hpp"
+#include "core/reduced_inertia_system.hpp"
 #include "core/structural_systems.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/elasticity/elasticity_operator.hpp"
@@ -104,4 +105,56 @@ TEST(ElasticityJacobian, MatchesFiniteDifferences3DSkewedBox) {
   std::vector<double> yp(system.size(), 0.0);
   auto check = test_support::check_jacobian(system, 0.0, 0.0, y, yp, 1e-6);
   EXPECT_LT(check.relative(), 1e-6) << "max |J_fd - J| = " << check.max_abs_difference;
+}
+
+// Kelvin-Voigt damping C = beta K in both first-order forms (FirstOrderSystem,
+// ReducedInertiaSystem): the v rows' Jacobian c_j M + beta K, by finite differences. beta is
+// chosen so that beta K is comparable with c_j M (an error in either is visible).
+TEST(ElasticityJacobian, DampedTransientFormsMatchFiniteDifferences) {
+  BoxSpec spec;
+  spec.dim = 2;
+  spec.n[0] = 5;
+  spec.n[1] = 4;
+  Mesh mesh = make_structured_mesh(spec, distortion(0.05, 13));
+  LinearElastic steel{210e9, 0.25, 7800, Hypothesis::PlaneStress};
+  ElasticityOperator op(mesh, steel, mixed_boundaries(mesh),
+                        [](const Vec3&, double) { return Vec3(0, -1e4, 0); });
+  op.set_damping_time(1e-4);
+  FirstOrderSystem first_order(op);
+  ReducedInertiaSystem reduced(op, {});
+  for (SystemOperator* system : std::initializer_list<SystemOperator*>{&first_order, &reduced}) {
+    auto y = random_state(system->size(), 4);
+    auto yp = random_state(system->size(), 5);
+    auto check = test_support::check_jacobian(*system, 0.1, 2.5e4, y, yp, 1e-6);
+    EXPECT_LT(check.relative(), 1e-6) << "max |J_fd - J| = " << check.max_abs_difference;
+  }
+}
+
+// The damping force is beta K v with K the stiffness at homogeneous data: R(t, v) - R(t, 0)
+// for an operator with prescribed displacements, tractions and a body force (all of which the
+// damping must leave out).
+TEST(ElasticityJacobian, DampingForceIsBetaTimesTheStiffnessTimesTheVelocity) {
+  BoxSpec spec;
+  spec.dim = 2;
+  spec.n[0] = 6;
+  spec.n[1] = 3;
+  Mesh mesh = make_structured_mesh(spec, distortion(0.04, 17));
+  LinearElastic steel{200e9, 0.3, 7854, Hypothesis::PlaneStress};
+  ElasticityOperator op(mesh, steel, mixed_boundaries(mesh),
+                        [](const Vec3&, double) { return Vec3(3e4, -1e4, 0); });
+  const Real beta = 2.5e-9;
+  op.set_damping_time(beta);
+  const Index n = op.size();
+  auto v = random_state(n, 6);
+  std::vector<double> zero(n, 0.0), r_v(n), r_0(n), damping(n, 0.0);
+  op.internal_residual(0.7, v, r_v);
+  op.internal_residual(0.7, zero, r_0);
+  op.add_damping_force(0.7, v, damping);
+  double difference = 0, scale = 0;
+  for (Index i = 0; i < n; ++i) {
+    difference = std::max(difference, std::abs(damping[i] - beta * (r_v[i] - r_0[i])));
+    scale = std::max(scale, std::abs(damping[i]));
+  }
+  EXPECT_GT(scale, 0.0);
+  EXPECT_LT(difference, 1e-9 * scale);
 }
