@@ -235,7 +235,9 @@ void expect_cantilever_transient_equals_serial_ida(double damping_time) {
     EXPECT_LT(worst, 10 * options.rtol * amplitude);
   }
   // Eliminating v and solving K + c_j^2 M on the overlap: fewer iterations than block Jacobi.
-  if (damping_time == 0) EXPECT_LE(iterations[1], iterations[0]);
+  if (damping_time == 0) {
+    EXPECT_LE(iterations[1], iterations[0]);
+  }
 }
 
 }  // namespace
