@@ -6,7 +6,8 @@
 // gives s with real part |Im sqrt(lambda)| > 0 for one of each pair: a mode that grows from
 // round-off at that rate unless the integrator damps it.
 //
-// For the case (--set overrides as rfmems-pullin takes them), one JSON line per operator:
+// For the case (--set overrides as rfmems-pullin takes them; an immersed switch's beam, or the
+// FV elasticity structure of any other case, without the load), one JSON line per operator:
 // K of the case's reconstruction degree, of degrees 1-3, and K - J with the electrostatic
 // load's Jacobian at rest at --voltage (central differences, 1e-4 of the rest gap): |K - K^T| /
 // |K|, the number of complex eigenvalues, and the three fastest-growing modes: growth rate
@@ -18,11 +19,14 @@
 #include <Eigen/Eigenvalues>
 #include <complex>
 #include <limits>
+#include <optional>
 #include <nlohmann/json.hpp>
 
 #include "bench_support.hpp"
 #include "coupling/immersed_switch_study.hpp"
 #include "io/case_file.hpp"
+#include "physics/elasticity/elasticity_scene.hpp"
+#include "physics/structure/structure_from_case.hpp"
 #include "physics/elasticity/kelvin_voigt_modes.hpp"
 
 using namespace rfmems;
@@ -106,12 +110,27 @@ int main(int argc, char** argv) {
   app.add_flag("!--case-only", all_degrees, "only the case's reconstruction degree");
   app.add_flag("!--no-load", with_load, "skip K - J");
   CLI11_PARSE(app, argc, argv);
-  sets.push_back("gas.model=none");
-
-  const CaseFile file = CaseFile::load(path, sets);
   const std::string dir = path.substr(0, path.find_last_of('/') + 1);
-  ImmersedSwitchCase c = read_immersed_switch_case(file.root(), dir.empty() ? "." : dir);
-  ElasticityOperator& op = *c.beam->op;
+  // The immersed switch's beam, with its load; or any elasticity case's structure (no load).
+  const bool immersed = CaseFile::load(path, sets).root().has("immersed");
+  if (immersed) sets.push_back("gas.model=none");
+  const CaseFile file = CaseFile::load(path, sets);
+  std::optional<ImmersedSwitchCase> c;
+  std::unique_ptr<StructuralModel> structure;
+  ElasticityOperator* beam = nullptr;
+  if (immersed) {
+    c = read_immersed_switch_case(file.root(), dir.empty() ? "." : dir);
+    beam = c->beam->op.get();
+  } else {
+    structure = build_structure(file.root(), dir.empty() ? "." : dir, AnalysisType::Transient);
+    if (auto* scene = dynamic_cast<ElasticityScene*>(structure.get())) beam = scene->op.get();
+    if (!beam) {
+      std::cerr << path << ": the structure is not FV elasticity\n";
+      return 2;
+    }
+    with_load = false;
+  }
+  ElasticityOperator& op = *beam;
   const std::vector<Real> mass = op.mass_diagonal();
 
   const Real beta = op.damping_time();
@@ -125,14 +144,14 @@ int main(int argc, char** argv) {
     }
   if (!with_load) return 0;
   const Index n = op.size();
-  const Real delta = 1e-4 * c.scene->rest_gap();
+  const Real delta = 1e-4 * c->scene->rest_gap();
   Eigen::MatrixXd J(n, n);
   std::vector<Real> u(n, 0.0);
   for (Index j = 0; j < n; ++j) {
     u[j] = delta;
-    const std::vector<Real> up = c.scene->electrostatic_load(u, voltage).force;
+    const std::vector<Real> up = c->scene->electrostatic_load(u, voltage).force;
     u[j] = -delta;
-    const std::vector<Real> down = c.scene->electrostatic_load(u, voltage).force;
+    const std::vector<Real> down = c->scene->electrostatic_load(u, voltage).force;
     u[j] = 0;
     for (Index i = 0; i < n; ++i) J(i, j) = (up[i] - down[i]) / (2 * delta);
   }
