@@ -3,8 +3,9 @@
 # on a coarse mesh (46 x 4 beam, 101 x 31 background): a static solve at 50 V exits 0, writes
 # its file and a tip deflection within 10 % of the 185 x 11 scene's (-46.3 nm); the quasi-static
 # pull-in within 8 % of the distributed closed form (132.5 V); a short transient with the
-# Reynolds film inside the strong iteration (coupling.strong_gas); and the bad-input contract of
-# the immersed keys (one line naming file, key and value; exit 2; no result file).
+# Reynolds film inside the strong iteration (coupling.strong_gas); the dynamic bisection with
+# its early ends; and the bad-input contract of the immersed keys (one line naming file, key
+# and value; exit 2; no result file).
 #
 # Usage: bash test_immersed_switch_driver.sh <directory of rfmems-pullin> <source directory>
 set -uo pipefail
@@ -60,6 +61,26 @@ then
 else
   fail "strong_gas run: $(cat "$WORK/err")"
 fi
+
+# The dynamic bisection (no gas, to 2 V) with its early ends armed by the quasi-static curve:
+# runs past the unstable equilibrium end early, and V_dyn and the pull-in time are those of the
+# code without the rules (122.5 V, 2.172058 us on this coarse scene, BENCHMARKS 50).
+if "$DRIVER" "$CASE" "${COARSE[@]}" --set pull_in.dynamic.tolerance=2V -o "$WORK/dyn.h5" \
+    --json --quiet >"$WORK/dyn.json" 2>"$WORK/err" &&
+  $PY - "$WORK/dyn.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))["immersed"]["dynamic"]
+assert d["pull_in_voltage"] == 122.5 and d["not_pulling_in"] == 121.25, d
+assert abs(d["pull_in_time"] / 2.172058e-6 - 1) < 1e-4, d
+assert d["past_fold_runs"] >= 1, d
+assert abs(d["quasi_static_pull_in_voltage"] / 132.5 - 1) < 0.08, d
+PY
+then
+  pass "dynamic bisection: early ends past the unstable equilibrium, V_dyn and t_PI unchanged"
+else
+  fail "dynamic bisection: $(cat "$WORK/err")"
+fi
+expect_input_error bad_margin "past_fold_margin" "$CASE" --set pull_in.dynamic.past_fold_margin=2
 
 expect_input_error bad_cells "cells" "$CASE" --set "immersed.background.cells=[2, 50]"
 expect_input_error bad_electrode "x" "$CASE" --set "immersed.electrode.x=[50 um, 40 um]"
