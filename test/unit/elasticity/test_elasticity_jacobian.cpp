@@ -45,6 +45,15 @@ std::vector<ElasticityBoundary> mixed_boundaries(const Mesh& mesh) {
   return bcs;
 }
 
+// A unit square of nx x ny cells, distorted as above.
+Mesh distorted_square(int nx, int ny, double amplitude, unsigned seed) {
+  BoxSpec spec;
+  spec.dim = 2;
+  spec.n[0] = nx;
+  spec.n[1] = ny;
+  return make_structured_mesh(spec, distortion(amplitude, seed));
+}
+
 std::vector<double> random_state(Index n, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> value(-1e-3, 1e-3);
@@ -75,11 +84,7 @@ TEST(ElasticityJacobian, MatchesFiniteDifferences2DPlaneStrainSkewed) {
 }
 
 TEST(ElasticityJacobian, MatchesFiniteDifferences2DPlaneStressTransient) {
-  BoxSpec spec;
-  spec.dim = 2;
-  spec.n[0] = 5;
-  spec.n[1] = 5;
-  Mesh mesh = make_structured_mesh(spec, distortion(0.05, 11));
+  Mesh mesh = distorted_square(5, 5, 0.05, 11);
   LinearElastic steel{210e9, 0.25, 7800, Hypothesis::PlaneStress};
   ElasticityOperator op(mesh, steel, mixed_boundaries(mesh));
   FirstOrderSystem system(op);
@@ -111,11 +116,7 @@ TEST(ElasticityJacobian, MatchesFiniteDifferences3DSkewedBox) {
 // ReducedInertiaSystem): the v rows' Jacobian c_j M + beta K, by finite differences. beta is
 // chosen so that beta K is comparable with c_j M (an error in either is visible).
 TEST(ElasticityJacobian, DampedTransientFormsMatchFiniteDifferences) {
-  BoxSpec spec;
-  spec.dim = 2;
-  spec.n[0] = 5;
-  spec.n[1] = 4;
-  Mesh mesh = make_structured_mesh(spec, distortion(0.05, 13));
+  Mesh mesh = distorted_square(5, 4, 0.05, 13);
   LinearElastic steel{210e9, 0.25, 7800, Hypothesis::PlaneStress};
   ElasticityOperator op(mesh, steel, mixed_boundaries(mesh),
                         [](const Vec3&, double) { return Vec3(0, -1e4, 0); });
@@ -134,11 +135,7 @@ TEST(ElasticityJacobian, DampedTransientFormsMatchFiniteDifferences) {
 // for an operator with prescribed displacements, tractions and a body force (all of which the
 // damping must leave out).
 TEST(ElasticityJacobian, DampingForceIsBetaTimesTheStiffnessTimesTheVelocity) {
-  BoxSpec spec;
-  spec.dim = 2;
-  spec.n[0] = 6;
-  spec.n[1] = 3;
-  Mesh mesh = make_structured_mesh(spec, distortion(0.04, 17));
+  Mesh mesh = distorted_square(6, 3, 0.04, 17);
   LinearElastic steel{200e9, 0.3, 7854, Hypothesis::PlaneStress};
   ElasticityOperator op(mesh, steel, mixed_boundaries(mesh),
                         [](const Vec3&, double) { return Vec3(3e4, -1e4, 0); });
