@@ -66,6 +66,14 @@ ReducedInertiaSystem::ReducedInertiaSystem(SecondOrderOperator& op, std::vector<
   if (beta_ > 0) v_.resize(n_);
 }
 
+void ReducedInertiaSystem::internal_forces(Real t, std::span<const Real> y) {
+  op_.internal_residual(t, y.subspan(0, n_), r_);
+  if (beta_ > 0) {
+    for (Index i = 0; i < n_; ++i) v_[i] = y[velocity_[i]];
+    op_.add_damping_force(t, v_, r_);
+  }
+}
+
 std::vector<Real> ReducedInertiaSystem::differential_components() const {
   std::vector<Real> id(size(), 1.0);
   for (Index i = 0; i < n_; ++i)
@@ -75,11 +83,7 @@ std::vector<Real> ReducedInertiaSystem::differential_components() const {
 
 void ReducedInertiaSystem::residual(Real t, std::span<const Real> y, std::span<const Real> yp,
                                     std::span<Real> r) {
-  op_.internal_residual(t, y.subspan(0, n_), r_);
-  if (beta_ > 0) {
-    for (Index i = 0; i < n_; ++i) v_[i] = y[velocity_[i]];
-    op_.add_damping_force(t, v_, r_);
-  }
+  internal_forces(t, y);
   for (Index i = 0; i < n_; ++i) {
     const Index v = velocity_[i];
     if (v < 0) {
@@ -123,7 +127,7 @@ void ReducedInertiaSystem::jacobian(Real t, Real c_j, std::span<const Real> y,
 
 std::vector<Real> ReducedInertiaSystem::consistent_derivative(Real t, std::span<const Real> y) {
   std::vector<Real> yp(size(), 0.0);
-  op_.internal_residual(t, y.subspan(0, n_), r_);
+  internal_forces(t, y);
   for (Index i : inertial_) {
     yp[i] = y[velocity_[i]];
     yp[velocity_[i]] = -r_[i] / mass_[i];

@@ -44,10 +44,13 @@ class ReducedInertiaSystem : public SystemOperator {
   // Index in Y of the velocity of component i, or -1 if i is quasi-static.
   Index velocity_index(Index i) const { return velocity_[i]; }
   // Y' consistent with a state Y whose quasi-static components satisfy R_i(t, y) = 0:
-  // y_i' = v_k, v_k' = -R_i(t, y)/M_i, zero for the quasi-static components.
+  // y_i' = v_k, v_k' = -(R_i(t, y) + (C v)_i)/M_i, zero for the quasi-static components.
   std::vector<Real> consistent_derivative(Real t, std::span<const Real> y);
 
  private:
+  // r_ = R(t, y) + C v (the damping's part only with it).
+  void internal_forces(Real t, std::span<const Real> y);
+
   SecondOrderOperator& op_;
   Index n_;
   std::vector<Real> mass_;
