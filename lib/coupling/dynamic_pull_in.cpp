@@ -10,14 +10,31 @@
 
 namespace rfmems {
 
-SettledAtRest early_settle(const DynamicOptions& options) {
-  return {options.stop_at_turning ? options.settle_tolerance : 0.0, options.fold.control,
-          options.fold.voltage};
+bool EarlyEnds::at_step(Real t, Real voltage, Real x, Real v, Real gas_force,
+                        Real electrostatic_force, DynamicRun& run) {
+  if (run.pulled_in) return false;
+  if (settle.at_step(t, x, v, gas_force, electrostatic_force, voltage)) {
+    run.settled = true;
+    return true;
+  }
+  if (past.at_step(voltage, x, v)) {
+    run.pulled_in = run.past_fold = true;
+    return true;
+  }
+  return false;
 }
 
-PastUnstableEquilibrium early_past_fold(const DynamicOptions& options) {
-  if (!options.stop_at_turning || !options.stop_past_fold) return {};
-  return {options.fold, options.past_fold_margin};
+EarlyEnds early_ends(bool stop_at_turning, Real settle_tolerance, const FoldBranch& fold,
+                     bool stop_past_fold, Real past_fold_margin) {
+  EarlyEnds ends;
+  ends.settle = {stop_at_turning ? settle_tolerance : 0.0, fold.control, fold.voltage};
+  if (stop_at_turning && stop_past_fold) ends.past = {fold, past_fold_margin};
+  return ends;
+}
+
+EarlyEnds early_ends(const DynamicOptions& options) {
+  return early_ends(options.stop_at_turning, options.settle_tolerance, options.fold,
+                    options.stop_past_fold, options.past_fold_margin);
 }
 
 DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(Real)> voltage,
@@ -49,8 +66,7 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
     ida.reinitialize(t0, y, yp);
   }
   TurningBack turning(options.turning_retreat);
-  SettledAtRest settle = early_settle(options);
-  PastUnstableEquilibrium past = early_past_fold(options);
+  EarlyEnds ends = early_ends(options);
   const int release_root = 1 + TurningBack::kRoots;
   ida.set_roots(2 + TurningBack::kRoots, [&](Real, std::span<const Real> yy,
                                              std::span<const Real> yyp, std::span<Real> g) {
@@ -77,22 +93,15 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
     // same steps).
     const Real t_out = std::min(next_output, stop_time);
     const IdaIntegrator::Status status =
-        settle.armed() || past.armed() ? ida.step(t_out) : ida.advance(t_out);
+        ends.armed() ? ida.step(t_out) : ida.advance(t_out);
     const Real t = ida.time();
     const auto state = ida.y();
     const Real x = system.displacement(state, control);
     run.extreme_control = std::min(run.extreme_control, x);
     if (status == IdaIntegrator::Status::Stepped) {
       if (run.pulled_in) continue;
-      const Real v = system.velocity(state, ida.yp(), control);
-      if (settle.at_step(t, x, v, system.gas_force(state), system.electrostatic_force(t, state),
-                         voltage(t))) {
-        run.settled = true;
-        sample(t);
-        break;
-      }
-      if (past.at_step(voltage(t), x, v)) {
-        run.pulled_in = run.past_fold = true;
+      if (ends.at_step(t, voltage(t), x, system.velocity(state, ida.yp(), control),
+                       system.gas_force(state), system.electrostatic_force(t, state), run)) {
         sample(t);
         break;
       }

@@ -134,10 +134,25 @@ struct FreeResponse {
 };
 FreeResponse free_response(const std::vector<DynamicSample>& history);
 
-// The settle and past-fold rules of a run with these options (off without stop_at_turning,
-// or with the fold unknown; the past-fold rule also without stop_past_fold).
-SettledAtRest early_settle(const DynamicOptions& options);
-PastUnstableEquilibrium early_past_fold(const DynamicOptions& options);
+// A run's two step rules, checked after every accepted step by run_dynamic and by the
+// field-coupled runners (StepVoltageEvents) alike: settled at rest (no pull-in) and past the
+// unstable equilibrium (pulled in).
+struct EarlyEnds {
+  SettledAtRest settle{0.0, 0.0};  // off
+  PastUnstableEquilibrium past;     // off
+  bool armed() const { return settle.armed() || past.armed(); }
+  // After an accepted step at time t and voltage V with the control's deflection x and
+  // velocity v and the gas and electrostatic forces: records settled or pulled in past the
+  // fold in run (nothing once it has pulled in); true: the run ends.
+  bool at_step(Real t, Real voltage, Real x, Real v, Real gas_force, Real electrostatic_force,
+               DynamicRun& run);
+};
+
+// The rules: off without stop_at_turning or with the fold unknown; the past-fold rule also
+// without stop_past_fold.
+EarlyEnds early_ends(bool stop_at_turning, Real settle_tolerance, const FoldBranch& fold,
+                     bool stop_past_fold, Real past_fold_margin);
+EarlyEnds early_ends(const DynamicOptions& options);
 
 // `voltage(t)` [V] is installed into the system's actuation; control indexes the structure.
 // From rest at t = 0, or from `start`.

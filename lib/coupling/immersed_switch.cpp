@@ -355,12 +355,10 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
   IdaIntegrator ida(system, ida_options);
   ida.initialize(0.0, y, yp);
   const Index vc = system.velocity_index(control());
-  StepVoltageEvents events(
-      options.stop_at_turning, options.turning_retreat, 0.25 * first_period_,
-      {options.stop_at_turning ? options.settle_tolerance : 0.0, options.fold.control,
-       options.fold.voltage},
-      options.stop_at_turning ? PastUnstableEquilibrium(options.fold, options.past_fold_margin)
-                              : PastUnstableEquilibrium());
+  StepVoltageEvents events(options.stop_at_turning, options.turning_retreat, 0.25 * first_period_,
+                           early_ends(options.stop_at_turning, options.settle_tolerance,
+                                      options.fold, options.stop_past_fold,
+                                      options.past_fold_margin));
   events.set_roots(ida, n, control(), vc, options.contact_gap,
                    [this](std::span<const Real> u) { return min_gap(u); });
 

@@ -95,10 +95,12 @@ struct ImmersedRunOptions {
   Real turning_retreat = kTurningRetreat;  // coupling/turning_back.hpp
   // With stop_at_turning and the fold known: the settle rule (settled_at_rest.hpp) and the
   // past-fold rule (past_unstable_equilibrium.hpp; pulled in, beyond the unstable equilibrium
-  // by past_fold_margin of |x_fold|; negative: off). The immersed study's dynamic mode traces
-  // the quasi-static curve first and arms both; its other modes leave the fold unknown (off).
+  // by past_fold_margin of |x_fold|; also needs stop_past_fold). The immersed study's dynamic
+  // mode traces the quasi-static curve first and arms both; its other modes leave the fold
+  // unknown (off).
   Real settle_tolerance = kSettleTolerance;
   FoldBranch fold;
+  bool stop_past_fold = true;
   Real past_fold_margin = kPastFoldMargin;
   Real output_interval = 0;     // > 0: history resampled at this interval (cubic Hermite in
                                 // the control's deflection and velocity); else IDA's steps

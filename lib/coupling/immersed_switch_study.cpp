@@ -310,7 +310,7 @@ Json run_immersed_switch_study(ImmersedSwitchCase& c, const CaseNode& root, Resu
       };
     };
     ImmersedRunOptions to_contact = c.run;
-    to_contact.past_fold_margin = -1;  // off: the upper end's touch-down time
+    to_contact.stop_past_fold = false;  // the upper end's touch-down time
     const DynamicPullIn pi = find_dynamic_pull_in(runner(c.run), c.bracket_low, c.bracket_high,
                                                   c.tolerance, c.run.end_time,
                                                   runner(to_contact));

@@ -90,7 +90,7 @@ DynamicRun LaplaceDynamicSwitch::run(Real voltage, const DynamicOptions& options
   ida.initialize(0.0, y, yp);
   const Index vc = system.velocity_index(control_);
   StepVoltageEvents events(options.stop_at_turning, options.turning_retreat, 0.0,
-                           early_settle(options), early_past_fold(options));
+                           early_ends(options));
   events.set_roots(ida, n, control_, vc, options.contact_gap,
                    [&](std::span<const Real> u) { return field_.cell_min_gap(u); });
 

@@ -35,16 +35,8 @@ bool StepVoltageEvents::after_step(const IdaIntegrator& ida, IdaIntegrator::Stat
 }
 
 bool StepVoltageEvents::after_record(const StepRecord& r, Real voltage, DynamicRun& run) {
-  if (run.pulled_in) return false;
-  if (settle_.at_step(r.t, r.control, r.velocity, r.gas_force, r.electrostatic_force, voltage)) {
-    run.settled = true;
-    return true;
-  }
-  if (past_.at_step(voltage, r.control, r.velocity)) {
-    run.pulled_in = run.past_fold = true;
-    return true;
-  }
-  return false;
+  return ends_.at_step(r.t, voltage, r.control, r.velocity, r.gas_force, r.electrostatic_force,
+                       run);
 }
 
 void finish_step_voltage_run(const IdaIntegrator& ida, const std::vector<StepRecord>& records,

@@ -37,14 +37,12 @@ class StepVoltageEvents {
  public:
   // turning_retreat: TurningBack's r; turning_after: extremes count from this time on (the
   // immersed beam's higher modes can flip the control's velocity in the first quarter period).
-  // settle, past: the step rules (off by default; early_settle and early_past_fold in
-  // dynamic_pull_in.hpp make them from a run's options).
+  // ends: the step rules (off by default; early_ends in dynamic_pull_in.hpp makes them).
   StepVoltageEvents(bool stop_at_turning, Real turning_retreat, Real turning_after = 0,
-                    SettledAtRest settle = {0.0, 0.0}, PastUnstableEquilibrium past = {})
+                    EarlyEnds ends = {})
       : stop_at_turning_(stop_at_turning),
         turning_(turning_retreat, turning_after),
-        settle_(settle),
-        past_(std::move(past)) {}
+        ends_(std::move(ends)) {}
 
   // Installs g0..g2 on ida: min_gap of the displacements (the state's first n entries), the
   // turning rule on the control's deflection and velocity at state indices control, velocity.
@@ -64,8 +62,7 @@ class StepVoltageEvents {
  private:
   bool stop_at_turning_;
   TurningBack turning_;
-  SettledAtRest settle_;
-  PastUnstableEquilibrium past_;
+  EarlyEnds ends_;
 };
 
 // Fills run's final time, state and stats from ida and its history at voltage from records
