@@ -113,7 +113,7 @@ int main(int argc, char** argv) {
     g.background_cells[0] = nx;
     g.background_cells[1] = ny;
     g.electrode_end = 45 * um;
-    ImmersedSwitch scene(beam, g, 184);
+    ImmersedSwitch scene(beam, g, LinearFunctional::unknown(2 * 184 + 1));  // tip cell's u_y
     const Run klu = run_loads(scene, beam, steps, 100.0);
     Index fluid = 0;
     for (Real v : klu.potential) fluid += std::isfinite(v);

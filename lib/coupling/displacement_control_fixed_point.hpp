@@ -1,17 +1,19 @@
 // Displacement control of an electrostatically loaded structure by a relaxed fixed point (the
 // Laplace pull-in, laplace_pull_in.hpp, and the immersed switch, immersed_switch.hpp): for a
-// prescribed displacement delta of the control unknown, iterate
+// prescribed deflection delta = l(u) of the control functional l (one unknown, or a point value
+// such as a beam's tip), iterate
 //
-//   z = K^-1 q(u)  (q the load per V^2 at u),  lambda = delta / z_control,
+//   z = K^-1 q(u)  (q the load per V^2 at u),  lambda = delta / l(z),
 //   u <- u + omega (lambda z - u),  omega by Aitken's Delta^2 (aitken_relaxation.hpp),
 //
-// until ||lambda z - u||_inf <= tolerance |delta|; then u_control = delta and V^2 = lambda.
+// until ||lambda z - u||_inf <= tolerance |delta|; then l(u) = delta and V^2 = lambda.
 #pragma once
 #include <algorithm>
 #include <cmath>
 #include <span>
 #include <vector>
 
+#include "core/linear_functional.hpp"
 #include "core/types.hpp"
 #include "coupling/aitken_relaxation.hpp"
 #include "solvers/klu_factorization.hpp"
@@ -28,7 +30,8 @@ struct DisplacementControlResult {
 // load_per_volt2(u) returns q(u) as a std::vector<Real> of u's length.
 template <class LoadPerVolt2>
 DisplacementControlResult relax_displacement_control(KluFactorization& stiffness,
-                                                     LoadPerVolt2&& load_per_volt2, Index control,
+                                                     LoadPerVolt2&& load_per_volt2,
+                                                     const LinearFunctional& control,
                                                      Real delta, Real tolerance, int max_iterations,
                                                      std::vector<Real>& u) {
   const std::size_t n = u.size();
@@ -38,7 +41,7 @@ DisplacementControlResult relax_displacement_control(KluFactorization& stiffness
   for (; out.iterations < max_iterations; ++out.iterations) {
     std::vector<Real> z = load_per_volt2(u);
     stiffness.solve(z);
-    out.voltage_squared = delta / z[control];
+    out.voltage_squared = delta / control(z);
     Real largest = 0;
     for (std::size_t i = 0; i < n; ++i) {
       residual[i] = out.voltage_squared * z[i] - u[i];

@@ -63,12 +63,12 @@ struct ImmersedSwitch::Kernel {
 };
 
 ImmersedSwitch::ImmersedSwitch(ElasticityOperator& beam, const ImmersedSwitchGeometry& geometry,
-                               Index control_cell)
+                               LinearFunctional control)
     : beam_(beam),
       geometry_(geometry),
       background_(std::make_unique<Mesh>(make_switch_background(geometry))),
       rest_surface_(ImmersedSurface::from_mesh_boundary(beam.mesh())),
-      control_cell_(control_cell) {
+      control_(std::move(control)) {
   const Mesh& mesh = beam.mesh();
   if (mesh.dim() != 2) throw InputError("immersed switch: the beam must be a plane (2D) model");
   const int anchor = mesh.find_patch(geometry.anchor_patch);
@@ -77,8 +77,8 @@ ImmersedSwitch::ImmersedSwitch(ElasticityOperator& beam, const ImmersedSwitchGeo
     throw InputError(fmt::format("immersed switch: no beam patch '{}'", geometry.anchor_patch));
   if (facing < 0)
     throw InputError(fmt::format("immersed switch: no beam patch '{}'", geometry.facing_patch));
-  if (control_cell < 0 || control_cell >= mesh.n_cells())
-    throw InputError("immersed switch: the control cell is not a beam cell");
+  if (!control_.within(beam.size()))
+    throw InputError("immersed switch: the control is not a functional of the beam's unknowns");
   std::map<std::string, PotentialBoundary> bcs{{"electrode", PotentialBoundary::potential(0.0)},
                                                {"substrate", PotentialBoundary::zero_flux()},
                                                {"left", PotentialBoundary::zero_flux()},
@@ -287,14 +287,14 @@ ImmersedStatic ImmersedSwitch::solve_static(Real voltage, Real tolerance, int ma
     return std::move(l.force);
   };
   VoltageControlResult r =
-      relax_voltage_control(stiffness, load, n, control(), tolerance, max_iterations);
+      relax_voltage_control(stiffness, load, n, control_, tolerance, max_iterations);
   if (!r.converged)
     throw SolverError(
         fmt::format("immersed switch: static solve at {:g} V not converged in {} "
                     "iterations (above the quasi-static pull-in?)",
                     voltage, max_iterations));
   out.iterations = r.iterations;
-  out.control = r.u[control()];
+  out.control = control_(r.u);
   out.u = std::move(r.u);
   return out;
 }
@@ -305,7 +305,6 @@ QuasiStaticPullIn ImmersedSwitch::trace_quasi_static(const QuasiStaticOptions& o
   std::vector<Real> k_values(beam_.stiffness_pattern().nnz()), zero(n, 0.0);
   beam_.stiffness(0.0, zero, k_values);
   KluFactorization stiffness(beam_.stiffness_pattern(), k_values);
-  const Index c = control();
   long solves = 0;
   auto solve = [&](Real delta, const FoldSample& from) {
     FoldSample s{{}, from.state};
@@ -317,7 +316,8 @@ QuasiStaticPullIn ImmersedSwitch::trace_quasi_static(const QuasiStaticOptions& o
       return electrostatic_load(state, 1.0).force;
     };
     const DisplacementControlResult r =
-        relax_displacement_control(stiffness, load_per_volt2, c, delta, coupling_tolerance, 200, u);
+        relax_displacement_control(stiffness, load_per_volt2, control_, delta,
+                                   coupling_tolerance, 200, u);
     if (!r.converged || r.voltage_squared < 0)
       throw SolverError(
           fmt::format("immersed switch: quasi-static coupling failed at delta = {:.4e} m", delta));
@@ -354,12 +354,14 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
     ida_options.atols[i] = options.ida.atol * 2 * M_PI / first_period_;
   IdaIntegrator ida(system, ida_options);
   ida.initialize(0.0, y, yp);
-  const Index vc = system.velocity_index(control());
+  // The control's velocity: the same weights on the velocity unknowns.
+  const LinearFunctional velocity =
+      control_.mapped([&system](Index i) { return system.velocity_index(i); });
   StepVoltageEvents events(options.stop_at_turning, options.turning_retreat, 0.25 * first_period_,
                            early_ends(options.stop_at_turning, options.settle_tolerance,
                                       options.fold, options.stop_past_fold,
                                       options.past_fold_margin));
-  events.set_roots(ida, n, control(), vc, options.contact_gap,
+  events.set_roots(ida, n, control_, velocity, options.contact_gap,
                    [this](std::span<const Real> u) { return min_gap(u); });
 
   std::vector<StepRecord> records{{0.0, 0.0, 0.0, gap0_, load.total.y(), 0.0}};
@@ -476,7 +478,7 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
     const Real t = ida.time();
     const std::span<const Real> state = ida.y();
     const std::span<const Real> u = state.subspan(0, n);
-    const bool stop = events.after_step(ida, status, t, u[control()], out);
+    const bool stop = events.after_step(ida, status, t, control_(u), out);
     // The coupled step's exchange: the IBM load and the gas at the accepted state.
     if (!strong) {  // strong_step left the IBM load at IDA's internal state as reference
       load = electrostatic_load(u, voltage);
@@ -487,7 +489,7 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
       held = advance_gas(state, t);
       structure.set_held(held);  // the lagged gas force
     }
-    records.push_back({t, u[control()], state[vc], min_gap(u), load.total.y(), gas_force});
+    records.push_back({t, control_(u), velocity(state), min_gap(u), load.total.y(), gas_force});
     if (since_gas == 0 && !gas_inside) t_gas = t;
     if (stop || events.after_record(records.back(), voltage, out)) break;
   }

@@ -120,7 +120,7 @@ struct ImmersedRunOptions {
 
 struct ImmersedStatic {
   std::vector<Real> u;
-  Real control = 0;  // deflection of the control unknown [m]
+  Real control = 0;  // deflection of the control point [m]
   Real force_y = 0;  // electrostatic force on the beam [N/m]
   int iterations = 0;
 };
@@ -128,15 +128,16 @@ struct ImmersedStatic {
 class ImmersedSwitch {
  public:
   // beam: the plane elasticity operator of the structure mesh (its patch anchor_patch fixed);
-  // control_cell: the cell whose u_y is reported (the tip).
+  // control: the deflection reported and controlled, a functional of the beam's unknowns (the
+  // tip's u_y from its cell's reconstruction: ElasticityOperator::displacement_functional).
   ImmersedSwitch(ElasticityOperator& beam, const ImmersedSwitchGeometry& geometry,
-                 Index control_cell);
+                 LinearFunctional control);
   ~ImmersedSwitch();
 
   const Mesh& background() const { return *background_; }
   const ImmersedSurface& rest_surface() const { return rest_surface_; }
   Real rest_gap() const { return gap0_; }  // beam bottom to electrode at rest
-  Index control() const { return 2 * control_cell_ + 1; }
+  const LinearFunctional& control() const { return control_; }
   Real background_cell_height() const;
   // Euler-Bernoulli estimate of the first bending period of the clamped-free beam,
   // 2 pi / (1.875^2 (h / L^2) sqrt(E / (12 rho))): scales the velocity tolerance and delays the
@@ -160,8 +161,8 @@ class ImmersedSwitch {
   // Static equilibrium K u = f(u) at V by fixed point (one KLU factorisation), to a relative
   // change of the control's deflection.
   ImmersedStatic solve_static(Real voltage, Real tolerance = 1e-7, int max_iterations = 200);
-  // Quasi-static pull-in under displacement control of the control unknown (trace_fold),
-  // the same fixed point with V^2 = delta / z_c per iterate (as laplace_pull_in.hpp).
+  // Quasi-static pull-in under displacement control of the control's deflection (trace_fold),
+  // the same fixed point with V^2 = delta / l(z) per iterate (as laplace_pull_in.hpp).
   QuasiStaticPullIn trace_quasi_static(const QuasiStaticOptions& options,
                                        Real coupling_tolerance = 1e-6);
 
@@ -192,7 +193,7 @@ class ImmersedSwitch {
   std::vector<bool> vertex_anchored_;
   std::vector<Index> segment_cell_;  // per segment: the structure cell
   std::vector<Index> facing_cells_;  // cells owning a facing face
-  Index control_cell_;
+  LinearFunctional control_;
   Real gap0_ = 0, electrode_y_ = 0, first_period_ = 0;
   IbInterpolationOptions interpolation_;
   ImmersedPhysicsTimes times_;

@@ -120,8 +120,11 @@ ImmersedSwitchCase read_immersed_switch_case(const CaseNode& root, const std::st
       bg.fail("lower", fmt::format("the beam (node at [{:g}, {:g}] m) is not inside the background",
                                    x.x(), x.y()));
   const CasePointFinder finder(mesh);
-  const Index control_cell = finder.find(im, "control", "the control point").second;
-  c.scene = std::make_unique<ImmersedSwitch>(*c.beam->op, g, control_cell);
+  // The reported deflection is u_y at the control point itself (the tip), from its cell's
+  // reconstruction, not at the cell's centroid half a cell short of it.
+  const auto [control_point, control_cell] = finder.find(im, "control", "the control point");
+  c.scene = std::make_unique<ImmersedSwitch>(
+      *c.beam->op, g, c.beam->op->displacement_functional(control_cell, control_point, 1));
   if (im.get_bool("electrostatics_distributed", false))
     c.scene->distribute_electrostatics(Communicator::world());
 

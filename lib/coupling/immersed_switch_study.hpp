@@ -11,7 +11,9 @@
 //     facing_patch: bottom            # beam patch over the electrode (default bottom)
 //     anchor_extension: 0.5 um        # the anchored face pushed into the wall (default one
 //                                     # background cell)
-//     control: [45 um, 1.5 um]        # the point whose deflection is reported (the tip)
+//     control: [45 um, 1.5 um]        # the point whose deflection is reported and
+//                                     # controlled (the tip), read from its cell's
+//                                     # reconstruction, not at the cell's centroid
 //     electrostatics_distributed: false  # under mpirun: the field solved over the ranks
 //                                     # (GMRES + additive Schwarz KLU; every rank runs the
 //                                     # switch), else redundantly by KLU on every rank

@@ -42,7 +42,8 @@ LaplaceStatic LaplaceDynamicSwitch::solve_static(Real voltage, Real tolerance, i
     return z;
   };
   VoltageControlResult r =
-      relax_voltage_control(stiffness, load, n, control_, tolerance, max_iterations);
+      relax_voltage_control(stiffness, load, n, LinearFunctional::unknown(control_), tolerance,
+                            max_iterations);
   if (!r.converged)
     throw SolverError(fmt::format(
         "Laplace switch: static solve at {:g} V not converged in {} iterations (above the "
@@ -91,7 +92,8 @@ DynamicRun LaplaceDynamicSwitch::run(Real voltage, const DynamicOptions& options
   const Index vc = system.velocity_index(control_);
   StepVoltageEvents events(options.stop_at_turning, options.turning_retreat, 0.0,
                            early_ends(options));
-  events.set_roots(ida, n, control_, vc, options.contact_gap,
+  events.set_roots(ida, n, LinearFunctional::unknown(control_), LinearFunctional::unknown(vc),
+                   options.contact_gap,
                    [&](std::span<const Real> u) { return field_.cell_min_gap(u); });
 
   std::vector<StepRecord> records{{0.0, 0.0, 0.0, field_.gap(), v2 * field_.last_force_y(), 0.0}};

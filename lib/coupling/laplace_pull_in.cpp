@@ -40,8 +40,9 @@ LaplacePullIn trace_pull_in_laplace(ElasticityScene& beam, const std::string& bo
       for (Real& v : s.state) v *= delta / from.point.displacement;
     std::vector<Real>& u = s.state;
     const DisplacementControlResult r =
-        relax_displacement_control(stiffness, load_per_volt2, control, delta,
-                                   options.coupling_tolerance, options.max_coupling_iterations, u);
+        relax_displacement_control(stiffness, load_per_volt2, LinearFunctional::unknown(control),
+                                   delta, options.coupling_tolerance,
+                                   options.max_coupling_iterations, u);
     const Real lambda = r.voltage_squared;
     const int it = r.iterations;
     if (!r.converged)

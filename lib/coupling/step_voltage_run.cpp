@@ -4,14 +4,15 @@
 
 namespace rfmems {
 
-void StepVoltageEvents::set_roots(IdaIntegrator& ida, Index n, Index control, Index velocity,
-                                  Real contact_gap,
+void StepVoltageEvents::set_roots(IdaIntegrator& ida, Index n, LinearFunctional control,
+                                  LinearFunctional velocity, Real contact_gap,
                                   std::function<Real(std::span<const Real>)> min_gap) const {
   ida.set_roots(1 + TurningBack::kRoots,
-                [this, n, control, velocity, contact_gap, min_gap = std::move(min_gap)](
+                [this, n, control = std::move(control), velocity = std::move(velocity),
+                 contact_gap, min_gap = std::move(min_gap)](
                     Real, std::span<const Real> yy, std::span<const Real>, std::span<Real> g) {
                   g[0] = min_gap(yy.subspan(0, n)) - contact_gap;
-                  turning_.roots(yy[control], yy[velocity], g.subspan(1));
+                  turning_.roots(control(yy), velocity(yy), g.subspan(1));
                 });
 }
 

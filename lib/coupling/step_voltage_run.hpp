@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/linear_functional.hpp"
 #include "coupling/dynamic_pull_in.hpp"
 #include "coupling/past_unstable_equilibrium.hpp"
 #include "coupling/settled_at_rest.hpp"
@@ -45,10 +46,11 @@ class StepVoltageEvents {
         ends_(std::move(ends)) {}
 
   // Installs g0..g2 on ida: min_gap of the displacements (the state's first n entries), the
-  // turning rule on the control's deflection and velocity at state indices control, velocity.
-  // The events object must outlive the integration.
-  void set_roots(IdaIntegrator& ida, Index n, Index control, Index velocity, Real contact_gap,
-                 std::function<Real(std::span<const Real>)> min_gap) const;
+  // turning rule on the control's deflection and velocity, functionals of the state (one
+  // unknown each, or a point value and its velocity). The events object must outlive the
+  // integration.
+  void set_roots(IdaIntegrator& ida, Index n, LinearFunctional control, LinearFunctional velocity,
+                 Real contact_gap, std::function<Real(std::span<const Real>)> min_gap) const;
 
   // After a step that returned status at time t with the control's deflection control:
   // records the extreme, a touch-down and the first turning in run; true: the run ends.

@@ -35,7 +35,9 @@ struct Cantilever {
     g.background_cells[1] = gy;
     g.electrode_begin = 0;
     g.electrode_end = electrode_end;
-    scene = std::make_unique<ImmersedSwitch>(*op, g, /*tip cell, bottom row*/ bx - 1);
+    // The control: u_y at the tip's bottom corner, from the tip cell of the bottom row.
+    scene = std::make_unique<ImmersedSwitch>(
+        *op, g, op->displacement_functional(bx - 1, Vec3(kLength, kGap, 0), 1));
   }
 };
 

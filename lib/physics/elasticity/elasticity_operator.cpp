@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <set>
 
 #include "core/error.hpp"
@@ -280,6 +281,21 @@ std::vector<Real> ElasticityOperator::mass_diagonal() const {
 Vec3 ElasticityOperator::displacement_at(Index cell, const Vec3& x, std::span<const Real> u,
                                          const std::vector<Mat3>& gradients) const {
   return cell_u(u, cell) + gradients[cell] * (x - mesh_.cell_centroid(cell));
+}
+
+LinearFunctional ElasticityOperator::displacement_functional(Index cell, const Vec3& x,
+                                                             int component) const {
+  // u_k(x) = u_c,k + (G_c (x - x_c))_k, G_c = sum_terms (map u_cell) weight^T.
+  const Vec3 d = x - mesh_.cell_centroid(cell);
+  std::map<Index, Real> weights{{cell * dim_ + component, 1.0}};
+  for (const GradientTerm& term : centroid_gradient_terms(cell)) {
+    const Real s = term.weight.dot(d);
+    for (int l = 0; l < dim_; ++l) weights[term.cell * dim_ + l] += s * term.map(component, l);
+  }
+  LinearFunctional out;
+  for (const auto& [i, w] : weights)
+    if (w != 0) out.terms.emplace_back(i, w);
+  return out;
 }
 
 std::vector<ElasticityOperator::GradientTerm> ElasticityOperator::centroid_gradient_terms(

@@ -22,6 +22,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/linear_functional.hpp"
 #include "core/system_operator.hpp"
 #include "fv/block_sparsity.hpp"
 #include "fv/polynomial_reconstruction.hpp"
@@ -76,6 +77,10 @@ class ElasticityOperator : public SecondOrderOperator {
   // Displacement at point x from the nearest cell's linear reconstruction.
   Vec3 displacement_at(Index cell, const Vec3& x, std::span<const Real> u,
                        const std::vector<Mat3>& gradients) const;
+  // displacement_at's component k as a linear functional of the unknowns (a tip deflection
+  // that a run reports, controls and finds the velocity of): prescribed boundary values, which
+  // enter only cells next to a Dirichlet patch, are taken as 0, as at a clamp.
+  LinearFunctional displacement_functional(Index cell, const Vec3& x, int component) const;
 
   // The centroid gradient of cell_gradients() as a linear map of the unknowns (for analytic
   // Jacobians of terms that use the cell's strain, e.g. creep):
