@@ -103,6 +103,10 @@ void DistributedIdaIntegrator::initialize(Real t0, std::span<const Real> y0,
   check(IDASetPreconditioner(k.mem, Impl::preconditioner_setup, Impl::preconditioner_solve),
         "IDASetPreconditioner");
   check(IDASetJacTimes(k.mem, nullptr, Impl::jacobian_times), "IDASetJacTimes");
+  check(IDASetEpsLin(k.mem, k.options.krylov_tolerance_factor > 0
+                                ? k.options.krylov_tolerance_factor
+                                : k.linearization.krylov_tolerance_factor()),
+        "IDASetEpsLin");
   check(IDASetMaxOrd(k.mem, k.options.max_order), "IDASetMaxOrd");
   check(IDASetMaxNumSteps(k.mem, k.options.max_steps), "IDASetMaxNumSteps");
   if (k.options.initial_step > 0)

@@ -80,6 +80,10 @@ void DistributedLinearization::setup(Real t, Real c_j, std::span<const Real> y,
     lu_ = std::make_unique<KluFactorization>(pattern, values);
 }
 
+Real DistributedLinearization::krylov_tolerance_factor() const {
+  return schwarz_ || structure_ ? 5e-4 : 5e-7;
+}
+
 DistributedLinearization::Preconditioner DistributedLinearization::best_for(
     DistributedSystem& system, bool with_derivative_terms) {
   if (!with_derivative_terms)

@@ -53,6 +53,13 @@ class DistributedLinearization {
   // additive Schwarz preconditioner).
   void precondition(std::span<const Real> r, std::span<Real> z);
   long setups() const { return setups_; }
+  // The Krylov tolerance factor (IDA's eps_lin, IdaOptions::krylov_tolerance_factor) that keeps
+  // the correction's error, up to ||(P^-1 J)^-1|| times the preconditioned residual, beneath
+  // IDA's Newton tolerance with this preconditioner: 5e-4 with the overlap (the Schwarz
+  // variants), 5e-7 with block Jacobi, which drops the parts' coupling (measured on the
+  // cantilever with and without damping, 2 and 3 ranks: the serial step count and answer, where
+  // SUNDIALS' 0.05 gave up to 6e-2 off; docs/BENCHMARKS.md section 51).
+  Real krylov_tolerance_factor() const;
   // The strongest preconditioner the system offers (Schur Schwarz, Schwarz, block Jacobi).
   static Preconditioner best_for(DistributedSystem& system, bool with_derivative_terms);
 

@@ -169,6 +169,8 @@ void IdaIntegrator::initialize(Real t0, std::span<const Real> y0, std::span<cons
                                preconditioner_solve_trampoline),
           "IDASetPreconditioner");
   }
+  if (!jac_ && options_.krylov_tolerance_factor > 0)
+    check(IDASetEpsLin(mem_, options_.krylov_tolerance_factor), "IDASetEpsLin");
   check(IDASetMaxOrd(mem_, options_.max_order), "IDASetMaxOrd");
   check(IDASetMaxNumSteps(mem_, options_.max_steps), "IDASetMaxNumSteps");
   auto id = sundials::make_serial_vector(op_.size(), ctx_.get());
@@ -266,6 +268,7 @@ IntegratorStats ida_memory_stats(void* mem) {
   IDAGetLastStep(mem, &s.last_step);
   IDAGetNumLinIters(mem, &s.linear_iters);
   IDAGetNumPrecEvals(mem, &s.preconditioner_setups);
+  IDAGetNumLinConvFails(mem, &s.linear_conv_fails);
   return s;
 }
 

@@ -19,6 +19,14 @@ struct IdaOptions {
   enum class LinearSolver { Klu, Spgmr };
   LinearSolver linear_solver = LinearSolver::Klu;
   int krylov_dimension = 30;
+  // IDA's eps_lin (IDASetEpsLin): a Krylov solve stops at ||P^-1 r||_WRMS <= factor x the
+  // Newton tolerance (0.33). The error of the correction, (P^-1 J)^-1 P^-1 r, is that times up
+  // to ||(P^-1 J)^-1||, which a preconditioner dropping strong couplings makes large; the
+  // error lands in the step's solution and its error estimate (docs/BENCHMARKS.md section 51).
+  // 0: the integrator's default: SUNDIALS' 0.05 in IdaIntegrator (its Spgmr preconditioner
+  // an LU of the Jacobian or the operator's own), DistributedLinearization::
+  // krylov_tolerance_factor() in DistributedIdaIntegrator.
+  Real krylov_tolerance_factor = 0;
   Real rtol = 1e-6;
   Real atol = 1e-12;
   // Per-component absolute tolerances (IDASVtolerances); empty: the scalar atol on every
@@ -45,6 +53,9 @@ struct IntegratorStats {
   long steps = 0, residual_evals = 0, jacobian_evals = 0, newton_iters = 0, linear_setups = 0;
   long linear_iters = 0, preconditioner_setups = 0;
   long error_test_fails = 0, newton_fails = 0;
+  // Krylov solves that stopped short of IDA's linear tolerance (IDAGetNumLinConvFails); 0 with
+  // KLU.
+  long linear_conv_fails = 0;
   int last_order = 0;
   Real last_step = 0;
 };

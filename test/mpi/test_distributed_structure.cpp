@@ -5,8 +5,9 @@
 //  - the Jacobian's owned rows equal the serial Jacobian's rows (round-off);
 //  - the cantilever's static deflection equals the serial KLU solution to 1e-8 on every
 //    rank count, in one Newton step, and the beam solution as the serial case does;
-//  - a short transient of the same cantilever equals the serial IDA + KLU run to the IDA
-//    tolerance, with block Jacobi and with the Schur complement K + c_j^2 M preconditioned by
+//  - a short transient of the same cantilever, undamped and with Kelvin-Voigt damping,
+//    equals the serial IDA + KLU run to the IDA tolerance in about the serial steps, with
+//    block Jacobi and with the Schur complement (1 + c_j beta) K + c_j^2 M preconditioned by
 //    additive Schwarz on the ghost overlap.
 #include <gtest/gtest.h>
 
@@ -201,12 +202,12 @@ void expect_cantilever_transient_equals_serial_ida(double damping_time) {
   DistributedFirstOrderSystem system(dist);
   long iterations[2] = {0, 0};
   for (const bool overlap : {false, true}) {  // block Jacobi, Schur complement by Schwarz
-    // With damping only the Schur variant (the default for structural systems): block Jacobi
-    // drops the parts' coupling through beta K in the velocity rows, which dominates c_j M at
-    // steps much longer than 1 / omega of the damped modes, and IDA then accepts Newton
-    // iterates whose GMRES solves were cut short (measured: 3.6e-2 off the serial answer on 2
-    // ranks, 6.1e-2 on 3, at beta = 4e-3 s).
-    if (damping_time > 0 && !overlap) continue;
+    // Block Jacobi drops the parts' coupling, which with damping, (1 + c_j beta) K against
+    // c_j^2 M, dominates: its preconditioned residual then understates the correction's error
+    // by orders of magnitude, and with SUNDIALS' Krylov tolerance (eps_lin 0.05) the run ended
+    // 3.6e-2 off the serial answer on 2 ranks, 6.1e-2 on 3, with every GMRES solve converged
+    // (docs/BENCHMARKS.md section 51). The integrator's per-preconditioner tolerance
+    // (DistributedLinearization::krylov_tolerance_factor) is what this checks.
     DistributedIdaIntegrator ida(system, options, overlap);
     std::vector<double> owned_zero(system.owned_size(), 0.0);
     ida.initialize(0.0, owned_zero, owned_zero);
@@ -226,18 +227,21 @@ void expect_cantilever_transient_equals_serial_ida(double damping_time) {
       std::printf(
           "ranks %d, %s: transient to 30 ms: max |u - u_serial| / max |u| = %.2e; steps %ld "
           "(serial %ld), Newton %ld, GMRES %ld (%.1f per Newton iteration), preconditioner "
-          "setups %ld; damping time %.2e s\n",
+          "setups %ld, unconverged GMRES solves %ld; damping time %.2e s\n",
           comm.size(), overlap ? "Schur additive Schwarz" : "block Jacobi", worst / amplitude,
           s.steps, s_serial.steps, s.newton_iters, s.linear_iters,
           static_cast<double>(s.linear_iters) / s.newton_iters, s.preconditioner_setups,
-          damping_time);
+          s.linear_conv_fails, damping_time);
     EXPECT_GT(amplitude, 1e-5);  // the beam has moved (static tip deflection ~1e-4 m)
     EXPECT_LT(worst, 10 * options.rtol * amplitude);
+    // The Newton corrections' errors beneath the local error test: the serial run's steps
+    // (inexact corrections inflate IDA's error estimate; on main block Jacobi took 1.2 (2
+    // ranks) and 3.5 (3 ranks) times the serial steps with damping, 1.6 and 4.0 without).
+    EXPECT_LE(s.steps, 1.1 * s_serial.steps);
   }
-  // Eliminating v and solving K + c_j^2 M on the overlap: fewer iterations than block Jacobi.
-  if (damping_time == 0) {
-    EXPECT_LE(iterations[1], iterations[0]);
-  }
+  // Eliminating v and solving (1 + c_j beta) K + c_j^2 M on the overlap: fewer iterations than
+  // block Jacobi, at its looser tolerance too.
+  EXPECT_LE(iterations[1], iterations[0]);
 }
 
 }  // namespace
