@@ -23,6 +23,11 @@ struct LinearFunctional {
     for (const auto& [i, w] : terms) sum += w * u[i];
     return sum;
   }
+  // this += scale * other (an unknown may then appear twice; the sum is the same).
+  LinearFunctional& add(const LinearFunctional& other, Real scale) {
+    for (const auto& [i, w] : other.terms) terms.emplace_back(i, scale * w);
+    return *this;
+  }
   // The same weights on other unknowns, e.g. the velocities of a first-order state.
   LinearFunctional mapped(const std::function<Index(Index)>& index) const {
     LinearFunctional out;

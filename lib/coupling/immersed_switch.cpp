@@ -120,13 +120,28 @@ ImmersedSwitch::ImmersedSwitch(ElasticityOperator& beam, const ImmersedSwitchGeo
 
   const Patch& facing_patch = mesh.patches()[facing];
   Real bottom = 1e300;
-  for (Index f = facing_patch.first_face; f < facing_patch.first_face + facing_patch.n_faces; ++f) {
-    facing_cells_.push_back(mesh.face_owner(f));
+  for (Index f = facing_patch.first_face; f < facing_patch.first_face + facing_patch.n_faces; ++f)
     bottom = std::min(bottom, mesh.face_centroid(f).y());
-  }
   gap0_ = bottom - electrode_y_;
   if (!(gap0_ > 0))
     throw InputError("immersed switch: the beam's facing side is not above the electrode");
+  // The facing side's free vertices, each with its u_y as vertex_displacements moves it (the
+  // mean of its two segments' cell reconstructions): the gap the contact root watches is the
+  // surface's, down to the tip's corner, not the facing cells' centroids half a cell inside.
+  const Index n_vertices = rest_surface_.n_segments();
+  std::vector<bool> facing_vertex(n_vertices, false);
+  for (Index k = 0; k < n_vertices; ++k)
+    if (mesh.face_patch(rest_surface_.source_face(k)) == facing)
+      facing_vertex[k] = facing_vertex[(k + 1) % n_vertices] = true;
+  for (Index k = 0; k < n_vertices; ++k) {
+    if (!facing_vertex[k] || vertex_anchored_[k]) continue;
+    const Vec3& x = mesh.nodes()[vertex_node_[k]];
+    LinearFunctional u_y;
+    u_y.add(beam.displacement_functional(segment_cell_[(k + n_vertices - 1) % n_vertices], x, 1),
+            0.5)
+        .add(beam.displacement_functional(segment_cell_[k], x, 1), 0.5);
+    facing_vertices_.push_back({x.y() - electrode_y_, std::move(u_y)});
+  }
 
   // Wall points must stay within the beam's thickness: (rings + 1/2) h < 0.9 thickness.
   const Real hy = (geometry.background_upper.y() - geometry.background_lower.y()) /
@@ -210,8 +225,8 @@ std::vector<Vec3> ImmersedSwitch::segment_velocities(std::span<const Real> v) co
 
 Real ImmersedSwitch::min_gap(std::span<const Real> u) const {
   Real g = 1e300;
-  for (Index c : facing_cells_) g = std::min(g, gap0_ + u[2 * c + 1]);
-  return g;
+  for (const FacingVertex& v : facing_vertices_) g = std::min(g, v.rest_gap + v.u_y(u));
+  return facing_vertices_.empty() ? gap0_ : g;
 }
 
 std::vector<Real> ImmersedSwitch::to_structure(std::span<const Vec3> segment_forces) const {

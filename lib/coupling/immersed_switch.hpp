@@ -150,6 +150,8 @@ class ImmersedSwitch {
   std::vector<Vec3> vertex_displacements(std::span<const Real> u) const;
   ImmersedSurface moved_surface(std::span<const Real> u) const;
   std::vector<Vec3> segment_velocities(std::span<const Real> v) const;
+  // The smallest gap between the moved facing side (its vertices, as moved_surface puts them)
+  // and the electrode: what the contact root watches.
   Real min_gap(std::span<const Real> u) const;
   // move -> mark -> interpolate -> electrostatics -> transfer at displacement u, voltage V.
   ImmersedLoad electrostatic_load(std::span<const Real> u, Real voltage);
@@ -192,7 +194,11 @@ class ImmersedSwitch {
   std::vector<Index> vertex_node_;  // per surface vertex
   std::vector<bool> vertex_anchored_;
   std::vector<Index> segment_cell_;  // per segment: the structure cell
-  std::vector<Index> facing_cells_;  // cells owning a facing face
+  struct FacingVertex {
+    Real rest_gap;
+    LinearFunctional u_y;
+  };
+  std::vector<FacingVertex> facing_vertices_;  // free vertices of the facing side (min_gap)
   LinearFunctional control_;
   Real gap0_ = 0, electrode_y_ = 0, first_period_ = 0;
   IbInterpolationOptions interpolation_;

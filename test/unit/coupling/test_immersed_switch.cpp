@@ -7,7 +7,9 @@
 // converges at 50 V in 7 iterates), so the thesis sizes would work too. docs/immersed_switch.md.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 
 #include "../../support/cantilever_switch_scene.hpp"
@@ -72,6 +74,35 @@ TEST(ImmersedSwitch, SmallStepSwingsToTwiceTheStaticDeflection) {
   RecordProperty("peak_over_static", std::to_string(staggered.extreme_control / st.control));
   RecordProperty("staggered_over_implicit",
                  std::to_string(staggered.extreme_control / implicit.extreme_control));
+}
+
+// The contact root watches the gap of the surface the field and the gas see: min_gap is the
+// lowest facing vertex of moved_surface over the electrode (y = 0), and for a beam bent down
+// that is the tip's corner, whose deflection is the control (the case's control point). The
+// facing cells' centroids, half a cell inside, sit higher: at the 50 V static state on 46 x 4
+// by about (4/3)(hx/2)/L = 1.4 % of the tip deflection (w'(L) L / w(L) = 4/3 under a uniform
+// load).
+TEST(ImmersedSwitch, ContactGapIsTheMovedSurfacesLowestFacingVertex) {
+  Cantilever c(46, 4, 101, 31);
+  const ImmersedStatic st = c.scene->solve_static(50.0);
+  ASSERT_LT(st.control, 0);
+  const Mesh& mesh = *c.mesh;
+  const int bottom = mesh.find_patch("bottom");
+  const ImmersedSurface moved = c.scene->moved_surface(st.u);
+  Real lowest = 1e300, lowest_centroid = 1e300;
+  for (Index k = 0; k < moved.n_segments(); ++k) {
+    const Index f = moved.source_face(k);
+    if (mesh.face_patch(f) != bottom) continue;
+    lowest = std::min({lowest, moved.start(k).y(), moved.end(k).y()});
+    lowest_centroid = std::min(lowest_centroid, kGap + st.u[2 * mesh.face_owner(f) + 1]);
+  }
+  std::printf("min_gap %.6e, lowest facing vertex %.6e, gap0 + tip %.6e, lowest centroid %.6e m\n",
+              c.scene->min_gap(st.u), lowest, kGap + st.control, lowest_centroid);
+  EXPECT_NEAR(c.scene->min_gap(st.u), lowest, 1e-12 * kGap);
+  EXPECT_NEAR(c.scene->min_gap(st.u), kGap + st.control, 1e-12 * kGap);
+  const Real estimate = 4.0 / 3.0 * 0.5 / 46;
+  EXPECT_NEAR((lowest_centroid - lowest) / -st.control, estimate, 0.3 * estimate);
+  EXPECT_DOUBLE_EQ(c.scene->min_gap(std::vector<Real>(c.op->size(), 0.0)), kGap);
 }
 
 // Strong coupling per step (Aitken-relaxed iterations on the electrostatic interface load, each
