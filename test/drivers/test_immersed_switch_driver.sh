@@ -64,14 +64,15 @@ fi
 
 # The dynamic bisection (no gas, to 2 V) with its early ends armed by the quasi-static curve:
 # runs past the unstable equilibrium end early, and V_dyn and the pull-in time are those of the
-# code without the rules (122.5 V, 2.172058 us on this coarse scene, BENCHMARKS 50).
+# code without the rules (122.5 V, BENCHMARKS 50; t_PI 2.157482 us since the contact root watches
+# the surface's vertices, BENCHMARKS 52: 2.172058 us at the cells' centroids).
 if "$DRIVER" "$CASE" "${COARSE[@]}" --set pull_in.dynamic.tolerance=2V -o "$WORK/dyn.h5" \
     --json --quiet >"$WORK/dyn.json" 2>"$WORK/err" &&
   $PY - "$WORK/dyn.json" <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1]))["immersed"]["dynamic"]
 assert d["pull_in_voltage"] == 122.5 and d["not_pulling_in"] == 121.25, d
-assert abs(d["pull_in_time"] / 2.172058e-6 - 1) < 1e-4, d
+assert abs(d["pull_in_time"] / 2.157482e-6 - 1) < 1e-4, d
 assert d["past_fold_runs"] >= 1, d
 assert abs(d["quasi_static_pull_in_voltage"] / 132.5 - 1) < 0.08, d
 PY
