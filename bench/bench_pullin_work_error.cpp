@@ -41,8 +41,11 @@
 //   bench_pullin_work_error [--quick] [--voltage 180] [--gas none reynolds] [--cap 60]
 //       [--families ...] [--rate-factors 1 10 0] [--t-ref T (exploration: skip the reference)]
 //       [--case switch_plate_damped --end-time 40e-6 --free-voltage 20]
-// docs/BENCHMARKS.md sections 6 (scalar atol), 6e (error weights, cutting fixed steps) and 32
-// (the squeeze-film-dominated switch, cases/switch_plate_damped).
+//       [--ida-nonlin-conv C --ida-max-newton N --ida-dcj D --ida-eta-max-fx E ... : IDA's Newton
+//        and step controls (IdaOptions) for the adaptive families only, sec. 51]
+// docs/BENCHMARKS.md sections 6 (scalar atol), 6e (error weights, cutting fixed steps), 32
+// (the squeeze-film-dominated switch, cases/switch_plate_damped), 43 (four voltages) and 51
+// (IDA's controls).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
