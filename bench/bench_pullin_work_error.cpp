@@ -41,8 +41,11 @@
 //   bench_pullin_work_error [--quick] [--voltage 180] [--gas none reynolds] [--cap 60]
 //       [--families ...] [--rate-factors 1 10 0] [--t-ref T (exploration: skip the reference)]
 //       [--case switch_plate_damped --end-time 40e-6 --free-voltage 20]
-// docs/BENCHMARKS.md sections 6 (scalar atol), 6e (error weights, cutting fixed steps) and 32
-// (the squeeze-film-dominated switch, cases/switch_plate_damped).
+//       [--ida-nonlin-conv C --ida-max-newton N --ida-dcj D --ida-eta-max-fx E ... : IDA's Newton
+//        and step controls (IdaOptions) for the adaptive families only, sec. 51]
+// docs/BENCHMARKS.md sections 6 (scalar atol), 6e (error weights, cutting fixed steps), 32
+// (the squeeze-film-dominated switch, cases/switch_plate_damped), 43 (four voltages) and 51
+// (IDA's controls).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -210,6 +213,26 @@ int main(int argc, char** argv) {
   double atol_factor = 1.0, velocity_rate = 0;
   std::vector<double> rate_factors{1.0};
   bool quick = false;
+  // IDA's Newton and step control for the adaptive families (IdaOptions; 0: IDA's default).
+  // The references and the fixed-step families keep IDA's defaults.
+  IdaOptions control;
+  double h0_periods = 0;
+  app.add_option("--ida-nonlin-conv", control.nonlinear_convergence,
+                 "adaptive families: IDASetNonlinConvCoef (0: IDA's 0.33)");
+  app.add_option("--ida-max-newton", control.max_newton_iterations,
+                 "adaptive families: IDASetMaxNonlinIters (0: IDA's 4)");
+  app.add_option("--ida-max-conv-fails", control.max_convergence_failures,
+                 "adaptive families: IDASetMaxConvFails (0: IDA's 10)");
+  app.add_option("--ida-dcj", control.jacobian_cj_change,
+                 "adaptive families: IDASetDeltaCjLSetup (0: IDA's 0.25)");
+  app.add_option("--ida-eta-max-fx", control.step_growth_threshold,
+                 "adaptive families: IDASetEtaFixedStepBounds upper bound (0: IDA's 2)");
+  app.add_option("--ida-eta-max", control.max_step_growth,
+                 "adaptive families: IDASetEtaMax (0: IDA's 2)");
+  app.add_option("--ida-eta-conv-fail", control.convergence_failure_cut,
+                 "adaptive families: IDASetEtaConvFail (0: IDA's 0.25)");
+  app.add_option("--ida-h0-periods", h0_periods,
+                 "adaptive families: initial step = this x sqrt(rtol) x 2 pi / omega_1 (0: IDA's)");
   app.add_option("--cases", cases, "the repository's cases/ directory");
   app.add_option("--case", case_name,
                  "the switch case under --cases (switch_plate; switch_plate_damped: the "
@@ -274,7 +297,16 @@ int main(int argc, char** argv) {
                 {"voltage", voltage},
                 {"cells", scene.structure->structure_mesh().n_cells()},
                 {"unknowns", system->size()},
-                {"contact_gap", 0.02 * gap}};
+                {"contact_gap", 0.02 * gap},
+                {"ida_controls",
+                 {{"nonlinear_convergence", control.nonlinear_convergence},
+                  {"max_newton_iterations", control.max_newton_iterations},
+                  {"max_convergence_failures", control.max_convergence_failures},
+                  {"jacobian_cj_change", control.jacobian_cj_change},
+                  {"step_growth_threshold", control.step_growth_threshold},
+                  {"max_step_growth", control.max_step_growth},
+                  {"convergence_failure_cut", control.convergence_failure_cut},
+                  {"initial_step_periods_over_sqrt_rtol", h0_periods}}}};
     std::fprintf(stderr, "gas %s: %lld unknowns, step %.1f V\n", gas.c_str(),
                  static_cast<long long>(system->size()), voltage);
 
@@ -311,6 +343,16 @@ int main(int argc, char** argv) {
       o.rtol = rtol;
       o.atol = 1e-4 * rtol * gap;
       o.max_order = order;
+      return o;
+    };
+    // The adaptive families' runs: the reference's settings plus the --ida-* controls.
+    auto tuned = [&](double rtol, int order, double omega) {
+      IdaOptions o = control;
+      const IdaOptions base = adaptive(rtol, order);
+      o.rtol = base.rtol;
+      o.atol = base.atol;
+      o.max_order = base.max_order;
+      if (h0_periods > 0) o.initial_step = h0_periods * std::sqrt(rtol) * 2 * M_PI / omega;
       return o;
     };
     auto runs_family = [&](const std::string& f) {
@@ -468,8 +510,9 @@ int main(int argc, char** argv) {
           emit(j);
           continue;
         }
-        const Run run = pull_in_run(*system, scene.control, voltage, gap, adaptive(rtol, order),
-                                    w ? weighted(rtol, af.rate_factor) : StateTolerances{});
+        const Run run =
+            pull_in_run(*system, scene.control, voltage, gap, tuned(rtol, order, omega_1),
+                        w ? weighted(rtol, af.rate_factor) : StateTolerances{});
         record(method, params, run);
         before_steps = last_steps;
         last_steps = static_cast<double>(run.stats.steps);
@@ -529,17 +572,18 @@ int main(int argc, char** argv) {
 
     // ---- where the adaptive steps go ------------------------------------------------------
     for (double rtol : profile_rtols) {
+      if (rtol <= 0) continue;  // --profile-rtols 0: no profiles
       Json j = common;
       j["variant"] = "step_profile";
       j["method"] = "ida_o2";
       j["rtol"] = rtol;
       j["window_s"] = 0.5e-6;
-      j["windows"] = step_profile(*system, voltage, gap, adaptive(rtol, 2), 0.5e-6);
+      j["windows"] = step_profile(*system, voltage, gap, tuned(rtol, 2, omega_1), 0.5e-6);
       emit(j);
       if (runs_family("ida_o2_w")) {
         j["method"] = "ida_o2_w";
         j["windows"] =
-            step_profile(*system, voltage, gap, adaptive(rtol, 2), 0.5e-6, weighted(rtol));
+            step_profile(*system, voltage, gap, tuned(rtol, 2, omega_1), 0.5e-6, weighted(rtol));
         emit(j);
       }
     }

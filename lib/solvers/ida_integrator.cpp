@@ -191,6 +191,21 @@ void IdaIntegrator::initialize(Real t0, std::span<const Real> y0, std::span<cons
     if (options_.initial_step > 0)
       check(IDASetInitStep(mem_, options_.initial_step), "IDASetInitStep");
     if (options_.max_step > 0) check(IDASetMaxStep(mem_, options_.max_step), "IDASetMaxStep");
+    if (options_.nonlinear_convergence > 0)
+      check(IDASetNonlinConvCoef(mem_, options_.nonlinear_convergence), "IDASetNonlinConvCoef");
+    if (options_.max_newton_iterations > 0)
+      check(IDASetMaxNonlinIters(mem_, options_.max_newton_iterations), "IDASetMaxNonlinIters");
+    if (options_.max_convergence_failures > 0)
+      check(IDASetMaxConvFails(mem_, options_.max_convergence_failures), "IDASetMaxConvFails");
+    if (options_.jacobian_cj_change > 0)
+      check(IDASetDeltaCjLSetup(mem_, options_.jacobian_cj_change), "IDASetDeltaCjLSetup");
+    if (options_.step_growth_threshold > 0)
+      check(IDASetEtaFixedStepBounds(mem_, 1.0, options_.step_growth_threshold),
+            "IDASetEtaFixedStepBounds");
+    if (options_.max_step_growth > 0)
+      check(IDASetEtaMax(mem_, options_.max_step_growth), "IDASetEtaMax");
+    if (options_.convergence_failure_cut > 0)
+      check(IDASetEtaConvFail(mem_, options_.convergence_failure_cut), "IDASetEtaConvFail");
   }
   if (n_roots_ > 0) check(IDARootInit(mem_, n_roots_, root_trampoline), "IDARootInit");
   initialized_ = true;

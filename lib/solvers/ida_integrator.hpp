@@ -39,6 +39,23 @@ struct IdaOptions {
   int max_order = 5;
   Real initial_step = 0;  // 0: IDA chooses
   Real max_step = 0;      // 0: no limit
+  // Newton and step control of the adaptive mode (SUNDIALS IDA optional inputs; 0: IDA's
+  // default, shown in brackets). Newton stops when its estimated error, rate/(1-rate) x the
+  // last correction, is below nonlinear_convergence x the local error test's 1
+  // (IDASetNonlinConvCoef [0.33]); it gives up after max_newton_iterations
+  // (IDASetMaxNonlinIters [4]) and the step after max_convergence_failures
+  // (IDASetMaxConvFails [10]). The Jacobian is refreshed when c_j = alpha/h changes by more
+  // than jacobian_cj_change (IDASetDeltaCjLSetup [0.25]). After a step, IDA keeps h unless the
+  // error estimate allows growth by step_growth_threshold (IDASetEtaFixedStepBounds [2]); it
+  // then grows by at most max_step_growth (IDASetEtaMax [2]). A failed Newton solve cuts h by
+  // convergence_failure_cut (IDASetEtaConvFail [0.25]).
+  Real nonlinear_convergence = 0;
+  int max_newton_iterations = 0;
+  int max_convergence_failures = 0;
+  Real jacobian_cj_change = 0;
+  Real step_growth_threshold = 0;
+  Real max_step_growth = 0;
+  Real convergence_failure_cut = 0;
   // Fixed-step mode (baselines and studies): every step has this size and the error test
   // never rejects it; with max_order 1 or 2 this is backward Euler or BDF2.
   Real fixed_step = 0;
