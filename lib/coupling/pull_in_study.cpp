@@ -39,6 +39,10 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
       "atol", Dimension::Length, (per_kind ? s.run.ida.rtol : 1e-4) * scene.gap, Range::positive());
   s.run.ida.max_order = static_cast<int>(solver.get_int("max_order", 2, Range::closed(1, 5)));
   s.run.ida.max_steps = 10000000;
+  // IDA refreshes the Jacobian when c_j = alpha/h has moved by this fraction since the last
+  // one (IDASetDeltaCjLSetup); 0 keeps IDA's 0.25 (docs/BENCHMARKS.md sec. 54).
+  s.run.ida.jacobian_cj_change =
+      solver.get_real("jacobian_refresh", 0.0, Range::closed(0.0, 1.0));
   if (per_kind) {
     s.run.tolerances = per_kind_tolerances(
         scene, s.run.ida.atol,

@@ -57,6 +57,8 @@
 //                                     # actuation.contact its gap); the run stops there
 //   solver:                           # dynamic runs (IDA): rtol (default 1e-3), atol (default
 //     rtol: 1e-3                      # 1e-4 x the gap) and max_order (default 2)
+//     jacobian_refresh: 0.05          # refresh the Jacobian when c_j = alpha/h moves by this
+//                                     #   fraction (IDASetDeltaCjLSetup; default 0: IDA's 0.25)
 //
 // With actuation.contact dynamic histories go on in contact after touch-down, and a release
 // study also finds the quasi-static pull-out voltage on the contact branch from the pulled-in
