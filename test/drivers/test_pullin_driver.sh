@@ -87,6 +87,7 @@ expect_input_error laplace_plate "actuation.electrostatics" "$PLATE" --set actua
 expect_input_error electrode_off "actuation.electrode" "$PLATE" --set "actuation.electrode={x: [500 um, 600 um]}"
 expect_input_error gas_plane "gas.model" "$PLANE" --set "gas={model: reynolds, pressure: 1 atm}"
 expect_input_error bad_mode "pull_in.mode" "$PLATE" --set pull_in.mode=static
+expect_input_error jacobian_refresh_above_one "solver.jacobian_refresh" "$PLATE" --set solver.jacobian_refresh=1.5
 expect_input_error ramp_without_rise "rise_time" "$PLATE" --set "pull_in.dynamic.waveform={type: ramp}"
 # Contact and release keys (actuation.contact, pull_in.release): validated before any solve.
 CONTACT="actuation.contact={gap: 75 nm}"
