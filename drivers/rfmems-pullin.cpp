@@ -108,12 +108,17 @@ int run_immersed(const DriverCase& run_case, const DriverOptions& options) {
           j["dynamic"]["pull_in_voltage"].get<double>(),
           j["dynamic"]["not_pulling_in"].get<double>(),
           1e6 * j["dynamic"]["pull_in_time"].get<double>(), j["dynamic"]["runs"].get<int>());
-    if (j.contains("transient"))
-      std::printf("%s (immersed, gas %s): %.1f V, max tip deflection %.4f um, damping ratio %.4g\n",
+    if (j.contains("transient")) {
+      // A run that pulled in has a pull-in time and no damping figures (immersed_switch_study).
+      const Json& t = j["transient"];
+      std::printf("%s (immersed, gas %s): %.1f V, max tip deflection %.4f um, ",
                   run_case.name.c_str(), j["gas"].get<std::string>().c_str(),
-                  j["transient"]["voltage"].get<double>(),
-                  1e6 * j["transient"]["max_deflection"].get<double>(),
-                  j["transient"]["damping_ratio"].get<double>());
+                  t["voltage"].get<double>(), 1e6 * t["max_deflection"].get<double>());
+      if (t["pulled_in"].get<bool>())
+        std::printf("pull-in time %.4f us\n", 1e6 * t["pull_in_time"].get<double>());
+      else
+        std::printf("damping ratio %.4g\n", t["damping_ratio"].get<double>());
+    }
     if (j.contains("static"))
       std::printf("%s (immersed): %.1f V, static tip deflection %.5f um\n", run_case.name.c_str(),
                   j["static"]["voltage"].get<double>(), 1e6 * j["static"]["control"].get<double>());

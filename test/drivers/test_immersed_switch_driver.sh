@@ -3,9 +3,9 @@
 # on a coarse mesh (46 x 4 beam, 101 x 31 background): a static solve at 50 V exits 0, writes
 # its file and a tip deflection within 10 % of the 185 x 11 scene's (-46.3 nm); the quasi-static
 # pull-in within 8 % of the distributed closed form (132.5 V); a short transient with the
-# Reynolds film inside the strong iteration (coupling.strong_gas); the dynamic bisection with
-# its early ends; and the bad-input contract of the immersed keys (one line naming file, key
-# and value; exit 2; no result file).
+# Reynolds film inside the strong iteration (coupling.strong_gas); a transient that pulls in
+# prints its pull-in time; the dynamic bisection with its early ends; and the bad-input
+# contract of the immersed keys (one line naming file, key and value; exit 2; no result file).
 #
 # Usage: bash test_immersed_switch_driver.sh <directory of rfmems-pullin> <source directory>
 set -uo pipefail
@@ -80,6 +80,16 @@ then
   pass "dynamic bisection: early ends past the unstable equilibrium, V_dyn and t_PI unchanged"
 else
   fail "dynamic bisection: $(cat "$WORK/err")"
+fi
+# A transient that pulls in prints its pull-in time (it has no damping ratio to print), and its
+# JSON says so: 125 V on the coarse scene touches down at ~1.37 us, before the 3 us end.
+if "$DRIVER" "$CASE" "${COARSE[@]}" --set pull_in.mode=transient \
+    --set pull_in.transient.voltage=125V --set pull_in.transient.end_time=3us \
+    -o "$WORK/closing.h5" >"$WORK/closing.txt" 2>"$WORK/err" &&
+  grep -Eq "125.0 V, max tip deflection [0-9.]+ um, pull-in time 1\.3[0-9]+ us$" "$WORK/closing.txt"; then
+  pass "a transient that pulls in prints its pull-in time"
+else
+  fail "closing transient: $(cat "$WORK/closing.txt" "$WORK/err")"
 fi
 expect_input_error bad_margin "past_fold_margin" "$CASE" --set pull_in.dynamic.past_fold_margin=2
 
