@@ -31,6 +31,7 @@
 // 0 success; 2 bad input (one line on stderr, no result file); 1 other failures.
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <map>
@@ -53,6 +54,19 @@
 namespace {
 
 using namespace rfmems;
+
+// What the run at a fraction of the tolerances says of the reported pull-in time.
+std::string time_check_note(const PullInReport& report) {
+  if (!report.has_time_check) return "";
+  const DynamicRun& c = report.time_check;
+  if (!c.pulled_in || c.pull_in_time <= 0)
+    return fmt::format(" (at {:g} x the tolerances this voltage does not pull in: it is within "
+                       "the integration error of V_dyn)",
+                       report.time_check_factor);
+  return fmt::format(" ({:.2g} % from a run at {:g} x the tolerances: {:.3f} us)",
+                     100 * std::abs(report.dynamic.pull_in_time - c.pull_in_time) / c.pull_in_time,
+                     report.time_check_factor, c.pull_in_time * 1e6);
+}
 
 // The immersed-boundary switch (an `immersed` block: coupling/immersed_switch_study.hpp).
 // With gas: esbgk or immersed.electrostatics_distributed every rank of mpirun runs it: the gas
@@ -225,7 +239,8 @@ int run(const DriverOptions& options) {
       const std::string time =
           report.dynamic.pull_in_time == 0
               ? std::string("no touch-down by end_time (past the unstable equilibrium)")
-              : fmt::format("pull-in time {:.3f} us", report.dynamic.pull_in_time * 1e6);
+              : fmt::format("pull-in time {:.3f} us{}", report.dynamic.pull_in_time * 1e6,
+                            time_check_note(report));
       std::printf("  dynamic pull-in (%s voltage, %s%s%s) at %.2f V (%.3f of quasi-static; %.2f V "
                   "does not), %s; %d runs\n",
                   report.waveform.c_str(),

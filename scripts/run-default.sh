@@ -34,7 +34,11 @@ print(f"  quasi-static pull-in voltage: {q['pull_in_voltage']:.2f} V at a centre
       f"{100 * q['pull_in_fraction_of_gap']:.1f} % of the gap (thesis, plate, vacuum: 187 V)")
 print(f"  dynamic pull-in voltage (step): {dyn['pull_in_voltage']:.2f} V "
       f"({dyn['ratio_to_quasi_static']:.3f} of quasi-static; thesis, vacuum: 171 V)")
-print(f"  pull-in time just above it: {1e6 * dyn['pull_in_time']:.2f} us; "
+check = dyn.get("pull_in_time_check") or {}
+estimate = check.get("relative_error_estimate")
+print(f"  pull-in time just above it: {1e6 * dyn['pull_in_time']:.2f} us"
+      + (f" (error estimate {100 * estimate:.1f} %: {1e6 * check['pull_in_time']:.2f} us at "
+         f"{check['tolerance_factor']:g} x the tolerances)" if estimate is not None else "") + "; "
       + ", ".join(f"{h['voltage']:.1f} V: " + (f"{1e6 * h['pull_in_time']:.2f} us" if h["pulled_in"] else "no pull-in")
                   for h in dyn["histories"]))
 s = dyn.get("small_signal")

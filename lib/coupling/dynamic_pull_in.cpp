@@ -222,6 +222,16 @@ std::function<Real(Real)> VoltageWaveform::at(Real amplitude) const {
   };
 }
 
+DynamicOptions with_tolerances_scaled(DynamicOptions options, Real factor) {
+  options.ida.rtol *= factor;
+  options.ida.atol *= factor;
+  for (Real& a : options.ida.atols) a *= factor;
+  options.tolerances.displacement *= factor;
+  options.tolerances.pressure *= factor;
+  options.tolerances.quasi_static *= factor;
+  return options;
+}
+
 DynamicPullIn find_dynamic_pull_in(SwitchSystem& system, Index control, Real low, Real high,
                                    Real tolerance, const DynamicOptions& options,
                                    const VoltageWaveform& waveform) {

@@ -72,6 +72,12 @@ struct DynamicOptions {
   StateTolerances tolerances;
 };
 
+// `options` with IDA's rtol and every absolute tolerance (scalar, per unknown, per kind of
+// unknown) times `factor`; the velocity weights' rate is a ratio and stays. A run at factor
+// 0.1 beside one at 1 estimates the latter's integration error (IDA's global error is roughly
+// proportional to its tolerances).
+DynamicOptions with_tolerances_scaled(DynamicOptions options, Real factor);
+
 struct DynamicSample {
   Real t, control, min_gap, electrostatic_force, gas_force;
   Real contact_force = 0, voltage = 0;

@@ -31,6 +31,10 @@
 //       voltages: [170 V, 180 V]      # step voltages whose histories are recorded (default:
 //                                     # 0.97 and 1.03 x the dynamic V_PI)
 //       output_interval: 0.1 us       # sampling of the recorded histories
+//       time_check: 0.1               # the upper end's step once more to contact at this
+//                                     # fraction of the solver's tolerances: the pull-in
+//                                     # time's error estimate (0: none; near the fold t_PI
+//                                     # amplifies IDA's local errors 10-100x, BENCHMARKS 56)
 //       small_signal: 0.3             # a step to this fraction of the quasi-static V_PI,
 //                                     # recorded to end_time: damping ratio and frequency of
 //                                     # the free response (0: none; default 0.3)
@@ -93,6 +97,7 @@ struct PullInSettings {
   Real tolerance = 0.5;
   std::vector<Real> voltages;         // empty: around the dynamic V_PI
   Real small_signal = 0.3;            // fraction of the quasi-static V_PI (0: none)
+  Real time_check = 0.1;              // tolerance factor of the pull-in time's check (0: none)
   VoltageWaveform waveform;
   LaplaceCoupling laplace_coupling = LaplaceCoupling::Staggered;  // laplace scenes
   // pull_in.release
@@ -115,6 +120,11 @@ struct PullInReport {
   bool has_dynamic = false;
   std::string waveform;               // step, ramp or pulse
   DynamicPullIn dynamic;
+  // The upper end's step to contact at time_check x the tolerances (has_time_check): its
+  // pull-in time against dynamic.pull_in_time estimates the latter's integration error.
+  bool has_time_check = false;
+  Real time_check_factor = 0;
+  DynamicRun time_check;
   std::vector<std::pair<Real, DynamicRun>> histories;  // (voltage, run)
   Real small_signal_voltage = 0;
   FreeResponse small_signal;
