@@ -463,7 +463,8 @@ Json pull_in_summary(const SwitchScene& scene, const PullInReport& report) {
                     {"relative_error_estimate", Json()}};
       if (c.pulled_in && c.pull_in_time > 0) {
         check["pull_in_time"] = c.pull_in_time;
-        check["relative_error_estimate"] = std::abs(d.pull_in_time - c.pull_in_time) / c.pull_in_time;
+        check["relative_error_estimate"] =
+            std::abs(d.pull_in_time - c.pull_in_time) / c.pull_in_time;
       }
       j["dynamic"]["pull_in_time_check"] = check;
     }
