@@ -31,7 +31,6 @@
 // 0 success; 2 bad input (one line on stderr, no result file); 1 other failures.
 #include <fmt/format.h>
 
-#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <map>
@@ -55,17 +54,19 @@ namespace {
 
 using namespace rfmems;
 
-// What the run at a fraction of the tolerances says of the reported pull-in time.
-std::string time_check_note(const PullInReport& report) {
-  if (!report.has_time_check) return "";
-  const DynamicRun& c = report.time_check;
-  if (!c.pulled_in || c.pull_in_time <= 0)
+// What the run at a fraction of the tolerances says of the reported pull-in time (the
+// summary's dynamic.pull_in_time_check, pull_in_results.hpp).
+std::string time_check_note(const Json& dynamic) {
+  if (!dynamic.contains("pull_in_time_check")) return "";
+  const Json& c = dynamic["pull_in_time_check"];
+  const double factor = c["tolerance_factor"].get<double>();
+  if (c["relative_error_estimate"].is_null())
     return fmt::format(" (at {:g} x the tolerances this voltage does not pull in: it is within "
                        "the integration error of V_dyn)",
-                       report.time_check_factor);
+                       factor);
   return fmt::format(" ({:.2g} % from a run at {:g} x the tolerances: {:.3f} us)",
-                     100 * std::abs(report.dynamic.pull_in_time - c.pull_in_time) / c.pull_in_time,
-                     report.time_check_factor, c.pull_in_time * 1e6);
+                     100 * c["relative_error_estimate"].get<double>(), factor,
+                     1e6 * c["pull_in_time"].get<double>());
 }
 
 // The immersed-boundary switch (an `immersed` block: coupling/immersed_switch_study.hpp).
@@ -117,11 +118,12 @@ int run_immersed(const DriverCase& run_case, const DriverOptions& options) {
     if (j.contains("dynamic"))
       std::printf(
           "%s (immersed, gas %s): dynamic pull-in at %.2f V (%.2f V does not), pull-in "
-          "time %.3f us; %d runs\n",
+          "time %.3f us%s; %d runs\n",
           run_case.name.c_str(), j["gas"].get<std::string>().c_str(),
           j["dynamic"]["pull_in_voltage"].get<double>(),
           j["dynamic"]["not_pulling_in"].get<double>(),
-          1e6 * j["dynamic"]["pull_in_time"].get<double>(), j["dynamic"]["runs"].get<int>());
+          1e6 * j["dynamic"]["pull_in_time"].get<double>(),
+          time_check_note(j["dynamic"]).c_str(), j["dynamic"]["runs"].get<int>());
     if (j.contains("transient")) {
       // A run that pulled in has a pull-in time and no damping figures (immersed_switch_study).
       const Json& t = j["transient"];
@@ -240,7 +242,7 @@ int run(const DriverOptions& options) {
           report.dynamic.pull_in_time == 0
               ? std::string("no touch-down by end_time (past the unstable equilibrium)")
               : fmt::format("pull-in time {:.3f} us{}", report.dynamic.pull_in_time * 1e6,
-                            time_check_note(report));
+                            time_check_note(summary["pull_in"]["dynamic"]));
       std::printf("  dynamic pull-in (%s voltage, %s%s%s) at %.2f V (%.3f of quasi-static; %.2f V "
                   "does not), %s; %d runs\n",
                   report.waveform.c_str(),

@@ -223,9 +223,7 @@ std::function<Real(Real)> VoltageWaveform::at(Real amplitude) const {
 }
 
 DynamicOptions with_tolerances_scaled(DynamicOptions options, Real factor) {
-  options.ida.rtol *= factor;
-  options.ida.atol *= factor;
-  for (Real& a : options.ida.atols) a *= factor;
+  options.ida = with_tolerances_scaled(options.ida, factor);
   options.tolerances.displacement *= factor;
   options.tolerances.pressure *= factor;
   options.tolerances.quasi_static *= factor;

@@ -22,6 +22,10 @@
 //     contact_gap: 0.3 um             # touch-down gap (default 1.5 background cell heights:
 //                                     # the IB layer cannot resolve a thinner gap)
 //     dynamic: {bracket: [100 V, 140 V], tolerance: 1 V, end_time: 6 us}
+//       time_check: 0.1               # the upper end's step once more to contact at this
+//                                     # fraction of the solver's tolerances: the pull-in
+//                                     # time's error estimate (0: none; default 0.1, 0 with
+//                                     # the esbgk gas, where it is one more 10-40 min run)
 //     transient: {voltage: 80 V, end_time: 4 us, output_interval: 0.01 us}
 //     static: {voltage: 50 V}
 //     quasi_static: {points: 16, max_fraction: 0.6, voltage_tolerance: 0.05 V}
@@ -78,6 +82,7 @@ struct ImmersedSwitchCase {
   std::string mode;
   ImmersedRunOptions run;
   Real bracket_low = 0, bracket_high = 0, tolerance = 1;
+  Real time_check = 0.1;  // pull_in.dynamic.time_check (pull_in_study.hpp's key)
   Real voltage = 0;  // transient / static
   QuasiStaticOptions quasi_static;
   Real mean_free_path = 0;  // gas: at the ambient pressure

@@ -1,5 +1,6 @@
 #include "coupling/pull_in_results.hpp"
 
+#include <cmath>
 #include <vector>
 
 namespace rfmems {
@@ -41,6 +42,19 @@ Json free_response_json(const FreeResponse& r) {
            {{"damping_ratio", r.log_decrement.damping_ratio},
             {"frequency", r.log_decrement.frequency},
             {"swings", r.log_decrement.swings}}}};
+}
+
+Json pull_in_time_check_json(Real factor, Real pull_in_time, const DynamicRun& check) {
+  Json j = {{"tolerance_factor", factor},
+            {"pulled_in", check.pulled_in},
+            {"steps", check.stats.steps},
+            {"pull_in_time", Json()},
+            {"relative_error_estimate", Json()}};
+  if (check.pulled_in && check.pull_in_time > 0) {
+    j["pull_in_time"] = check.pull_in_time;
+    j["relative_error_estimate"] = std::abs(pull_in_time - check.pull_in_time) / check.pull_in_time;
+  }
+  return j;
 }
 
 }  // namespace rfmems

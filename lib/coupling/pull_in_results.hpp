@@ -22,4 +22,10 @@ void write_dynamic_history(ResultWriter& writer, const std::string& name, const 
 // (log_decrement: damping_ratio, frequency, swings).
 Json free_response_json(const FreeResponse& response);
 
+// The pull-in time's check in the summaries (pull_in_time_check): the bisection's upper end
+// run again to contact at `factor` x the tolerances. tolerance_factor, pulled_in, steps, and
+// pull_in_time and relative_error_estimate = |pull_in_time - check| / check (both null if the
+// check did not touch down: the upper end is within the integration error of V_dyn).
+Json pull_in_time_check_json(Real factor, Real pull_in_time, const DynamicRun& check);
+
 }  // namespace rfmems

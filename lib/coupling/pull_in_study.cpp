@@ -453,21 +453,9 @@ Json pull_in_summary(const SwitchScene& scene, const PullInReport& report) {
                            {"extreme_control", run.extreme_control},
                            {"steps", run.stats.steps}});
     j["dynamic"]["histories"] = histories;
-    if (report.has_time_check) {
-      // A check that does not pull in: the upper end is within the integration error of V_dyn.
-      const DynamicRun& c = report.time_check;
-      Json check = {{"tolerance_factor", report.time_check_factor},
-                    {"pulled_in", c.pulled_in},
-                    {"steps", c.stats.steps},
-                    {"pull_in_time", Json()},
-                    {"relative_error_estimate", Json()}};
-      if (c.pulled_in && c.pull_in_time > 0) {
-        check["pull_in_time"] = c.pull_in_time;
-        check["relative_error_estimate"] =
-            std::abs(d.pull_in_time - c.pull_in_time) / c.pull_in_time;
-      }
-      j["dynamic"]["pull_in_time_check"] = check;
-    }
+    if (report.has_time_check)
+      j["dynamic"]["pull_in_time_check"] =
+          pull_in_time_check_json(report.time_check_factor, d.pull_in_time, report.time_check);
     if (!report.dynamic_coupling.empty()) {
       j["dynamic"]["laplace_coupling"] = report.dynamic_coupling;
       j["dynamic"]["laplace_solves"] = report.dynamic_laplace_solves;

@@ -19,6 +19,14 @@ static_assert(SUNDIALS_VERSION_MAJOR == 6 && SUNDIALS_VERSION_MINOR == 4,
 
 namespace rfmems {
 
+IdaOptions with_tolerances_scaled(IdaOptions ida, Real factor) {
+  ida.rtol *= factor;
+  ida.atol *= factor;
+  for (Real& a : ida.atols) a *= factor;
+  return ida;
+}
+
+
 namespace {
 void check(int flag, const char* call) {
   if (flag < 0) throw SolverError(fmt::format("IDA: {} failed with flag {}", call, flag));

@@ -66,6 +66,11 @@ struct IdaOptions {
   long max_steps = 100000;
 };
 
+// `ida` with rtol and the absolute tolerances (scalar and per component) times `factor`: the
+// same run at tighter (factor < 1) tolerances, whose answer beside the first estimates the
+// first's integration error (IDA's global error is roughly proportional to its tolerances).
+IdaOptions with_tolerances_scaled(IdaOptions ida, Real factor);
+
 struct IntegratorStats {
   long steps = 0, residual_evals = 0, jacobian_evals = 0, newton_iters = 0, linear_setups = 0;
   long linear_iters = 0, preconditioner_setups = 0;

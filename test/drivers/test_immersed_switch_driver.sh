@@ -4,8 +4,9 @@
 # its file and a tip deflection within 10 % of the 185 x 11 scene's (-46.3 nm); the quasi-static
 # pull-in within 8 % of the distributed closed form (132.5 V); a short transient with the
 # Reynolds film inside the strong iteration (coupling.strong_gas); a transient that pulls in
-# prints its pull-in time; the dynamic bisection with its early ends; and the bad-input
-# contract of the immersed keys (one line naming file, key and value; exit 2; no result file).
+# prints its pull-in time; the dynamic bisection with its early ends and the pull-in time's
+# check; and the bad-input contract of the immersed keys (one line naming file, key and value;
+# exit 2; no result file).
 #
 # Usage: bash test_immersed_switch_driver.sh <directory of rfmems-pullin> <source directory>
 set -uo pipefail
@@ -75,9 +76,12 @@ assert d["pull_in_voltage"] == 122.5 and d["not_pulling_in"] == 121.25, d
 assert abs(d["pull_in_time"] / 2.157482e-6 - 1) < 1e-4, d
 assert d["past_fold_runs"] >= 1, d
 assert abs(d["quasi_static_pull_in_voltage"] / 132.5 - 1) < 0.08, d
+# The pull-in time's check (the upper end at 0.1 x the tolerances): 2.157883 us, 1.9e-4 away.
+c = d["pull_in_time_check"]
+assert c["pulled_in"] and c["tolerance_factor"] == 0.1 and c["relative_error_estimate"] < 1e-3, c
 PY
 then
-  pass "dynamic bisection: early ends past the unstable equilibrium, V_dyn and t_PI unchanged"
+  pass "dynamic bisection: early ends past the unstable equilibrium, V_dyn and t_PI unchanged, t_PI checked"
 else
   fail "dynamic bisection: $(cat "$WORK/err")"
 fi
@@ -92,6 +96,7 @@ else
   fail "closing transient: $(cat "$WORK/closing.txt" "$WORK/err")"
 fi
 expect_input_error bad_margin "past_fold_margin" "$CASE" --set pull_in.dynamic.past_fold_margin=2
+expect_input_error bad_time_check "time_check" "$CASE" --set pull_in.dynamic.time_check=-0.1
 
 expect_input_error bad_cells "cells" "$CASE" --set "immersed.background.cells=[2, 50]"
 expect_input_error bad_electrode "x" "$CASE" --set "immersed.electrode.x=[50 um, 40 um]"
