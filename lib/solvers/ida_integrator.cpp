@@ -26,7 +26,6 @@ IdaOptions with_tolerances_scaled(IdaOptions ida, Real factor) {
   return ida;
 }
 
-
 namespace {
 void check(int flag, const char* call) {
   if (flag < 0) throw SolverError(fmt::format("IDA: {} failed with flag {}", call, flag));

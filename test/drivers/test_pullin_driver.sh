@@ -2,8 +2,8 @@
 # rfmems-pullin end to end: the default switch case (plate, parallel-plate law, Reynolds gas)
 # at 1 atm and 1 kPa: quasi-static V_PI near the thesis's 187 V, dynamic V_PI below it, higher
 # with more gas (damping), pull-in slower at 1 atm at the same voltage, the pull-in time's
-# error estimate against a converged run; the Laplace plane case
-# near the thesis's 181 V; the plots; and the bad-input contract for actuation and gas keys.
+# error estimate against a converged run; the Laplace plane case near the thesis's 181 V; the
+# plots; and the bad-input contract for actuation and gas keys.
 #
 # Usage: bash test_pullin_driver.sh <directory of rfmems-pullin> <source directory>
 set -uo pipefail
@@ -33,15 +33,11 @@ assert abs(kpa["dynamic"]["ratio_to_quasi_static"] - 0.91) < 0.02, kpa["dynamic"
 assert atm["dynamic"]["pull_in_voltage"] > kpa["dynamic"]["pull_in_voltage"]
 t_atm, t_kpa = (d["dynamic"]["histories"][0] for d in (atm, kpa))
 assert t_atm["pulled_in"] and t_kpa["pulled_in"] and t_atm["pull_in_time"] > t_kpa["pull_in_time"], (t_atm, t_kpa)
-# Small-signal damping ratio: a 40 um wide strip in air at 1 atm, zeta = mu_eff b^2 /
-# (2 rho h g^3 omega) = 0.0101 (incompressible film, Veijola mu_eff at Kn = 0.018), measured
-# ~0.012 on 4 cells across (the open-edge half-cell error 2 (dy/b)^2 = 12.5 %, and the gap
-# closed a little by the 0.3 V_PI step); at 1 kPa Kn = 1.8 and mu_eff drops 19-fold.
 # The pull-in time's check (the upper end again at 0.1 x the tolerances) estimates the reported
 # time's error: at 1 atm the bisection ends at 173.9056 V, where t_PI converges to 11.76621 us
 # (pull_in.mode=transient at that voltage, rtol 1e-6 and 1e-7 agree to 6e-8; BENCHMARKS 56)
 # and the default rtol 1e-3 is 1.1 % off; the estimate must say so within a factor 2, and the
-# check itself be far closer.
+# check be closer to the converged time than a quarter of the estimate.
 c = atm["dynamic"]["pull_in_time_check"]
 assert c["pulled_in"] and c["tolerance_factor"] == 0.1, c
 assert abs(atm["dynamic"]["pull_in_voltage"] - 173.9056) < 1e-3, atm["dynamic"]
@@ -50,6 +46,10 @@ error = abs(atm["dynamic"]["pull_in_time"] - t_ref) / t_ref
 assert 0.5 < error / c["relative_error_estimate"] < 2, (error, c)
 assert abs(c["pull_in_time"] - t_ref) / t_ref < 0.25 * c["relative_error_estimate"], (error, c)
 assert kpa["dynamic"]["pull_in_time_check"]["relative_error_estimate"] < 0.01, kpa["dynamic"]
+# Small-signal damping ratio: a 40 um wide strip in air at 1 atm, zeta = mu_eff b^2 /
+# (2 rho h g^3 omega) = 0.0101 (incompressible film, Veijola mu_eff at Kn = 0.018), measured
+# ~0.012 on 4 cells across (the open-edge half-cell error 2 (dy/b)^2 = 12.5 %, and the gap
+# closed a little by the 0.3 V_PI step); at 1 kPa Kn = 1.8 and mu_eff drops 19-fold.
 z_atm, z_kpa = (d["dynamic"]["small_signal"]["damping_ratio"] for d in (atm, kpa))
 assert 0.009 < z_atm < 0.015 and z_atm > 8 * z_kpa, (z_atm, z_kpa)
 print(f"V_dyn 1 atm {atm['dynamic']['pull_in_voltage']:.2f} V, 1 kPa {kpa['dynamic']['pull_in_voltage']:.2f} V; "
