@@ -52,7 +52,8 @@ Json pull_in_time_check_json(Real factor, Real pull_in_time, const DynamicRun& c
             {"relative_error_estimate", Json()}};
   if (check.pulled_in && check.pull_in_time > 0) {
     j["pull_in_time"] = check.pull_in_time;
-    j["relative_error_estimate"] = std::abs(pull_in_time - check.pull_in_time) / check.pull_in_time;
+    j["relative_error_estimate"] =
+        std::abs(pull_in_time - check.pull_in_time) / check.pull_in_time;
   }
   return j;
 }

@@ -200,7 +200,6 @@ void check_pull_in_time(const DynamicRunner& run, const DynamicOptions& bisectio
   tight.stop_past_fold = false;
   report.time_check = run(report.dynamic.voltage, tight);
   report.time_check_factor = settings.time_check;
-  report.has_time_check = true;
 }
 
 // Mode transient: the step voltage from rest by the case's coupling scheme.
@@ -453,7 +452,7 @@ Json pull_in_summary(const SwitchScene& scene, const PullInReport& report) {
                            {"extreme_control", run.extreme_control},
                            {"steps", run.stats.steps}});
     j["dynamic"]["histories"] = histories;
-    if (report.has_time_check)
+    if (report.time_check_factor > 0)
       j["dynamic"]["pull_in_time_check"] =
           pull_in_time_check_json(report.time_check_factor, d.pull_in_time, report.time_check);
     if (!report.dynamic_coupling.empty()) {

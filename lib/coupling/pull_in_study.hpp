@@ -120,9 +120,8 @@ struct PullInReport {
   bool has_dynamic = false;
   std::string waveform;               // step, ramp or pulse
   DynamicPullIn dynamic;
-  // The upper end's step to contact at time_check x the tolerances (has_time_check): its
+  // The upper end's step to contact at time_check_factor x the tolerances (0: not run): its
   // pull-in time against dynamic.pull_in_time estimates the latter's integration error.
-  bool has_time_check = false;
   Real time_check_factor = 0;
   DynamicRun time_check;
   std::vector<std::pair<Real, DynamicRun>> histories;  // (voltage, run)
