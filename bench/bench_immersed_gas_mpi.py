@@ -64,15 +64,15 @@ def main():
                 cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "--bind-to", "none",
                        *mca, "-np", str(ranks)] + cmd
             j, wall, cpu, load0, load1 = run(cmd)
-            im = j["immersed"]
+            im = j["pull_in"]
             line = {
                 "bench": "immersed_gas_mpi",
                 "date": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()),
                 "ranks": ranks, "sets": sets, "mca": a.mca if ranks > 1 else [], "wall_s": wall, "cpu_s": cpu,
                 "load_before": load0, "load_after": load1,
                 "driver_wall_s": j["wall_time_s"],
-                "cpu_root": im["cpu"], "transient": im["transient"],
-                "background_cells": im["background_cells"],
+                "cpu_root": im["counters"], "transient": im["transient"],
+                "background_cells": im["immersed"]["background_cells"],
             }
             if "communication_rank0" in j:
                 line["communication_rank0"] = j["communication_rank0"]

@@ -21,7 +21,8 @@
 #include <nlohmann/json.hpp>
 
 #include "bench_support.hpp"
-#include "coupling/immersed_switch_study.hpp"
+#include "coupling/pull_in_study.hpp"
+#include "coupling/switch_scene.hpp"
 #include "io/case_file.hpp"
 
 using namespace rfmems;
@@ -44,14 +45,17 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   sets.push_back("gas.model=" + gas);
   sets.push_back("pull_in.mode=transient");
+  sets.push_back("pull_in.transient.voltage=" + std::to_string(voltage));
+  sets.push_back("pull_in.transient.end_time=" + std::to_string(end_time));
 
   const CaseFile file = CaseFile::load(path, sets);
   const CaseNode root = file.root();
   const std::string dir = path.substr(0, path.find_last_of('/') + 1);
-  ImmersedSwitchCase c = read_immersed_switch_case(root, dir.empty() ? "." : dir);
-  c.run.end_time = end_time;
-  c.run.stop_at_turning = false;
-  c.run.output_interval = end_time / 400;
+  SwitchScene scene = build_switch_scene(root, dir.empty() ? "." : dir);
+  if (!scene.immersed) throw InputError("bench_immersed_switch needs an immersed case");
+  ImmersedField& field = *scene.immersed;
+  DynamicOptions run = read_pull_in_settings(root, scene).transient_run;
+  run.output_interval = end_time / 400;
 
   struct Result {
     std::string name;
@@ -60,12 +64,12 @@ int main(int argc, char** argv) {
     double wall;
   };
   std::vector<Result> results;
-  auto go = [&](const std::string& name, ImmersedRunOptions o) {
-    c.scene->reset_times();
-    std::unique_ptr<ImmersedGasModel> g = make_case_gas(root, *c.scene, c.geometry);
+  auto go = [&](const std::string& name, DynamicOptions o) {
+    field.sw->reset_times();
+    std::unique_ptr<ImmersedGasModel> g = field.make_gas();
     const double w0 = bench::now();
-    DynamicRun run = c.scene->run(voltage, o, g.get());
-    results.push_back({name, std::move(run), c.scene->times(), bench::now() - w0});
+    DynamicRun history = field.sw->run(voltage, o, g.get());
+    results.push_back({name, std::move(history), field.sw->times(), bench::now() - w0});
     const Result& r = results.back();
     const ImmersedPhysicsTimes& t = r.times;
     const double cpu =
@@ -77,8 +81,9 @@ int main(int argc, char** argv) {
     j["overrides"] = sets;
     j["voltage"] = voltage;
     j["end_time"] = end_time;
-    j["beam_cells"] = c.beam->mesh->n_cells();
-    j["background_cells"] = {c.geometry.background_cells[0], c.geometry.background_cells[1]};
+    j["beam_cells"] = scene.structure->structure_mesh().n_cells();
+    j["background_cells"] = {field.geometry.background_cells[0],
+                             field.geometry.background_cells[1]};
     j["max_tip_deflection"] = -r.run.extreme_control;
     j["pulled_in"] = r.run.pulled_in;
     j["pull_in_time"] = r.run.pull_in_time;
@@ -108,21 +113,21 @@ int main(int argc, char** argv) {
     j["load_average_1min"] = load[0];
     bench::emit(j);
   };
-  go("staggered", c.run);
+  go("staggered", run);
   if (fresh_lu) {
-    c.scene->set_electrostatics_lu(LuReuse::Fresh);
-    go("fresh_lu", c.run);
-    c.scene->set_electrostatics_lu(LuReuse::Reuse);
+    field.sw->set_electrostatics_lu(LuReuse::Fresh);
+    go("fresh_lu", run);
+    field.sw->set_electrostatics_lu(LuReuse::Reuse);
   }
   if (!no_tight) {
-    ImmersedRunOptions tight = c.run;
+    DynamicOptions tight = run;
     tight.ida.rtol /= 10;
     tight.ida.atol /= 10;
     go("tight", tight);
   }
   if (implicit) {
-    ImmersedRunOptions o = c.run;
-    o.coupling = ImmersedCoupling::Implicit;
+    DynamicOptions o = run;
+    o.coupling.scheme = CouplingScheme::Implicit;
     go("implicit", o);
   }
   nlohmann::json d;

@@ -26,6 +26,7 @@
 #include "coupling/quasi_static_pull_in.hpp"
 #include "coupling/quasi_static_pull_out.hpp"
 #include "coupling/switch_scene.hpp"
+#include "coupling/switch_system.hpp"
 #include "coupling/touching_point.hpp"
 #include "io/case_file.hpp"
 
@@ -60,10 +61,9 @@ int main(int argc, char** argv) {
                                      "actuation.contact={gap: 75 nm, penetration: 7.5 nm}"};
   overrides.insert(overrides.end(), sets.begin(), sets.end());
   const CaseFile cf = CaseFile::load(path, overrides);
-  SwitchScene scene = build_switch_scene(cf.root(), bench::default_cases_dir() + "/switch_plate",
-                                         AnalysisType::Transient);
+  SwitchScene scene = build_switch_scene(cf.root(), bench::default_cases_dir() + "/switch_plate");
   const PullInSettings settings = read_pull_in_settings(cf.root(), scene);
-  const auto system = scene.make_transient_system();
+  const auto system = make_switch_system(scene);
   Json base = {{"bench", "plate_release"}, {"cells", cells}, {"gas", gas}, {"voltage", voltage}};
 
   if (touching_only) {

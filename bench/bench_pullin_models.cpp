@@ -44,9 +44,9 @@
 // Output: one JSON object per line on stdout; progress on stderr.
 //   bench_pullin_models [--quick] [--plate-nx 20 40 80 160] [--plane-nx 50 100 200]
 //                       [--sections default quasi_static dynamic laplace_dynamic]
-#include <CLI/CLI.hpp>
 #include <time.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -60,15 +60,16 @@
 #include <string>
 #include <vector>
 
+#include "bench_support.hpp"
 #include "coupling/dynamic_pull_in.hpp"
 #include "coupling/laplace_dynamic_switch.hpp"
 #include "coupling/laplace_pull_in.hpp"
 #include "coupling/pull_in_study.hpp"
 #include "coupling/quasi_static_pull_in.hpp"
 #include "coupling/switch_scene.hpp"
+#include "coupling/switch_system.hpp"
 #include "io/case_file.hpp"
 #include "physics/elasticity/elasticity_scene.hpp"
-#include "bench_support.hpp"
 
 using namespace rfmems;
 using OJson = nlohmann::ordered_json;  // rfmems::Json is unordered
@@ -78,14 +79,11 @@ namespace {
 
 using namespace rfmems::bench;
 
-
 struct Timer {
   double wall0 = now(), cpu0 = cpu_now();
   double wall() const { return now() - wall0; }
   double cpu() const { return cpu_now() - cpu0; }
 };
-
-
 
 // The 1-minute load average (/proc/loadavg), recorded beside each timing.
 double load_average_1min() {
@@ -97,17 +95,19 @@ double load_average_1min() {
   return load;
 }
 
-std::string cells(int nx, int ny) { return "mesh.cells=[" + std::to_string(nx) + "," + std::to_string(ny) + "]"; }
+std::string cells(int nx, int ny) {
+  return "mesh.cells=[" + std::to_string(nx) + "," + std::to_string(ny) + "]";
+}
 
 struct Scene {
   CaseFile file;
   SwitchScene scene;
 };
 
-std::unique_ptr<Scene> load_scene(const std::string& path, const std::vector<std::string>& overrides,
-                                  AnalysisType analysis) {
+std::unique_ptr<Scene> load_scene(const std::string& path,
+                                  const std::vector<std::string>& overrides) {
   CaseFile cf = CaseFile::load(path, overrides);
-  SwitchScene s = build_switch_scene(cf.root(), fs::path(path).parent_path().string(), analysis);
+  SwitchScene s = build_switch_scene(cf.root(), fs::path(path).parent_path().string());
   return std::make_unique<Scene>(Scene{std::move(cf), std::move(s)});
 }
 
@@ -156,7 +156,8 @@ double sequence_errors(std::vector<Point>& seq, OJson& out) {
     rows.push_back({{"mesh", pt.mesh},
                     {"value", pt.value},
                     {"error_vs_finest", std::abs(pt.value / seq.back().value - 1)},
-                    {"error_vs_richardson", std::isnan(rich) ? OJson(nullptr) : OJson(std::abs(pt.value / rich - 1))},
+                    {"error_vs_richardson",
+                     std::isnan(rich) ? OJson(nullptr) : OJson(std::abs(pt.value / rich - 1))},
                     {"wall_s", pt.wall},
                     {"cpu_s", pt.cpu}});
   out["sequence"] = rows;
@@ -172,14 +173,16 @@ const Point* cheapest_within(const std::vector<Point>& seq, double ref, double t
 }
 
 OJson matched(const std::vector<Point>& a, double ref_a, const std::vector<Point>& b, double ref_b,
-             const char* name_a, const char* name_b) {
+              const char* name_a, const char* name_b) {
   OJson out = OJson::array();
   for (double target : {1e-2, 5e-3, 1e-3}) {
     const Point* pa = cheapest_within(a, ref_a, target);
     const Point* pb = cheapest_within(b, ref_b, target);
     OJson t{{"target", target}};
-    t[name_a] = pa ? OJson{{"mesh", pa->mesh}, {"wall_s", pa->wall}, {"cpu_s", pa->cpu}} : OJson(nullptr);
-    t[name_b] = pb ? OJson{{"mesh", pb->mesh}, {"wall_s", pb->wall}, {"cpu_s", pb->cpu}} : OJson(nullptr);
+    t[name_a] =
+        pa ? OJson{{"mesh", pa->mesh}, {"wall_s", pa->wall}, {"cpu_s", pa->cpu}} : OJson(nullptr);
+    t[name_b] =
+        pb ? OJson{{"mesh", pb->mesh}, {"wall_s", pb->wall}, {"cpu_s", pb->cpu}} : OJson(nullptr);
     if (pa && pb) {
       t["ratio_wall"] = pb->wall / pa->wall;
       t["ratio_cpu"] = pb->cpu / pa->cpu;
@@ -192,8 +195,9 @@ OJson matched(const std::vector<Point>& a, double ref_a, const std::vector<Point
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Plate + parallel-plate vs plane + Laplace pull-in at matched accuracy, and the "
-               "time of the default dynamic study (JSON lines)"};
+  CLI::App app{
+      "Plate + parallel-plate vs plane + Laplace pull-in at matched accuracy, and the "
+      "time of the default dynamic study (JSON lines)"};
   std::string cases = default_cases_dir();
   std::vector<int> plate_nx{20, 40, 80, 160}, plane_nx{50, 100, 200};
   std::vector<int> dyn_plate_nx{20, 40, 80}, dyn_plane_nx{25, 50, 100};
@@ -204,7 +208,8 @@ int main(int argc, char** argv) {
   bool quick = false;
   app.add_option("--cases", cases, "the repository's cases/ directory");
   app.add_option("--plate-nx", plate_nx, "plate meshes nx (ny = nx/10), quasi-static");
-  app.add_option("--plane-nx", plane_nx, "beam meshes nx (ny = nx/12.5, gap cells 2 ny), quasi-static");
+  app.add_option("--plane-nx", plane_nx,
+                 "beam meshes nx (ny = nx/12.5, gap cells 2 ny), quasi-static");
   app.add_option("--dyn-plate-nx", dyn_plate_nx, "plate meshes, dynamic");
   app.add_option("--dyn-plane-nx", dyn_plane_nx, "beam meshes, dynamic (parallel-plate)");
   app.add_option("--dyn-tolerance", dyn_tolerance, "bisection tolerance of the mesh studies [V]");
@@ -236,7 +241,7 @@ int main(int argc, char** argv) {
   for (const std::string gas : {"reynolds", "none"}) {
     if (!wanted("default")) break;
     Timer total;
-    auto sc = load_scene(plate_case, {"gas.model=" + gas}, AnalysisType::Transient);
+    auto sc = load_scene(plate_case, {"gas.model=" + gas});
     SwitchScene& s = sc->scene;
     const PullInSettings settings = read_pull_in_settings(sc->file.root(), s);
     const double build_wall = total.wall(), build_cpu = total.cpu();
@@ -244,10 +249,10 @@ int main(int argc, char** argv) {
     const QuasiStaticPullIn qs = trace_pull_in(*s.actuation, s.control, settings.quasi_static);
     const double qs_wall = qs_timer.wall(), qs_cpu = qs_timer.cpu();
     Timer dyn_timer;
-    const std::unique_ptr<SwitchSystem> system = s.make_transient_system();
-    const DynamicPullIn d = find_dynamic_pull_in(*system, s.control, 0.8 * qs.pull_in_voltage,
-                                                 1.02 * qs.pull_in_voltage, settings.tolerance,
-                                                 settings.run);
+    const std::unique_ptr<SwitchSystem> system = make_switch_system(s);
+    const DynamicPullIn d =
+        find_dynamic_pull_in(*system, s.control, 0.8 * qs.pull_in_voltage,
+                             1.02 * qs.pull_in_voltage, settings.tolerance, settings.run);
     OJson j = common;
     j["variant"] = "default_case_study";
     j["gas"] = gas;
@@ -267,8 +272,9 @@ int main(int argc, char** argv) {
     j["bisection_cpu_s"] = dyn_timer.cpu();
     j["total_cpu_s"] = total.cpu();
     emit(j);
-    std::fprintf(stderr, "default case, gas %s: V_qs %.2f V, V_dyn %.2f V, t_PI %.3f us; "
-                         "qs %.2f s, bisection (%d runs) %.2f s, total %.2f s wall / %.2f s CPU\n",
+    std::fprintf(stderr,
+                 "default case, gas %s: V_qs %.2f V, V_dyn %.2f V, t_PI %.3f us; "
+                 "qs %.2f s, bisection (%d runs) %.2f s, total %.2f s wall / %.2f s CPU\n",
                  gas.c_str(), qs.pull_in_voltage, d.voltage, d.pull_in_time * 1e6, qs_wall, d.runs,
                  dyn_timer.wall(), total.wall(), total.cpu());
   }
@@ -279,7 +285,7 @@ int main(int argc, char** argv) {
   for (int nx : plate_nx) {
     const int ny = std::max(1, nx / 10);
     Timer t;
-    auto sc = load_scene(plate_case, {"gas.model=none", cells(nx, ny)}, AnalysisType::Static);
+    auto sc = load_scene(plate_case, {"gas.model=none", cells(nx, ny)});
     const QuasiStaticPullIn r = trace_pull_in(*sc->scene.actuation, sc->scene.control, sampling());
     Point p{std::to_string(nx) + "x" + std::to_string(ny), double(nx * ny), r.pull_in_voltage,
             t.wall(), t.cpu()};
@@ -301,15 +307,15 @@ int main(int argc, char** argv) {
     const int ny = std::max(1, static_cast<int>(std::lround(nx / 12.5)));
     const int gap_cells = 2 * ny;
     Timer t;
-    auto sc = load_scene(plane_case, {cells(nx, ny), "actuation.laplace.gap_cells=" + std::to_string(gap_cells)},
-                         AnalysisType::Static);
+    auto sc = load_scene(
+        plane_case, {cells(nx, ny), "actuation.laplace.gap_cells=" + std::to_string(gap_cells)});
     SwitchScene& s = sc->scene;
     auto* beam = dynamic_cast<ElasticityScene*>(s.structure.get());
     LaplacePullInOptions options;
     options.sampling = sampling();
     options.gap_cells = s.laplace_gap_cells;
-    const LaplacePullIn r =
-        trace_pull_in_laplace(*beam, s.facing_patch, s.gap, s.electrode, s.control, options);
+    const LaplacePullIn r = trace_pull_in_laplace(*beam, s.facing_patch, s.gap,
+                                                  s.electrodes.front(), s.control, options);
     Point p{std::to_string(nx) + "x" + std::to_string(ny) + "+gap" + std::to_string(gap_cells),
             double(nx * ny), r.result.pull_in_voltage, t.wall(), t.cpu()};
     plane_qs.push_back(p);
@@ -339,7 +345,8 @@ int main(int argc, char** argv) {
     j["matched"] = matched(plate_qs, std::isnan(ra) ? plate_qs.back().value : ra, plane_qs,
                            std::isnan(rb) ? plane_qs.back().value : rb, "plate+parallel_plate",
                            "plane+laplace");
-    j["matched_reference"] = std::string(std::isnan(ra) || std::isnan(rb) ? "finest mesh" : "richardson");
+    j["matched_reference"] =
+        std::string(std::isnan(ra) || std::isnan(rb) ? "finest mesh" : "richardson");
     emit(j);
   }
 
@@ -347,16 +354,16 @@ int main(int argc, char** argv) {
   auto dynamic_point = [&](const std::string& model, const std::string& path,
                            const std::vector<std::string>& overrides, const std::string& mesh) {
     Timer t;
-    auto sc = load_scene(path, overrides, AnalysisType::Transient);
+    auto sc = load_scene(path, overrides);
     SwitchScene& s = sc->scene;
     const QuasiStaticPullIn qs = trace_pull_in(*s.actuation, s.control, sampling());
     const double qs_wall = t.wall();
     // A plane beam has no quasi-static components: every unknown is inertial (the
     // ReducedInertiaSystem with no flags, since 018c69b).
-    const std::unique_ptr<SwitchSystem> system = s.make_transient_system();
-    const DynamicPullIn d = find_dynamic_pull_in(*system, s.control, 0.8 * qs.pull_in_voltage,
-                                                 1.02 * qs.pull_in_voltage, dyn_tolerance,
-                                                 dynamic_options(s.gap));
+    const std::unique_ptr<SwitchSystem> system = make_switch_system(s);
+    const DynamicPullIn d =
+        find_dynamic_pull_in(*system, s.control, 0.8 * qs.pull_in_voltage,
+                             1.02 * qs.pull_in_voltage, dyn_tolerance, dynamic_options(s.gap));
     // The bracket's midpoint: within tolerance / 2 of the threshold.
     Point p{mesh, 0, 0.5 * (d.voltage + d.lower), t.wall(), t.cpu()};
     OJson j = common;
@@ -377,7 +384,8 @@ int main(int argc, char** argv) {
     j["wall_s"] = p.wall;
     j["cpu_s"] = p.cpu;
     emit(j);
-    std::fprintf(stderr, "dyn %s %s: V_dyn in (%.3f, %.3f] V (qs %.3f), %d runs, %ld steps, %.2f s\n",
+    std::fprintf(stderr,
+                 "dyn %s %s: V_dyn in (%.3f, %.3f] V (qs %.3f), %d runs, %ld steps, %.2f s\n",
                  model.c_str(), mesh.c_str(), d.lower, d.voltage, qs.pull_in_voltage, d.runs,
                  d.steps, p.wall);
     return p;
@@ -407,7 +415,8 @@ int main(int argc, char** argv) {
     j["matched"] = matched(plate_dyn, std::isnan(ra) ? plate_dyn.back().value : ra, plane_dyn,
                            std::isnan(rb) ? plane_dyn.back().value : rb, "plate+parallel_plate",
                            "plane+parallel_plate");
-    j["matched_reference"] = std::string(std::isnan(ra) || std::isnan(rb) ? "finest mesh" : "richardson");
+    j["matched_reference"] =
+        std::string(std::isnan(ra) || std::isnan(rb) ? "finest mesh" : "richardson");
     emit(j);
   }
   // ---- 2b. dynamic V_PI: plate + parallel-plate against plane + Laplace -----------------
@@ -443,10 +452,11 @@ int main(int argc, char** argv) {
     j["bisection_tolerance"] = laplace_tolerance;
     j["load_average_1min"] = load_average_1min();
     emit(j);
-    std::fprintf(stderr, "dyn %s %s: V_dyn in (%.3f, %.3f] V (qs %.3f), %d runs, %ld steps, "
-                         "%.2f s wall, %.2f s CPU\n",
-                 model.c_str(), mesh.c_str(), d.lower, d.voltage, v_qs, d.runs, d.steps,
-                 p.wall, p.cpu);
+    std::fprintf(stderr,
+                 "dyn %s %s: V_dyn in (%.3f, %.3f] V (qs %.3f), %d runs, %ld steps, "
+                 "%.2f s wall, %.2f s CPU\n",
+                 model.c_str(), mesh.c_str(), d.lower, d.voltage, v_qs, d.runs, d.steps, p.wall,
+                 p.cpu);
     return p;
   };
   std::vector<Point> plate_l, plane_l;
@@ -454,15 +464,14 @@ int main(int argc, char** argv) {
     const int ny = std::max(1, nx / 10);
     const std::string mesh = std::to_string(nx) + "x" + std::to_string(ny);
     Timer t;
-    auto sc = load_scene(plate_case, {"gas.model=none", cells(nx, ny)}, AnalysisType::Transient);
+    auto sc = load_scene(plate_case, {"gas.model=none", cells(nx, ny)});
     SwitchScene& s = sc->scene;
     const QuasiStaticPullIn qs = trace_pull_in(*s.actuation, s.control, sampling());
     const double qs_wall = t.wall(), qs_cpu = t.cpu();
-    const std::unique_ptr<SwitchSystem> system = s.make_transient_system();
+    const std::unique_ptr<SwitchSystem> system = make_switch_system(s);
     const DynamicOptions o = weighted(s.gap);
-    const DynamicPullIn d =
-        find_dynamic_pull_in(*system, s.control, 0.8 * qs.pull_in_voltage,
-                             1.02 * qs.pull_in_voltage, laplace_tolerance, o);
+    const DynamicPullIn d = find_dynamic_pull_in(*system, s.control, 0.8 * qs.pull_in_voltage,
+                                                 1.02 * qs.pull_in_voltage, laplace_tolerance, o);
     OJson j = common;
     j["unknowns"] = system->size();
     plate_l.push_back(
@@ -474,21 +483,19 @@ int main(int argc, char** argv) {
     const std::string mesh =
         std::to_string(nx) + "x" + std::to_string(ny) + "+gap" + std::to_string(gap_cells);
     Timer t;
-    auto sc = load_scene(plane_case,
-                         {cells(nx, ny),
-                          "actuation.laplace.gap_cells=" + std::to_string(gap_cells)},
-                         AnalysisType::Transient);
+    auto sc = load_scene(
+        plane_case, {cells(nx, ny), "actuation.laplace.gap_cells=" + std::to_string(gap_cells)});
     SwitchScene& s = sc->scene;
     auto* beam = dynamic_cast<ElasticityScene*>(s.structure.get());
     LaplacePullInOptions qo;
     qo.sampling = sampling();
     qo.gap_cells = gap_cells;
     const LaplacePullIn qs =
-        trace_pull_in_laplace(*beam, s.facing_patch, s.gap, s.electrode, s.control, qo);
+        trace_pull_in_laplace(*beam, s.facing_patch, s.gap, s.electrodes.front(), s.control, qo);
     const double qs_wall = t.wall(), qs_cpu = t.cpu();
     LaplaceGapOptions go;
     go.gap_cells = gap_cells;
-    LaplaceDynamicSwitch sw(*beam->op, s.facing_patch, s.gap, s.electrode, s.control, go);
+    LaplaceDynamicSwitch sw(*beam->op, s.facing_patch, s.gap, s.electrodes.front(), s.control, go);
     const DynamicOptions o = weighted(s.gap);
     const double v_qs = qs.result.pull_in_voltage;
     const DynamicPullIn d = find_dynamic_pull_in([&](Real v) { return sw.run(v, o); }, 0.8 * v_qs,

@@ -65,6 +65,7 @@
 #include "coupling/dynamic_pull_in.hpp"
 #include "coupling/state_tolerances.hpp"
 #include "coupling/switch_scene.hpp"
+#include "coupling/switch_system.hpp"
 #include "io/case_file.hpp"
 #include "solvers/ida_integrator.hpp"
 
@@ -237,8 +238,7 @@ int main(int argc, char** argv) {
   app.add_option("--case", case_name,
                  "the switch case under --cases (switch_plate; switch_plate_damped: the "
                  "squeeze-film-dominated one, BENCHMARKS sec. 32)");
-  app.add_option("--end-time", g_end_time,
-                 "every run gives up (not pulled in) at this time [s]");
+  app.add_option("--end-time", g_end_time, "every run gives up (not pulled in) at this time [s]");
   app.add_option("--free-voltage", free_voltage,
                  "step voltage [V] of the free response that measures omega_1");
   app.add_option("--families", families, "integrator families to run (see the header)");
@@ -287,9 +287,8 @@ int main(int argc, char** argv) {
   for (const std::string& gas : gases) {
     const std::string case_path = cases + "/" + case_name + "/case.yaml";
     const CaseFile cf = CaseFile::load(case_path, {"gas.model=" + gas});
-    SwitchScene scene = build_switch_scene(cf.root(), fs::path(case_path).parent_path().string(),
-                                           AnalysisType::Transient);
-    const std::unique_ptr<SwitchSystem> system = scene.make_transient_system();
+    SwitchScene scene = build_switch_scene(cf.root(), fs::path(case_path).parent_path().string());
+    const std::unique_ptr<SwitchSystem> system = make_switch_system(scene);
     const double gap = scene.gap;
     Json common{{"bench", "pullin_work_error"},
                 {"case", case_name},
@@ -373,8 +372,7 @@ int main(int argc, char** argv) {
           run_dynamic(*system, scene.control, VoltageWaveform{}.at(free_voltage), o);
       const FreeResponse fr = free_response(r.history);
       if (!fr.fitted || fr.frequency <= 0) {
-        std::fprintf(stderr, "  no free oscillation at %g V: give --velocity-rate\n",
-                     free_voltage);
+        std::fprintf(stderr, "  no free oscillation at %g V: give --velocity-rate\n", free_voltage);
         return 1;
       }
       omega_1 = 2 * M_PI * fr.frequency;

@@ -14,20 +14,20 @@
 // [1/s], frequency |sqrt(lambda)| [rad/s], the cell (and component) of the largest amplitude.
 //
 //   build/bench/bench_structure_growing_modes cases/cantilever_switch/case.yaml --voltage 125
-//       --set "mesh.cells=[46,4]" --set "immersed.background.cells=[101,31]"
+//       --set "mesh.cells=[46,4]" --set "actuation.immersed.background.cells=[101,31]"
 #include <CLI/CLI.hpp>
 #include <Eigen/Eigenvalues>
 #include <complex>
 #include <limits>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "bench_support.hpp"
-#include "coupling/immersed_switch_study.hpp"
+#include "coupling/switch_scene.hpp"
 #include "io/case_file.hpp"
 #include "physics/elasticity/elasticity_scene.hpp"
-#include "physics/structure/structure_from_case.hpp"
 #include "physics/elasticity/kelvin_voigt_modes.hpp"
+#include "physics/structure/structure_from_case.hpp"
 
 using namespace rfmems;
 
@@ -45,7 +45,8 @@ Real required_damping_time(const Eigen::VectorXcd& lambdas) {
   Real high = 1e-15;
   while (!all_decay(high)) high *= 2;
   Real low = high / 2;
-  while (high - low > 0.01 * high) (all_decay(0.5 * (low + high)) ? high : low) = 0.5 * (low + high);
+  while (high - low > 0.01 * high)
+    (all_decay(0.5 * (low + high)) ? high : low) = 0.5 * (low + high);
   return high;
 }
 
@@ -66,8 +67,8 @@ nlohmann::json growth(const std::string& name, const Eigen::MatrixXd& K,
     complex_eigenvalues += 2;  // one of each conjugate pair listed
     Index largest = 0;
     es.eigenvectors().col(i).cwiseAbs().maxCoeff(&largest);
-    modes.push_back({std::abs(std::sqrt(lambda).imag()), std::abs(std::sqrt(lambda)),
-                     largest / 2, largest % 2});
+    modes.push_back({std::abs(std::sqrt(lambda).imag()), std::abs(std::sqrt(lambda)), largest / 2,
+                     largest % 2});
   }
   std::sort(modes.begin(), modes.end(), [](auto& a, auto& b) { return a.rate > b.rate; });
   nlohmann::json fastest = nlohmann::json::array();
@@ -112,15 +113,18 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   const std::string dir = path.substr(0, path.find_last_of('/') + 1);
   // The immersed switch's beam, with its load; or any elasticity case's structure (no load).
-  const bool immersed = CaseFile::load(path, sets).root().has("immersed");
+  const bool immersed = CaseFile::load(path, sets)
+                            .root()
+                            .child_or_empty("actuation")
+                            .get_string("electrostatics", "") == "immersed";
   if (immersed) sets.push_back("gas.model=none");
   const CaseFile file = CaseFile::load(path, sets);
-  std::optional<ImmersedSwitchCase> c;
+  std::optional<SwitchScene> c;
   std::unique_ptr<StructuralModel> structure;
   ElasticityOperator* beam = nullptr;
   if (immersed) {
-    c = read_immersed_switch_case(file.root(), dir.empty() ? "." : dir);
-    beam = c->beam->op.get();
+    c = build_switch_scene(file.root(), dir.empty() ? "." : dir);
+    beam = dynamic_cast<ElasticityScene&>(*c->structure).op.get();
   } else {
     structure = build_structure(file.root(), dir.empty() ? "." : dir, AnalysisType::Transient);
     if (auto* scene = dynamic_cast<ElasticityScene*>(structure.get())) beam = scene->op.get();
@@ -139,19 +143,18 @@ int main(int argc, char** argv) {
   if (all_degrees)
     for (int degree : {1, 2, 3}) {
       ElasticityOperator other(op.mesh(), op.material(), op.boundaries(), op.body_force(), degree);
-      bench::emit(
-          growth("degree " + std::to_string(degree), dense_stiffness(other), mass, beta));
+      bench::emit(growth("degree " + std::to_string(degree), dense_stiffness(other), mass, beta));
     }
   if (!with_load) return 0;
   const Index n = op.size();
-  const Real delta = 1e-4 * c->scene->rest_gap();
+  const Real delta = 1e-4 * c->immersed->sw->rest_gap();
   Eigen::MatrixXd J(n, n);
   std::vector<Real> u(n, 0.0);
   for (Index j = 0; j < n; ++j) {
     u[j] = delta;
-    const std::vector<Real> up = c->scene->electrostatic_load(u, voltage).force;
+    const std::vector<Real> up = c->immersed->sw->electrostatic_load(u, voltage).force;
     u[j] = -delta;
-    const std::vector<Real> down = c->scene->electrostatic_load(u, voltage).force;
+    const std::vector<Real> down = c->immersed->sw->electrostatic_load(u, voltage).force;
     u[j] = 0;
     for (Index i = 0; i < n; ++i) J(i, j) = (up[i] - down[i]) / (2 * delta);
   }

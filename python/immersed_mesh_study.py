@@ -22,18 +22,18 @@ def load(arg, mesh):
     path, _, h5 = arg.partition(":")
     with open(path) as f:
         j = json.load(f)
-    im = j["immersed"]
+    im = j["pull_in"]
     h5 = h5 or j["output"]["h5"]
     with h5py.File(h5, "r") as f:
         g = f["dynamic"]["transient"]
         t, control = g["time"][()], g["values"][()][:, 0]
-    cells = im["background_cells"] if mesh == "background" else im["beam_cells"]
+    cells = im["immersed"]["background_cells"] if mesh == "background" else j["mesh"]["cells"]
     if named:
         cells = [int(x) for x in named.split("x")]
     if not isinstance(cells, list):
         raise SystemExit(f"{path}: the beam's cells are a count ({cells}): name them, RUN.json@NXxNY")
     return {"name": path, "cells": cells, "t_pi": im["transient"]["pull_in_time"],
-            "steps": im["transient"]["steps"], "cpu": im["cpu"], "t": t, "control": control,
+            "steps": im["transient"]["steps"], "cpu": im["counters"], "t": t, "control": control,
             "contact_gap": im["contact_gap"]}
 
 

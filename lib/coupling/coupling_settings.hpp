@@ -1,32 +1,39 @@
-// The coupling scheme a switch case asks for (issue 4, "Coupling manager"):
+// How a switch's models are coupled in time: the scheme (scene_combinations.hpp) and its
+// settings, one reader for every scene.
 //
 //   coupling:
-//     scheme: monolithic        # monolithic (default) | staggered | strongly_coupled
-//     macro_step: 0.1 us        # partitioned schemes: the exchange interval H (required)
-//     tolerance: 1e-6           # strongly_coupled: relative change of the interface force
-//     max_iterations: 50        # strongly_coupled: passes per macro step
+//     scheme: monolithic        # monolithic | staggered | implicit | strongly_coupled (the
+//                               # scene's allowed schemes and default: scene_combinations.hpp)
+//     tolerance: 1e-6           # strongly_coupled: relative change of the interface load
+//     max_iterations: 20        # strongly_coupled: iterations per step (macro step)
+//     macro_step: 0.1 us        # parallel_plate: with reynolds, staggered or strongly_coupled,
+//                               # the interval H at which film and plate exchange (required)
+//     gas_every: 1              # immersed: the gas advanced over every k-th accepted
+//                               # structural step (one gas step spanning k, force held)
+//     strong_gas: false         # immersed, strongly_coupled: the gas inside the iterations
+//                               # (redone per iterate; the fixed point on the electrostatic +
+//                               # gas load; gas_every 1)
 //
-// Monolithic: plate, parallel-plate force and Reynolds film in one IDA system with the exact
-// coupled Jacobian (squeeze_film_switch_system.hpp). The partitioned schemes
-// (partitioned_switch.hpp) split exactly that scene into a film and a structure integrator,
-// so they need the gas film (gas.model: reynolds) and the parallel-plate law, and they drive
-// only the single transient run (pull_in.mode: transient): the bisections and the
-// quasi-static continuation stay monolithic. docs/BENCHMARKS.md section 8 measured them.
+// Every key is checked whatever the scheme, so that a case switched by --set stays valid; a key
+// of another field's schemes is bad input.
 #pragma once
 #include <string>
 
-#include "coupling/partitioned_switch.hpp"
-#include "coupling/switch_scene.hpp"
+#include "core/types.hpp"
+#include "coupling/scene_combinations.hpp"
 #include "io/case_file.hpp"
 
 namespace rfmems {
 
-// Reads and validates root.coupling (absent: monolithic); `transient` says whether the case's
-// pull_in.mode is transient (the only mode a partitioned scheme drives).
-PartitionedOptions read_coupling_options(const CaseNode& root, const SwitchScene& scene,
-                                         bool transient);
+struct CouplingOptions {
+  CouplingScheme scheme = CouplingScheme::Monolithic;
+  Real tolerance = 1e-6;    // strongly_coupled: |F_k+1 - F_k| <= tolerance |F_k+1|
+  int max_iterations = 20;  // strongly_coupled: per step
+  Real macro_step = 0;      // partitioned parallel_plate + reynolds: H [s]
+  int gas_every = 1;        // immersed
+  bool strong_gas = false;  // immersed, strongly_coupled
+};
 
-// "monolithic", "staggered", "strongly_coupled": the case-file spelling.
-std::string coupling_scheme_name(CouplingScheme scheme);
+CouplingOptions read_coupling_options(const CaseNode& root, const SceneChoice& choice);
 
 }  // namespace rfmems

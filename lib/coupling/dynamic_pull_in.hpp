@@ -38,9 +38,10 @@
 #include <functional>
 #include <vector>
 
-#include "coupling/state_tolerances.hpp"
+#include "coupling/coupling_settings.hpp"
 #include "coupling/past_unstable_equilibrium.hpp"
 #include "coupling/settled_at_rest.hpp"
+#include "coupling/state_tolerances.hpp"
 #include "coupling/switch_system.hpp"
 #include "coupling/turning_back.hpp"
 #include "solvers/ida_integrator.hpp"
@@ -48,9 +49,9 @@
 namespace rfmems {
 
 struct DynamicOptions {
-  Real end_time = 0;            // the run gives up (not pulled in) here (absolute time)
-  Real contact_gap = 0;         // touch-down when the smallest gap reaches this [m]
-  bool stop_at_turning = true;  // end when the control unknown turns back (see above)
+  Real end_time = 0;                       // the run gives up (not pulled in) here (absolute time)
+  Real contact_gap = 0;                    // touch-down when the smallest gap reaches this [m]
+  bool stop_at_turning = true;             // end when the control unknown turns back (see above)
   Real turning_retreat = kTurningRetreat;  // the retreat that counts as turned back
                                            // (coupling/turning_back.hpp)
   Real settle_tolerance = kSettleTolerance;  // with stop_at_turning: end when settled at a
@@ -58,18 +59,21 @@ struct DynamicOptions {
   // The quasi-static fold and its unstable branch (quasi_static_pull_in.hpp; unknown: neither
   // the settle rule, which needs the fold's deflection, nor the past-fold rule).
   FoldBranch fold;
-  bool stop_past_fold = true;   // with stop_at_turning: end pulled in when past the unstable
-                                // equilibrium (past_unstable_equilibrium.hpp; needs a voltage
-                                // that does not fall)
+  bool stop_past_fold = true;  // with stop_at_turning: end pulled in when past the unstable
+                               // equilibrium (past_unstable_equilibrium.hpp; needs a voltage
+                               // that does not fall)
   Real past_fold_margin = kPastFoldMargin;  // beyond it by this fraction of |x_fold|
-  bool stop_at_contact = true;  // end at touch-down (false: go on in contact; needs a penalty)
-  Real stop_after_contact = -1; // >= 0 (with stop_at_contact false): end this long after
-                                // touch-down (where a release study drops the voltage)
-  Real release_gap = 0;         // > 0: end when the smallest gap rises through this (release)
-  Real output_interval = 0;     // > 0: record samples every this much (else only events)
+  bool stop_at_contact = true;   // end at touch-down (false: go on in contact; needs a penalty)
+  Real stop_after_contact = -1;  // >= 0 (with stop_at_contact false): end this long after
+                                 // touch-down (where a release study drops the voltage)
+  Real release_gap = 0;          // > 0: end when the smallest gap rises through this (release)
+  Real output_interval = 0;      // > 0: record samples every this much (else only events)
   IdaOptions ida;
   // Error weights per kind of unknown (state_tolerances.hpp); off: ida.atol on every unknown.
   StateTolerances tolerances;
+  // How the scene's models are stepped together (coupling_settings.hpp); run_dynamic is the
+  // monolithic scheme, the field- and film-coupled runners read the scheme and its settings.
+  CouplingOptions coupling;
 };
 
 // `options` with IDA's rtol and every absolute tolerance (scalar, per unknown, per kind of
@@ -91,14 +95,14 @@ struct DynamicState {
 
 struct DynamicRun {
   bool pulled_in = false;
-  Real pull_in_time = 0;        // time of (the first) touch-down (pulled_in; 0 if past_fold)
-  bool past_fold = false;       // pulled in: ended past the unstable equilibrium, before contact
-  int touch_downs = 0;          // contact root crossings downwards (bounces count again)
+  Real pull_in_time = 0;   // time of (the first) touch-down (pulled_in; 0 if past_fold)
+  bool past_fold = false;  // pulled in: ended past the unstable equilibrium, before contact
+  int touch_downs = 0;     // contact root crossings downwards (bounces count again)
   bool released = false;
-  Real release_time = 0;        // time of lift-off (released)
-  Real turning_time = 0;        // time of the first turning point (0: none)
-  bool settled = false;         // came to rest at a stable equilibrium (final_time: when)
-  Real extreme_control = 0;     // the control unknown's most negative value
+  Real release_time = 0;     // time of lift-off (released)
+  Real turning_time = 0;     // time of the first turning point (0: none)
+  bool settled = false;      // came to rest at a stable equilibrium (final_time: when)
+  Real extreme_control = 0;  // the control unknown's most negative value
   Real final_time = 0;
   DynamicState final_state;
   IntegratorStats stats;
@@ -129,12 +133,12 @@ LogDecrement log_decrement(const std::vector<DynamicSample>& history);
 // of 1-2 % of the static deflection biases the fit's zeta 2-3x more, test_step_response_fit),
 // and they keep docs/BENCHMARKS.md 6e's figures.
 struct FreeResponse {
-  bool fitted = false;        // false: too few samples or no motion, nothing measured
+  bool fitted = false;              // false: too few samples or no motion, nothing measured
   bool from_log_decrement = false;  // damping_ratio and frequency are the log decrement's
-  Real damping_ratio = 0;     // zeta
-  Real frequency = 0;         // damped [Hz] (0: overdamped, zeta >= 1)
-  Real natural_frequency = 0; // undamped [Hz]
-  Real residual = 0;          // the fit's rms misfit / |x_s - x_0|
+  Real damping_ratio = 0;           // zeta
+  Real frequency = 0;               // damped [Hz] (0: overdamped, zeta >= 1)
+  Real natural_frequency = 0;       // undamped [Hz]
+  Real residual = 0;                // the fit's rms misfit / |x_s - x_0|
   Real fit_damping_ratio = 0, fit_frequency = 0;  // the fit's zeta and damped frequency
   LogDecrement log_decrement;
 };
@@ -145,7 +149,7 @@ FreeResponse free_response(const std::vector<DynamicSample>& history);
 // unstable equilibrium (pulled in).
 struct EarlyEnds {
   SettledAtRest settle{0.0, 0.0};  // off
-  PastUnstableEquilibrium past;     // off
+  PastUnstableEquilibrium past;    // off
   bool armed() const { return settle.armed() || past.armed(); }
   // After an accepted step at time t and voltage V with the control's deflection x and
   // velocity v and the gas and electrostatic forces: records settled or pulled in past the
@@ -166,14 +170,14 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
                        const DynamicOptions& options, const DynamicState* start = nullptr);
 
 struct DynamicPullIn {
-  Real voltage = 0;             // the smallest voltage found to pull in (upper bracket end)
-  Real lower = 0;               // the largest found not to
-  Real pull_in_time = 0;        // at `voltage`, its touch-down (0: none by end_time)
-  bool upper_past_fold = false; // the bisection's run at `voltage` ended past the unstable
-                                // equilibrium (pull_in_time: from its step run again)
+  Real voltage = 0;              // the smallest voltage found to pull in (upper bracket end)
+  Real lower = 0;                // the largest found not to
+  Real pull_in_time = 0;         // at `voltage`, its touch-down (0: none by end_time)
+  bool upper_past_fold = false;  // the bisection's run at `voltage` ended past the unstable
+                                 // equilibrium (pull_in_time: from its step run again)
   int runs = 0;
-  int settled_runs = 0;         // runs ended by the settle rule
-  int past_fold_runs = 0;       // runs ended pulled in by the past-fold rule
+  int settled_runs = 0;                // runs ended by the settle rule
+  int past_fold_runs = 0;              // runs ended pulled in by the past-fold rule
   long steps = 0, residual_evals = 0;  // summed over the runs
 };
 
@@ -185,9 +189,9 @@ struct DynamicPullIn {
 struct VoltageWaveform {
   enum class Kind { Step, Ramp, Pulse };
   Kind kind = Kind::Step;
-  Real rise_time = 0;       // ramp (and the rise of a pulse); 0: a step
-  Real release_time = 0;    // pulse
-  Real hold_fraction = 0;   // pulse
+  Real rise_time = 0;      // ramp (and the rise of a pulse); 0: a step
+  Real release_time = 0;   // pulse
+  Real hold_fraction = 0;  // pulse
   std::function<Real(Real)> at(Real amplitude) const;
 };
 
@@ -203,8 +207,7 @@ DynamicPullIn find_dynamic_pull_in(SwitchSystem& system, Index control, Real low
 // scheme, coupling/partitioned_switch.hpp); end_time only for the message. to_contact: the
 // same run without the past-fold rule (empty: an upper end past the fold keeps no time).
 using PullInRunner = std::function<DynamicRun(Real amplitude)>;
-DynamicPullIn find_dynamic_pull_in(const PullInRunner& runner, Real low, Real high,
-                                   Real tolerance, Real end_time,
-                                   const PullInRunner& to_contact = {});
+DynamicPullIn find_dynamic_pull_in(const PullInRunner& runner, Real low, Real high, Real tolerance,
+                                   Real end_time, const PullInRunner& to_contact = {});
 
 }  // namespace rfmems

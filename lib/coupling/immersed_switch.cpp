@@ -330,9 +330,8 @@ QuasiStaticPullIn ImmersedSwitch::trace_quasi_static(const QuasiStaticOptions& o
       ++solves;
       return electrostatic_load(state, 1.0).force;
     };
-    const DisplacementControlResult r =
-        relax_displacement_control(stiffness, load_per_volt2, control_, delta,
-                                   coupling_tolerance, 200, u);
+    const DisplacementControlResult r = relax_displacement_control(
+        stiffness, load_per_volt2, control_, delta, coupling_tolerance, 200, u);
     if (!r.converged || r.voltage_squared < 0)
       throw SolverError(
           fmt::format("immersed switch: quasi-static coupling failed at delta = {:.4e} m", delta));
@@ -345,8 +344,11 @@ QuasiStaticPullIn ImmersedSwitch::trace_quasi_static(const QuasiStaticOptions& o
   return out;
 }
 
-DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
-                               ImmersedGasModel* gas) {
+DynamicRun ImmersedSwitch::run(Real voltage, const DynamicOptions& options, ImmersedGasModel* gas) {
+  if (options.coupling.scheme == CouplingScheme::Monolithic)
+    throw InputError(
+        "immersed switch: the field gives no exact Jacobian blocks; use staggered, "
+        "implicit or strongly_coupled");
   const Index n = beam_.size();
   // The lagged, gap-scaled IBM load (see the header); a trial gap below 2 % of g0 is retried.
   GapScaledLaggedLoad structure(beam_, gap0_, 0.02);
@@ -354,7 +356,7 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
   std::vector<Real> y(system.size(), 0.0);
   ImmersedLoad load = electrostatic_load(std::span<const Real>(y.data(), n), voltage);
   structure.set_reference(load.force, std::span<const Real>(y.data(), n));
-  if (options.coupling == ImmersedCoupling::Implicit)
+  if (options.coupling.scheme == CouplingScheme::Implicit)
     structure.set_exact(
         [&](std::span<const Real> u) { return electrostatic_load(u, voltage).force; });
   Real gas_force = 0;
@@ -372,10 +374,10 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
   // The control's velocity: the same weights on the velocity unknowns.
   const LinearFunctional velocity =
       control_.mapped([&system](Index i) { return system.velocity_index(i); });
-  StepVoltageEvents events(options.stop_at_turning, options.turning_retreat, 0.25 * first_period_,
-                           early_ends(options.stop_at_turning, options.settle_tolerance,
-                                      options.fold, options.stop_past_fold,
-                                      options.past_fold_margin));
+  StepVoltageEvents events(
+      options.stop_at_turning, options.turning_retreat, 0.25 * first_period_,
+      early_ends(options.stop_at_turning, options.settle_tolerance, options.fold,
+                 options.stop_past_fold, options.past_fold_margin));
   events.set_roots(ida, n, control_, velocity, options.contact_gap,
                    [this](std::span<const Real> u) { return min_gap(u); });
 
@@ -383,11 +385,11 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
   DynamicRun out;
   Real t_gas = 0;  // the gas's time: it advances every gas_every accepted steps
   int since_gas = 0;
-  const bool strong = options.coupling == ImmersedCoupling::Strong;
-  if (options.strong_gas && !strong)
-    throw InputError("immersed switch: strong_gas needs the strong coupling");
-  const bool gas_inside = strong && options.strong_gas && gas;
-  if (gas_inside && options.gas_every != 1)
+  const bool strong = options.coupling.scheme == CouplingScheme::StronglyCoupled;
+  if (options.coupling.strong_gas && !strong)
+    throw InputError("immersed switch: strong_gas needs the strongly_coupled scheme");
+  const bool gas_inside = strong && options.coupling.strong_gas && gas;
+  if (gas_inside && options.coupling.gas_every != 1)
     throw InputError("immersed switch: strong_gas advances the gas over every step (gas_every 1)");
   std::vector<Real> held(n, 0.0);  // the gas load in the structure's residual
   // The gas over [t_gas, t_end] with the body at state's displacement and velocity (its end
@@ -454,8 +456,8 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
         r2 += residual[i] * residual[i];
         f2 += total * total;
       }
-      const bool converged = r2 <= options.strong_tolerance * options.strong_tolerance * f2;
-      if (converged || k + 1 >= options.strong_max_iterations) {
+      const bool converged = r2 <= options.coupling.tolerance * options.coupling.tolerance * f2;
+      if (converged || k + 1 >= options.coupling.max_iterations) {
         times_.unconverged_steps += !converged;
         times_.max_coupling_iterations = std::max(times_.max_coupling_iterations, k + 1);
         if (f2 > 0)
@@ -499,7 +501,7 @@ DynamicRun ImmersedSwitch::run(Real voltage, const ImmersedRunOptions& options,
       load = electrostatic_load(u, voltage);
       structure.set_reference(load.force, u);
     }
-    if (gas && !gas_inside && t > t_gas && (++since_gas >= options.gas_every || stop)) {
+    if (gas && !gas_inside && t > t_gas && (++since_gas >= options.coupling.gas_every || stop)) {
       since_gas = 0;
       held = advance_gas(state, t);
       structure.set_held(held);  // the lagged gas force

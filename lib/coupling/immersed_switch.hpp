@@ -26,15 +26,24 @@
 // strong_gas: inside the iteration, not lagged; see run()). Implicit: the IBM
 // load is evaluated inside every residual call (the exact coupled system; the scaled lagged
 // model only in the Jacobian): the reference the staggered scheme's error is measured against
-// (docs/immersed_switch.md). Roots: the smallest gap reaching contact_gap (touch-down, the
-// pull-in time) and the control's velocity rising through zero after moving down (turning
-// back: no pull-in for a step voltage).
+// (docs/immersed_switch.md). Strongly coupled: per step, Aitken-relaxed fixed-point iterations
+// on the electrostatic interface load, the step redone from IDA's checkpoint until
+// |F_IBM(u) - F_applied(u)| <= tolerance |F_IBM(u)| (at most max_iterations): it converges to
+// the implicit scheme's step. With strong_gas the gas is inside every iterate too (redone from
+// its own checkpoint with each iterate's motion; gas_every 1, a gas model with a checkpoint),
+// else advanced once after the converged step, its force lagged. gas_every k advances the gas
+// over every k-th accepted structure step (one gas step spanning them, its force held in
+// between): the gas's step decoupled from IDA's, whose steps (~2e-9 s near pull-in) are far
+// below what the gas's accuracy needs. Roots: the smallest gap reaching contact_gap (touch-down,
+// the pull-in time) and the control's velocity rising through zero after moving down (turning back:
+// no pull-in for a step voltage).
 #pragma once
 #include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "coupling/coupling_settings.hpp"
 #include "coupling/dynamic_pull_in.hpp"
 #include "coupling/immersed_gas.hpp"
 #include "coupling/quasi_static_pull_in.hpp"
@@ -68,7 +77,7 @@ struct ImmersedPhysicsTimes {
   long electrostatic_analyses = 0;  // solves on a new pattern (the rest refactor the kept LU)
   long electrostatic_krylov_iterations = 0;  // distributed field: GMRES iterations
   // Strong coupling: iterations over all steps (one IBM evaluation each, and one gas step with
-  // strong_gas), the most in a step, and the steps left at strong_max_iterations unconverged;
+  // strong_gas), the most in a step, and the steps left at max_iterations unconverged;
   // the largest relative interface residual |r| / |F| a step ended with (strong only).
   long coupling_iterations = 0, unconverged_steps = 0;
   int max_coupling_iterations = 0;
@@ -79,43 +88,6 @@ struct ImmersedLoad {
   std::vector<Real> force;    // per structure unknown [N/m]
   Vec3 total = Vec3::Zero();  // on the beam [N/m] (y negative: closing)
   Index ib_faces = 0, one_sided = 0, unreached = 0;
-};
-
-// Strong: per step, Aitken-relaxed fixed-point iterations on the electrostatic interface load
-// (see run()), the step redone from IDA's checkpoint until the load changes by less than
-// strong_tolerance; converges to the implicit scheme's step. With strong_gas the gas is inside
-// the iteration too (redone from its own checkpoint with each iterate's motion; the fixed
-// point is on the electrostatic + gas load).
-enum class ImmersedCoupling { Staggered, Implicit, Strong };
-
-struct ImmersedRunOptions {
-  Real end_time = 0;
-  Real contact_gap = 0;         // touch-down when the smallest gap reaches this [m]
-  bool stop_at_turning = true;  // turning counts after a quarter of first_bending_period()
-  Real turning_retreat = kTurningRetreat;  // coupling/turning_back.hpp
-  // With stop_at_turning and the fold known: the settle rule (settled_at_rest.hpp) and the
-  // past-fold rule (past_unstable_equilibrium.hpp; pulled in, beyond the unstable equilibrium
-  // by past_fold_margin of |x_fold|; also needs stop_past_fold). The immersed study's dynamic
-  // mode traces the quasi-static curve first and arms both; its other modes leave the fold
-  // unknown (off).
-  Real settle_tolerance = kSettleTolerance;
-  FoldBranch fold;
-  bool stop_past_fold = true;
-  Real past_fold_margin = kPastFoldMargin;
-  Real output_interval = 0;     // > 0: history resampled at this interval (cubic Hermite in
-                                // the control's deflection and velocity); else IDA's steps
-  ImmersedCoupling coupling = ImmersedCoupling::Staggered;
-  Real strong_tolerance = 1e-6;  // |F_IBM(u) - F_applied(u)| / |F_IBM(u)| at the step's end
-  int strong_max_iterations = 20;
-  // Strong only: the gas advanced inside every iterate over the step (needs gas_every 1 and a
-  // gas model with a checkpoint); false: the gas advanced once after the converged step,
-  // its force lagged.
-  bool strong_gas = false;
-  // The gas advanced over [t_gas, t] every gas_every accepted structure steps (one gas step
-  // spanning them), its force held in between: the gas's step decoupled from IDA's, whose
-  // steps (~2e-9 s near pull-in) are far below what the gas's accuracy needs.
-  int gas_every = 1;
-  IdaOptions ida;  // atol: on displacements; velocities get atol 2 pi / period
 };
 
 struct ImmersedStatic {
@@ -168,8 +140,13 @@ class ImmersedSwitch {
   QuasiStaticPullIn trace_quasi_static(const QuasiStaticOptions& options,
                                        Real coupling_tolerance = 1e-6);
 
-  // A step voltage V from rest to end_time, touch-down or turning back. gas may be null.
-  DynamicRun run(Real voltage, const ImmersedRunOptions& options, ImmersedGasModel* gas);
+  // A step voltage V from rest to end_time, touch-down or turning back (options: the events
+  // as run_dynamic's, output_interval > 0: the history resampled at it by cubic Hermite in the
+  // control's deflection and velocity, else IDA's steps; ida.atol on the displacements, the
+  // velocities' atol 2 pi / first_bending_period() times it; the turning root armed after a
+  // quarter of that period; coupling: staggered, implicit or strongly_coupled, see the
+  // header). gas may be null.
+  DynamicRun run(Real voltage, const DynamicOptions& options, ImmersedGasModel* gas);
 
   const ImmersedPhysicsTimes& times() const { return times_; }
   void reset_times() { times_ = {}; }

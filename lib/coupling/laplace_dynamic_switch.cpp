@@ -18,10 +18,6 @@
 
 namespace rfmems {
 
-std::string laplace_coupling_name(LaplaceCoupling coupling) {
-  return coupling == LaplaceCoupling::Implicit ? "implicit" : "staggered";
-}
-
 LaplaceDynamicSwitch::LaplaceDynamicSwitch(ElasticityOperator& beam,
                                            const std::string& bottom_patch, Real gap,
                                            const ElectrodeExtent& electrode, Index control,
@@ -41,9 +37,8 @@ LaplaceStatic LaplaceDynamicSwitch::solve_static(Real voltage, Real tolerance, i
     for (Real& v : z) v *= voltage * voltage;
     return z;
   };
-  VoltageControlResult r =
-      relax_voltage_control(stiffness, load, n, LinearFunctional::unknown(control_), tolerance,
-                            max_iterations);
+  VoltageControlResult r = relax_voltage_control(
+      stiffness, load, n, LinearFunctional::unknown(control_), tolerance, max_iterations);
   if (!r.converged)
     throw SolverError(fmt::format(
         "Laplace switch: static solve at {:g} V not converged in {} iterations (above the "
@@ -56,8 +51,11 @@ LaplaceStatic LaplaceDynamicSwitch::solve_static(Real voltage, Real tolerance, i
   return out;
 }
 
-DynamicRun LaplaceDynamicSwitch::run(Real voltage, const DynamicOptions& options,
-                                     LaplaceCoupling coupling) {
+DynamicRun LaplaceDynamicSwitch::run(Real voltage, const DynamicOptions& options) {
+  const CouplingScheme scheme = options.coupling.scheme;
+  if (scheme != CouplingScheme::Staggered && scheme != CouplingScheme::Implicit)
+    throw InputError("Laplace switch: the field steps staggered or implicit, not " +
+                     coupling_scheme_name(scheme));
   const Index n = beam_.size();
   const Real v2 = voltage * voltage;
   const double move0 = field_.move_seconds(), field0 = field_.field_seconds();
@@ -80,7 +78,7 @@ DynamicRun LaplaceDynamicSwitch::run(Real voltage, const DynamicOptions& options
   std::vector<Real> y(system.size(), 0.0);
   const std::span<const Real> rest(y.data(), n);
   structure.set_reference(load(rest), rest);
-  if (coupling == LaplaceCoupling::Implicit) structure.set_exact(load);
+  if (scheme == CouplingScheme::Implicit) structure.set_exact(load);
   std::vector<Real> yp = system.consistent_derivative(0.0, y);
 
   IdaOptions ida_options = options.ida;

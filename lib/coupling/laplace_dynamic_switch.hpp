@@ -23,12 +23,9 @@
 
 #include "coupling/dynamic_pull_in.hpp"
 #include "coupling/laplace_gap_field.hpp"
+#include "coupling/scene_combinations.hpp"
 
 namespace rfmems {
-
-enum class LaplaceCoupling { Staggered, Implicit };
-
-std::string laplace_coupling_name(LaplaceCoupling coupling);  // "staggered", "implicit"
 
 struct LaplaceStatic {
   std::vector<Real> u;
@@ -50,13 +47,13 @@ class LaplaceDynamicSwitch {
                        const ElectrodeExtent& electrode, Index control,
                        const LaplaceGapOptions& options = {});
 
-  // A step voltage from rest to options.end_time, touch-down or (stop_at_turning) turning
-  // back, settling or passing the unstable equilibrium (with options.fold; step_voltage_run.hpp).
-  // Uses end_time, contact_gap, stop_at_turning, output_interval (> 0: the history
-  // resampled at it, cubic Hermite in the control's deflection and velocity; else every
-  // step), ida and tolerances (per-kind atols: displacement, velocity_rate).
-  DynamicRun run(Real voltage, const DynamicOptions& options,
-                 LaplaceCoupling coupling = LaplaceCoupling::Staggered);
+  // A step voltage (options.coupling.scheme staggered or implicit, see above) from rest to
+  // options.end_time, touch-down or (stop_at_turning) turning back, settling or passing the
+  // unstable equilibrium (with options.fold; step_voltage_run.hpp). Uses end_time, contact_gap,
+  // stop_at_turning, output_interval (> 0: the history resampled at it, cubic Hermite in the
+  // control's deflection and velocity; else every step), ida and tolerances (per-kind atols:
+  // displacement, velocity_rate).
+  DynamicRun run(Real voltage, const DynamicOptions& options);
 
   // Static equilibrium K u = V^2 q(u) by fixed point (one KLU factorisation of K), to a
   // relative change of the control's deflection <= tolerance (below pull-in it contracts).

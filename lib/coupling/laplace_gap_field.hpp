@@ -19,9 +19,9 @@
 #include <string>
 #include <vector>
 
-#include "coupling/parallel_plate_actuation.hpp"
 #include "mesh/mesh_motion.hpp"
 #include "physics/elasticity/elasticity_operator.hpp"
+#include "physics/electrostatics/parallel_plate_actuation.hpp"
 
 namespace rfmems {
 

@@ -20,24 +20,24 @@
 #pragma once
 #include <string>
 
-#include "coupling/parallel_plate_actuation.hpp"
 #include "coupling/quasi_static_pull_in.hpp"
 #include "mesh/mesh_motion.hpp"
 #include "physics/elasticity/elasticity_scene.hpp"
+#include "physics/electrostatics/parallel_plate_actuation.hpp"
 
 namespace rfmems {
 
 struct LaplacePullInOptions {
-  QuasiStaticOptions sampling;       // n_points, max_fraction, voltage_tolerance
-  int gap_cells = 16;                // cells across the gap
-  Real coupling_tolerance = 1e-9;    // on the displacement update, relative to |delta|
+  QuasiStaticOptions sampling;     // n_points, max_fraction, voltage_tolerance
+  int gap_cells = 16;              // cells across the gap
+  Real coupling_tolerance = 1e-9;  // on the displacement update, relative to |delta|
   int max_coupling_iterations = 200;
   MeshMotionOptions motion;
 };
 
 struct LaplacePullIn {
   QuasiStaticPullIn result;
-  long coupling_iterations = 0;      // = Laplace solves
+  long coupling_iterations = 0;  // = Laplace solves
   Index gap_cells_total = 0;
 };
 

@@ -97,8 +97,11 @@ void add_stats(IntegratorStats& sum, const IntegratorStats& s) {
 
 PartitionedRun run_partitioned(ParallelPlateActuation& act, std::vector<bool> quasi_static,
                                const ReynoldsFilm& film, std::vector<Index> w_dof, Index control,
-                               std::function<Real(Real)> voltage, const DynamicOptions& options,
-                               const PartitionedOptions& part) {
+                               std::function<Real(Real)> voltage, const DynamicOptions& options) {
+  const CouplingOptions& part = options.coupling;
+  if (part.scheme != CouplingScheme::Staggered && part.scheme != CouplingScheme::StronglyCoupled)
+    throw InputError("partitioned coupling: the scheme is staggered or strongly_coupled, not " +
+                     coupling_scheme_name(part.scheme));
   if (part.macro_step <= 0) throw InputError("partitioned coupling: macro_step must be > 0");
   act.set_voltage_squared([voltage](Real t) {
     const Real v = voltage(t);

@@ -20,32 +20,25 @@
 #include <functional>
 #include <vector>
 
+#include "coupling/coupling_settings.hpp"
 #include "coupling/dynamic_pull_in.hpp"
 #include "physics/gas/reynolds_film.hpp"
 
 namespace rfmems {
 
-enum class CouplingScheme { Monolithic, Staggered, StronglyCoupled };
-
-struct PartitionedOptions {
-  CouplingScheme scheme = CouplingScheme::StronglyCoupled;
-  Real macro_step = 0;          // H [s]
-  Real tolerance = 1e-6;        // strongly coupled: relative change of the interface force
-  int max_iterations = 50;
-};
-
 struct PartitionedRun {
-  DynamicRun run;               // pulled_in, pull_in_time (to within a macro step's contact
-                                // root), history at the macro steps, summed IDA stats
-  long coupling_iterations = 0; // passes over all macro steps
+  DynamicRun run;                // pulled_in, pull_in_time (to within a macro step's contact
+                                 // root), history at the macro steps, summed IDA stats
+  long coupling_iterations = 0;  // passes over all macro steps
   long macro_steps = 0;
 };
 
 // The plate (actuation, rotations quasi-static) with the film under its cells (w_dof[c] is
-// the plate unknown over film cell c) under the step voltage, until contact or end_time.
+// the plate unknown over film cell c) under the step voltage, until contact or end_time;
+// options.coupling: scheme staggered or strongly_coupled, macro_step, tolerance,
+// max_iterations.
 PartitionedRun run_partitioned(ParallelPlateActuation& actuation, std::vector<bool> quasi_static,
                                const ReynoldsFilm& film, std::vector<Index> w_dof, Index control,
-                               std::function<Real(Real)> voltage, const DynamicOptions& options,
-                               const PartitionedOptions& partitioned);
+                               std::function<Real(Real)> voltage, const DynamicOptions& options);
 
 }  // namespace rfmems

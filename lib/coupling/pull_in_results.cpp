@@ -21,22 +21,24 @@ void write_dynamic_history(ResultWriter& writer, const std::string& name, const 
   std::vector<std::vector<double>> rows;
   for (const DynamicSample& s : run.history) {
     t.push_back(s.t);
-    rows.push_back({s.control, s.min_gap, s.electrostatic_force, s.gas_force, s.contact_force,
-                    s.voltage});
+    rows.push_back(
+        {s.control, s.min_gap, s.electrostatic_force, s.gas_force, s.contact_force, s.voltage});
   }
-  writer.write_time_series("dynamic", name, t, rows,
-                           {"control", "min_gap", "electrostatic_force", "gas_force",
-                            "contact_force", "voltage"});
+  writer.write_time_series(
+      "dynamic", name, t, rows,
+      {"control", "min_gap", "electrostatic_force", "gas_force", "contact_force", "voltage"});
 }
 
 Json free_response_json(const FreeResponse& r) {
-  return {{"damping_ratio", r.damping_ratio},
+  return {{"fitted", r.fitted},
+          {"damping_ratio", r.damping_ratio},
           {"frequency", r.frequency},
           {"natural_frequency", r.natural_frequency},
           {"method", r.from_log_decrement ? "log_decrement" : "fit"},
-          {"fit", {{"damping_ratio", r.fit_damping_ratio},
-                   {"frequency", r.fit_frequency},
-                   {"residual", r.residual}}},
+          {"fit",
+           {{"damping_ratio", r.fit_damping_ratio},
+            {"frequency", r.fit_frequency},
+            {"residual", r.residual}}},
           {"fit_residual", r.residual},
           {"log_decrement",
            {{"damping_ratio", r.log_decrement.damping_ratio},
@@ -52,8 +54,7 @@ Json pull_in_time_check_json(Real factor, Real pull_in_time, const DynamicRun& c
             {"relative_error_estimate", Json()}};
   if (check.pulled_in && check.pull_in_time > 0) {
     j["pull_in_time"] = check.pull_in_time;
-    j["relative_error_estimate"] =
-        std::abs(pull_in_time - check.pull_in_time) / check.pull_in_time;
+    j["relative_error_estimate"] = std::abs(pull_in_time - check.pull_in_time) / check.pull_in_time;
   }
   return j;
 }

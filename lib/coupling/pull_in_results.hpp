@@ -16,7 +16,8 @@ namespace rfmems {
 void write_pull_in_curve(ResultWriter& writer, const QuasiStaticPullIn& quasi_static);
 void write_dynamic_history(ResultWriter& writer, const std::string& name, const DynamicRun& run);
 
-// A small-signal response in the summaries: damping_ratio, frequency (damped),
+// A small-signal response in the summaries: fitted (false: too few samples or no motion,
+// nothing measured), damping_ratio, frequency (damped),
 // natural_frequency, method (fit | log_decrement: which gave them), the fit's (fit:
 // damping_ratio, frequency, residual; also fit_residual) and the log decrement's
 // (log_decrement: damping_ratio, frequency, swings).

@@ -18,35 +18,35 @@
 #include <functional>
 #include <vector>
 
-#include "coupling/parallel_plate_actuation.hpp"
+#include "physics/electrostatics/parallel_plate_actuation.hpp"
 #include "solvers/kinsol_solver.hpp"
 
 namespace rfmems {
 
 struct QuasiStaticOptions {
-  int n_points = 40;                // samples of delta over (0, max_fraction g0]
-  Real max_fraction = 0.9;          // deepest prescribed deflection, as a fraction of the gap
-  Real voltage_tolerance = 1e-3;    // [V] on the fold voltage
-  Real newton_tolerance = 1e-10;    // KINSOL: ||F||_inf <= this x k_ref g0
+  int n_points = 40;              // samples of delta over (0, max_fraction g0]
+  Real max_fraction = 0.9;        // deepest prescribed deflection, as a fraction of the gap
+  Real voltage_tolerance = 1e-3;  // [V] on the fold voltage
+  Real newton_tolerance = 1e-10;  // KINSOL: ||F||_inf <= this x k_ref g0
   int max_newton_iterations = 30;
 };
 
 struct PullInPoint {
-  Real displacement;   // y_c [m] (negative: towards the electrode)
-  Real voltage;        // [V]
-  Real min_gap;        // [m]
-  bool stable;         // before the fold
+  Real displacement;  // y_c [m] (negative: towards the electrode)
+  Real voltage;       // [V]
+  Real min_gap;       // [m]
+  bool stable;        // before the fold
   long newton_iterations;
 };
 
 struct QuasiStaticPullIn {
-  std::vector<PullInPoint> curve;   // in order of increasing |delta|, fold included
+  std::vector<PullInPoint> curve;  // in order of increasing |delta|, fold included
   Real pull_in_voltage = 0;
   Real pull_in_displacement = 0;
-  long newton_iterations = 0;       // all solves
+  long newton_iterations = 0;  // all solves
   long solves = 0;
-  NonlinearStats last;              // of the fold's solve
-  std::vector<Real> fold_state;     // the solver's state at the fold (structure unknowns first)
+  NonlinearStats last;           // of the fold's solve
+  std::vector<Real> fold_state;  // the solver's state at the fold (structure unknowns first)
 };
 
 // The structure's stiffness scale k_ref: the largest diagonal entry of its K at rest.

@@ -27,7 +27,7 @@
 #include <span>
 #include <vector>
 
-#include "coupling/parallel_plate_actuation.hpp"
+#include "physics/electrostatics/parallel_plate_actuation.hpp"
 
 namespace rfmems {
 

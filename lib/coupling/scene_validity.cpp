@@ -167,6 +167,40 @@ ValidityReport check_scene_validity(const SceneDescription &s) {
   return r;
 }
 
+namespace {
+
+// The immersed field's own limits: the touch-down against the background's resolution, the
+// 1D Reynolds film's range (its Knudsen number and its large-displacement limit), the kinetic
+// gas's cell size against the mean free path.
+void check_immersed_field(const SwitchScene &scene, const PullInReport &report, ValidityReport &r) {
+  const ImmersedField &f = *scene.immersed;
+  const Real cell = f.sw->background_cell_height();
+  const bool timed = report.has_dynamic || report.has_transient;
+  if (timed && report.contact_gap < cell)
+    r.warnings.push_back(
+        fmt::format("contact gap {:.3g} m is below one background cell ({:.3g} "
+                    "m): the IB layer fills the gap before touch-down",
+                    report.contact_gap, cell));
+  const Real kn = report.counters.value("gas_max_knudsen", 0.0);
+  if (scene.gas() == GasModel::Reynolds && kn > 1.0)
+    r.warnings.push_back(
+        fmt::format("Reynolds film at Kn up to {:.3g} (> 1): Veijola's viscosity "
+                    "fit holds, the film's lubrication assumptions weaken",
+                    kn));
+  if (scene.gas() == GasModel::Reynolds && timed && report.contact_gap < 0.5 * scene.gap)
+    r.warnings.push_back(
+        "Reynolds film followed to a gap below half the rest gap (large displacement: the 1D "
+        "film takes h from the deformed beam, no edge correction at the tip)");
+  if (scene.gas() == GasModel::Esbgk) {
+    const ImmersedSwitchGeometry &g = f.geometry;
+    const Real hx = (g.background_upper.x() - g.background_lower.x()) / g.background_cells[0];
+    check_cell_size_against_mean_free_path(std::min(hx, cell), f.mean_free_path, f.mean_free_path,
+                                           "actuation.immersed.background.cells", r);
+  }
+}
+
+}  // namespace
+
 SceneDescription describe_switch_scene(const SwitchScene &scene, Real thickness,
                                        SceneDescription::Analysis analysis,
                                        const PullInReport *report) {
@@ -184,7 +218,7 @@ SceneDescription describe_switch_scene(const SwitchScene &scene, Real thickness,
   s.width = s.plate ? hi.y() - lo.y() : 0;
   s.thickness = s.plate ? thickness : hi.y() - lo.y();
   s.gap = scene.gap;
-  s.parallel_plate = scene.electrostatics == ElectrostaticsModel::ParallelPlate;
+  s.parallel_plate = scene.field() == FieldModel::ParallelPlate;
   s.fringing_factor = scene.actuation ? scene.actuation->law().fringing_factor : 0;
   if (scene.film) {
     s.reynolds = true;
@@ -207,7 +241,10 @@ ValidityReport switch_scene_validity(const CaseNode &root, const SwitchScene &sc
   const auto analysis = report.has_dynamic || report.has_transient
                             ? SceneDescription::Analysis::Dynamic
                             : SceneDescription::Analysis::Static;
-  return check_scene_validity(describe_switch_scene(scene, thickness, analysis, &report));
+  ValidityReport r =
+      check_scene_validity(describe_switch_scene(scene, thickness, analysis, &report));
+  if (scene.immersed) check_immersed_field(scene, report, r);
+  return r;
 }
 
 ValidityReport creep_case_validity(const CaseNode &root, const CreepCase &creep) {

@@ -1,11 +1,15 @@
 // An electrostatically actuated switch as a case file describes it: the structure
-// (model.structure: plate | plane, physics/structure/structure_from_case.hpp), the electrode
-// under it, the electrostatics model and the control point.
+// (model.structure: plate | plane, physics/structure/structure_from_case.hpp), the field that
+// pulls it (actuation), the gas under it (gas) and the analysis (pull_in.mode), one model per
+// slot from the table of scene_combinations.hpp.
 //
 //   actuation:
-//     gap: 3.75 um                    # air gap at rest, between the structure and the electrode
-//     electrostatics: parallel_plate  # parallel_plate (default) | laplace (plane structures)
+//     electrostatics: parallel_plate  # parallel_plate (default) | laplace | immersed
+//     gap: 3.75 um                    # air gap at rest, structure to electrode (parallel_plate,
+//                                     # laplace; immersed: from the beam's place in the
+//                                     # background)
 //     electrode: {x: [160 um, 240 um], y: [0 um, 40 um]}   # optional; default: everywhere
+//                                     # (y: plates only; immersed: x required)
 //     electrodes:                     # or several (parallel_plate): the electrodes at the
 //       - {x: [0 um, 40 um]}          # voltage, e.g. the two actuation electrodes of a
 //       - {x: [260 um, 300 um]}       # varactor; they must not overlap
@@ -14,14 +18,23 @@
 //     dielectric: {thickness: 0.1 um, permittivity: 7.6}   # parallel_plate, optional
 //     fringing: 0.65                  # parallel_plate, optional first-order fringing factor
 //                                     # (plates: width = the mesh's extent in y)
-//     contact:                        # optional: the structure can rest on the dielectric
-//       gap: 75 nm                    # air gap at which the surfaces touch (default 2 % of gap)
+//     contact:                        # parallel_plate, optional: the structure can rest on
+//       gap: 75 nm                    # the dielectric; air gap at which the surfaces touch
+//                                     # (default 2 % of gap)
 //       penetration: 7.5 nm           # penalty's penetration tolerance (default 10 %, at most
 //                                     # 20 % of the contact gap; contact_penalty.hpp)
 //     laplace: {gap_cells: 16}        # laplace: cells across the gap mesh
+//     immersed:                       # immersed: the background mesh and the beam's anchor
+//       background: {lower: [0 um, 0 um], upper: [75 um, 10 um], cells: [150, 50]}
+//       anchor_patch: left            # beam patch clamped in the wall (default left)
+//       anchor_extension: 0.5 um      # the anchored face pushed into the wall (default one
+//                                     # background cell)
+//       electrostatics_distributed: false  # under mpirun: the field solved over the ranks
 //
-//   gas:                              # optional (default none): the squeeze film under a plate
-//     model: reynolds                 # none | reynolds
+//   gas:                              # optional (default none)
+//     model: reynolds                 # none | reynolds | esbgk (scene_combinations.hpp)
+//     ...                             # parallel_plate: the film under the plate (below);
+//                                     # immersed: immersed_field.hpp
 //     pressure: 1 atm                 # ambient pressure
 //     viscosity: 1.85e-5 Pa*s         # air at 300 K (default)
 //     mean_free_path: 68 nm           # at 1 atm (default; scales as 1/p)
@@ -31,42 +44,46 @@
 //                                     # free or loaded, wall where it is supported
 //
 // The structure hangs above the electrode: its gap-facing unknown (a plate's w, a plane
-// beam's u_y) positive opens the gap. The control point selects the cell nearest to it; its
-// deflection is what the quasi-static continuation prescribes and the dynamic runs report.
+// beam's u_y) positive opens the gap. The parallel-plate and Laplace fields control the
+// unknown of the cell nearest the control point; the immersed field reads the deflection at
+// the point itself, from its cell's reconstruction.
 #pragma once
 #include <memory>
 #include <string>
+#include <vector>
 
-#include "coupling/parallel_plate_actuation.hpp"
-#include "coupling/switch_system.hpp"
-#include "physics/gas/reynolds_film.hpp"
+#include "coupling/immersed_field.hpp"
+#include "coupling/scene_combinations.hpp"
 #include "io/case_file.hpp"
+#include "physics/electrostatics/parallel_plate_field.hpp"
+#include "physics/gas/reynolds_film.hpp"
 #include "physics/structure/structural_model.hpp"
 
 namespace rfmems {
 
-enum class ElectrostaticsModel { ParallelPlate, Laplace };
-
 struct SwitchScene {
+  SceneChoice choice;
   std::unique_ptr<StructuralModel> structure;
-  ElectrostaticsModel electrostatics = ElectrostaticsModel::ParallelPlate;
-  Real gap = 0;
-  ElectrodeExtent electrode;                // the first of `electrodes` (laplace: the only one)
-  std::vector<ElectrodeExtent> electrodes;  // at least one
-  std::string facing_patch;       // plane structures
+  Real gap = 0;                             // at rest
+  std::vector<ElectrodeExtent> electrodes;  // at least one (laplace, immersed: one)
+  std::string facing_patch;                 // plane structures
   Vec3 control_point = Vec3::Zero();
-  Index control = -1;             // the controlled unknown
+  Index control = -1;  // parallel_plate, laplace: the controlled unknown
   int laplace_gap_cells = 16;
-  ContactPenalty contact;         // actuation.contact (penetration 0: none)
-  std::unique_ptr<ParallelPlateActuation> actuation;  // parallel_plate (also built for laplace
-                                                     // scenes: the dynamic model)
-  std::unique_ptr<ReynoldsFilm> film;                 // gas: reynolds
-  // The switch's transient system: ActuatedStructureSystem, or SqueezeFilmSwitchSystem with
-  // a film.
-  std::unique_ptr<SwitchSystem> make_transient_system() const;
+  ContactPenalty contact;                             // actuation.contact (penetration 0: none)
+  std::unique_ptr<ParallelPlateActuation> actuation;  // parallel_plate
+  std::unique_ptr<ReynoldsFilm> film;                 // parallel_plate with gas: reynolds
+  std::unique_ptr<ImmersedField> immersed;            // immersed (with its gas)
+
+  FieldModel field() const { return choice.models.field; }
+  GasModel gas() const { return choice.models.gas; }
+  // The smallest gap the field resolves: the immersed boundary's layer fills 1.5 background
+  // cells (the touch-down cannot be thinner); 0 for the others.
+  Real resolvable_gap() const;
 };
 
-SwitchScene build_switch_scene(const CaseNode& root, const std::string& case_dir,
-                               AnalysisType analysis);
+// Reads the scene (the slots checked against the table first, scene_combinations.hpp; the
+// parallel-plate and Laplace fields' common keys by read_parallel_plate_field).
+SwitchScene build_switch_scene(const CaseNode& root, const std::string& case_dir);
 
 }  // namespace rfmems

@@ -1,5 +1,8 @@
 #include "coupling/switch_system.hpp"
 
+#include "coupling/squeeze_film_switch_system.hpp"
+#include "coupling/switch_scene.hpp"
+
 namespace rfmems {
 
 ActuatedStructureSystem::ActuatedStructureSystem(ParallelPlateActuation& actuation,
@@ -26,6 +29,20 @@ Real ActuatedStructureSystem::velocity(std::span<const Real> y, std::span<const 
                                        Index i) const {
   const Index v = system_.velocity_index(i);
   return v >= 0 ? y[v] : yp[i];
+}
+
+std::vector<Index> film_unknowns(const SwitchScene& scene) {
+  std::vector<Index> w_dof;
+  if (scene.film)
+    for (const GapElement& e : scene.structure->gap_elements("")) w_dof.push_back(e.dof);
+  return w_dof;
+}
+
+std::unique_ptr<SwitchSystem> make_switch_system(SwitchScene& scene) {
+  const std::vector<bool> quasi_static = scene.structure->quasi_static_components();
+  if (!scene.film) return std::make_unique<ActuatedStructureSystem>(*scene.actuation, quasi_static);
+  return std::make_unique<SqueezeFilmSwitchSystem>(*scene.actuation, quasi_static, *scene.film,
+                                                   film_unknowns(scene));
 }
 
 }  // namespace rfmems

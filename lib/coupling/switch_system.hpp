@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "core/reduced_inertia_system.hpp"
-#include "coupling/parallel_plate_actuation.hpp"
+#include "physics/electrostatics/parallel_plate_actuation.hpp"
 
 namespace rfmems {
 
@@ -45,6 +45,17 @@ class SwitchSystem : public SystemOperator {
   }
   Real contact_fraction(std::span<const Real> y) const { return actuation().contact_fraction(y); }
 };
+
+struct SwitchScene;
+
+// The parallel-plate scene's monolithic IDA system (switch_scene.hpp): the structure under the
+// force (ActuatedStructureSystem), with the Reynolds film on the plate's cells
+// (SqueezeFilmSwitchSystem, squeeze_film_switch_system.hpp) when the scene has one.
+std::unique_ptr<SwitchSystem> make_switch_system(SwitchScene& scene);
+
+// The plate's unknown over each film cell of a scene with a film (the film's cells are the
+// plate's: the gap-facing unknown of each, as the structure has them); empty without one.
+std::vector<Index> film_unknowns(const SwitchScene& scene);
 
 // The kinds of a ReducedInertiaSystem's state [y (n); v]: displacement or quasi-static by
 // whether y_i carries inertia, then the velocities.

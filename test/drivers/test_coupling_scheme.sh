@@ -52,7 +52,7 @@ for n, d in runs.items():
     with h5py.File(f"{work}/{n}.h5") as f:
         time, values = f["dynamic/transient/time"][()], f["dynamic/transient/values"][()]
     assert abs(time[-1] - t["final_time"]) < 1e-15 and values[-1, 0] == t["final_control"], n
-scheme = {n: d["coupling"]["scheme"] for n, d in runs.items()}
+scheme = {n: d["pull_in"]["coupling"]["scheme"] for n, d in runs.items()}
 assert scheme == {"reference": "monolithic", "monolithic": "monolithic", "strong": "strongly_coupled",
                   "staggered": "staggered", "staggered2": "staggered"}, scheme
 w = {n: d["pull_in"]["transient"]["final_control"] for n, d in runs.items()}
@@ -64,7 +64,8 @@ assert 2e-4 < err["staggered"] < 2e-3, err
 order = math.log(err["staggered2"] / err["staggered"]) / math.log(2)
 assert 0.7 < order < 1.6, (order, err)
 assert err["staggered"] > 10 * err["strong"], err
-c = {n: runs[n]["coupling"] for n in ("strong", "staggered", "staggered2")}
+c = {n: {**runs[n]["pull_in"]["coupling"], **runs[n]["pull_in"]["counters"]}
+     for n in ("strong", "staggered", "staggered2")}
 assert c["staggered"]["macro_steps"] == 50 and c["staggered"]["coupling_iterations"] == 50, c
 assert c["staggered2"]["macro_steps"] == 25 and c["staggered2"]["coupling_iterations"] == 25, c
 s = c["strong"]
@@ -113,7 +114,7 @@ fi
 
 # Plain-text output names the scheme.
 if "$DRIVER" "$PLATE" "${COARSE[@]}" --set coupling.scheme=staggered -o "$WORK/text.h5" \
-    2>"$WORK/err" | grep -q "staggered coupling.*coupling passes over 50 macro steps"; then
+    2>"$WORK/err" | grep -q "step (staggered).*coupling passes over 50 macro steps"; then
   pass "text output names the scheme and its passes"
 else
   fail "text output: $(cat "$WORK/err")"
@@ -131,9 +132,9 @@ expect_input_error step_negative "coupling.macro_step' = '-1 us'" "$PLATE" "${T[
 expect_input_error tolerance_zero "coupling.tolerance' = 0" "$PLATE" "${T[@]}" --set coupling.tolerance=0
 expect_input_error tolerance_above_one "coupling.tolerance' = 2" "$PLATE" "${T[@]}" --set coupling.tolerance=2
 expect_input_error step_missing "coupling.macro_step': a partitioned scheme needs" "$PLATE" "${T[@]}" --set "coupling={scheme: strongly_coupled}"
-expect_input_error no_gas "coupling.scheme' = 'staggered': a partitioned scheme needs a gas film" "$PLATE" "${T[@]}" --set coupling.scheme=staggered --set gas.model=none
-expect_input_error laplace "coupling.scheme' = 'staggered': .*parallel_plate" "$PLANE" --set "coupling={scheme: staggered, macro_step: 0.1 us}"
-expect_input_error partitioned_dynamic "coupling.scheme' = 'strongly_coupled': .*transient only" "$PLATE" --set coupling.scheme=strongly_coupled
+expect_input_error no_gas "coupling.scheme' = 'staggered': not with .*gas.model: none, pull_in.mode: transient; allowed: monolithic" "$PLATE" "${T[@]}" --set coupling.scheme=staggered --set gas.model=none
+expect_input_error laplace "coupling.macro_step' = '0.1 us': only for the parallel_plate field's partitioned schemes" "$PLANE" --set "coupling={scheme: staggered, macro_step: 0.1 us}"
+expect_input_error partitioned_dynamic "coupling.scheme' = 'strongly_coupled': not with .*pull_in.mode: dynamic; allowed: monolithic" "$PLATE" --set coupling.scheme=strongly_coupled
 expect_input_error transient_voltage "pull_in.transient.voltage' = '0 V'" "$PLATE" "${T[@]}" --set "pull_in.transient.voltage=0 V"
 expect_input_error transient_end "pull_in.transient.end_time' = '-1 us'" "$PLATE" "${T[@]}" --set "pull_in.transient.end_time=-1 us"
 expect_input_error transient_missing "pull_in.transient" "$PLATE" --set mesh.cells=[20,2] --set pull_in.mode=transient --set "pull_in.transient={end_time: 5 us}"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `mpirun -np 2 / 3 rfmems-pullin` on the immersed cantilever switch with the ESBGK gas (issue 8,
+# `mpirun -np 2 / 3 rfmems-pullin` on the immersed cantilever switch with the ESBGK gas (
 # "runs under MPI and serially; the same answer"): the gas is distributed over the ranks, the
 # rest is computed on every rank from the same data, the root writes the one result file.
 # Coarse scene (45 x 3 beam, 76 x 26 background, 6^3 velocities, gas step residual 1e-8), 80 V
@@ -16,7 +16,7 @@ set -uo pipefail
 DRIVER="$1/rfmems-pullin"
 SRC="$2"
 CASE="$SRC/cases/cantilever_switch/case.yaml"
-ARGS=(--set "mesh.cells=[45, 3]" --set "immersed.background.cells=[76, 26]" --set gas.model=esbgk
+ARGS=(--set "mesh.cells=[45, 3]" --set "actuation.immersed.background.cells=[76, 26]" --set gas.model=esbgk
       --set gas.velocities=6 --set gas.step_tolerance=1e-8 --set pull_in.mode=transient
       --set pull_in.transient.voltage=80V --set pull_in.transient.end_time=0.02us
       --set pull_in.transient.output_interval=1ns --json --quiet)
@@ -28,7 +28,7 @@ source "$SRC/test/drivers/common.sh"
 # The scene report names the chosen gas's limits only: no Reynolds-film warning for ESBGK.
 if $PY - "$WORK/serial.json" <<'PY'
 import json, sys
-warnings = json.load(open(sys.argv[1]))["immersed"]["validity_warnings"]
+warnings = json.load(open(sys.argv[1]))["validity"]["warnings"]
 assert not any("Reynolds" in w for w in warnings), warnings
 PY
 then pass "ESBGK run: no Reynolds-film validity warning"; else fail "ESBGK run warns about the film"; fi
@@ -47,8 +47,8 @@ for n in 2 3; do
   if $PY - "$WORK/serial" "$WORK/np$n/mpi" "$WORK/np$n.json" <<'PY'
 import json, sys
 import h5py, numpy as np
-serial = json.load(open(sys.argv[1] + ".json"))["immersed"]
-mpi = json.load(open(sys.argv[3]))["immersed"]
+serial = json.load(open(sys.argv[1] + ".json"))["pull_in"]
+mpi = json.load(open(sys.argv[3]))["pull_in"]
 assert serial["transient"]["steps"] == mpi["transient"]["steps"], (serial["transient"], mpi["transient"])
 with h5py.File(sys.argv[1] + ".h5") as a, h5py.File(sys.argv[2] + ".h5") as b:
     ta, va = a["dynamic/transient/time"][:], a["dynamic/transient/values"][:]

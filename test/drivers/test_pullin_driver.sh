@@ -111,7 +111,7 @@ expect_input_error release_without_contact "pull_in.release" "$PLATE" --set "pul
 expect_input_error contact_laplace "actuation.contact" "$PLANE" --set "$CONTACT"
 expect_input_error contact_gap_too_large "actuation.contact.gap" "$PLATE" --set "actuation.contact={gap: 4 um}"
 expect_input_error penetration_too_large "actuation.contact.penetration" "$PLATE" --set "actuation.contact={gap: 75 nm, penetration: 20 nm}"
-expect_input_error contact_gap_twice "pull_in.dynamic.contact_gap" "$PLATE" --set "$CONTACT" --set "pull_in.dynamic.contact_gap=0.1 um"
+expect_input_error contact_gap_twice "pull_in.contact_gap.*actuation.contact.gap" "$PLATE" --set "$CONTACT" --set "pull_in.contact_gap=0.1 um"
 expect_input_error release_missing_hold "pull_in.release.hold_voltage" "$PLATE" --set "$CONTACT" --set "pull_in.release={delay: 1 us}"
 expect_input_error release_unit "pull_in.release.hold_voltage" "$PLATE" --set "$CONTACT" --set "pull_in.release={hold_voltage: 10 us}"
 expect_input_error release_unknown_key "pull_in.release.hold" "$PLATE" --set "$CONTACT" --set "pull_in.release={hold_voltage: 10 V, hold: 3}"

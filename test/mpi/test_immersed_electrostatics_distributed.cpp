@@ -8,10 +8,10 @@
 // Every rank also solves serially (KLU) and compares. Asserted:
 //  - a cantilever-like beam on a 101 x 41 background bending down in 40 steps of 2-20 nm
 //    (re-markings included, the kept-LU test's motion): per step the potential equals the
-//    serial one to 1e-10 of V (measured 2.9e-12 on 2 ranks, 4.7e-12 on 3), every IB-face charge to 1e-10 of the largest, the total force
-//    on the beam to 1e-10 relative; the outputs are the same on every rank (the body charge's
-//    spread over the ranks is 0); on more than one rank GMRES ran (iterations > 0), new
-//    patterns were analysed on re-markings and the kept ones refactored;
+//    serial one to 1e-10 of V (measured 2.9e-12 on 2 ranks, 4.7e-12 on 3), every IB-face charge to
+//    1e-10 of the largest, the total force on the beam to 1e-10 relative; the outputs are the same
+//    on every rank (the body charge's spread over the ranks is 0); on more than one rank GMRES ran
+//    (iterations > 0), new patterns were analysed on re-markings and the kept ones refactored;
 //  - the coupled coarse switch (test/support/cantilever_switch_scene.hpp: 45 x 3 beam,
 //    76 x 26 background, 80 V step, 0.4 us, no gas, one re-marking on the way): with the
 //    distributed field the IDA steps are the serial run's (times to 1e-9 of the end time)
@@ -79,8 +79,9 @@ TEST(ImmersedElectrostaticsDistributed, BendingBeamGivesTheSerialPotentialCharge
     for (Real q : serial.ib_face_charge()) q_scale = std::max(q_scale, std::abs(q));
     ASSERT_EQ(parallel.ib_face_charge().size(), serial.ib_face_charge().size());
     for (std::size_t k = 0; k < serial.ib_face_charge().size(); ++k)
-      worst_charge = std::max(
-          worst_charge, std::abs(parallel.ib_face_charge()[k] - serial.ib_face_charge()[k]) / q_scale);
+      worst_charge =
+          std::max(worst_charge,
+                   std::abs(parallel.ib_face_charge()[k] - serial.ib_face_charge()[k]) / q_scale);
     const Vec3 f1 = total(serial.ib_face_forces()), fP = total(parallel.ib_face_forces());
     worst_force = std::max(worst_force, (fP - f1).norm() / f1.norm());
     const Real q = parallel.body_charge();
@@ -109,7 +110,7 @@ TEST(ImmersedElectrostaticsDistributed, CoupledCoarseSwitchGivesTheSerialTipDefl
   using namespace rfmems::test;
   const Communicator world = Communicator::world();
   Cantilever c(45, 3, 76, 26);
-  const ImmersedRunOptions o = run_options(4e-7, 1e-2);
+  const DynamicOptions o = run_options(4e-7, 1e-2);
   const DynamicRun r1 = c.scene->run(80.0, o, nullptr);
   c.scene->distribute_electrostatics(world);
   c.scene->reset_times();
@@ -123,12 +124,12 @@ TEST(ImmersedElectrostaticsDistributed, CoupledCoarseSwitchGivesTheSerialTipDefl
     d_tip = std::max(d_tip, std::abs(r1.history[i].control - rP.history[i].control));
   }
   if (world.is_root())
-    std::printf("%d ranks: %zu samples, %ld loads, %ld analyses, %ld GMRES iterations; tip %.6e m, max "
-                "difference %.2e relative\n",
-                world.size(), rP.history.size(), c.scene->times().load_evaluations,
-                c.scene->times().electrostatic_analyses,
-                c.scene->times().electrostatic_krylov_iterations, r1.history.back().control,
-                d_tip / scale);
+    std::printf(
+        "%d ranks: %zu samples, %ld loads, %ld analyses, %ld GMRES iterations; tip %.6e m, max "
+        "difference %.2e relative\n",
+        world.size(), rP.history.size(), c.scene->times().load_evaluations,
+        c.scene->times().electrostatic_analyses, c.scene->times().electrostatic_krylov_iterations,
+        r1.history.back().control, d_tip / scale);
   EXPECT_LT(r1.history.back().control, 0);
   EXPECT_LE(d_tip, 1e-8 * scale);
   EXPECT_GT(c.scene->times().electrostatic_analyses, 1);  // a re-marking on the way

@@ -47,9 +47,9 @@ namespace {
 
 constexpr Real T0 = 273.15;
 
-std::unique_ptr<ImmersedKineticGas> closed_box(
-    const Mesh& mesh, const KineticGas& gas, const Communicator& comm, int band_rings = 0,
-    TransportOrder order = TransportOrder::FirstOrder) {
+std::unique_ptr<ImmersedKineticGas> closed_box(const Mesh& mesh, const KineticGas& gas,
+                                               const Communicator& comm, int band_rings = 0,
+                                               TransportOrder order = TransportOrder::FirstOrder) {
   const FaceGraph g = face_graph_of(mesh);
   std::vector<KineticBoundary> bcs(g.patch_names.size(), KineticBoundary::diffuse_wall(T0));
   ImmersedGasOptions o;
@@ -134,9 +134,10 @@ TEST_P(ClosedBoxDistributed, MovingBodyGivesTheSerialForcesAndConservesMass) {
         "%s, %d ranks (edge cut %lld, imbalance %.3f, band %d rings; rank 0: %lld owned, %lld "
         "ghost cells): %d re-markings; segment forces to %.2e, drag to %.2e, fields to %.2e; "
         "mass per step %.2e, M %.2e; sweeps %d -> %d\n",
-        transport_order_name(GetParam()), world.size(), static_cast<long long>(part.edge_cut), part.imbalance, part.band_rings,
-        static_cast<long long>(part.owned_cells), static_cast<long long>(part.ghost_cells), remarks,
-        worst_force, worst_drag, df / fmax, worst_step, worst_m, sweeps_serial, sweeps_parallel);
+        transport_order_name(GetParam()), world.size(), static_cast<long long>(part.edge_cut),
+        part.imbalance, part.band_rings, static_cast<long long>(part.owned_cells),
+        static_cast<long long>(part.ghost_cells), remarks, worst_force, worst_drag, df / fmax,
+        worst_step, worst_m, sweeps_serial, sweeps_parallel);
   EXPECT_GE(remarks, 2);
   EXPECT_LE(worst_force, 1e-8);
   EXPECT_LE(worst_drag, 1e-8);
@@ -146,8 +147,7 @@ TEST_P(ClosedBoxDistributed, MovingBodyGivesTheSerialForcesAndConservesMass) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ImmersedGasDistributed, ClosedBoxDistributed,
-                         ::testing::Values(TransportOrder::FirstOrder,
-                                           TransportOrder::SecondOrder),
+                         ::testing::Values(TransportOrder::FirstOrder, TransportOrder::SecondOrder),
                          [](const auto& info) {
                            return std::string(transport_order_name(info.param));
                          });
@@ -210,10 +210,10 @@ TEST_P(CoupledCoarseSwitch, GivesTheSerialTipDeflection) {
   using namespace rfmems::test;
   const Communicator world = Communicator::world();
   Cantilever c(45, 3, 76, 26);
-  ImmersedRunOptions o = run_options(1.2e-8, 1e-2);
+  DynamicOptions o = run_options(1.2e-8, 1e-2);
   if (GetParam()) {
-    o.coupling = ImmersedCoupling::Strong;
-    o.strong_gas = true;
+    o.coupling.scheme = CouplingScheme::StronglyCoupled;
+    o.coupling.strong_gas = true;
   }
   ImmersedEsbgkGas serial(c.scene->background(), air(Communicator::serial()), 0.0);
   ImmersedEsbgkGas parallel(c.scene->background(), air(world), 0.0);
@@ -228,7 +228,7 @@ TEST_P(CoupledCoarseSwitch, GivesTheSerialTipDeflection) {
     EXPECT_EQ(tP.gas_steps, t1.gas_steps);
     EXPECT_GT(tP.gas_steps, tP.structure_steps);  // the gas redone inside the iterations
     EXPECT_EQ(tP.unconverged_steps + t1.unconverged_steps, 0);
-    EXPECT_LE(tP.max_coupling_residual, o.strong_tolerance);
+    EXPECT_LE(tP.max_coupling_residual, o.coupling.tolerance);
     if (world.is_root())
       std::printf("strong_gas: %ld steps, %ld coupling iterations (at most %d in a step)\n",
                   tP.structure_steps, tP.coupling_iterations, tP.max_coupling_iterations);

@@ -36,7 +36,7 @@ Real distributed_pull_in() {
 // runs, 47-129 s at load 7-8); here [116, 128] V to 3 V, 4 runs.
 TEST(ImmersedSwitch, CoarseBisectionWithinTheClosedFormBracket) {
   Cantilever c(46, 4, 101, 31);
-  const ImmersedRunOptions o = run_options(4e-6, 5e-5);
+  const DynamicOptions o = run_options(4e-6, 5e-5);
   const Real expected = 0.91 * distributed_pull_in();
   const DynamicPullIn pi = find_dynamic_pull_in([&](Real v) { return c.scene->run(v, o, nullptr); },
                                                 116, 128, 3.0, o.end_time);

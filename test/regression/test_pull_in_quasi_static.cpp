@@ -18,10 +18,10 @@
 
 #include "coupling/dynamic_pull_in.hpp"
 #include "coupling/laplace_pull_in.hpp"
-#include "coupling/parallel_plate_actuation.hpp"
 #include "coupling/quasi_static_pull_in.hpp"
 #include "io/case_file.hpp"
 #include "physics/elasticity/elasticity_scene.hpp"
+#include "physics/electrostatics/parallel_plate_actuation.hpp"
 #include "physics/plate/plate_scene.hpp"
 
 using namespace rfmems;
@@ -34,7 +34,8 @@ const ElectrodeExtent kCentre{160e-6, 240e-6};
 
 std::string mesh_text(double width_um, int nx, int ny) {
   return "mesh: {type: rectangle, size: [400 um, " + std::to_string(width_um) + " um], cells: [" +
-         std::to_string(nx) + ", " + std::to_string(ny) + "]}\n"
+         std::to_string(nx) + ", " + std::to_string(ny) +
+         "]}\n"
          "material: {E: 200 GPa, nu: 0.31, density: 7854}\n";
 }
 
@@ -89,8 +90,7 @@ double plane_pull_in(int nx, int ny, const ElectrodeExtent& electrode) {
   options.sampling.voltage_tolerance = 0.01;
   const LaplacePullIn r = trace_pull_in_laplace(beam, "bottom", kGap, electrode, control, options);
   std::printf("plane %dx%d + Laplace: V_PI = %.3f V at %.4f um, %ld Laplace solves\n", nx, ny,
-              r.result.pull_in_voltage, r.result.pull_in_displacement * 1e6,
-              r.coupling_iterations);
+              r.result.pull_in_voltage, r.result.pull_in_displacement * 1e6, r.coupling_iterations);
   return r.result.pull_in_voltage;
 }
 
@@ -131,8 +131,9 @@ TEST(DynamicPullIn, StepVoltageWithoutGasIsNineTenthsOfStatic) {
   options.ida.max_steps = 1000000;
   const DynamicPullIn r =
       find_dynamic_pull_in(system, s.control, 0.8 * v_static, 1.02 * v_static, 0.5, options);
-  std::printf("dynamic V_PI in (%.3f, %.3f] V, ratio %.4f, pull-in time %.3f us, %d runs, %ld steps\n",
-              r.lower, r.voltage, r.voltage / v_static, r.pull_in_time * 1e6, r.runs, r.steps);
+  std::printf(
+      "dynamic V_PI in (%.3f, %.3f] V, ratio %.4f, pull-in time %.3f us, %d runs, %ld steps\n",
+      r.lower, r.voltage, r.voltage / v_static, r.pull_in_time * 1e6, r.runs, r.steps);
   EXPECT_LE(r.voltage - r.lower, 0.5);
   EXPECT_NEAR(r.voltage / v_static, 0.91, 0.02);
   EXPECT_NEAR(r.voltage / 171.0, 1.0, 0.04);

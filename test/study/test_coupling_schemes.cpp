@@ -18,6 +18,7 @@
 #include "coupling/partitioned_switch.hpp"
 #include "coupling/squeeze_film_switch_system.hpp"
 #include "coupling/switch_scene.hpp"
+#include "coupling/switch_system.hpp"
 #include "io/case_file.hpp"
 
 using namespace rfmems;
@@ -31,7 +32,8 @@ const char* kCase =
     "boundaries: {left: {type: clamped}, right: {type: clamped}, top: {type: free}, "
     "bottom: {type: free}}\n"
     "actuation: {gap: 3.75 um, control: [205 um, 5 um]}\n"
-    "gas: {model: reynolds, pressure: 1 atm}\n";
+    "gas: {model: reynolds, pressure: 1 atm}\n"
+    "pull_in: {mode: transient, transient: {voltage: 180 V, end_time: 1 us}}\n";
 
 struct Result {
   double value, seconds;  // value: the deflection of the control point at 5 us
@@ -53,11 +55,11 @@ DynamicOptions options(double rtol) {
 
 Result monolithic(double rtol) {
   const CaseFile cf = CaseFile::parse(kCase, "c.yaml");
-  SwitchScene scene = build_switch_scene(cf.root(), "", AnalysisType::Transient);
-  auto system = scene.make_transient_system();
+  SwitchScene scene = build_switch_scene(cf.root(), "");
+  auto system = make_switch_system(scene);
   const auto t0 = std::chrono::steady_clock::now();
-  const DynamicRun run =
-      run_dynamic(*system, scene.control, [](Real) { return 180.0; }, options(rtol));
+  const DynamicRun run = run_dynamic(
+      *system, scene.control, [](Real) { return 180.0; }, options(rtol));
   EXPECT_FALSE(run.pulled_in);
   return {run.history.back().control,
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
@@ -66,17 +68,17 @@ Result monolithic(double rtol) {
 
 Result partitioned(CouplingScheme scheme, double H) {
   const CaseFile cf = CaseFile::parse(kCase, "c.yaml");
-  SwitchScene scene = build_switch_scene(cf.root(), "", AnalysisType::Transient);
-  std::vector<Index> w_dof;
-  for (Index c = 0; c < scene.film->size(); ++c) w_dof.push_back(3 * c);
-  PartitionedOptions part;
-  part.scheme = scheme;
-  part.macro_step = H;
-  part.tolerance = 1e-8;
+  SwitchScene scene = build_switch_scene(cf.root(), "");
+  const std::vector<Index> w_dof = film_unknowns(scene);
+  DynamicOptions o = options(1e-5);
+  o.coupling.scheme = scheme;
+  o.coupling.macro_step = H;
+  o.coupling.tolerance = 1e-8;
+  o.coupling.max_iterations = 50;
   const auto t0 = std::chrono::steady_clock::now();
-  const PartitionedRun r = run_partitioned(*scene.actuation, scene.structure->quasi_static_components(),
-                                           *scene.film, w_dof, scene.control,
-                                           [](Real) { return 180.0; }, options(1e-5), part);
+  const PartitionedRun r = run_partitioned(
+      *scene.actuation, scene.structure->quasi_static_components(), *scene.film, w_dof,
+      scene.control, [](Real) { return 180.0; }, o);
   EXPECT_FALSE(r.run.pulled_in);
   return {r.run.history.back().control,
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
@@ -88,20 +90,23 @@ Result partitioned(CouplingScheme scheme, double H) {
 TEST(CouplingSchemes, PartitionedConvergesToMonolithic) {
   const Result ref = monolithic(1e-6);
   const Result mono = monolithic(1e-4);
-  std::printf("monolithic rtol 1e-6: w(5 us) = %.6f um (%ld residuals, %.2f s); rtol 1e-4: error "
-              "%.2e, %ld residuals, %.2f s\n",
-              ref.value * 1e6, ref.residual_evals, ref.seconds,
-              std::abs(mono.value / ref.value - 1), mono.residual_evals, mono.seconds);
+  std::printf(
+      "monolithic rtol 1e-6: w(5 us) = %.6f um (%ld residuals, %.2f s); rtol 1e-4: error "
+      "%.2e, %ld residuals, %.2f s\n",
+      ref.value * 1e6, ref.residual_evals, ref.seconds, std::abs(mono.value / ref.value - 1),
+      mono.residual_evals, mono.seconds);
   double error_prev[2] = {0, 0};
   for (const double H : {0.2e-6, 0.1e-6}) {
     int k = 0;
-    for (const CouplingScheme scheme : {CouplingScheme::Staggered, CouplingScheme::StronglyCoupled}) {
+    for (const CouplingScheme scheme :
+         {CouplingScheme::Staggered, CouplingScheme::StronglyCoupled}) {
       const Result r = partitioned(scheme, H);
       const double error = std::abs(r.value / ref.value - 1);
-      std::printf("%-16s H = %.2f us: w(5 us) = %.6f um, error %.2e, %ld coupling passes, %ld "
-                  "residuals, %.2f s\n",
-                  scheme == CouplingScheme::Staggered ? "staggered" : "strongly coupled", H * 1e6,
-                  r.value * 1e6, error, r.iterations, r.residual_evals, r.seconds);
+      std::printf(
+          "%-16s H = %.2f us: w(5 us) = %.6f um, error %.2e, %ld coupling passes, %ld "
+          "residuals, %.2f s\n",
+          scheme == CouplingScheme::Staggered ? "staggered" : "strongly coupled", H * 1e6,
+          r.value * 1e6, error, r.iterations, r.residual_evals, r.seconds);
       if (error_prev[k] > 0)
         std::printf("  observed order %.2f\n", std::log(error_prev[k] / error) / std::log(2.0));
       if (H < 0.15e-6 && scheme == CouplingScheme::StronglyCoupled) {

@@ -41,13 +41,14 @@ struct Cantilever {
   }
 };
 
-inline ImmersedRunOptions run_options(Real end_time, Real atol_fraction) {
-  ImmersedRunOptions o;
+inline DynamicOptions run_options(Real end_time, Real atol_fraction) {
+  DynamicOptions o;
   o.end_time = end_time;
   o.contact_gap = 0.2 * kGap;
   o.ida.rtol = 1e-4;
   o.ida.atol = atol_fraction * kGap;
   o.ida.max_order = 2;
+  o.coupling.scheme = CouplingScheme::Staggered;
   return o;
 }
 

@@ -1,6 +1,6 @@
-// The plate switch of cases/switch_plate on a coarse 20 x 2 mesh (or `cells`) with the dielectric (0.1 um,
-// eps_r = 7.6) and the contact penalty (g_c = 75 nm, delta = 7.5 nm), for the contact tests
-// (test/unit/coupling/test_plate_contact.cpp, test/study/test_plate_release.cpp).
+// The plate switch of cases/switch_plate on a coarse 20 x 2 mesh (or `cells`) with the dielectric
+// (0.1 um, eps_r = 7.6) and the contact penalty (g_c = 75 nm, delta = 7.5 nm), for the contact
+// tests (test/unit/coupling/test_plate_contact.cpp, test/study/test_plate_release.cpp).
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -15,6 +15,7 @@
 #include "coupling/pull_in_study.hpp"
 #include "coupling/quasi_static_pull_in.hpp"
 #include "coupling/switch_scene.hpp"
+#include "coupling/switch_system.hpp"
 #include "io/case_file.hpp"
 
 namespace rfmems::test {
@@ -30,8 +31,8 @@ struct CoarsePlate {
                           {"mesh.cells=" + cells, "gas.model=" + gas,
                            "actuation.dielectric={thickness: 0.1 um, permittivity: 7.6}",
                            "actuation.contact={gap: 75 nm, penetration: 7.5 nm}"})),
-        scene(build_switch_scene(cf.root(), std::string(RFMEMS_SOURCE_DIR) + "/cases/switch_plate",
-                                 AnalysisType::Transient)) {}
+        scene(build_switch_scene(cf.root(),
+                                 std::string(RFMEMS_SOURCE_DIR) + "/cases/switch_plate")) {}
   ParallelPlateActuation& act() { return *scene.actuation; }
   // The static solves' residual tolerance (quasi_static_pull_out.hpp): 1e-10 k_ref g0 [N].
   double tolerance() { return 1e-10 * stiffness_scale(act()) * act().initial_gap(); }
@@ -61,7 +62,7 @@ inline PseudoTransientStats relax_at(ParallelPlateActuation& act, double voltage
 // lifts off (the smallest gap above g_c + 5 % g0) within `window` and one that holds.
 inline DynamicPullOut dynamic_pull_out(CoarsePlate& plate, const std::vector<double>& contact,
                                        double low, double high, double tolerance, double window) {
-  const std::unique_ptr<SwitchSystem> system = plate.scene.make_transient_system();
+  const std::unique_ptr<SwitchSystem> system = make_switch_system(plate.scene);
   const PullInSettings settings = read_pull_in_settings(plate.cf.root(), plate.scene);
   DynamicState drop;
   system->initial_state(0.0, drop.y, drop.yp);

@@ -1,14 +1,14 @@
 // Reading a creep case (keys in the header): the plate scene and the switch's actuation are
-// read by the code the other drivers use (structure_from_case, build_switch_scene); this file
-// adds the creep law, the run settings and the hold voltage.
+// read by the code the other drivers use (structure_from_case, read_parallel_plate_field); this
+// file adds the creep law, the run settings and the hold voltage.
 #include "physics/creep/creep_case.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
 
-#include "coupling/switch_scene.hpp"
 #include "io/units.hpp"
+#include "physics/electrostatics/parallel_plate_field.hpp"
 #include "physics/structure/structure_from_case.hpp"
 
 namespace rfmems {
@@ -89,27 +89,27 @@ CreepCase read_creep_case(const CaseNode& root, const std::string& case_dir) {
   root.require(!root.has("gas"), "gas", "a creep run is quasi-static: no squeeze film");
   root.require(!root.has("analysis"), "analysis", "rfmems-creep runs a creep analysis; remove it");
 
+  c.structure = build_structure(root, case_dir, AnalysisType::Static);
   if (root.has("actuation")) {
-    SwitchScene scene = build_switch_scene(root, case_dir, AnalysisType::Static);
-    c.structure = std::move(scene.structure);
-    c.has_gap = true;
-    c.gap_elements = scene.actuation->elements();
-    c.initial_gap = scene.gap;
-    c.gap_law = scene.actuation->law();
+    // The hold voltage's field: the parallel-plate law the pull-in study uses.
     const CaseNode act = root.child("actuation");
+    act.get_choice("electrostatics", {"parallel_plate"}, "parallel_plate");
+    act.require(!act.has("contact"), "contact", "a creep run holds the plate off the dielectric");
+    const ParallelPlateField field = read_parallel_plate_field(act, *c.structure);
+    c.has_gap = true;
+    c.gap_elements = field.actuation->elements();
+    c.initial_gap = field.gap;
+    c.gap_law = field.actuation->law();
     const Real voltage =
         act.get_quantity("voltage", Dimension::Voltage, 0.0, Range::non_negative());
-    if (voltage > 0)
-      c.hold = CreepHoldVoltage{c.gap_elements, c.initial_gap, scene.actuation->law(), voltage};
+    if (voltage > 0) c.hold = CreepHoldVoltage{c.gap_elements, c.initial_gap, c.gap_law, voltage};
     if (!root.has("probes")) {
       Probe control;
       control.name = "control";
-      control.at = scene.control_point;
-      control.cell = scene.control / 3;
+      control.at = field.control_point;
+      control.cell = field.control_cell;
       c.probes.push_back(control);
     }
-  } else {
-    c.structure = build_structure(root, case_dir, AnalysisType::Static);
   }
   c.plate = dynamic_cast<PlateScene*>(c.structure.get());
   if (c.plate == nullptr) model.fail("structure", "creep runs need a plate");

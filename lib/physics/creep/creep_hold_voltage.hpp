@@ -1,7 +1,7 @@
 // The electrostatic hold load of a creeping switch: a voltage V held between the structure and
 // the electrode below it, as a parallel-plate pressure on the structure's gap elements
 // (physics/electrostatics/parallel_plate.hpp; the same law and conventions as
-// coupling/parallel_plate_actuation.hpp):
+// physics/electrostatics/parallel_plate_actuation.hpp):
 //
 //   F_u += V^2 A_e sum_q a_q p1(g_q) n_e,   g_q = g0 + u_q(y)   (n_e: the unit vector of dof_e)
 //

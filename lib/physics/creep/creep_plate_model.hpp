@@ -4,7 +4,8 @@
 //              case's plate operator, per run segment;
 //   gap        min over the gap points over the electrode of g0 + u_q (the plate's w
 //              reconstruction at 3 x 3 Simpson points per quadrilateral cell, as the hold load
-//              and coupling/parallel_plate_actuation.hpp sample it), its rate u_q(w') there;
+//              and physics/electrostatics/parallel_plate_actuation.hpp sample it), its rate u_q(w')
+//              there;
 //   series     per probe its deflection w [m]; min_gap [m] (with a gap); the largest von Mises
 //              stress over the two surfaces (z = +-h/2, where creep is fastest) [Pa]; the largest
 //              effective creep strain [-];

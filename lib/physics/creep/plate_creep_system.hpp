@@ -49,8 +49,8 @@
 //
 // Hold voltage (set_hold_voltage, physics/creep/creep_hold_voltage.hpp): the parallel-plate
 // pressure on the gap elements, sampled where the pull-in samples it
-// (coupling/parallel_plate_actuation.hpp, which this system holds for it): on a plate's
-// quadrilateral cells at 3 x 3 Simpson points of its w reconstruction,
+// (physics/electrostatics/parallel_plate_actuation.hpp, which this system holds for it): on a
+// plate's quadrilateral cells at 3 x 3 Simpson points of its w reconstruction,
 //   F_w,e += V^2 A_e sum_q a_q p1(g0 + u_q(y)),   u_q = offset_q + sum_k weight_qk w_k,
 // one point u = w_e on other cells (plate_scene.cpp; docs/BENCHMARKS.md sections 38, 45). F_y
 // is nonlinear in w: the Jacobian's y rows are the constant ones but for the structural tangent
@@ -62,12 +62,12 @@
 #include <optional>
 #include <vector>
 
-#include "coupling/parallel_plate_actuation.hpp"
 #include "fv/polynomial_reconstruction.hpp"
 #include "materials/creep_law.hpp"
 #include "physics/creep/creep_hold_voltage.hpp"
 #include "physics/creep/creep_system.hpp"
 #include "physics/creep/thickness_quadrature.hpp"
+#include "physics/electrostatics/parallel_plate_actuation.hpp"
 #include "physics/plate/plate_operator.hpp"
 #include "solvers/klu_factorization.hpp"
 

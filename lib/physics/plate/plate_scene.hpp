@@ -46,18 +46,15 @@ struct PlateScene : StructuralModel {
   const Mesh& structure_mesh() const override { return *mesh; }
   SecondOrderOperator& structure() override { return *op; }
   Real ramp_end_time() const override { return load_time; }
-  std::vector<bool> quasi_static_components() const override {
-    return op->rotation_components();
-  }
+  std::vector<bool> quasi_static_components() const override { return op->rotation_components(); }
   void write_fields(ResultWriter& writer, int index, Real t, std::span<const Real> y,
                     std::span<const Real> v) const override;
-  std::array<std::string, 3> probe_components() const override {
-    return {"w", "beta_x", "beta_y"};
-  }
+  std::array<std::string, 3> probe_components() const override { return {"w", "beta_x", "beta_y"}; }
   std::vector<Vec3> probe_values(const std::vector<Probe>& probes, Real t,
                                  std::span<const Real> y) const override;
   int main_probe_component() const override { return 0; }
   std::vector<GapElement> gap_elements(const std::string& patch) const override;
+  Index gap_unknown(Index cell) const override { return 3 * cell + PlateOperator::kW; }
 };
 
 // The gap elements of a plate (PlateScene::gap_elements): every cell, its w the unknown, its

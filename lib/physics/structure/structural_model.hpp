@@ -65,6 +65,9 @@ class StructuralModel {
   // the named boundary patch of a continuum (the displacement of their owner cell along the
   // last axis). InputError if the patch does not exist.
   virtual std::vector<GapElement> gap_elements(const std::string& patch) const = 0;
+  // The unknown that moves cell c along the gap axis (a plate's w, a continuum's last
+  // displacement component): what a switch controls and reports.
+  virtual Index gap_unknown(Index cell) const = 0;
 };
 
 }  // namespace rfmems

@@ -176,12 +176,13 @@ TEST(ImmersedEsbgkGas, PointCoupledSweepWithPredictorSolvesTheSameStep) {
 // gas force on it is upward (it resists the closing) and far below the electrostatic pull.
 TEST(ImmersedEsbgkGas, CoupledSwitchRunsAFewStepsWithTheGasForceOfTheGasAlone) {
   CoarseSwitch c;
-  ImmersedRunOptions o;
+  DynamicOptions o;
   o.end_time = 2e-8;
   o.contact_gap = 0.2 * kGap;
   o.ida.rtol = 1e-4;
   o.ida.atol = 1e-2 * kGap;
   o.ida.max_order = 2;
+  o.coupling.scheme = CouplingScheme::Staggered;
   ImmersedEsbgkGas gas(c.scene->background(), air(6, 1e-8), 0.0);
   const Real scale = kP0 * perimeter(c.scene->rest_surface());
 

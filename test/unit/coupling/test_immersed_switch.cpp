@@ -61,14 +61,14 @@ TEST(ImmersedSwitch, SmallStepSwingsToTwiceTheStaticDeflection) {
   Cantilever c(46, 4, 101, 31);
   const ImmersedStatic st = c.scene->solve_static(30.0);
   ASSERT_LT(st.control, 0);
-  ImmersedRunOptions o = run_options(1.2e-6, 1e-5);
+  DynamicOptions o = run_options(1.2e-6, 1e-5);
   const DynamicRun staggered = c.scene->run(30.0, o, nullptr);
   ASSERT_GT(staggered.turning_time, 0);
   EXPECT_FALSE(staggered.pulled_in);
   EXPECT_NEAR(staggered.extreme_control / st.control, 2.0, 0.06);
   // The first turning point near half the Euler-Bernoulli period (1.76 us).
   EXPECT_NEAR(staggered.turning_time / (0.5 * c.scene->first_bending_period()), 1.0, 0.05);
-  o.coupling = ImmersedCoupling::Implicit;
+  o.coupling.scheme = CouplingScheme::Implicit;
   const DynamicRun implicit = c.scene->run(30.0, o, nullptr);
   EXPECT_NEAR(staggered.extreme_control / implicit.extreme_control, 1.0, 1e-3);
   RecordProperty("peak_over_static", std::to_string(staggered.extreme_control / st.control));
@@ -114,19 +114,19 @@ TEST(ImmersedSwitch, ContactGapIsTheMovedSurfacesLowestFacingVertex) {
 // cost, IBM evaluations per step, is recorded (staggered: 1, implicit: one per residual).
 TEST(ImmersedSwitch, StrongCouplingConvergesToTheImplicitStep) {
   Cantilever c(46, 4, 101, 31);
-  ImmersedRunOptions o = run_options(1.2e-6, 1e-6);
-  auto run = [&](ImmersedCoupling scheme) {
-    o.coupling = scheme;
+  DynamicOptions o = run_options(1.2e-6, 1e-6);
+  auto run = [&](CouplingScheme scheme) {
+    o.coupling.scheme = scheme;
     c.scene->reset_times();
     const DynamicRun r = c.scene->run(30.0, o, nullptr);
     EXPECT_GT(r.turning_time, 0);
     EXPECT_FALSE(r.pulled_in);
     return std::make_pair(r, c.scene->times());
   };
-  o.strong_tolerance = 1e-8;
-  const auto [staggered, ts] = run(ImmersedCoupling::Staggered);
-  const auto [implicit, ti] = run(ImmersedCoupling::Implicit);
-  const auto [strong, tg] = run(ImmersedCoupling::Strong);
+  o.coupling.tolerance = 1e-8;
+  const auto [staggered, ts] = run(CouplingScheme::Staggered);
+  const auto [implicit, ti] = run(CouplingScheme::Implicit);
+  const auto [strong, tg] = run(CouplingScheme::StronglyCoupled);
   const Real e_staggered = std::abs(staggered.extreme_control / implicit.extreme_control - 1);
   const Real e_strong = std::abs(strong.extreme_control / implicit.extreme_control - 1);
   std::printf("30 V peak tip: implicit %.9e m; staggered %.3e, strong %.3e relative off\n",
@@ -162,10 +162,10 @@ TEST(ImmersedSwitch, GasEveryKStepsTilesTheRun) {
     }
   };
   Cantilever c(46, 4, 101, 31);
-  ImmersedRunOptions o = run_options(0.2e-6, 1e-5);
+  DynamicOptions o = run_options(0.2e-6, 1e-5);
   o.stop_at_turning = false;
   for (int k : {1, 3}) {
-    o.gas_every = k;
+    o.coupling.gas_every = k;
     RecordingGas gas;
     c.scene->reset_times();
     const DynamicRun r = c.scene->run(30.0, o, &gas);
@@ -183,7 +183,7 @@ TEST(ImmersedSwitch, GasEveryKStepsTilesTheRun) {
 }
 
 // The Reynolds film (air at 1.36e4 Pa, Veijola) inside the strong iteration
-// (ImmersedRunOptions::strong_gas): 125 V, IDA at fixed steps (BDF2), the tip at 1.0 us. Every
+// (DynamicOptions::strong_gas): 125 V, IDA at fixed steps (BDF2), the tip at 1.0 us. Every
 // step ends with the summed (electrostatic + film) interface residual below the tolerance in a
 // few iterations (measured 3.0 per step at 20 ns, at most 4), the film redone once per
 // iterate. Staggered lags the film force by a step, a first-order splitting error: its
@@ -200,14 +200,14 @@ TEST(ImmersedSwitch, StrongCouplingWithTheFilmRemovesTheLaggedFilmForceError) {
   air.mean_free_path = air.viscosity / air.ambient_pressure * std::sqrt(M_PI * 287.0 * 300 / 2);
   Real tip_x = -1e300;
   for (const Vec3& x : c.scene->rest_surface().vertices()) tip_x = std::max(tip_x, x.x());
-  ImmersedRunOptions o = run_options(1e-6, 1e-5);
+  DynamicOptions o = run_options(1e-6, 1e-5);
   o.stop_at_turning = false;
   o.output_interval = 1e-8;
-  o.strong_tolerance = 1e-8;
-  auto tip = [&](ImmersedCoupling scheme, bool strong_gas, Real dt) {
+  o.coupling.tolerance = 1e-8;
+  auto tip = [&](CouplingScheme scheme, bool strong_gas, Real dt) {
     ImmersedReynoldsFilm film(air, c.scene->facing_segments(), 0.0, 0.0, tip_x);
-    o.coupling = scheme;
-    o.strong_gas = strong_gas;
+    o.coupling.scheme = scheme;
+    o.coupling.strong_gas = strong_gas;
     o.ida.fixed_step = dt;
     o.ida.fixed_step_min = 1e-4 * dt;
     c.scene->reset_times();
@@ -217,18 +217,18 @@ TEST(ImmersedSwitch, StrongCouplingWithTheFilmRemovesTheLaggedFilmForceError) {
     const ImmersedPhysicsTimes& t = c.scene->times();
     if (strong_gas) {
       EXPECT_EQ(t.unconverged_steps, 0);
-      EXPECT_LE(t.max_coupling_residual, o.strong_tolerance);
+      EXPECT_LE(t.max_coupling_residual, o.coupling.tolerance);
       EXPECT_EQ(t.gas_steps, t.coupling_iterations);  // the film redone in every iterate
       EXPECT_LT(double(t.coupling_iterations) / t.structure_steps, 4.0);
       EXPECT_LE(t.max_coupling_iterations, 6);
     }
     return r.history.back().control;
   };
-  const Real reference = tip(ImmersedCoupling::Strong, true, 2e-9);
-  const Real staggered20 = tip(ImmersedCoupling::Staggered, false, 2e-8);
-  const Real strong20 = tip(ImmersedCoupling::Strong, true, 2e-8);
-  const Real staggered10 = tip(ImmersedCoupling::Staggered, false, 1e-8);
-  const Real strong10 = tip(ImmersedCoupling::Strong, true, 1e-8);
+  const Real reference = tip(CouplingScheme::StronglyCoupled, true, 2e-9);
+  const Real staggered20 = tip(CouplingScheme::Staggered, false, 2e-8);
+  const Real strong20 = tip(CouplingScheme::StronglyCoupled, true, 2e-8);
+  const Real staggered10 = tip(CouplingScheme::Staggered, false, 1e-8);
+  const Real strong10 = tip(CouplingScheme::StronglyCoupled, true, 1e-8);
   const Real split20 = std::abs(staggered20 / strong20 - 1);
   const Real split10 = std::abs(staggered10 / strong10 - 1);
   const Real e_staggered = std::abs(staggered20 / reference - 1);

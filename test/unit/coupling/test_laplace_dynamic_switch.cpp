@@ -11,6 +11,7 @@
 #include "coupling/laplace_dynamic_switch.hpp"
 #include "coupling/laplace_pull_in.hpp"
 #include "coupling/switch_scene.hpp"
+#include "coupling/switch_system.hpp"
 #include "io/case_file.hpp"
 #include "physics/elasticity/elasticity_scene.hpp"
 
@@ -30,14 +31,13 @@ std::unique_ptr<Beam> make_beam(int nx, int ny, int gap_cells) {
       CaseFile::load(path, {"mesh.cells=[" + std::to_string(nx) + "," + std::to_string(ny) + "]",
                             "actuation.laplace.gap_cells=" + std::to_string(gap_cells)}),
       {}});
-  b->scene = build_switch_scene(b->file.root(), std::filesystem::path(path).parent_path().string(),
-                                AnalysisType::Transient);
+  b->scene = build_switch_scene(b->file.root(), std::filesystem::path(path).parent_path().string());
   b->elasticity = dynamic_cast<ElasticityScene*>(b->scene.structure.get());
   LaplaceGapOptions o;
   o.gap_cells = gap_cells;
-  b->sw =
-      std::make_unique<LaplaceDynamicSwitch>(*b->elasticity->op, b->scene.facing_patch,
-                                             b->scene.gap, b->scene.electrode, b->scene.control, o);
+  b->sw = std::make_unique<LaplaceDynamicSwitch>(*b->elasticity->op, b->scene.facing_patch,
+                                                 b->scene.gap, b->scene.electrodes.front(),
+                                                 b->scene.control, o);
   return b;
 }
 
@@ -55,6 +55,7 @@ DynamicOptions options(Real gap, Real rtol) {
   o.ida.max_steps = 200000;
   o.tolerances.displacement = rtol * gap;
   o.tolerances.velocity_rate = 2 * M_PI / 2.6e-6;
+  o.coupling.scheme = CouplingScheme::Staggered;
   return o;
 }
 
@@ -64,7 +65,7 @@ DynamicOptions options(Real gap, Real rtol) {
 TEST(LaplaceDynamicSwitch, PlaneBeamTransientSystemKeepsEveryInertia) {
   auto b = make_beam(25, 2, 4);
   const Index n = b->elasticity->op->size();
-  const auto system = b->scene.make_transient_system();
+  const auto system = make_switch_system(b->scene);
   ASSERT_EQ(system->size(), 2 * n);
   const std::vector<StateKind> kinds = system->state_kinds();
   ASSERT_EQ(static_cast<Index>(kinds.size()), 2 * n);
@@ -82,8 +83,9 @@ TEST(LaplaceDynamicSwitch, PlaneBeamTransientSystemKeepsEveryInertia) {
 TEST(LaplaceDynamicSwitch, StaggeredMatchesImplicitAtSmallSteps) {
   auto b = make_beam(25, 2, 4);
   DynamicOptions o = options(b->scene.gap, 1e-5);
-  const DynamicRun staggered = b->sw->run(300.0, o, LaplaceCoupling::Staggered);
-  const DynamicRun implicit = b->sw->run(300.0, o, LaplaceCoupling::Implicit);
+  const DynamicRun staggered = b->sw->run(300.0, o);
+  o.coupling.scheme = CouplingScheme::Implicit;
+  const DynamicRun implicit = b->sw->run(300.0, o);
   ASSERT_GT(staggered.turning_time, 0);
   ASSERT_GT(implicit.turning_time, 0);
   EXPECT_FALSE(staggered.pulled_in);
@@ -138,8 +140,8 @@ TEST(LaplaceDynamicSwitch, DynamicOverStaticPullInIsTheThesisRatio) {
   qo.sampling.voltage_tolerance = 0.01;
   qo.gap_cells = 4;
   const LaplacePullIn qs =
-      trace_pull_in_laplace(*b->elasticity, b->scene.facing_patch, b->scene.gap, b->scene.electrode,
-                            b->scene.control, qo);
+      trace_pull_in_laplace(*b->elasticity, b->scene.facing_patch, b->scene.gap,
+                            b->scene.electrodes.front(), b->scene.control, qo);
   const Real v_qs = qs.result.pull_in_voltage;
   const DynamicOptions o = options(b->scene.gap, 1e-4);
   const DynamicPullIn d = find_dynamic_pull_in([&](Real v) { return b->sw->run(v, o); }, 0.8 * v_qs,

@@ -23,6 +23,7 @@
 #include "coupling/pull_in_study.hpp"
 #include "coupling/quasi_static_pull_in.hpp"
 #include "coupling/switch_scene.hpp"
+#include "coupling/switch_system.hpp"
 #include "io/case_file.hpp"
 
 using namespace rfmems;
@@ -78,7 +79,7 @@ TEST(PastUnstableEquilibrium, ThresholdIsNeverShortOfTheUnstableEquilibrium) {
       EXPECT_LE(x, x_u) << r;
       EXPECT_GE(x, x_u - spacing - margin * kGapLength / 3 - 1e-12) << r;
     }
-    EXPECT_EQ(rule.threshold(1.001), 0.0);  // above V_qs: no equilibrium at all
+    EXPECT_EQ(rule.threshold(1.001), 0.0);          // above V_qs: no equilibrium at all
     EXPECT_TRUE(std::isinf(rule.threshold(0.05)));  // below the last sample: never
   }
   EXPECT_FALSE(PastUnstableEquilibrium(fold, -1).armed());
@@ -133,17 +134,18 @@ TEST(PastUnstableEquilibrium, OneDegreeOfFreedomPullsInOnceFired) {
 TEST(PastUnstableEquilibrium, DefaultPlateKeepsItsBisectionAndTurnsBackShortOfTheThreshold) {
   const std::string path = std::string(RFMEMS_SOURCE_DIR) + "/cases/switch_plate/case.yaml";
   const CaseFile cf = CaseFile::load(path, {});
-  SwitchScene scene = build_switch_scene(
-      cf.root(), std::filesystem::path(path).parent_path().string(), AnalysisType::Transient);
+  SwitchScene scene =
+      build_switch_scene(cf.root(), std::filesystem::path(path).parent_path().string());
   const PullInSettings st = read_pull_in_settings(cf.root(), scene);
   const QuasiStaticPullIn qs = trace_pull_in(*scene.actuation, scene.control, st.quasi_static);
-  const auto system = scene.make_transient_system();
+  const auto system = make_switch_system(scene);
   DynamicOptions with = st.run;
   with.fold = FoldBranch::of(qs);
   DynamicOptions without = with;
   without.stop_past_fold = false;
   const Real low = 0.8 * qs.pull_in_voltage, high = 1.02 * qs.pull_in_voltage;
-  const DynamicPullIn a = find_dynamic_pull_in(*system, scene.control, low, high, st.tolerance, with);
+  const DynamicPullIn a =
+      find_dynamic_pull_in(*system, scene.control, low, high, st.tolerance, with);
   const DynamicPullIn b =
       find_dynamic_pull_in(*system, scene.control, low, high, st.tolerance, without);
   EXPECT_EQ(a.voltage, b.voltage);
@@ -160,7 +162,8 @@ TEST(PastUnstableEquilibrium, DefaultPlateKeepsItsBisectionAndTurnsBackShortOfTh
   // The lower end, the run that comes closest without pulling in, to end_time.
   DynamicOptions whole = st.run;
   whole.stop_at_turning = false;
-  const DynamicRun run = run_dynamic(*system, scene.control, [&](Real) { return a.lower; }, whole);
+  const DynamicRun run = run_dynamic(
+      *system, scene.control, [&](Real) { return a.lower; }, whole);
   ASSERT_FALSE(run.pulled_in);
   const Real x_fold = std::abs(qs.pull_in_displacement);
   const Real bare = PastUnstableEquilibrium(with.fold, 0.0).threshold(a.lower);
@@ -169,11 +172,12 @@ TEST(PastUnstableEquilibrium, DefaultPlateKeepsItsBisectionAndTurnsBackShortOfTh
   const std::vector<Real>& xs = with.fold.unstable_control;
   const auto k = std::find(xs.begin(), xs.end(), bare) - xs.begin();
   const Real shallower = k > 0 ? xs[k - 1] : qs.pull_in_displacement;
-  std::printf("V_qs %.4f V, V_dyn (%.4f, %.4f] V, t_PI %.3f us; runs %d / %d, past fold %d; "
-              "lower end's extreme %.4f |x_fold|, x_u in [%.4f, %.4f], threshold %.4f\n",
-              qs.pull_in_voltage, a.lower, a.voltage, 1e6 * a.pull_in_time, a.runs, b.runs,
-              a.past_fold_runs, run.extreme_control / x_fold, bare / x_fold, shallower / x_fold,
-              rule / x_fold);
+  std::printf(
+      "V_qs %.4f V, V_dyn (%.4f, %.4f] V, t_PI %.3f us; runs %d / %d, past fold %d; "
+      "lower end's extreme %.4f |x_fold|, x_u in [%.4f, %.4f], threshold %.4f\n",
+      qs.pull_in_voltage, a.lower, a.voltage, 1e6 * a.pull_in_time, a.runs, b.runs,
+      a.past_fold_runs, run.extreme_control / x_fold, bare / x_fold, shallower / x_fold,
+      rule / x_fold);
   EXPECT_GT(run.extreme_control, bare);
   EXPECT_GT(run.extreme_control, rule);
 }

@@ -10,6 +10,7 @@
 
 #include "coupling/state_tolerances.hpp"
 #include "coupling/switch_scene.hpp"
+#include "coupling/switch_system.hpp"
 #include "io/case_file.hpp"
 
 using namespace rfmems;
@@ -37,9 +38,9 @@ TEST(StateTolerances, KindsOfTheDefaultSwitchFollowItsLayout) {
   const std::string path = std::string(RFMEMS_SOURCE_DIR) + "/cases/switch_plate/case.yaml";
   for (const std::string gas : {"none", "reynolds"}) {
     const CaseFile cf = CaseFile::load(path, {"gas.model=" + gas});
-    SwitchScene scene = build_switch_scene(
-        cf.root(), std::filesystem::path(path).parent_path().string(), AnalysisType::Transient);
-    const auto system = scene.make_transient_system();
+    SwitchScene scene =
+        build_switch_scene(cf.root(), std::filesystem::path(path).parent_path().string());
+    const auto system = make_switch_system(scene);
     const std::vector<StateKind> kinds = system->state_kinds();
     ASSERT_EQ(static_cast<Index>(kinds.size()), system->size()) << gas;
     const Counts c = count(kinds);
@@ -85,9 +86,9 @@ TEST(StateTolerances, ScalesPerKind) {
 TEST(StateTolerances, OffOrFixedStepLeavesTheOptionsAlone) {
   const std::string path = std::string(RFMEMS_SOURCE_DIR) + "/cases/switch_plate/case.yaml";
   const CaseFile cf = CaseFile::load(path, {"gas.model=none"});
-  SwitchScene scene = build_switch_scene(
-      cf.root(), std::filesystem::path(path).parent_path().string(), AnalysisType::Transient);
-  const auto system = scene.make_transient_system();
+  SwitchScene scene =
+      build_switch_scene(cf.root(), std::filesystem::path(path).parent_path().string());
+  const auto system = make_switch_system(scene);
   StateTolerances t;
   t.displacement = 1e-9;
   t.velocity_rate = 1e6;
@@ -115,8 +116,8 @@ TEST(StateTolerances, PerKindScalesOfAScene) {
   for (const Variant& v : {Variant{"reynolds", "[40, 4]", 10e-6}, Variant{"none", "[40, 4]", 10e-6},
                            Variant{"reynolds", "[20, 8]", std::sqrt(20e-6 * 5e-6)}}) {
     const CaseFile cf = CaseFile::load(path, {"gas.model=" + v.gas, "mesh.cells=" + v.cells});
-    SwitchScene scene = build_switch_scene(
-        cf.root(), std::filesystem::path(path).parent_path().string(), AnalysisType::Transient);
+    SwitchScene scene =
+        build_switch_scene(cf.root(), std::filesystem::path(path).parent_path().string());
     const Real d = 3e-9, rate = 8e5;
     const StateTolerances t = per_kind_tolerances(scene, d, rate);
     EXPECT_DOUBLE_EQ(t.displacement, d) << v.gas << v.cells;

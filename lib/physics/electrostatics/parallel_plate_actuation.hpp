@@ -32,7 +32,7 @@
 #include <vector>
 
 #include "core/system_operator.hpp"
-#include "coupling/contact_penalty.hpp"
+#include "physics/electrostatics/contact_penalty.hpp"
 #include "physics/electrostatics/parallel_plate.hpp"
 #include "physics/structure/structural_model.hpp"
 

@@ -1,4 +1,4 @@
-#include "coupling/parallel_plate_actuation.hpp"
+#include "physics/electrostatics/parallel_plate_actuation.hpp"
 
 #include <fmt/format.h>
 
@@ -96,7 +96,8 @@ void ParallelPlateActuation::stiffness(Real t, std::span<const Real> y, std::spa
     for (const GapPoint& q : elements_[e].points) {
       const Real g = gap(y, q);
       check_gap(g, e);
-      const Real dp = v2 * elements_[e].area * q.area_fraction * net_pressure_per_volt2_derivative(g);
+      const Real dp =
+          v2 * elements_[e].area * q.area_fraction * net_pressure_per_volt2_derivative(g);
       for (const DofWeight& k : q.terms) values[term_position_[term++]] += dp * k.weight;
     }
 }
@@ -106,9 +107,9 @@ void ParallelPlateActuation::residual_per_volt2(std::span<const Real> y,
   std::fill(out.begin(), out.end(), 0.0);
   for (std::size_t e = 0; e < elements_.size(); ++e)
     out[elements_[e].dof] += elements_[e].area * point_sum(y, e, [&](Real g) {
-      check_gap(g, e);
-      return net_pressure_per_volt2(g);
-    });
+                               check_gap(g, e);
+                               return net_pressure_per_volt2(g);
+                             });
 }
 
 Real ParallelPlateActuation::min_gap(std::span<const Real> y) const {
@@ -131,9 +132,8 @@ namespace rfmems {
 Real ParallelPlateActuation::contact_force(Real voltage_squared, std::span<const Real> y) const {
   Real f = 0;
   for (std::size_t e = 0; e < elements_.size(); ++e)
-    f += voltage_squared * elements_[e].area * point_sum(y, e, [&](Real g) {
-           return contact_.pressure_per_volt2(g, p1_contact_);
-         });
+    f += voltage_squared * elements_[e].area *
+         point_sum(y, e, [&](Real g) { return contact_.pressure_per_volt2(g, p1_contact_); });
   return f;
 }
 
@@ -142,7 +142,8 @@ Real ParallelPlateActuation::contact_fraction(std::span<const Real> y) const {
   Real touching = 0, total = 0;
   for (std::size_t e = 0; e < elements_.size(); ++e) {
     total += elements_[e].area;
-    touching += elements_[e].area * point_sum(y, e, [&](Real g) { return g < contact_.gap ? 1.0 : 0.0; });
+    touching +=
+        elements_[e].area * point_sum(y, e, [&](Real g) { return g < contact_.gap ? 1.0 : 0.0; });
   }
   return total > 0 ? touching / total : 0.0;
 }

@@ -1,0 +1,134 @@
+#include "coupling/immersed_field.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "coupling/immersed_esbgk_gas.hpp"
+#include "coupling/immersed_reynolds_film.hpp"
+#include "io/probes.hpp"
+#include "physics/gas/kinetic/kinetic_case.hpp"
+
+namespace rfmems {
+
+namespace {
+
+std::pair<Real, Real> read_pair(const CaseNode& node, const std::string& key, Dimension d) {
+  const std::vector<Real> v = node.get_quantities(key, d);
+  node.require(v.size() == 2 && v[0] < v[1], key, "expected [a, b] with a < b");
+  return {v[0], v[1]};
+}
+
+}  // namespace
+
+std::unique_ptr<ImmersedGasModel> make_case_gas(const CaseNode& root, const ImmersedSwitch& scene,
+                                                const ImmersedSwitchGeometry& geometry,
+                                                Real* mean_free_path) {
+  const CaseNode gas = root.child_or_empty("gas");
+  const std::string model = gas.get_choice("model", {"none", "reynolds", "esbgk"}, "none");
+  // Keys are read (and checked) even for none, so a case toggled by --set stays valid.
+  GasProperties g;
+  g.ambient_pressure = gas.get_quantity("pressure", Dimension::Pressure, 1.36e4, Range::positive());
+  const Real temperature =
+      gas.get_quantity("temperature", Dimension::Temperature, 300.0, Range::positive());
+  const Real mu0 = gas.get_quantity("viscosity", Dimension::Viscosity, 1.712e-5, Range::positive());
+  const Real omega = gas.get_real("omega", 0.74, Range::closed(0.5, 1.0));
+  g.viscosity = mu0 * std::pow(temperature / 273.15, omega);
+  // Mean free path of the thesis's eq. (5.30) family: lambda = mu / p sqrt(pi R T / 2), air.
+  const Real lambda = g.viscosity / g.ambient_pressure * std::sqrt(M_PI * 287.0 * temperature / 2);
+  g.mean_free_path =
+      gas.get_quantity("mean_free_path", Dimension::Length, lambda, Range::positive());
+  g.reference_pressure = g.ambient_pressure;
+  g.rarefaction = gas.get_choice("rarefaction", {"veijola", "none"}, "veijola") == "veijola"
+                      ? Rarefaction::Veijola
+                      : Rarefaction::None;
+  if (mean_free_path) *mean_free_path = g.mean_free_path;
+  // esbgk: the kinetic gas on the background (immersed_esbgk_gas.hpp).
+  ImmersedEsbgkSettings e;
+  e.gas.R = 287.05;
+  e.gas.mu_ref = mu0;
+  e.gas.T_ref = 273.15;
+  e.gas.omega = omega;
+  e.gas.model = gas.get_choice("collision", {"esbgk", "bgk"}, "esbgk") == "esbgk"
+                    ? CollisionModel::Esbgk
+                    : CollisionModel::Bgk;
+  e.pressure = g.ambient_pressure;
+  e.temperature = temperature;
+  e.velocities = static_cast<int>(gas.get_int("velocities", 10, Range::closed(4, 40)));
+  e.velocity_extent = gas.get_real("velocity_extent", 3.5, Range::closed(2.0, 8.0));
+  // Defaults from BENCHMARKS.md section 22: a 1e-5 step residual keeps the gas force within
+  // 0.4 % of a 1e-9 solve; the point-coupled sweep and the predictor cut the sweeps 4x.
+  e.options.step_tolerance = gas.get_real("step_tolerance", 1e-5, Range::closed(1e-14, 1e-1));
+  const std::string smoother = gas.get_choice("smoother", {"point", "downwind", "both"}, "point");
+  e.options.smoother = smoother == "point"      ? GasSmoother::PointCoupled
+                       : smoother == "downwind" ? GasSmoother::Downwind
+                                                : GasSmoother::Both;
+  e.options.predictor = gas.get_bool("predictor", true);
+  e.options.max_step_sweeps =
+      static_cast<int>(gas.get_int("max_step_sweeps", 2000, Range::closed(1, 100000)));
+  e.options.transport = read_transport_scheme(gas);
+  if (model == "none") return nullptr;
+  if (model == "esbgk")
+    return std::make_unique<ImmersedEsbgkGas>(scene.background(), e, geometry.background_lower.y());
+  Real tip = -1e300;
+  for (const Vec3& x : scene.rest_surface().vertices()) tip = std::max(tip, x.x());
+  return std::make_unique<ImmersedReynoldsFilm>(g, scene.facing_segments(),
+                                                geometry.background_lower.y(),
+                                                geometry.background_lower.x(), tip);
+}
+
+std::unique_ptr<ImmersedField> read_immersed_field(const CaseNode& root, ElasticityScene& beam) {
+  auto f = std::make_unique<ImmersedField>();
+  const Mesh& mesh = *beam.mesh;
+  root.child("model").require(mesh.dim() == 2, "structure",
+                              "the immersed field needs a plane beam");
+  const CaseNode act = root.child("actuation");
+  act.require(!act.has("gap"), "gap",
+              "the immersed field's gap is the beam's height above the background's bottom");
+  const CaseNode im = act.child("immersed");
+  const CaseNode bg = im.child("background");
+  ImmersedSwitchGeometry& g = f->geometry;
+  g.background_lower = bg.get_vec3_quantity("lower", Dimension::Length);
+  g.background_upper = bg.get_vec3_quantity("upper", Dimension::Length);
+  bg.require(g.background_upper.x() > g.background_lower.x() &&
+                 g.background_upper.y() > g.background_lower.y(),
+             "upper", "must lie above and right of lower");
+  const std::vector<Real> cells = bg.get_reals("cells");
+  bg.require(cells.size() == 2 && cells[0] >= 4 && cells[1] >= 4 && cells[0] <= 4000 &&
+                 cells[1] <= 4000 && cells[0] == std::floor(cells[0]) &&
+                 cells[1] == std::floor(cells[1]),
+             "cells", "expected [nx, ny], integers in [4, 4000]");
+  g.background_cells[0] = static_cast<int>(cells[0]);
+  g.background_cells[1] = static_cast<int>(cells[1]);
+  std::tie(g.electrode_begin, g.electrode_end) =
+      read_pair(act.child("electrode"), "x", Dimension::Length);
+  g.anchor_patch = im.get_string("anchor_patch", "left");
+  im.require(mesh.find_patch(g.anchor_patch) >= 0, "anchor_patch",
+             "the beam mesh has no such patch");
+  g.facing_patch = act.get_string("facing_patch", "bottom");
+  act.require(mesh.find_patch(g.facing_patch) >= 0, "facing_patch",
+              "the beam mesh has no such patch");
+  g.anchor_extension =
+      im.get_quantity("anchor_extension", Dimension::Length, 0.0, Range::non_negative());
+  for (const Vec3& x : mesh.nodes())
+    if (!(x.x() >= g.background_lower.x() - 1e-9 && x.x() <= g.background_upper.x() &&
+          x.y() > g.background_lower.y() && x.y() < g.background_upper.y()))
+      bg.fail("lower", fmt::format("the beam (node at [{:g}, {:g}] m) is not inside the background",
+                                   x.x(), x.y()));
+  const CasePointFinder finder(mesh);
+  // The reported deflection is u_y at the control point itself (the tip), from its cell's
+  // reconstruction, not at the cell's centroid half a cell short of it.
+  const auto [control_point, control_cell] = finder.find(act, "control", "the control point");
+  f->sw = std::make_unique<ImmersedSwitch>(
+      *beam.op, g, beam.op->displacement_functional(control_cell, control_point, 1));
+  if (im.get_bool("electrostatics_distributed", false))
+    f->sw->distribute_electrostatics(Communicator::world());
+  // The gas's keys are checked once here; every run then builds its own gas at rest.
+  make_case_gas(root, *f->sw, g, &f->mean_free_path);
+  f->make_gas = [root, sw = f->sw.get(), g] { return make_case_gas(root, *sw, g); };
+  return f;
+}
+
+}  // namespace rfmems

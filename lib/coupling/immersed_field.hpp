@@ -1,0 +1,66 @@
+// The immersed-boundary field of a switch (actuation.electrostatics: immersed, switch_scene.hpp):
+// a plane beam on its own mesh moving through a fixed Cartesian background that carries the
+// potential and the gas (immersed_switch.hpp), as the case describes it:
+//
+//   actuation:
+//     electrostatics: immersed
+//     electrode: {x: [0 um, 45 um]}   # on the background's bottom (potential 0); the rest
+//                                     # of the bottom, the sides and the top: zero flux
+//     facing_patch: bottom            # beam patch over the electrode (default bottom)
+//     control: [45 um, 1.5 um]        # the point whose deflection is reported and controlled
+//                                     # (the tip), read from its cell's reconstruction
+//     immersed:
+//       background: {lower: [0 um, 0 um], upper: [75 um, 10 um], cells: [150, 50]}
+//       anchor_patch: left            # beam patch clamped in the wall (default left)
+//       anchor_extension: 0.5 um      # the anchored face pushed into the wall (default one
+//                                     # background cell)
+//       electrostatics_distributed: false  # under mpirun: the field solved over the ranks
+//                                     # (GMRES + additive Schwarz KLU; every rank runs the
+//                                     # switch), else redundantly by KLU on every rank
+//   gas:                              # none (default) | reynolds | esbgk
+//     model: reynolds                 # 1D film under the beam, open at the tip
+//     pressure: 1.36e4 Pa
+//     temperature: 300 K
+//     viscosity: 1.712e-5 Pa*s        # mu0 at 273.15 K, times (T / 273.15)^omega
+//     omega: 0.74
+//     rarefaction: veijola            # veijola (default) | none
+//     # esbgk (immersed_esbgk_gas.hpp): the kinetic gas on the background; electrode,
+//     # substrate and left diffuse at T, top and right pressure (p, T)
+//     collision: esbgk                # esbgk (default) | bgk
+//     velocities: 10                  # per direction (n^3 grid), extent velocity_extent
+//     velocity_extent: 3.5            # half-width in thermal speeds sqrt(2 R T)
+//     step_tolerance: 1e-5            # the gas step's residual / ||alpha V h / dt||
+//     smoother: point                 # point (COMET cell solve) | downwind | both
+//     predictor: true                 # start each step from the extrapolated f
+//     max_step_sweeps: 2000
+//     transport: first_order          # | second_order, with limiter, limiter_k and
+//                                     # boundary_reconstruction as for rfmems-gas's solver
+//                                     # (kinetic_case.hpp; immersed_kinetic_gas.hpp)
+#pragma once
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "coupling/immersed_switch.hpp"
+#include "io/case_file.hpp"
+#include "physics/elasticity/elasticity_scene.hpp"
+
+namespace rfmems {
+
+struct ImmersedField {
+  ImmersedSwitchGeometry geometry;
+  std::unique_ptr<ImmersedSwitch> sw;
+  // A fresh gas of the case (each run starts the gas at rest); null for none.
+  std::function<std::unique_ptr<ImmersedGasModel>()> make_gas;
+  Real mean_free_path = 0;  // the gas's, at the ambient pressure
+};
+
+// actuation (electrode, facing_patch, control, immersed) and the gas section, for `beam`.
+std::unique_ptr<ImmersedField> read_immersed_field(const CaseNode& root, ElasticityScene& beam);
+
+// A fresh gas model of the case's gas section around `scene`; null for none.
+std::unique_ptr<ImmersedGasModel> make_case_gas(const CaseNode& root, const ImmersedSwitch& scene,
+                                                const ImmersedSwitchGeometry& geometry,
+                                                Real* mean_free_path = nullptr);
+
+}  // namespace rfmems
