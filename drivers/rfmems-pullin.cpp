@@ -71,7 +71,8 @@ int run(const DriverOptions& options) {
   const Communicator world = Communicator::world();
   if (!world.is_root() && !runs_on_every_rank(root)) return 0;
   SwitchScene scene = build_switch_scene(root, run_case.dir);
-  const PullInSettings settings = read_pull_in_settings(root, scene);
+  PullInSettings settings = read_pull_in_settings(root, scene);
+  if (!options.quiet && world.is_root()) settings.progress = stderr;
   case_file.check_all_used();  // a typo stops the run here, before any solving
 
   const std::string output =

@@ -115,7 +115,8 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
   o.output_interval =
       dyn.get_quantity("output_interval", Dimension::Time, o.end_time / 500, Range::positive());
   if (dyn.has("bracket")) std::tie(s.bracket_low, s.bracket_high) = read_bracket(dyn);
-  s.tolerance = dyn.get_quantity("tolerance", Dimension::Voltage, 0.5, Range::positive());
+  // 0: kRelativeBisectionTolerance x the quasi-static V_PI (traced first).
+  s.tolerance = dyn.get_quantity("tolerance", Dimension::Voltage, 0.0, Range::positive());
   // A run that turns back (the control retreated from its extreme by turning_retreat of the
   // excursion, coupling/turning_back.hpp) has not pulled in. false: every bisection run goes
   // to touch-down or end_time.
@@ -182,18 +183,46 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
 
 namespace {
 
+// A run of the study on the progress stream (null: none): what it was, its voltage, how it
+// ended, and the study's wall time so far.
+class StudyProgress {
+ public:
+  explicit StudyProgress(std::FILE* out) : out_(out), start_(std::chrono::steady_clock::now()) {}
+  void run(const std::string& what, Real voltage, const DynamicRun& r) const {
+    if (!out_) return;
+    std::string end = fmt::format("ran to {:.4g} us", 1e6 * r.final_time);
+    if (r.pulled_in)
+      end = r.past_fold ? "pulled in (past the unstable equilibrium)"
+                        : fmt::format("pulled in at {:.4g} us", 1e6 * r.pull_in_time);
+    else if (r.settled)
+      end = "settled";
+    else if (r.turning_time > 0)
+      end += fmt::format(" (turned back at {:.4g} us)", 1e6 * r.turning_time);
+    std::fprintf(out_, "rfmems-pullin: %s at %.4f V: %s, %ld steps (%.1f s)\n", what.c_str(),
+                 voltage, end.c_str(), r.stats.steps,
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
+    std::fflush(out_);
+  }
+
+ private:
+  std::FILE* out_;
+  std::chrono::steady_clock::time_point start_;
+};
+
 // The pull-in time's integration error: the bisection's upper end once more to contact at
 // time_check x the tolerances of `bisection` (its rules, no past-fold end, no samples). Near
 // the fold t_PI amplifies IDA's local errors 10-100x, so rtol alone does not say how good the
 // reported time is.
 void check_pull_in_time(CouplingManager& manager, const DynamicOptions& bisection,
-                        const PullInSettings& settings, PullInReport& report) {
+                        const PullInSettings& settings, const StudyProgress& progress,
+                        PullInReport& report) {
   if (settings.time_check <= 0 || report.dynamic.pull_in_time <= 0) return;
   DynamicOptions tight = with_tolerances_scaled(bisection, settings.time_check);
   tight.output_interval = 0;
   tight.stop_past_fold = false;
   report.time_check = manager.run(settings.waveform, report.dynamic.voltage, tight);
   report.time_check_factor = settings.time_check;
+  progress.run("dynamic: the pull-in time's check", report.dynamic.voltage, report.time_check);
 }
 
 // The structure's unknowns of a state whose structure leads.
@@ -268,8 +297,11 @@ void run_release(SwitchScene& scene, SwitchSystem& system, const PullInSettings&
 void run_dynamic_study(SwitchScene& scene, CouplingManager& manager, const PullInSettings& settings,
                        ResultWriter& writer, PullInReport& report) {
   const QuasiStaticPullIn& qs = report.quasi_static;
+  const StudyProgress progress(settings.progress);
   const Real low = settings.bracket_high > 0 ? settings.bracket_low : 0.8 * qs.pull_in_voltage;
   const Real high = settings.bracket_high > 0 ? settings.bracket_high : 1.02 * qs.pull_in_voltage;
+  report.tolerance = settings.tolerance > 0 ? settings.tolerance
+                                            : kRelativeBisectionTolerance * qs.pull_in_voltage;
   const VoltageWaveform& waveform = settings.waveform;
   DynamicOptions bisection = settings.run;
   bisection.output_interval = 0;
@@ -279,11 +311,19 @@ void run_dynamic_study(SwitchScene& scene, CouplingManager& manager, const PullI
       settings.run.stop_past_fold && waveform.kind != VoltageWaveform::Kind::Pulse;
   DynamicOptions to_contact = bisection;
   to_contact.stop_past_fold = false;
-  report.dynamic = find_dynamic_pull_in(
-      [&](Real v) { return manager.run(waveform, v, bisection); }, low, high, settings.tolerance,
-      settings.run.end_time, [&](Real v) { return manager.run(waveform, v, to_contact); });
+  // Each bisection run, logged as it ends.
+  auto logged = [&](const DynamicOptions& o, const std::string& what) {
+    return [&, what](Real v) {
+      DynamicRun r = manager.run(waveform, v, o);
+      progress.run(what, v, r);
+      return r;
+    };
+  };
+  report.dynamic = find_dynamic_pull_in(logged(bisection, "dynamic: bisection run"), low, high,
+                                        report.tolerance, settings.run.end_time,
+                                        logged(to_contact, "dynamic: the upper end to contact"));
   report.has_dynamic = true;
-  check_pull_in_time(manager, bisection, settings, report);
+  check_pull_in_time(manager, bisection, settings, progress, report);
   static const char* names[] = {"step", "ramp", "pulse"};
   report.waveform = names[static_cast<int>(waveform.kind)];
 
@@ -295,6 +335,7 @@ void run_dynamic_study(SwitchScene& scene, CouplingManager& manager, const PullI
     voltages = {0.97 * report.dynamic.voltage, 1.03 * report.dynamic.voltage};
   for (std::size_t k = 0; k < voltages.size(); ++k) {
     DynamicRun run = manager.run(waveform, voltages[k], whole);
+    progress.run("dynamic: history", voltages[k], run);
     write_dynamic_history(writer, fmt::format("V{}", k), run);
     report.histories.emplace_back(voltages[k], std::move(run));
   }
@@ -303,6 +344,7 @@ void run_dynamic_study(SwitchScene& scene, CouplingManager& manager, const PullI
     DynamicOptions o = settings.run;
     o.stop_at_turning = false;
     const DynamicRun run = manager.run(VoltageWaveform{}, v, o);
+    progress.run("dynamic: small signal", v, run);
     write_dynamic_history(writer, "small_signal", run);
     report.small_signal_voltage = v;
     report.small_signal = free_response(run.history);
@@ -330,6 +372,10 @@ PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& setting
     case Analysis::Dynamic: {
       report.quasi_static = manager->quasi_static(settings.quasi_static);
       report.has_quasi_static = true;
+      if (settings.progress)
+        std::fprintf(settings.progress,
+                     "rfmems-pullin: quasi-static: fold at %.4f V (%ld solves)\n",
+                     report.quasi_static.pull_in_voltage, report.quasi_static.solves);
       scene.structure->write_fields(writer, 0, 0.0,
                                     structure_part(scene, report.quasi_static.fold_state), {});
       write_pull_in_curve(writer, report.quasi_static);
@@ -438,7 +484,7 @@ Json pull_in_summary(const SwitchScene& scene, const PullInSettings& settings,
                   {"pull_in_time", d.pull_in_time > 0 ? Json(d.pull_in_time) : Json()},
                   {"upper_past_fold", d.upper_past_fold},
                   {"ratio_to_quasi_static", d.voltage / qs.pull_in_voltage},
-                  {"tolerance", settings.tolerance},
+                  {"tolerance", report.tolerance},
                   {"runs", d.runs},
                   {"settled_runs", d.settled_runs},
                   {"past_fold_runs", d.past_fold_runs},

@@ -22,7 +22,10 @@
 //       end_time: 50 us               # a run that has not touched down by then did not pull in
 //       bracket: [150 V, 190 V]       # bisection bracket (default [0.8, 1.02] x the
 //                                     # quasi-static V_PI, computed first)
-//       tolerance: 0.5 V              # on the dynamic pull-in voltage
+//       tolerance: 0.5 V              # on the dynamic pull-in voltage (default 0.3 % of the
+//                                     # quasi-static V_PI: a fixed voltage is coarse on a
+//                                     # slender structure's few volts; the validity report
+//                                     # warns above 1 %)
 //       stop_at_turning: true         # a bisection run that turns back did not pull in
 //                                     # (false: run to touch-down or end_time)
 //       settle_tolerance: 1e-2        # settled, no pull-in: velocity, acceleration and gas
@@ -83,6 +86,7 @@
 // pull-out voltage on the contact branch from the pulled-in state of its approach
 // (quasi_static_pull_out.hpp).
 #pragma once
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -97,6 +101,9 @@
 
 namespace rfmems {
 
+// The bisection's default tolerance, a fraction of the quasi-static pull-in voltage.
+constexpr Real kRelativeBisectionTolerance = 3e-3;
+
 struct PullInSettings {
   Analysis analysis = Analysis::QuasiStatic;
   Real static_voltage = 0;  // static
@@ -104,11 +111,11 @@ struct PullInSettings {
   DynamicOptions run;                      // dynamic: end_time, contact_gap, output_interval, ida,
                                            // coupling
   Real bracket_low = 0, bracket_high = 0;  // 0: from the quasi-static V_PI
-  Real tolerance = 0.5;
-  bool histories = true;       // false: voltages: []
-  std::vector<Real> voltages;  // empty: around the dynamic V_PI
-  Real small_signal = 0.3;     // fraction of the quasi-static V_PI (0: none)
-  Real time_check = 0.1;       // tolerance factor of the pull-in time's check (0: none)
+  Real tolerance = 0;                      // [V]; 0: kRelativeBisectionTolerance x V_qs
+  bool histories = true;                   // false: voltages: []
+  std::vector<Real> voltages;              // empty: around the dynamic V_PI
+  Real small_signal = 0.3;                 // fraction of the quasi-static V_PI (0: none)
+  Real time_check = 0.1;                   // tolerance factor of the pull-in time's check (0: none)
   VoltageWaveform waveform;
   // pull_in.release
   bool release = false;
@@ -118,7 +125,8 @@ struct PullInSettings {
   Real release_bracket_low = 0, release_bracket_high = 0;  // high 0: the default
   // pull_in.transient
   Real transient_voltage = 0;
-  DynamicOptions transient_run;  // end_time, contact_gap, output_interval, ida, coupling
+  DynamicOptions transient_run;   // end_time, contact_gap, output_interval, ida, coupling
+  std::FILE* progress = nullptr;  // a line per dynamic run (null: none)
 };
 
 PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& scene);
@@ -132,6 +140,7 @@ struct PullInReport {
   bool has_dynamic = false;
   std::string waveform;  // step, ramp or pulse
   DynamicPullIn dynamic;
+  Real tolerance = 0;  // the bisection's [V]
   // The upper end's step to contact at time_check_factor x the tolerances (0: not run): its
   // pull-in time against dynamic.pull_in_time estimates the latter's integration error.
   Real time_check_factor = 0;

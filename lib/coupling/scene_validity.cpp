@@ -244,6 +244,14 @@ ValidityReport switch_scene_validity(const CaseNode &root, const SwitchScene &sc
   ValidityReport r =
       check_scene_validity(describe_switch_scene(scene, thickness, analysis, &report));
   if (scene.immersed) check_immersed_field(scene, report, r);
+  // The bisection's tolerance against what it measures (a fixed voltage is coarse on a slender
+  // structure of a few volts).
+  const Real v_qs = report.quasi_static.pull_in_voltage;
+  if (report.has_dynamic && report.tolerance > C::kMaxBisectionTolerance * v_qs)
+    r.warnings.push_back(fmt::format(
+        "pull_in.dynamic.tolerance {:.3g} V is {:.2g} % of the quasi-static pull-in voltage "
+        "({:.4g} V): the dynamic pull-in voltage is known to that only",
+        report.tolerance, 100 * report.tolerance / v_qs, v_qs));
   return r;
 }
 

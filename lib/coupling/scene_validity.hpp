@@ -29,6 +29,10 @@
 //    (g/b or g/L > 0.154), a 10 % force error. With it: warn where g/b > 0.5, beyond which the
 //    first-order (linear in g/b) correction is not claimed here (the higher-order Palmer terms
 //    grow with g/b).
+//  - Dynamic pull-in: the bisection's tolerance above 1 % of the quasi-static pull-in voltage
+//    (a fixed voltage is coarse on a slender structure that pulls in at a few volts).
+//  - Immersed field: the touch-down gap below one background cell, the 1D Reynolds film at
+//    Kn > 1 or followed below half the gap, the kinetic gas's cell size (below).
 //  - Kinetic gas: Kn = lambda/L over the computed density range (lambda = mu(T)/p
 //    sqrt(pi R T/2) with p = rho R T), reported; the velocity grid's half-extent must cover
 //    every wall's speed plus 3 thermal speeds sqrt(2 R T_wall) (a Maxwellian keeps
@@ -118,7 +122,8 @@ struct ValidityCriteria {
   static constexpr Real kFringingMaxForceError = 0.1;
   static constexpr Real kFringingCorrectionMaxGapOverWidth = 0.5;
   static constexpr Real kVelocityGridThermalSpeeds = 3;
-  static constexpr Real kMaxUpwindViscosityRatio = 1;  // h / (2 lambda)
+  static constexpr Real kMaxUpwindViscosityRatio = 1;   // h / (2 lambda)
+  static constexpr Real kMaxBisectionTolerance = 0.01;  // of the quasi-static V_PI
 };
 
 // Bird's hard-sphere mean free path lambda = mu / (rho R T) sqrt(pi R T / 2) [m].

@@ -97,6 +97,37 @@ else
   fail "ramp: $(cat "$WORK/err") $(cat "$WORK/ramp.json")"
 fi
 
+# A slender plate (L/h = 1000, V_qs 5.87 V on 20 x 2 cells): the bisection's default tolerance is
+# 0.3 % of V_qs (a fixed 0.5 V, 8.5 % of it, let V_dyn come out at 1.02 V_qs), a tolerance above
+# 1 % of V_qs is warned of, and every run of the study prints a progress line on stderr.
+THIN=(--set "mesh.cells=[20, 2]" --set "model.thickness=0.4 um" --set gas.model=none
+      --set "pull_in.dynamic={end_time: 400 us, voltages: [], small_signal: 0, time_check: 0}")
+if "$DRIVER" "$PLATE" "${THIN[@]}" -o "$WORK/thin.h5" --json >"$WORK/thin.json" 2>"$WORK/thin.err" &&
+   "$DRIVER" "$PLATE" "${THIN[@]}" --set "pull_in.dynamic.tolerance=0.5 V" -o "$WORK/thin05.h5" \
+     --json >"$WORK/thin05.json" 2>"$WORK/thin05.err" &&
+   $PY - "$WORK/thin.json" "$WORK/thin05.json" <<'PY'
+import json, sys
+p = json.load(open(sys.argv[1]))
+qs, d = p["pull_in"]["quasi_static"]["pull_in_voltage"], p["pull_in"]["dynamic"]
+assert abs(d["tolerance"] / (3e-3 * qs) - 1) < 1e-12, d
+assert d["pull_in_voltage"] - d["not_pulling_in"] <= d["tolerance"], d
+assert 0.88 < d["ratio_to_quasi_static"] < 0.95, d
+assert not p["validity"]["warnings"], p["validity"]
+w = json.load(open(sys.argv[2]))["validity"]["warnings"]
+assert any(x.startswith("pull_in.dynamic.tolerance 0.5 V is 8.5 %") for x in w), w
+PY
+then
+  if [ "$(grep -c '^rfmems-pullin: dynamic: bisection run at ' "$WORK/thin.err")" -ge 5 ] &&
+     grep -q "^rfmems-pullin: quasi-static: fold at " "$WORK/thin.err" &&
+     grep -q "^rfmems-pullin: warning: pull_in.dynamic.tolerance 0.5 V" "$WORK/thin05.err"; then
+    pass "slender plate: relative bisection tolerance, the coarse one warned of, progress lines"
+  else
+    fail "slender plate's progress lines: $(head -3 "$WORK/thin.err")"
+  fi
+else
+  fail "slender plate: $(cat "$WORK/thin.err" "$WORK/thin05.err" | tail -3)"
+fi
+
 expect_input_error negative_gap "actuation.gap" "$PLATE" --set "actuation.gap=-1 um"
 expect_input_error laplace_plate "actuation.electrostatics" "$PLATE" --set actuation.electrostatics=laplace
 expect_input_error electrode_off "actuation.electrode" "$PLATE" --set "actuation.electrode={x: [500 um, 600 um]}"
