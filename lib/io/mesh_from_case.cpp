@@ -9,8 +9,10 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <optional>
 
 #include "core/error.hpp"
+#include "io/interrupt_cleanup.hpp"
 #include "mesh/gmsh_reader.hpp"
 #include "mesh/gmsh_runner.hpp"
 #include "mesh/structured_mesh.hpp"
@@ -70,6 +72,7 @@ class ScratchDirectory {
     path_ = fs::temp_directory_path() /
             fmt::format("rfmems-mesh-{}-{}", static_cast<long>(::getpid()), counter++);
     fs::create_directories(path_);
+    remove_on_interrupt_.emplace(path_.string(), RemoveOnInterrupt::Kind::Directory);
   }
   ~ScratchDirectory() {
     std::error_code ec;
@@ -81,6 +84,7 @@ class ScratchDirectory {
 
  private:
   fs::path path_;
+  std::optional<RemoveOnInterrupt> remove_on_interrupt_;  // the files in it register their own
 };
 
 Mesh gmsh_mesh(const CaseNode& node, const std::string& case_dir) {
@@ -111,6 +115,7 @@ Mesh gmsh_mesh(const CaseNode& node, const std::string& case_dir) {
     if (!geo) return read_gmsh_mesh(path.string(), dim);
     const ScratchDirectory scratch;
     const std::string msh = (scratch.path() / (path.stem().string() + ".msh")).string();
+    const RemoveOnInterrupt remove_msh(msh, RemoveOnInterrupt::Kind::File);
     return read_gmsh_mesh(generate_gmsh_mesh(path.string(), numbers, msh, dim), dim);
   } catch (const MeshError& e) {
     throw MeshError(with_key(e));
