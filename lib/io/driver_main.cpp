@@ -69,13 +69,10 @@ DriverCase::DriverCase(const DriverOptions& options)
                      name.find_first_of("/\\") == std::string::npos,
                  "name", "a case name must be a plain, non-empty file name (no '/')");
   output = options.output.empty() ? "out/" + name + ".h5" : options.output;
-  std::error_code ec;
-  if (fs::equivalent(output, options.case_path, ec) ||
-      fs::weakly_canonical(fs::absolute(output), ec) ==
-          fs::weakly_canonical(fs::absolute(options.case_path), ec))
+  set_result_path(output);
+  if (is_result_path(options.case_path))
     fail_output(options, output, "is the case file: the run would overwrite its input");
   check_writable(options, output);
-  set_result_path(output);
 }
 
 double DriverCase::elapsed() const {
