@@ -156,7 +156,8 @@ os.execv(sys.argv[1], sys.argv[1:])' "$BIN/rfmems-solid" "$KIRSCH" --set mesh.pa
     driver=$!
     gmsh_pid=""
     for _ in $(seq 1 300); do
-      gmsh_pid=$(pgrep -P "$driver" || true)
+      # gmsh by name: the driver has other children (MPI's orted).
+      gmsh_pid=$(pgrep -P "$driver" -x gmsh || true)
       [ -n "$gmsh_pid" ] && break
       sleep 0.05
     done
