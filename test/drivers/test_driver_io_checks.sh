@@ -8,8 +8,8 @@
 #   - NaN, negative or out-of-range numeric options; an unknown time unit (the message lists
 #     every accepted one); a gas state the velocity grid cannot represent;
 # and, at run time: memory running out is one clear line (exit 1); a driver killed while gmsh
-# meshes leaves neither gmsh running nor its scratch directory; a creep run that ends by its
-# collapse root prints no SUNDIALS messages.
+# meshes leaves neither gmsh running nor its scratch directory; a --quiet creep run of the held
+# switch prints nothing on stderr (no SUNDIALS messages).
 #
 # Usage: bash test_driver_io_checks.sh <directory of the drivers> <source directory>
 set -uo pipefail
