@@ -29,10 +29,10 @@
 // /creep/final_state (the full state at the final time, one row), metadata with the summary.
 // Exit codes as the other drivers: 0 success; 2 bad input (one line on stderr, no result
 // file); 1 other failures.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -50,6 +50,7 @@
 #include "io/json_summary.hpp"
 #include "io/progress.hpp"
 #include "io/result_writer.hpp"
+#include "io/run_limits.hpp"
 #include "io/units.hpp"
 #include "physics/creep/creep_case.hpp"
 #include "physics/creep/creep_plate_model.hpp"
@@ -64,7 +65,7 @@ constexpr const char* kProgram = "rfmems-creep";
 // The options only this driver has (the shared ones go to driver_main).
 struct CreepOptions {
   std::string restart;
-  long every_steps = -1;      // -1: the case's value
+  long every_steps = -1;  // -1: the case's value
   double every_seconds = -1;
   std::string hold_voltage_for_gap;  // a length: find the hold voltage and exit
 };
@@ -148,6 +149,11 @@ int run(const DriverOptions& options) {
   if (creep_options.every_seconds >= 0)
     settings.checkpoint_every_seconds = creep_options.every_seconds;
   Checkpoint restart;
+  if (is_result_path(creep_options.restart))
+    throw InputError(
+        fmt::format("option '--restart' = '{}': is also the result file (-o {}): the "
+                    "run would overwrite the checkpoint it resumes from",
+                    creep_options.restart, run_case.output));
   if (!creep_options.restart.empty()) restart = read_checkpoint(creep_options.restart);
 
   CreepRunModel model = make_plate_creep_model(creep);
@@ -157,16 +163,16 @@ int run(const DriverOptions& options) {
       std::vector<Real> y, yp;
       model.make_system()->initial_state(0, y, yp);
     } catch (const std::exception&) {
-      run_case.root.child("actuation").fail(
-          "voltage", "no elastic equilibrium at this hold voltage (above the pull-in voltage?)");
+      run_case.root.child("actuation")
+          .fail("voltage",
+                "no elastic equilibrium at this hold voltage (above the pull-in voltage?)");
     }
   }
 
   ProgressReporter progress(options.quiet, settings.end_time());
   model.on_segment = [&](Real t, Real h, long steps) { progress.update(t, h, steps); };
-  const CreepRunResult result = run_creep(model, settings,
-                                          creep_options.restart.empty() ? nullptr : &restart,
-                                          creep_options.restart);
+  const CreepRunResult result = run_creep(
+      model, settings, creep_options.restart.empty() ? nullptr : &restart, creep_options.restart);
   progress.finish();
 
   // The result file is written only now: a run killed before leaves no partial result.
@@ -229,8 +235,8 @@ int run(const DriverOptions& options) {
     std::cout << json_text(summary) << std::flush;
   } else if (!options.quiet) {
     std::printf("%s (%s creep, %s): %ld steps to t = %.4g h", run_case.name.c_str(),
-                creep.structure->kind().c_str(), implicit ? "implicit" : "explicit",
-                result.steps, result.final_time / 3600);
+                creep.structure->kind().c_str(), implicit ? "implicit" : "explicit", result.steps,
+                result.final_time / 3600);
     if (!creep.probes.empty())
       std::printf(", %s: w %.4e -> %.4e m", creep.probes[0].name.c_str(), first[0], last[0]);
     std::printf("\n");
@@ -250,10 +256,10 @@ int main(int argc, char** argv) {
                    "resume from this checkpoint (written for the same case settings)");
     app.add_option("--checkpoint-every-steps", creep_options.every_steps,
                    "write a checkpoint at the first output time after every N steps")
-        ->check(CLI::NonNegativeNumber);
+        ->check(check_count);
     app.add_option("--checkpoint-every-seconds", creep_options.every_seconds,
                    "write a checkpoint at the first output time after every T wall seconds")
-        ->check(CLI::NonNegativeNumber);
+        ->check(check_finite_non_negative);
     app.add_option("--hold-voltage-for-gap", creep_options.hold_voltage_for_gap,
                    "print the hold voltage whose elastic gap at the first probe is GAP "
                    "(e.g. 1.43um) and exit");

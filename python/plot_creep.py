@@ -27,7 +27,7 @@ def read(path):
     try:
         f = h5py.File(path, "r")
     except OSError as e:
-        sys.exit(f"plot_creep.py: {path}: {e}")
+        raise OSError(f"{path}: {e}") from e
     with f:
         if "creep/history" not in f:
             sys.exit(f"plot_creep.py: {path}: no /creep/history (not an rfmems-creep result?)")
@@ -78,4 +78,8 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    try:
+        main()
+    except OSError as e:  # a missing or unreadable file: bad input, one line and exit 2
+        print(f"{sys.argv[0].rsplit('/', 1)[-1]}: {e}", file=sys.stderr)
+        sys.exit(2)

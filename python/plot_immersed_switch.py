@@ -10,6 +10,7 @@ Usage: plot_immersed_switch.py RESULT.h5 [RESULT2.h5 ...] -o PREFIX
 """
 import argparse
 import os
+import sys
 
 import h5py
 import matplotlib
@@ -60,4 +61,8 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    try:
+        main()
+    except OSError as e:  # a missing or unreadable file: bad input, one line and exit 2
+        print(f"{sys.argv[0].rsplit('/', 1)[-1]}: {e}", file=sys.stderr)
+        sys.exit(2)

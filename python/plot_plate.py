@@ -53,7 +53,7 @@ def main():
     try:
         f = h5py.File(args.result, "r")
     except OSError as e:
-        sys.exit(f"plot_plate.py: {args.result}: {e}")
+        raise OSError(f"{args.result}: {e}") from e
     with f:
         step = last_step_with(f, "deflection")
         if step is None:
@@ -103,4 +103,8 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    try:
+        main()
+    except OSError as e:  # a missing or unreadable file: bad input, one line and exit 2
+        print(f"{sys.argv[0].rsplit('/', 1)[-1]}: {e}", file=sys.stderr)
+        sys.exit(2)

@@ -32,7 +32,7 @@ def main():
     try:
         f = h5py.File(args.result, "r")
     except OSError as e:
-        sys.exit(f"plot_pullin.py: {args.result}: {e}")
+        raise OSError(f"{args.result}: {e}") from e
     written = []
     with f:
         if "pull_in/curve" not in f:
@@ -129,4 +129,8 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    try:
+        main()
+    except OSError as e:  # a missing or unreadable file: bad input, one line and exit 2
+        print(f"{sys.argv[0].rsplit('/', 1)[-1]}: {e}", file=sys.stderr)
+        sys.exit(2)

@@ -1,9 +1,16 @@
 // The command line every rfmems driver shares:
 //
 //   <program> CASE.yaml [--set KEY=VALUE]... [-o RESULT.h5] [--json] [--quiet]
+//             [--max-memory SIZE]
 //
 // and its error contract: bad input (InputError, MeshError, a bad option) prints one line
-// "<program>: <message>" on stderr and exits 2; any other failure exits 1; --help exits 0.
+// "<program>: <message>" on stderr and exits 2; any other failure exits 1 (running out of
+// memory too, with a line saying so); --help exits 0.
+//
+// Checked before any solving, as bad input: the result path (-o, not empty) is not the case
+// file nor any other input (the mesh file, a checkpoint to resume from: io/run_limits.hpp), and
+// a file can be created in its directory; a structured mesh's memory estimate fits in
+// --max-memory (default: MemAvailable).
 //
 // Under mpirun every driver starts MPI. A driver whose physics is distributed runs on every
 // rank (RankUse::AllRanks); the others (a structure small enough for one rank) run on the root
@@ -34,8 +41,9 @@ struct DriverOptions {
 };
 
 // The case a driver runs: loaded with the overrides, its directory (for relative mesh files),
-// its name (`name:`, else the directory's name), the result path (-o, else
-// out/<name>.h5), and the wall clock since loading began.
+// its name (`name:`, a plain file name, else the directory's name), the result path (-o, else
+// out/<name>.h5; checked as above and made the run's result_path()), and the wall clock since
+// loading began.
 struct DriverCase {
   explicit DriverCase(const DriverOptions& options);
   CaseFile file;
@@ -54,9 +62,15 @@ enum class RankUse { RootOnly, AllRanks };
 using ExtraOptions = std::function<void(CLI::App&)>;
 
 // Parses the command line and calls run(options), mapping exceptions to exit codes.
-int driver_main(const std::string& program, const std::string& description, int argc,
-                char** argv, const std::function<int(const DriverOptions&)>& run,
+int driver_main(const std::string& program, const std::string& description, int argc, char** argv,
+                const std::function<int(const DriverOptions&)>& run,
                 RankUse ranks = RankUse::RootOnly, const ExtraOptions& extra_options = {});
+
+// A CLI11 check for a numeric option: a finite number >= 0 ("" if it is one, else why not).
+// CLI::NonNegativeNumber lets NaN through (and its message prints DBL_MAX in 309 digits).
+std::string check_finite_non_negative(const std::string& text);
+// The same for a count: an integer >= 0 (a real with an integral value, 1e3, is one).
+std::string check_count(const std::string& text);
 
 // "<program>: <message>" on one line on stderr (newlines in the message become spaces).
 void print_driver_error(const std::string& program, const std::string& message);

@@ -40,6 +40,9 @@ constexpr std::array kUnits = {
     UnitEntry{"ms", {1e-3, D::Time}},
     UnitEntry{"us", {1e-6, D::Time}},
     UnitEntry{"ns", {1e-9, D::Time}},
+    UnitEntry{"min", {60.0, D::Time}},
+    UnitEntry{"h", {3600.0, D::Time}},
+    UnitEntry{"d", {86400.0, D::Time}},
 
     UnitEntry{"kg/m^3", {1.0, D::Density}},
     UnitEntry{"g/cm^3", {1e3, D::Density}},

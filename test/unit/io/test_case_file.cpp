@@ -248,6 +248,18 @@ us: 5 µs
             "mm, um, nm)");
 }
 
+// Long times (a creep run's hours and days) are time units like any other, so the message
+// for an unknown one lists them.
+TEST_F(CaseFileTest, TimeUnitsIncludeMinutesHoursAndDays) {
+  const CaseNode r = parse("a: 2 min\nb: 500 h\nc: 3 d\nd: 5 years\n").root();
+  EXPECT_DOUBLE_EQ(r.get_quantity("a", Dimension::Time), 120);
+  EXPECT_DOUBLE_EQ(r.get_quantity("b", Dimension::Time), 500 * 3600.0);
+  EXPECT_DOUBLE_EQ(r.get_quantity("c", Dimension::Time), 3 * 86400.0);
+  EXPECT_EQ(error_of([&] { r.get_quantity("d", Dimension::Time); }),
+            "x.yaml: key 'd' = '5 years': unknown unit 'years' (expected a time: s, ms, us, ns, "
+            "min, h, d)");
+}
+
 TEST_F(CaseFileTest, QuantitySequences) {
   const CaseFile cf = parse("at: [1 um, 2 um]\nxs: [1 mm, 2, 3 cm]\nbad: [1 um, 2 GPa]\n");
   const CaseNode r = cf.root();

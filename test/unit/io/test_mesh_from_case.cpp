@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "io/mesh_from_case.hpp"
+#include "io/run_limits.hpp"
 
 namespace rfmems {
 namespace {
@@ -53,8 +54,8 @@ TEST(MeshFromCase, GradedBox) {
 }
 
 TEST(MeshFromCase, GeoIsMeshedAtRunTime) {
-  const Mesh mesh = mesh_of("mesh: {type: gmsh, file: plate_with_hole.geo, parameters: {h: 0.4}}\n",
-                            kKirschDir);
+  const Mesh mesh =
+      mesh_of("mesh: {type: gmsh, file: plate_with_hole.geo, parameters: {h: 0.4}}\n", kKirschDir);
   EXPECT_EQ(mesh.dim(), 2);
   EXPECT_GT(mesh.n_cells(), 10);
   for (const char* name : {"hole", "right", "top", "symmetry_x", "symmetry_y"})
@@ -75,8 +76,9 @@ TEST(MeshFromCase, ErrorsNameTheFileAndKey) {
             "m.yaml: key 'mesh.file' = 'plate.stl': expected a .geo or .msh file");
   EXPECT_EQ(error_of([] { mesh_of("mesh: {type: gmsh, file: /nonexistent/a.msh}\n"); }),
             "m.yaml: key 'mesh.file' = '/nonexistent/a.msh': /nonexistent/a.msh: no such file");
-  EXPECT_NE(error_of([] { mesh_of("mesh: {type: gmsh, file: a.msh, parameters: {h: 1}}\n"); })
-                .find("only for a .geo file"),
+  EXPECT_NE(error_of([] {
+              mesh_of("mesh: {type: gmsh, file: a.msh, parameters: {h: 1}}\n");
+            }).find("only for a .geo file"),
             std::string::npos);
 }
 
@@ -91,6 +93,50 @@ TEST(MeshFromCase, NoScratchFilesAreLeft) {
   };
   mesh_of("mesh: {type: gmsh, file: plate_with_hole.geo, parameters: {h: 0.4}}\n", kKirschDir);
   EXPECT_EQ(count(), 0);
+}
+
+// A structured mesh's memory estimate (cells x bytes per unknown) is checked against the
+// run's limit before the mesh is built: [1e6, 1e6] cells would otherwise allocate until the
+// machine runs out.
+TEST(MeshFromCase, MeshBeyondTheMemoryLimitIsRefusedBeforeItIsBuilt) {
+  const std::string huge = "mesh: {type: rectangle, size: [1, 1], cells: [1000000, 1000000]}\n";
+  const std::string e = error_of([&] { mesh_of(huge); });
+  EXPECT_NE(e.find("key 'mesh.cells'"), std::string::npos) << e;
+  EXPECT_NE(e.find("estimated"), std::string::npos) << e;
+  EXPECT_NE(e.find("TiB"), std::string::npos) << e;  // 1e12 cells: terabytes
+  EXPECT_NE(e.find("MemAvailable"), std::string::npos) << e;
+
+  set_memory_limit(1 << 20);
+  const std::string small = "mesh: {type: rectangle, size: [1, 1], cells: [200, 20]}\n";
+  const std::string limited = error_of([&] { mesh_of(small); });
+  set_memory_limit(0);
+  EXPECT_NE(limited.find("more than the 1 MiB"), std::string::npos) << limited;
+  EXPECT_NE(limited.find("--max-memory"), std::string::npos) << limited;
+  EXPECT_EQ(mesh_of(small).n_cells(), 4000);  // MemAvailable again: it fits
+}
+
+// gmsh ignores a -setnumber name the .geo does not declare, so a typo would mesh with the
+// default silently: every parameter must be a name the .geo declares.
+TEST(MeshFromCase, GmshParameterTypoIsRefused) {
+  const std::string e = error_of([] {
+    mesh_of("mesh: {type: gmsh, file: plate_with_hole.geo, parameters: {hh: 0.1}}\n", kKirschDir);
+  });
+  EXPECT_NE(e.find("key 'mesh.parameters.hh'"), std::string::npos) << e;
+  EXPECT_NE(e.find("declares no parameter 'hh'"), std::string::npos) << e;
+  // The names it does declare: DefineConstant h and the plain assignments (a, L, h_hole).
+  for (const char* name : {"h,", "a,", "L,", "h_hole"})
+    EXPECT_NE(e.find(name), std::string::npos) << name << " in " << e;
+  EXPECT_EQ(e.find("Name"), std::string::npos) << e;  // inside DefineConstant's braces
+}
+
+TEST(MeshFromCase, MeshFileThatIsTheResultIsRefused) {
+  set_result_path(kKirschDir + "/../kirsch_hole/plate_with_hole.geo");
+  const std::string e = error_of([] {
+    mesh_of("mesh: {type: gmsh, file: plate_with_hole.geo, parameters: {h: 0.4}}\n", kKirschDir);
+  });
+  set_result_path("");
+  EXPECT_NE(e.find("key 'mesh.file'"), std::string::npos) << e;
+  EXPECT_NE(e.find("result file"), std::string::npos) << e;
 }
 
 }  // namespace

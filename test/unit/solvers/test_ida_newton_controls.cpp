@@ -160,3 +160,22 @@ TEST(IdaNewtonControls, EachReachesIdaAndKeepsThePullInTime) {
     EXPECT_NE(p.stats.steps, base.stats.steps);
   }
 }
+
+// A failure the caller handles (here: stepping on past the contact, where every trial state is
+// refused) is a SolverError carrying IDA's own message, and IDA prints nothing on stderr.
+TEST(IdaMessages, AFailureCarriesIdasMessageAndPrintsNothing) {
+  LumpedActuator system;
+  IdaIntegrator ida(system, options(1e-8));
+  ida.initialize(0.0, std::vector<Real>{0.0, 0.0}, std::vector<Real>{0.0, beta});
+  testing::internal::CaptureStderr();
+  std::string message;
+  try {
+    ida.advance(20.0);
+  } catch (const SolverError& e) {
+    message = e.what();
+  }
+  const std::string printed = testing::internal::GetCapturedStderr();
+  EXPECT_NE(message.find("IDA failed"), std::string::npos) << message;
+  EXPECT_NE(message.find("IDASolve"), std::string::npos) << message;  // IDA's own words
+  EXPECT_EQ(printed, "");
+}
