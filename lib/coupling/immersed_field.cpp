@@ -6,30 +6,21 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "coupling/immersed_esbgk_gas.hpp"
 #include "coupling/immersed_reynolds_film.hpp"
 #include "io/probes.hpp"
+#include "physics/electrostatics/parallel_plate_field.hpp"
 #include "physics/gas/kinetic/kinetic_case.hpp"
 
 namespace rfmems {
 
 namespace {
 
-std::pair<Real, Real> read_pair(const CaseNode& node, const std::string& key, Dimension d) {
-  const std::vector<Real> v = node.get_quantities(key, d);
-  node.require(v.size() == 2 && v[0] < v[1], key, "expected [a, b] with a < b");
-  return {v[0], v[1]};
-}
-
-}  // namespace
-
-std::unique_ptr<ImmersedGasModel> make_case_gas(const CaseNode& root, const ImmersedSwitch& scene,
-                                                const ImmersedSwitchGeometry& geometry,
-                                                Real* mean_free_path) {
+ImmersedGasSettings read_immersed_gas(const CaseNode& root, GasModel model) {
+  ImmersedGasSettings s;
+  s.model = model;
   const CaseNode gas = root.child_or_empty("gas");
-  const std::string model = gas.get_choice("model", {"none", "reynolds", "esbgk"}, "none");
   // Keys are read (and checked) even for none, so a case toggled by --set stays valid.
-  GasProperties g;
+  GasProperties& g = s.film;
   g.ambient_pressure = gas.get_quantity("pressure", Dimension::Pressure, 1.36e4, Range::positive());
   const Real temperature =
       gas.get_quantity("temperature", Dimension::Temperature, 300.0, Range::positive());
@@ -44,9 +35,8 @@ std::unique_ptr<ImmersedGasModel> make_case_gas(const CaseNode& root, const Imme
   g.rarefaction = gas.get_choice("rarefaction", {"veijola", "none"}, "veijola") == "veijola"
                       ? Rarefaction::Veijola
                       : Rarefaction::None;
-  if (mean_free_path) *mean_free_path = g.mean_free_path;
   // esbgk: the kinetic gas on the background (immersed_esbgk_gas.hpp).
-  ImmersedEsbgkSettings e;
+  ImmersedEsbgkSettings& e = s.kinetic;
   e.gas.R = 287.05;
   e.gas.mu_ref = mu0;
   e.gas.T_ref = 273.15;
@@ -58,8 +48,8 @@ std::unique_ptr<ImmersedGasModel> make_case_gas(const CaseNode& root, const Imme
   e.temperature = temperature;
   e.velocities = static_cast<int>(gas.get_int("velocities", 10, Range::closed(4, 40)));
   e.velocity_extent = gas.get_real("velocity_extent", 3.5, Range::closed(2.0, 8.0));
-  // Defaults from BENCHMARKS.md section 22: a 1e-5 step residual keeps the gas force within
-  // 0.4 % of a 1e-9 solve; the point-coupled sweep and the predictor cut the sweeps 4x.
+  // A 1e-5 step residual keeps the gas force within 0.4 % of a 1e-9 solve; the point-coupled
+  // sweep and the predictor cut the sweeps 4x (docs/ibm.md, "Cheaper sweeps").
   e.options.step_tolerance = gas.get_real("step_tolerance", 1e-5, Range::closed(1e-14, 1e-1));
   const std::string smoother = gas.get_choice("smoother", {"point", "downwind", "both"}, "point");
   e.options.smoother = smoother == "point"      ? GasSmoother::PointCoupled
@@ -69,17 +59,30 @@ std::unique_ptr<ImmersedGasModel> make_case_gas(const CaseNode& root, const Imme
   e.options.max_step_sweeps =
       static_cast<int>(gas.get_int("max_step_sweeps", 2000, Range::closed(1, 100000)));
   e.options.transport = read_transport_scheme(gas);
-  if (model == "none") return nullptr;
-  if (model == "esbgk")
-    return std::make_unique<ImmersedEsbgkGas>(scene.background(), e, geometry.background_lower.y());
+  return s;
+}
+
+}  // namespace
+
+std::unique_ptr<ImmersedGasModel> ImmersedField::make_gas() const {
+  switch (gas.model) {
+    case GasModel::None:
+      return nullptr;
+    case GasModel::Esbgk:
+      return std::make_unique<ImmersedEsbgkGas>(sw->background(), gas.kinetic,
+                                                geometry.background_lower.y());
+    case GasModel::Reynolds:
+      break;
+  }
   Real tip = -1e300;
-  for (const Vec3& x : scene.rest_surface().vertices()) tip = std::max(tip, x.x());
-  return std::make_unique<ImmersedReynoldsFilm>(g, scene.facing_segments(),
+  for (const Vec3& x : sw->rest_surface().vertices()) tip = std::max(tip, x.x());
+  return std::make_unique<ImmersedReynoldsFilm>(gas.film, sw->facing_segments(),
                                                 geometry.background_lower.y(),
                                                 geometry.background_lower.x(), tip);
 }
 
-std::unique_ptr<ImmersedField> read_immersed_field(const CaseNode& root, ElasticityScene& beam) {
+std::unique_ptr<ImmersedField> read_immersed_field(const CaseNode& root, ElasticityScene& beam,
+                                                   GasModel gas) {
   auto f = std::make_unique<ImmersedField>();
   const Mesh& mesh = *beam.mesh;
   root.child("model").require(mesh.dim() == 2, "structure",
@@ -102,8 +105,12 @@ std::unique_ptr<ImmersedField> read_immersed_field(const CaseNode& root, Elastic
              "cells", "expected [nx, ny], integers in [4, 4000]");
   g.background_cells[0] = static_cast<int>(cells[0]);
   g.background_cells[1] = static_cast<int>(cells[1]);
-  std::tie(g.electrode_begin, g.electrode_end) =
-      read_pair(act.child("electrode"), "x", Dimension::Length);
+  // The electrode as every field reads it (parallel_plate_field.hpp), its x extent required.
+  const CaseNode electrode = act.child("electrode");
+  electrode.require(electrode.has("x"), "x", "the immersed field's electrode needs its extent");
+  const ElectrodeExtent extent = read_electrodes(act, false).front();
+  g.electrode_begin = extent.x_min;
+  g.electrode_end = extent.x_max;
   g.anchor_patch = im.get_string("anchor_patch", "left");
   im.require(mesh.find_patch(g.anchor_patch) >= 0, "anchor_patch",
              "the beam mesh has no such patch");
@@ -125,9 +132,7 @@ std::unique_ptr<ImmersedField> read_immersed_field(const CaseNode& root, Elastic
       *beam.op, g, beam.op->displacement_functional(control_cell, control_point, 1));
   if (im.get_bool("electrostatics_distributed", false))
     f->sw->distribute_electrostatics(Communicator::world());
-  // The gas's keys are checked once here; every run then builds its own gas at rest.
-  make_case_gas(root, *f->sw, g, &f->mean_free_path);
-  f->make_gas = [root, sw = f->sw.get(), g] { return make_case_gas(root, *sw, g); };
+  f->gas = read_immersed_gas(root, gas);
   return f;
 }
 

@@ -37,30 +37,37 @@
 //                                     # boundary_reconstruction as for rfmems-gas's solver
 //                                     # (kinetic_case.hpp; immersed_kinetic_gas.hpp)
 #pragma once
-#include <functional>
 #include <memory>
 #include <string>
 
+#include "coupling/immersed_esbgk_gas.hpp"
 #include "coupling/immersed_switch.hpp"
+#include "coupling/scene_combinations.hpp"
 #include "io/case_file.hpp"
+#include "materials/gas_properties.hpp"
 #include "physics/elasticity/elasticity_scene.hpp"
 
 namespace rfmems {
 
+// The gas section of an immersed scene, read once (every key, whatever the model).
+struct ImmersedGasSettings {
+  GasModel model = GasModel::None;
+  GasProperties film;             // reynolds (film.mean_free_path: at the ambient pressure)
+  ImmersedEsbgkSettings kinetic;  // esbgk
+};
+
 struct ImmersedField {
   ImmersedSwitchGeometry geometry;
   std::unique_ptr<ImmersedSwitch> sw;
-  // A fresh gas of the case (each run starts the gas at rest); null for none.
-  std::function<std::unique_ptr<ImmersedGasModel>()> make_gas;
-  Real mean_free_path = 0;  // the gas's, at the ambient pressure
+  ImmersedGasSettings gas;
+  // A fresh gas of the case around the beam at rest (each run starts the gas at rest); null
+  // for none.
+  std::unique_ptr<ImmersedGasModel> make_gas() const;
 };
 
-// actuation (electrode, facing_patch, control, immersed) and the gas section, for `beam`.
-std::unique_ptr<ImmersedField> read_immersed_field(const CaseNode& root, ElasticityScene& beam);
-
-// A fresh gas model of the case's gas section around `scene`; null for none.
-std::unique_ptr<ImmersedGasModel> make_case_gas(const CaseNode& root, const ImmersedSwitch& scene,
-                                                const ImmersedSwitchGeometry& geometry,
-                                                Real* mean_free_path = nullptr);
+// actuation (electrode, facing_patch, control, immersed) and the gas section (its model, as
+// read_scene_choice read it), for `beam`.
+std::unique_ptr<ImmersedField> read_immersed_field(const CaseNode& root, ElasticityScene& beam,
+                                                   GasModel gas);
 
 }  // namespace rfmems

@@ -194,7 +194,8 @@ void check_immersed_field(const SwitchScene &scene, const PullInReport &report, 
   if (scene.gas() == GasModel::Esbgk) {
     const ImmersedSwitchGeometry &g = f.geometry;
     const Real hx = (g.background_upper.x() - g.background_lower.x()) / g.background_cells[0];
-    check_cell_size_against_mean_free_path(std::min(hx, cell), f.mean_free_path, f.mean_free_path,
+    check_cell_size_against_mean_free_path(std::min(hx, cell), f.gas.film.mean_free_path,
+                                           f.gas.film.mean_free_path,
                                            "actuation.immersed.background.cells", r);
   }
 }

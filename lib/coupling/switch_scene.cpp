@@ -74,7 +74,7 @@ SwitchScene build_switch_scene(const CaseNode& root, const std::string& case_dir
                 "only with actuation.electrostatics: " + field_name(field));
   if (s.field() == FieldModel::Immersed) {
     auto* beam = dynamic_cast<ElasticityScene*>(s.structure.get());
-    s.immersed = read_immersed_field(root, *beam);
+    s.immersed = read_immersed_field(root, *beam, s.gas());
     s.gap = s.immersed->sw->rest_gap();
     s.facing_patch = s.immersed->geometry.facing_patch;
     s.electrodes = {ElectrodeExtent{}};

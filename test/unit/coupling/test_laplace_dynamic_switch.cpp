@@ -30,7 +30,9 @@ std::unique_ptr<Beam> make_beam(int nx, int ny, int gap_cells) {
   auto b = std::make_unique<Beam>(Beam{
       CaseFile::load(path, {"mesh.cells=[" + std::to_string(nx) + "," + std::to_string(ny) + "]",
                             "actuation.laplace.gap_cells=" + std::to_string(gap_cells)}),
-      {}});
+      {},
+      nullptr,
+      nullptr});
   b->scene = build_switch_scene(b->file.root(), std::filesystem::path(path).parent_path().string());
   b->elasticity = dynamic_cast<ElasticityScene*>(b->scene.structure.get());
   LaplaceGapOptions o;
