@@ -45,28 +45,28 @@ int main(int argc, char** argv) {
       const Real load = law == "coble" ? 1.2e6 : 6e4;
       for (const std::string& solver : solvers)
         for (double lag : solver == "schur" ? lags : std::vector<double>{0}) {
-        auto plate = bench::make_creep_plate(60, load, bench::creep_law_by_name(law), nx, ny);
-        const auto r = bench::run_creep_implicit(*plate, rtol, solver == "schur",
-                                                 hours * bench::kHour, cap, lag);
-        Json j;
-        j["bench"] = "creep_linear_solvers";
-        j["mesh"] = mesh;
-        j["unknowns"] = plate->system->size();
-        j["law"] = law;
-        j["solver"] = solver;
-        j["refactor_tolerance"] = lag;
-        j["rtol"] = rtol;
-        j["complete"] = r.complete;
-        j["t_reached_h"] = r.t_reached / bench::kHour;
-        bench::add_integrator_stats(j, r.stats);
-        j["linear_iters"] = r.stats.linear_iters;
-        j["preconditioner_setups"] = r.stats.preconditioner_setups;
-        j["schur_factorizations"] = r.factorizations;
-        j["w_elastic"] = r.w_elastic;
-        j["w_plastic"] = r.w_plastic;
-        j["wall_s"] = r.wall;
-        j["cpu_s"] = r.cpu;
-        bench::emit(j);
+          auto plate = bench::make_creep_plate(60, load, bench::creep_law_by_name(law), nx, ny);
+          const auto r = bench::run_creep_implicit(*plate, rtol, solver == "schur",
+                                                   hours * bench::kHour, cap, lag);
+          Json j;
+          j["bench"] = "creep_linear_solvers";
+          j["mesh"] = mesh;
+          j["unknowns"] = plate->system->size();
+          j["law"] = law;
+          j["solver"] = solver;
+          j["refactor_tolerance"] = lag;
+          j["rtol"] = rtol;
+          j["complete"] = r.complete;
+          j["t_reached_h"] = r.t_reached / bench::kHour;
+          bench::add_integrator_stats(j, r.stats);
+          j["linear_iters"] = r.stats.linear_iters;
+          j["preconditioner_setups"] = r.stats.preconditioner_setups;
+          j["schur_factorizations"] = r.factorizations;
+          j["w_elastic"] = r.w_elastic;
+          j["w_plastic"] = r.w_plastic;
+          j["wall_s"] = r.wall;
+          j["cpu_s"] = r.cpu;
+          bench::emit(j);
         }
     }
   }

@@ -16,11 +16,11 @@
 #include <string>
 #include <vector>
 
+#include "bench_support.hpp"
 #include "core/error.hpp"
 #include "physics/creep/continuum_plate_comparison.hpp"
 #include "physics/creep/explicit_creep_integrator.hpp"
 #include "solvers/ida_integrator.hpp"
-#include "bench_support.hpp"
 
 namespace rfmems::bench {
 
@@ -39,7 +39,7 @@ using CreepPlate = FixedFixedCreepPlate;
 
 // The Table 4.1 plate: L = 240 um, width L/4, the given L/h, load and law, 20 Simpson intervals.
 inline std::unique_ptr<CreepPlate> make_creep_plate(Real slenderness, Real load,
-                                                     const CreepLaw& law, int nx, int ny) {
+                                                    const CreepLaw& law, int nx, int ny) {
   FixedFixedCreepProblem problem;
   problem.length = kCreepPlateLength;
   problem.width = kCreepPlateLength / 4;
@@ -52,10 +52,10 @@ inline std::unique_ptr<CreepPlate> make_creep_plate(Real slenderness, Real load,
 struct CreepRun {
   Real w_elastic = 0, w_plastic = 0;  // centre: w(0) and w(end) - w(0)
   long steps = 0;
-  IntegratorStats stats;  // implicit runs
-  long factorizations = 0;  // of the Schur complement (Schur runs)
+  IntegratorStats stats;     // implicit runs
+  long factorizations = 0;   // of the Schur complement (Schur runs)
   double wall = 0, cpu = 0;  // seconds (CPU: this process, immune to a shared machine)
-  bool complete = true;  // false: stopped at the wall-time cap
+  bool complete = true;      // false: stopped at the wall-time cap
   Real t_reached = 0;
 };
 
@@ -82,7 +82,7 @@ inline CreepRun run_creep_implicit(CreepPlate& p, Real rtol, bool schur, Real en
   options.krylov_dimension = 10;
   IdaIntegrator ida(*p.system, options);
   ida.initialize(0, y, yp);
-  for (Real t = 1; ; t *= 10) {
+  for (Real t = 1;; t *= 10) {
     const Real t_out = std::min(t, end);
     ida.advance(t_out);
     r.t_reached = t_out;

@@ -103,8 +103,7 @@ int main(int argc, char** argv) {
   const Mesh beam_mesh = make_structured_mesh(spec);
   std::vector<ElasticityBoundary> bcs(beam_mesh.patches().size());
   bcs[beam_mesh.find_patch("left")].kind = ElasticityBoundary::Kind::Fixed;
-  ElasticityOperator beam(beam_mesh, LinearElastic{200e9, 0.3, 8912, Hypothesis::PlaneStress},
-                          bcs);
+  ElasticityOperator beam(beam_mesh, LinearElastic{200e9, 0.3, 8912, Hypothesis::PlaneStress}, bcs);
   for (const std::string& c : cells) {
     int nx = 0, ny = 0;
     if (std::sscanf(c.c_str(), "%dx%d", &nx, &ny) != 2) return 2;

@@ -24,8 +24,8 @@
 // Accuracy is each model's discretisation error: |Q(mesh) - Q_ref| / |Q_ref| with Q_ref the
 // Richardson extrapolation of that model's three finest meshes (both directions doubled each
 // time; the observed order is reported; --static-reference finest uses the finest mesh's
-// value instead, for when the finest meshes are not asymptotic), because the two models converge to values that differ
-// by the model difference above (reported too, against the analytic value).
+// value instead, for when the finest meshes are not asymptotic), because the two models converge to
+// values that differ by the model difference above (reported too, against the analytic value).
 //   static     Q = w(L/2) on the strip's centre line (plate: mean of the cubic reconstructions
 //              of the four cells touching (L/2, b/2)); plane: the section mean of u_y at L/2
 //              (column means of the four columns around L/2, cubic Lagrange interpolation,
@@ -63,15 +63,15 @@
 #include <string>
 #include <vector>
 
+#include "bench_support.hpp"
 #include "core/error.hpp"
+#include "core/reduced_inertia_system.hpp"
 #include "core/structural_systems.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/elasticity/elasticity_operator.hpp"
 #include "physics/plate/plate_operator.hpp"
-#include "core/reduced_inertia_system.hpp"
 #include "solvers/ida_integrator.hpp"
 #include "solvers/static_solve.hpp"
-#include "bench_support.hpp"
 
 using namespace rfmems;
 using Json = nlohmann::ordered_json;
@@ -82,8 +82,6 @@ using namespace rfmems::bench;
 
 constexpr double kLength = 400e-6, kThickness = 4e-6, kE = 200e9, kNu = 0.31, kRho = 7854,
                  kPressure = 1e3, kShearFactor = 5.0 / 6.0;
-
-
 
 // Timoshenko clamped-clamped beam under uniform load, per unit width (downward positive).
 double timoshenko_deflection() {
@@ -97,8 +95,8 @@ double euler_bernoulli_deflection() {
 // First bending period of the Euler-Bernoulli clamped-clamped beam (E, plane stress).
 double euler_bernoulli_period() {
   const double beta = 4.730040744862704;
-  const double omega = beta * beta / (kLength * kLength) *
-                       std::sqrt(kE * kThickness * kThickness / 12 / kRho);
+  const double omega =
+      beta * beta / (kLength * kLength) * std::sqrt(kE * kThickness * kThickness / 12 / kRho);
   return 2 * M_PI / omega;
 }
 
@@ -133,21 +131,22 @@ class PlateStrip : public Model {
     spec.upper = Vec3(kLength, width, 0);
     spec.n[0] = nx;
     spec.n[1] = ny;
-    auto graded = [grading](double xi) { return xi - grading * std::sin(2 * M_PI * xi) / (2 * M_PI); };
-    mesh_ = grading == 0 ? make_structured_mesh(spec)
-                         : make_structured_mesh(spec, [&](const Vec3& x) {
-                             return Vec3(kLength * graded(x.x() / kLength),
-                                         width * graded(x.y() / width), 0);
-                           });
+    auto graded = [grading](double xi) {
+      return xi - grading * std::sin(2 * M_PI * xi) / (2 * M_PI);
+    };
+    mesh_ =
+        grading == 0 ? make_structured_mesh(spec) : make_structured_mesh(spec, [&](const Vec3& x) {
+          return Vec3(kLength * graded(x.x() / kLength), width * graded(x.y() / width), 0);
+        });
     std::vector<PlateBoundary> bcs(mesh_.patches().size());
     for (std::size_t p = 0; p < bcs.size(); ++p) {
       const std::string& name = mesh_.patches()[p].name;
       bcs[p].kind = name == "left" || name == "right" ? PlateBoundary::Kind::Clamped
                                                       : PlateBoundary::Kind::Free;
     }
-    op_ = std::make_unique<PlateOperator>(mesh_, PlateSection{kE, kNu, kRho, kThickness}, bcs,
-                                          [](const Vec3&, double) { return -kPressure; },
-                                          degree);
+    op_ = std::make_unique<PlateOperator>(
+        mesh_, PlateSection{kE, kNu, kRho, kThickness}, bcs,
+        [](const Vec3&, double) { return -kPressure; }, degree);
     const double dx = (1 + grading) * kLength / nx, dy = (1 + grading) * width / ny;
     for (Index c = 0; c < mesh_.n_cells(); ++c) {
       const Vec3 d = mesh_.cell_centroid(c) - centre();
@@ -174,8 +173,7 @@ class PlateStrip : public Model {
   double deflection_rate(std::span<const double> Y) const override {
     // The deflection functional applied to the w velocities (the clamped edges' data are 0).
     scratch_.assign(op_->size(), 0.0);
-    for (Index c = 0; c < mesh_.n_cells(); ++c)
-      scratch_[3 * c] = Y[system_->velocity_index(3 * c)];
+    for (Index c = 0; c < mesh_.n_cells(); ++c) scratch_[3 * c] = Y[system_->velocity_index(3 * c)];
     return deflection(scratch_);
   }
 
@@ -300,7 +298,8 @@ int plate_degree = 3;
 double plane_grading = 0, plane_grading_y = 0;
 
 std::unique_ptr<Model> make_model(const std::string& model, MeshSize m, double width) {
-  if (model == "plate") return std::make_unique<PlateStrip>(m.nx, m.ny, width, plate_grading, plate_degree);
+  if (model == "plate")
+    return std::make_unique<PlateStrip>(m.nx, m.ny, width, plate_grading, plate_degree);
   return std::make_unique<PlaneSection>(m.nx, m.ny, plane_grading, plane_grading_y);
 }
 
@@ -339,8 +338,8 @@ void static_run(const std::string& model, MeshSize m, double width, Measurement&
 }
 
 // One transient: build, integrate with IDA to the first rising root of the deflection rate.
-void transient_run(const std::string& model, MeshSize m, double width, double rtol,
-                   double w_scale, Measurement& out) {
+void transient_run(const std::string& model, MeshSize m, double width, double rtol, double w_scale,
+                   Measurement& out) {
   const double w0 = now(), t0 = cpu_now();
   auto md = make_model(model, m, width);
   const double t1 = cpu_now();
@@ -723,7 +722,8 @@ int main(int argc, char** argv) {
           double predicted = 0;
           if (i > 0 && skipped.count({i - 1, rtol}))
             predicted = std::numeric_limits<double>::infinity();
-          else if (r > 0 && i > 0 && seconds.count({i, rtols[r - 1]}) && seconds.count({i - 1, rtol}))
+          else if (r > 0 && i > 0 && seconds.count({i, rtols[r - 1]}) &&
+                   seconds.count({i - 1, rtol}))
             predicted = seconds[{i, rtols[r - 1]}] * seconds[{i - 1, rtol}] /
                         seconds[{i - 1, rtols[r - 1]}];
           else if (i > 1 && seconds.count({i - 1, rtol}) && seconds.count({i - 2, rtol}))

@@ -55,12 +55,12 @@
 #include <string>
 #include <vector>
 
+#include "bench_support.hpp"
+#include "core/reduced_inertia_system.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/plate/plate_operator.hpp"
-#include "core/reduced_inertia_system.hpp"
 #include "solvers/ida_integrator.hpp"
 #include "solvers/static_solve.hpp"
-#include "bench_support.hpp"
 
 using namespace rfmems;
 using Json = nlohmann::ordered_json;
@@ -71,8 +71,6 @@ using namespace rfmems::bench;
 
 constexpr double kLength = 400e-6, kThickness = 2e-6, kE = 200e9, kNu = 0.0, kRho = 7854,
                  kPressure = -1.0;
-
-
 
 // Built in place: the operator keeps a reference to the mesh.
 struct Strip {

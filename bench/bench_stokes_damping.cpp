@@ -8,9 +8,10 @@
 //
 // Prints one JSON line per mesh: h, cells, unknowns, c = F_y / V for the whole beam (twice the
 // half domain) without slip and with slip at each pressure, CPU seconds (assembly + solve per
-// solve), the share of the swept flux V b leaving through the right side (slip); then, over the last three meshes (halving h), Richardson extrapolation of each c
-// with its observed order p = log2((c1 - c2) / (c2 - c3)), c -> c3 + (c3 - c2) / (2^p - 1),
-// and the estimated error of the finest mesh, |c_inf - c3|.
+// solve), the share of the swept flux V b leaving through the right side (slip); then, over the
+// last three meshes (halving h), Richardson extrapolation of each c with its observed order p =
+// log2((c1 - c2) / (c2 - c3)), c -> c3 + (c3 - c2) / (2^p - 1), and the estimated error of the
+// finest mesh, |c_inf - c3|.
 //
 // --open-impedance C gives the open sides the normal impedance Z = C p / sqrt(2 R T) of the
 // kinetic pressure boundary (stokes_boundary.hpp; C = 2.05 for the case's ESBGK on 8^3
@@ -141,7 +142,9 @@ int main(int argc, char** argv) {
     const Real c1 = c[c.size() - 3], c2 = c[c.size() - 2], c3 = c.back();
     const Real order = std::log2((c1 - c2) / (c2 - c3));
     const Real limit = c3 + (c3 - c2) / (std::pow(2.0, order) - 1);
-    r["c_" + key] = {{"order", order}, {"extrapolated", limit}, {"finest_error", std::abs(limit - c3)},
+    r["c_" + key] = {{"order", order},
+                     {"extrapolated", limit},
+                     {"finest_error", std::abs(limit - c3)},
                      {"order2_extrapolated", c3 + (c3 - c2) / 3}};
   }
   bench::emit(r);

@@ -47,6 +47,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_support.hpp"
 #include "core/structural_systems.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/elasticity/elasticity_operator.hpp"
@@ -54,7 +55,6 @@
 #include "solvers/kinsol_solver.hpp"
 #include "solvers/klu_factorization.hpp"
 #include "solvers/static_solve.hpp"
-#include "bench_support.hpp"
 
 using namespace rfmems;
 using Json = nlohmann::ordered_json;
@@ -64,7 +64,6 @@ namespace {
 using namespace rfmems::bench;
 
 constexpr double kLength = 400e-6, kLoad = 1e3, kE = 200e9, kNu = 0.31, kTolerance = 1e-8;
-
 
 // Best wall time of `repeats` calls of f (the minimum is the least noise-affected estimate
 // on a shared machine).
@@ -77,7 +76,6 @@ double best_time(int repeats, const std::function<void()>& f) {
   }
   return best;
 }
-
 
 // Infinity norm that propagates NaN as +inf (std::max silently drops NaN operands).
 double max_abs(const std::vector<double>& v) {

@@ -1,6 +1,7 @@
 // Small pieces every benchmark program uses: clocks, one JSON object per stdout line, the
 // repository's cases/ directory.
 #pragma once
+#include <Eigen/Dense>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -9,8 +10,6 @@
 #include <iostream>
 #include <string>
 #include <vector>
-
-#include <Eigen/Dense>
 
 #include "core/dense_stiffness.hpp"
 #include "core/system_operator.hpp"

@@ -66,13 +66,13 @@
 #include <string>
 #include <vector>
 
+#include "bench_support.hpp"
 #include "core/structural_systems.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/elasticity/elasticity_operator.hpp"
 #include "solvers/ida_integrator.hpp"
 #include "solvers/klu_factorization.hpp"
 #include "solvers/static_solve.hpp"
-#include "bench_support.hpp"
 
 using namespace rfmems;
 using Json = nlohmann::ordered_json;
@@ -83,8 +83,6 @@ using namespace rfmems::bench;
 
 constexpr double kLength = 2.0, kHeight = 0.04, kE = 200e9, kNu = 0.31, kRho = 7854,
                  kTraction = -1000.0, kRamp = 0.02;
-
-
 
 std::string fmt_cutoff(double c) {
   char buf[32];

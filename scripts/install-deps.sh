@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config git
+  clang-format                          # the C++ style check in the tests
   libsundials-dev                       # SUNDIALS 6.4: IDA, KINSOL, SUNLinSol_KLU, SPGMR
   libsuitesparse-dev                    # KLU
   libeigen3-dev                         # dense small blocks, least-squares gradients

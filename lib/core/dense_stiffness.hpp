@@ -1,9 +1,8 @@
 // The stiffness dR/dy of a structural operator at y, as a dense matrix: for modal analyses of
 // small meshes (eigenvalues of M^-1 K in benchmarks and tests).
 #pragma once
-#include <vector>
-
 #include <Eigen/Dense>
+#include <vector>
 
 #include "core/system_operator.hpp"
 

@@ -1,9 +1,9 @@
 #include "core/reduced_inertia_system.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <utility>
-
-#include <fmt/format.h>
 
 #include "core/error.hpp"
 

@@ -28,7 +28,8 @@ void StaticSystem::jacobian(Real t, Real, std::span<const Real> y, std::span<con
 }
 
 FirstOrderSystem::FirstOrderSystem(SecondOrderOperator& op)
-    : op_(op), layout_(op.stiffness_pattern(), op.mass_diagonal(), op.damping_time()),
+    : op_(op),
+      layout_(op.stiffness_pattern(), op.mass_diagonal(), op.damping_time()),
       k_values_(op.stiffness_pattern().nnz()) {}
 
 std::vector<Real> FirstOrderSystem::differential_components() const {

@@ -31,8 +31,8 @@ struct DisplacementControlResult {
 template <class LoadPerVolt2>
 DisplacementControlResult relax_displacement_control(KluFactorization& stiffness,
                                                      LoadPerVolt2&& load_per_volt2,
-                                                     const LinearFunctional& control,
-                                                     Real delta, Real tolerance, int max_iterations,
+                                                     const LinearFunctional& control, Real delta,
+                                                     Real tolerance, int max_iterations,
                                                      std::vector<Real>& u) {
   const std::size_t n = u.size();
   std::vector<Real> residual_prev, residual(n);

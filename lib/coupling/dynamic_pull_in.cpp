@@ -68,14 +68,14 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
   TurningBack turning(options.turning_retreat);
   EarlyEnds ends = early_ends(options);
   const int release_root = 1 + TurningBack::kRoots;
-  ida.set_roots(2 + TurningBack::kRoots, [&](Real, std::span<const Real> yy,
-                                             std::span<const Real> yyp, std::span<Real> g) {
-    const Real gap = system.min_gap(yy);
-    g[0] = gap - options.contact_gap;
-    turning.roots(system.displacement(yy, control), system.velocity(yy, yyp, control),
-                  g.subspan(1, TurningBack::kRoots));
-    g[release_root] = options.release_gap > 0 ? gap - options.release_gap : 1.0;
-  });
+  ida.set_roots(2 + TurningBack::kRoots,
+                [&](Real, std::span<const Real> yy, std::span<const Real> yyp, std::span<Real> g) {
+                  const Real gap = system.min_gap(yy);
+                  g[0] = gap - options.contact_gap;
+                  turning.roots(system.displacement(yy, control), system.velocity(yy, yyp, control),
+                                g.subspan(1, TurningBack::kRoots));
+                  g[release_root] = options.release_gap > 0 ? gap - options.release_gap : 1.0;
+                });
 
   DynamicRun run;
   auto sample = [&](Real t) {
@@ -92,8 +92,7 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
     // The settle and past-fold rules look at every accepted step (IDA's one-step mode: the
     // same steps).
     const Real t_out = std::min(next_output, stop_time);
-    const IdaIntegrator::Status status =
-        ends.armed() ? ida.step(t_out) : ida.advance(t_out);
+    const IdaIntegrator::Status status = ends.armed() ? ida.step(t_out) : ida.advance(t_out);
     const Real t = ida.time();
     const auto state = ida.y();
     const Real x = system.displacement(state, control);
@@ -139,9 +138,9 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
     }
     if (options.output_interval > 0 || t >= stop_time * (1 - 1e-12)) sample(t);
     if (t >= stop_time * (1 - 1e-12)) break;
-    next_output = std::min(options.end_time, t + (options.output_interval > 0
-                                                      ? options.output_interval
-                                                      : options.end_time - t0));
+    next_output = std::min(
+        options.end_time,
+        t + (options.output_interval > 0 ? options.output_interval : options.end_time - t0));
   }
   run.final_time = ida.time();
   run.final_state = {ida.time(), std::vector<Real>(ida.y().begin(), ida.y().end()),
@@ -245,8 +244,8 @@ DynamicPullIn find_dynamic_pull_in(SwitchSystem& system, Index control, Real low
       [&](Real v) { return run_dynamic(system, control, waveform.at(v), to_contact); });
 }
 
-DynamicPullIn find_dynamic_pull_in(const PullInRunner& runner, Real low, Real high,
-                                   Real tolerance, Real end_time, const PullInRunner& to_contact) {
+DynamicPullIn find_dynamic_pull_in(const PullInRunner& runner, Real low, Real high, Real tolerance,
+                                   Real end_time, const PullInRunner& to_contact) {
   DynamicPullIn result;
   auto run_at = [&](Real v, const PullInRunner& by = {}) {
     DynamicRun run = (by ? by : runner)(v);
@@ -258,12 +257,14 @@ DynamicPullIn find_dynamic_pull_in(const PullInRunner& runner, Real low, Real hi
     return run;
   };
   if (run_at(low).pulled_in)
-    throw SolverError(fmt::format("dynamic pull-in: {:.4g} V already pulls in (lower the bracket)", low));
+    throw SolverError(
+        fmt::format("dynamic pull-in: {:.4g} V already pulls in (lower the bracket)", low));
   DynamicRun at_high = run_at(high);
   if (!at_high.pulled_in)
-    throw SolverError(fmt::format("dynamic pull-in: {:.4g} V does not pull in within {:g} s "
-                                  "(raise the bracket or the end time)",
-                                  high, end_time));
+    throw SolverError(
+        fmt::format("dynamic pull-in: {:.4g} V does not pull in within {:g} s "
+                    "(raise the bracket or the end time)",
+                    high, end_time));
   while (high - low > tolerance) {
     const Real mid = 0.5 * (low + high);
     DynamicRun run = run_at(mid);

@@ -6,8 +6,7 @@
 
 namespace rfmems {
 
-GapScaledLaggedLoad::GapScaledLaggedLoad(ElasticityOperator& beam, Real gap0,
-                                         Real closed_fraction)
+GapScaledLaggedLoad::GapScaledLaggedLoad(ElasticityOperator& beam, Real gap0, Real closed_fraction)
     : beam_(beam), gap0_(gap0), closed_fraction_(closed_fraction) {
   const Index n = beam.size();
   force_.assign(n, 0.0);

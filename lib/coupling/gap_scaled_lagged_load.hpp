@@ -39,8 +39,7 @@ class GapScaledLaggedLoad : public SecondOrderOperator {
 
   // beam: a plane elasticity operator (unknowns u_x, u_y per cell); gap0: the gap at rest;
   // closed_fraction: see kClosedFraction (the immersed switch keeps its 2 %).
-  GapScaledLaggedLoad(ElasticityOperator& beam, Real gap0,
-                      Real closed_fraction = kClosedFraction);
+  GapScaledLaggedLoad(ElasticityOperator& beam, Real gap0, Real closed_fraction = kClosedFraction);
 
   // The field's force per unknown at the reference state u_ref [N/m].
   void set_reference(std::vector<Real> force, std::span<const Real> u_ref);

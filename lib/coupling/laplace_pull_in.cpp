@@ -39,10 +39,9 @@ LaplacePullIn trace_pull_in_laplace(ElasticityScene& beam, const std::string& bo
     if (from.point.displacement != 0)
       for (Real& v : s.state) v *= delta / from.point.displacement;
     std::vector<Real>& u = s.state;
-    const DisplacementControlResult r =
-        relax_displacement_control(stiffness, load_per_volt2, LinearFunctional::unknown(control),
-                                   delta, options.coupling_tolerance,
-                                   options.max_coupling_iterations, u);
+    const DisplacementControlResult r = relax_displacement_control(
+        stiffness, load_per_volt2, LinearFunctional::unknown(control), delta,
+        options.coupling_tolerance, options.max_coupling_iterations, u);
     const Real lambda = r.voltage_squared;
     const int it = r.iterations;
     if (!r.converged)

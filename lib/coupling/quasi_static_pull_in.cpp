@@ -21,7 +21,8 @@ class DisplacementControlSystem : public SystemOperator {
     const CsrPattern& k = act_.stiffness_pattern();
     pattern_.row_ptr.assign(1, 0);
     for (Index i = 0; i < n_; ++i) {
-      for (Index p = k.row_ptr[i]; p < k.row_ptr[i + 1]; ++p) pattern_.col_idx.push_back(k.col_idx[p]);
+      for (Index p = k.row_ptr[i]; p < k.row_ptr[i + 1]; ++p)
+        pattern_.col_idx.push_back(k.col_idx[p]);
       pattern_.col_idx.push_back(n_);
       pattern_.row_ptr.push_back(static_cast<Index>(pattern_.col_idx.size()));
     }
@@ -32,8 +33,11 @@ class DisplacementControlSystem : public SystemOperator {
   void set_target(Real delta) { delta_ = delta; }
 
   Index size() const override { return n_ + 1; }
-  std::vector<Real> differential_components() const override { return std::vector<Real>(n_ + 1, 0.0); }
-  void residual(Real t, std::span<const Real> y, std::span<const Real>, std::span<Real> r) override {
+  std::vector<Real> differential_components() const override {
+    return std::vector<Real>(n_ + 1, 0.0);
+  }
+  void residual(Real t, std::span<const Real> y, std::span<const Real>,
+                std::span<Real> r) override {
     const Real lambda = y[n_];
     act_.set_voltage_squared([lambda](Real) { return lambda; });
     act_.internal_residual(t, y.subspan(0, n_), r.subspan(0, n_));
@@ -85,22 +89,22 @@ QuasiStaticPullIn trace_fold(const DeltaSolve& solve, const FoldSample& rest, Re
     result.curve.push_back(samples.back().point);
   }
   // The largest sampled voltage and its neighbours bracket the fold.
-  const auto best = std::max_element(result.curve.begin(), result.curve.end(),
-                                     [](const PullInPoint& a, const PullInPoint& b) {
-                                       return a.voltage < b.voltage;
-                                     });
+  const auto best = std::max_element(
+      result.curve.begin(), result.curve.end(),
+      [](const PullInPoint& a, const PullInPoint& b) { return a.voltage < b.voltage; });
   const std::size_t k = best - result.curve.begin();
   if (k + 1 == result.curve.size())
-    throw SolverError(fmt::format("displacement control: no fold up to a deflection of {:g} of the "
-                                  "gap (V still rising: {:.4g} V); raise max_fraction",
-                                  options.max_fraction, best->voltage));
+    throw SolverError(
+        fmt::format("displacement control: no fold up to a deflection of {:g} of the "
+                    "gap (V still rising: {:.4g} V); raise max_fraction",
+                    options.max_fraction, best->voltage));
   // Golden-section search for the largest V(delta) in [a, b] (delta < 0: a is the deeper end).
   Real a = result.curve[k + 1].displacement, b = k > 0 ? result.curve[k - 1].displacement : 0.0;
   const Real ratio = (std::sqrt(5.0) - 1) / 2;
   Real c = b - ratio * (b - a), d = a + ratio * (b - a);
   FoldSample sc = solve(c, samples[k]), sd = solve(d, samples[k]);
-  for (int it = 0; it < 80 && std::abs(sc.point.voltage - sd.point.voltage) >
-                                  0.1 * options.voltage_tolerance;
+  for (int it = 0;
+       it < 80 && std::abs(sc.point.voltage - sd.point.voltage) > 0.1 * options.voltage_tolerance;
        ++it) {
     if (sc.point.voltage > sd.point.voltage) {  // the maximum lies in [a, d]
       b = d;
@@ -122,8 +126,9 @@ QuasiStaticPullIn trace_fold(const DeltaSolve& solve, const FoldSample& rest, Re
   result.pull_in_voltage = fold.voltage;
   result.pull_in_displacement = fold.displacement;
   result.curve.push_back(fold);
-  std::sort(result.curve.begin(), result.curve.end(),
-            [](const PullInPoint& p, const PullInPoint& q) { return p.displacement > q.displacement; });
+  std::sort(
+      result.curve.begin(), result.curve.end(),
+      [](const PullInPoint& p, const PullInPoint& q) { return p.displacement > q.displacement; });
   for (PullInPoint& p : result.curve) p.stable = p.displacement >= fold.displacement;
   return result;
 }
@@ -167,9 +172,10 @@ QuasiStaticPullIn trace_pull_in(ParallelPlateActuation& act, Index control,
     newton += last.newton_iters;
     ++solves;
     if (s.state[n] < 0)
-      throw SolverError(fmt::format("displacement control: negative V^2 = {:.3e} at delta = "
-                                    "{:.3e} m (the structure bends away from the electrode?)",
-                                    s.state[n], delta));
+      throw SolverError(
+          fmt::format("displacement control: negative V^2 = {:.3e} at delta = "
+                      "{:.3e} m (the structure bends away from the electrode?)",
+                      s.state[n], delta));
     s.point = {delta, std::sqrt(s.state[n]),
                act.min_gap(std::span<const Real>(s.state).subspan(0, n)), true, last.newton_iters};
     return s;

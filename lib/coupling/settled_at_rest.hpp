@@ -51,8 +51,7 @@ class SettledAtRest {
   // After an accepted step ending at t at voltage V with the control's deflection x and
   // velocity v and the gas and electrostatic forces on the structure: true when it has settled
   // (the first time only).
-  bool at_step(Real t, Real x, Real v, Real gas_force, Real electrostatic_force,
-               Real voltage = 0);
+  bool at_step(Real t, Real x, Real v, Real gas_force, Real electrostatic_force, Real voltage = 0);
 
   bool settled() const { return settled_; }
 

@@ -8,8 +8,7 @@ namespace rfmems {
 
 SqueezeFilmSwitchSystem::SqueezeFilmSwitchSystem(ParallelPlateActuation& actuation,
                                                  std::vector<bool> quasi_static,
-                                                 const ReynoldsFilm& film,
-                                                 std::vector<Index> w_dof)
+                                                 const ReynoldsFilm& film, std::vector<Index> w_dof)
     : actuation_(actuation),
       structure_(actuation, std::move(quasi_static)),
       film_(film),
@@ -105,7 +104,8 @@ void SqueezeFilmSwitchSystem::jacobian(Real t, Real c_j, std::span<const Real> y
   film_inputs(y, yp);
   const auto p = y.subspan(m_, n_cells_), p_rate = yp.subspan(m_, n_cells_);
   film_.pressure_jacobian(c_j, p, p_rate, gap_, gap_rate_, film_values_);
-  for (std::size_t k = 0; k < film_values_.size(); ++k) values[film_p_position_[k]] = film_values_[k];
+  for (std::size_t k = 0; k < film_values_.size(); ++k)
+    values[film_p_position_[k]] = film_values_[k];
   // dF/dg (c_j = 0) on the w columns; dF/dg' (the c_j = 1 part minus it) on the v columns.
   film_.gap_jacobian(0.0, p, p_rate, gap_, gap_rate_, film_values0_);
   film_.gap_jacobian(1.0, p, p_rate, gap_, gap_rate_, film_values_);

@@ -1,10 +1,10 @@
 #include "coupling/step_response_fit.hpp"
 
 #include <Eigen/Core>
-#include <unsupported/Eigen/NonLinearOptimization>
-#include <unsupported/Eigen/NumericalDiff>
 #include <cmath>
 #include <limits>
+#include <unsupported/Eigen/NonLinearOptimization>
+#include <unsupported/Eigen/NumericalDiff>
 
 namespace rfmems {
 
@@ -75,8 +75,8 @@ Real step_response_shape(Real t, Real zeta, Real omega) {
                 (1 - zeta / s) * std::exp(-(zeta + s) * wt));
 }
 
-StepResponseFit fit_step_response(std::span<const Real> t, std::span<const Real> x,
-                                  Real guess_zeta, Real guess_omega) {
+StepResponseFit fit_step_response(std::span<const Real> t, std::span<const Real> x, Real guess_zeta,
+                                  Real guess_omega) {
   StepResponseFit out;
   const std::size_t n = t.size();
   if (n < 8 || x.size() != n) return out;
@@ -123,12 +123,12 @@ StepResponseFit fit_step_response(std::span<const Real> t, std::span<const Real>
   out.damping_ratio = Misfit::zeta(best_q);
   const Real w = misfit.omega(best_q);
   out.natural_frequency = w / (2 * M_PI);
-  out.damped_frequency =
-      out.damping_ratio < 1 ? out.natural_frequency * std::sqrt(1 - std::pow(out.damping_ratio, 2))
-                            : 0.0;
+  out.damped_frequency = out.damping_ratio < 1
+                             ? out.natural_frequency * std::sqrt(1 - std::pow(out.damping_ratio, 2))
+                             : 0.0;
   out.static_deflection = misfit.static_deflection(best_q);
-  out.residual = std::sqrt(best / static_cast<Real>(n)) * scale /
-                 std::abs(out.static_deflection - x[0]);
+  out.residual =
+      std::sqrt(best / static_cast<Real>(n)) * scale / std::abs(out.static_deflection - x[0]);
   return out;
 }
 

@@ -26,12 +26,12 @@
 namespace rfmems {
 
 struct StepResponseFit {
-  bool fitted = false;        // false: too few samples or no motion
-  Real damping_ratio = 0;     // zeta
-  Real natural_frequency = 0; // w / (2 pi) [Hz]
-  Real damped_frequency = 0;  // w_d / (2 pi) [Hz]; 0 for zeta >= 1
-  Real static_deflection = 0; // x_s
-  Real residual = 0;          // rms misfit / |x_s - x_0|
+  bool fitted = false;         // false: too few samples or no motion
+  Real damping_ratio = 0;      // zeta
+  Real natural_frequency = 0;  // w / (2 pi) [Hz]
+  Real damped_frequency = 0;   // w_d / (2 pi) [Hz]; 0 for zeta >= 1
+  Real static_deflection = 0;  // x_s
+  Real residual = 0;           // rms misfit / |x_s - x_0|
 };
 
 // phi above at time t for zeta and w.

@@ -8,9 +8,9 @@ void StepVoltageEvents::set_roots(IdaIntegrator& ida, Index n, LinearFunctional 
                                   LinearFunctional velocity, Real contact_gap,
                                   std::function<Real(std::span<const Real>)> min_gap) const {
   ida.set_roots(1 + TurningBack::kRoots,
-                [this, n, control = std::move(control), velocity = std::move(velocity),
-                 contact_gap, min_gap = std::move(min_gap)](
-                    Real, std::span<const Real> yy, std::span<const Real>, std::span<Real> g) {
+                [this, n, control = std::move(control), velocity = std::move(velocity), contact_gap,
+                 min_gap = std::move(min_gap)](Real, std::span<const Real> yy,
+                                               std::span<const Real>, std::span<Real> g) {
                   g[0] = min_gap(yy.subspan(0, n)) - contact_gap;
                   turning_.roots(control(yy), velocity(yy), g.subspan(1));
                 });
@@ -67,11 +67,11 @@ void finish_step_voltage_run(const IdaIntegrator& ida, const std::vector<StepRec
     const Real s = h > 0 ? std::clamp((t - a.t) / h, 0.0, 1.0) : 0.0;
     const Real h00 = 2 * s * s * s - 3 * s * s + 1, h10 = s * s * s - 2 * s * s + s;
     const Real h01 = -2 * s * s * s + 3 * s * s, h11 = s * s * s - s * s;
-    run.history.push_back(sample({t, h00 * a.control + h10 * h * a.velocity + h01 * b.control +
-                                         h11 * h * b.velocity,
-                                  0, (1 - s) * a.min_gap + s * b.min_gap,
-                                  (1 - s) * a.electrostatic_force + s * b.electrostatic_force,
-                                  (1 - s) * a.gas_force + s * b.gas_force}));
+    run.history.push_back(
+        sample({t, h00 * a.control + h10 * h * a.velocity + h01 * b.control + h11 * h * b.velocity,
+                0, (1 - s) * a.min_gap + s * b.min_gap,
+                (1 - s) * a.electrostatic_force + s * b.electrostatic_force,
+                (1 - s) * a.gas_force + s * b.gas_force}));
   }
   run.history.push_back(sample(records.back()));
 }

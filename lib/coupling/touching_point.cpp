@@ -30,7 +30,8 @@ TouchingPoint find_touching_point(ParallelPlateActuation& act, std::span<const R
   bool secant = false;
   while (std::abs(f) > tolerance) {
     if (++t.iterations > 30)
-      throw SolverError(fmt::format("touching point: min gap {:.4e} m after 30 solves", f + contact_gap));
+      throw SolverError(
+          fmt::format("touching point: min gap {:.4e} m after 30 solves", f + contact_gap));
     const Real d = t.state[t.control];
     const Real slope = secant && f != f_prev ? (f - f_prev) / (d - d_prev) : 1.0;
     d_prev = d;

@@ -30,7 +30,7 @@ struct FaceGraph {
   std::vector<Index> face_neighbour;  // -1 on a boundary face
   std::vector<Vec3> face_area;        // outward from the owner, |S_f| = face area
   std::vector<Vec3> face_centroid;
-  std::vector<int> face_patch;        // -1 on an interior face
+  std::vector<int> face_patch;  // -1 on an interior face
   std::vector<std::string> patch_names;
 
   // Faces of each cell (CSR): cell_faces[cell_face_offsets[c] .. cell_face_offsets[c+1]).

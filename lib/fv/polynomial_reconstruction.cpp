@@ -1,10 +1,10 @@
 #include "fv/polynomial_reconstruction.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fmt/format.h>
-
 #include <limits>
 #include <map>
 #include <stdexcept>
@@ -100,9 +100,14 @@ PolynomialReconstruction::PolynomialReconstruction(
         continue;
       }
       switch (boundary_point(f)) {
-        case BoundaryPoint::Value: out.push_back({StencilPoint::Kind::BoundaryValue, -1, f}); break;
-        case BoundaryPoint::Mirror: out.push_back({StencilPoint::Kind::Mirror, c, f}); break;
-        case BoundaryPoint::None: break;
+        case BoundaryPoint::Value:
+          out.push_back({StencilPoint::Kind::BoundaryValue, -1, f});
+          break;
+        case BoundaryPoint::Mirror:
+          out.push_back({StencilPoint::Kind::Mirror, c, f});
+          break;
+        case BoundaryPoint::None:
+          break;
       }
     }
   };
@@ -219,9 +224,10 @@ PolynomialReconstruction::PolynomialReconstruction(
       }
     }
     if (!done)
-      throw MeshError(fmt::format("cell {} at ({:.4g}, {:.4g}, {:.4g}) has too few neighbours "
-                                  "for a least-squares gradient (a layer one cell thick?)",
-                                  c, xc.x(), xc.y(), xc.z()));
+      throw MeshError(
+          fmt::format("cell {} at ({:.4g}, {:.4g}, {:.4g}) has too few neighbours "
+                      "for a least-squares gradient (a layer one cell thick?)",
+                      c, xc.x(), xc.y(), xc.z()));
   }
 }
 

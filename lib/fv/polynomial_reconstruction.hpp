@@ -17,11 +17,10 @@
 // error ~ (dx/h)^2 (10 % on a 160 x 16 fixed-fixed beam with L/h = 50). Cubic reconstruction
 // makes the mismatch O(dx^4).
 #pragma once
+#include <Eigen/Dense>
 #include <functional>
 #include <span>
 #include <vector>
-
-#include <Eigen/Dense>
 
 #include "mesh/mesh.hpp"
 

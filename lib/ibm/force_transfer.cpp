@@ -1,6 +1,7 @@
 #include "ibm/force_transfer.hpp"
 
 #include <fmt/format.h>
+
 #include <algorithm>
 
 #include "core/error.hpp"

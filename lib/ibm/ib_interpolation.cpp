@@ -1,6 +1,7 @@
 #include "ibm/ib_interpolation.hpp"
 
 #include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 

@@ -125,12 +125,11 @@ void ImmersedElectrostatics::solve_distributed(const CellMarking& marking,
   A.makeCompressed();
 
   DistributedMatrix& m = d.matrix;
-  const bool same_pattern =
-      d.solver && cell == d.cell && m.overlap_pattern.nnz() == A.nonZeros() &&
-      std::equal(m.overlap_pattern.row_ptr.begin(), m.overlap_pattern.row_ptr.end(),
-                 A.outerIndexPtr()) &&
-      std::equal(m.overlap_pattern.col_idx.begin(), m.overlap_pattern.col_idx.end(),
-                 A.innerIndexPtr());
+  const bool same_pattern = d.solver && cell == d.cell && m.overlap_pattern.nnz() == A.nonZeros() &&
+                            std::equal(m.overlap_pattern.row_ptr.begin(),
+                                       m.overlap_pattern.row_ptr.end(), A.outerIndexPtr()) &&
+                            std::equal(m.overlap_pattern.col_idx.begin(),
+                                       m.overlap_pattern.col_idx.end(), A.innerIndexPtr());
   const bool keep = comm_.min(same_pattern ? 1.0 : 0.0) > 0;  // every rank's, or none
   const Index owned_nnz = A.outerIndexPtr()[n_owned];
   m.overlap_values.assign(A.valuePtr(), A.valuePtr() + A.nonZeros());
@@ -157,7 +156,8 @@ void ImmersedElectrostatics::solve_distributed(const CellMarking& marking,
     d.solver->factor();
   } catch (const SolverError&) {
     d.solver.reset();
-    throw SolverError("immersed electrostatics: singular subdomain matrix (no potential prescribed?)");
+    throw SolverError(
+        "immersed electrostatics: singular subdomain matrix (no potential prescribed?)");
   }
   // The last potential as the initial guess (0 where the cell was not FLUID).
   std::vector<Real> phi(n_owned, 0.0);
@@ -227,8 +227,7 @@ Real ImmersedElectrostatics::assemble_row(Index P, const CellMarking& marking,
 }
 
 void ImmersedElectrostatics::solve_serial(const CellMarking& marking, const IbInterpolation& ib,
-                                          std::span<const Index> ib_of_face,
-                                          Real body_potential) {
+                                          std::span<const Index> ib_of_face, Real body_potential) {
   const Index nc = mesh_.n_cells();
   std::vector<Index> unknown(nc, -1);
   Index n = 0;
@@ -239,9 +238,8 @@ void ImmersedElectrostatics::solve_serial(const CellMarking& marking, const IbIn
   for (Index P = 0; P < nc; ++P) {
     const Index row = unknown[P];
     if (row < 0) continue;
-    rhs[row] = assemble_row(P, marking, ib, ib_of_face, body_potential, [&](Index c, Real a) {
-      triplets.emplace_back(row, unknown[c], a);
-    });
+    rhs[row] = assemble_row(P, marking, ib, ib_of_face, body_potential,
+                            [&](Index c, Real a) { triplets.emplace_back(row, unknown[c], a); });
   }
   // Duplicates summed into a compressed row-major matrix, then the project's sparse direct
   // solver (KLU) on its CSR arrays.

@@ -1,6 +1,7 @@
 #include "ibm/immersed_surface.hpp"
 
 #include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -46,7 +46,7 @@ class LocalIbFaceValues : public ExternalFaceValues {
   const FluidFaceGraph& global_;
   const FluidGraphPart& part_;
   Index n_;
-  std::vector<Real>& global_f_;  // per global FLUID cell x N; NaN outside the band
+  std::vector<Real>& global_f_;     // per global FLUID cell x N; NaN outside the band
   std::vector<Real> global_owner_;  // per global boundary face x N: owners' values (ours)
 };
 

@@ -106,9 +106,10 @@ void write_checkpoint(const std::string& path, const Checkpoint& cp) {
       H5Handle numbers(check_id(H5Gcreate2(f, "numbers", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                                 path, "creating group 'numbers'"),
                        H5Gclose);
-      for (const auto& [name, value] : cp.numbers) write_attribute(numbers.get(), name, value, path);
-      H5Handle arrays(check_id(H5Gcreate2(f, "arrays", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                               path, "creating group 'arrays'"),
+      for (const auto& [name, value] : cp.numbers)
+        write_attribute(numbers.get(), name, value, path);
+      H5Handle arrays(check_id(H5Gcreate2(f, "arrays", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), path,
+                               "creating group 'arrays'"),
                       H5Gclose);
       for (const auto& [name, values] : cp.arrays) write_vector(arrays.get(), name, values, path);
       arrays.reset();
@@ -136,7 +137,8 @@ Checkpoint read_checkpoint(const std::string& path) {
     malformed(path, "format is not '" + std::string(kFormat) + "'");
   const double version = read_double_attribute(f, "format_version", path);
   if (version != kFormatVersion)
-    malformed(path, fmt::format("format version {} (this build reads {})", version, kFormatVersion));
+    malformed(path,
+              fmt::format("format version {} (this build reads {})", version, kFormatVersion));
 
   Checkpoint cp;
   cp.time = read_double_attribute(f, "time", path);
@@ -148,14 +150,15 @@ Checkpoint read_checkpoint(const std::string& path) {
   H5Handle numbers(H5Gopen2(f, "numbers", H5P_DEFAULT), H5Gclose);
   if (!numbers.valid()) malformed(path, "no group 'numbers'");
   H5O_info_t info;
-  if (H5Oget_info2(numbers.get(), &info, H5O_INFO_NUM_ATTRS) < 0) malformed(path, "group 'numbers'");
+  if (H5Oget_info2(numbers.get(), &info, H5O_INFO_NUM_ATTRS) < 0)
+    malformed(path, "group 'numbers'");
   for (hsize_t k = 0; k < info.num_attrs; ++k) {
     const ssize_t length = H5Aget_name_by_idx(numbers.get(), ".", H5_INDEX_NAME, H5_ITER_INC, k,
                                               nullptr, 0, H5P_DEFAULT);
     if (length < 0) malformed(path, "group 'numbers'");
     std::string name(static_cast<std::size_t>(length) + 1, '\0');
-    H5Aget_name_by_idx(numbers.get(), ".", H5_INDEX_NAME, H5_ITER_INC, k, name.data(),
-                       name.size(), H5P_DEFAULT);
+    H5Aget_name_by_idx(numbers.get(), ".", H5_INDEX_NAME, H5_ITER_INC, k, name.data(), name.size(),
+                       H5P_DEFAULT);
     name.resize(static_cast<std::size_t>(length));
     cp.numbers[name] = read_double_attribute(numbers.get(), name, path);
   }

@@ -3,7 +3,6 @@
 #include "io/point_locator.hpp"
 
 #include <nanoflann.hpp>
-
 #include <stdexcept>
 
 namespace rfmems {

@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <tuple>
 #include <set>
 #include <stdexcept>
+#include <tuple>
 
 #include "io/point_locator.hpp"
 
@@ -55,8 +55,8 @@ std::vector<Probe> read_probes(const CaseNode& probes_node, const Mesh& mesh) {
     const CaseNode item = probes_node.item(i);
     Probe p;
     p.name = item.get_string("name");
-    item.require(!p.name.empty() && p.name.find('/') == std::string::npos && p.name != ".",
-                 "name", "expected a non-empty name without '/'");
+    item.require(!p.name.empty() && p.name.find('/') == std::string::npos && p.name != ".", "name",
+                 "expected a non-empty name without '/'");
     item.require(names.insert(p.name).second, "name", "another probe has this name");
     std::tie(p.at, p.cell) = finder.find(item, "at", fmt::format("probe '{}'", p.name));
     probes.push_back(std::move(p));

@@ -65,9 +65,7 @@ struct CreepLaw {
     return sigma_y0 * n * B * std::pow(1 + B * eps_eff, n - 1);
   }
 
-  static Mat3 deviator(const Mat3& sigma) {
-    return sigma - sigma.trace() / 3 * Mat3::Identity();
-  }
+  static Mat3 deviator(const Mat3& sigma) { return sigma - sigma.trace() / 3 * Mat3::Identity(); }
   static Real effective_stress(const Mat3& sigma) {
     const Mat3 s = deviator(sigma);
     return std::sqrt(1.5 * (s.array() * s.array()).sum());

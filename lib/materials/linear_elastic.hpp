@@ -9,9 +9,9 @@ namespace rfmems {
 enum class Hypothesis { PlaneStrain, PlaneStress, ThreeD };
 
 struct LinearElastic {
-  Real E = 0;     // Young's modulus [Pa]
-  Real nu = 0;    // Poisson's ratio
-  Real rho = 0;   // density [kg/m^3]
+  Real E = 0;    // Young's modulus [Pa]
+  Real nu = 0;   // Poisson's ratio
+  Real rho = 0;  // density [kg/m^3]
   Hypothesis hypothesis = Hypothesis::ThreeD;
 
   Real mu() const { return E / (2 * (1 + nu)); }

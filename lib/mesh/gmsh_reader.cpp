@@ -118,27 +118,47 @@ struct ElementType {
 
 ElementType element_type(int type) {
   switch (type) {
-    case 1: return {1, 2, CellShape::Polygon, "2-node line"};
-    case 2: return {2, 3, CellShape::Triangle, "3-node triangle"};
-    case 3: return {2, 4, CellShape::Quad, "4-node quadrangle"};
-    case 4: return {3, 4, CellShape::Tetra, "4-node tetrahedron"};
-    case 5: return {3, 8, CellShape::Hexa, "8-node hexahedron"};
-    case 6: return {3, 6, CellShape::Prism, "6-node prism"};
-    case 7: return {3, 5, CellShape::Pyramid, "5-node pyramid"};
-    case 15: return {0, 1, CellShape::Polygon, "1-node point"};
+    case 1:
+      return {1, 2, CellShape::Polygon, "2-node line"};
+    case 2:
+      return {2, 3, CellShape::Triangle, "3-node triangle"};
+    case 3:
+      return {2, 4, CellShape::Quad, "4-node quadrangle"};
+    case 4:
+      return {3, 4, CellShape::Tetra, "4-node tetrahedron"};
+    case 5:
+      return {3, 8, CellShape::Hexa, "8-node hexahedron"};
+    case 6:
+      return {3, 6, CellShape::Prism, "6-node prism"};
+    case 7:
+      return {3, 5, CellShape::Pyramid, "5-node pyramid"};
+    case 15:
+      return {0, 1, CellShape::Polygon, "1-node point"};
     // Named only for the error message.
-    case 8: return {-1, 0, CellShape::Polygon, "3-node line"};
-    case 9: return {-1, 0, CellShape::Polygon, "6-node triangle"};
-    case 10: return {-1, 0, CellShape::Polygon, "9-node quadrangle"};
-    case 11: return {-1, 0, CellShape::Polygon, "10-node tetrahedron"};
-    case 12: return {-1, 0, CellShape::Polygon, "27-node hexahedron"};
-    case 13: return {-1, 0, CellShape::Polygon, "18-node prism"};
-    case 14: return {-1, 0, CellShape::Polygon, "14-node pyramid"};
-    case 16: return {-1, 0, CellShape::Polygon, "8-node quadrangle"};
-    case 17: return {-1, 0, CellShape::Polygon, "20-node hexahedron"};
-    case 18: return {-1, 0, CellShape::Polygon, "15-node prism"};
-    case 19: return {-1, 0, CellShape::Polygon, "13-node pyramid"};
-    default: return {-1, 0, CellShape::Polygon, "unknown"};
+    case 8:
+      return {-1, 0, CellShape::Polygon, "3-node line"};
+    case 9:
+      return {-1, 0, CellShape::Polygon, "6-node triangle"};
+    case 10:
+      return {-1, 0, CellShape::Polygon, "9-node quadrangle"};
+    case 11:
+      return {-1, 0, CellShape::Polygon, "10-node tetrahedron"};
+    case 12:
+      return {-1, 0, CellShape::Polygon, "27-node hexahedron"};
+    case 13:
+      return {-1, 0, CellShape::Polygon, "18-node prism"};
+    case 14:
+      return {-1, 0, CellShape::Polygon, "14-node pyramid"};
+    case 16:
+      return {-1, 0, CellShape::Polygon, "8-node quadrangle"};
+    case 17:
+      return {-1, 0, CellShape::Polygon, "20-node hexahedron"};
+    case 18:
+      return {-1, 0, CellShape::Polygon, "15-node prism"};
+    case 19:
+      return {-1, 0, CellShape::Polygon, "13-node pyramid"};
+    default:
+      return {-1, 0, CellShape::Polygon, "unknown"};
   }
 }
 
@@ -153,7 +173,7 @@ struct ElementBlock {
 
 // Everything read from the file, still keyed by Gmsh tags.
 struct MshFile {
-  std::map<std::pair<int, int>, std::string> physical_names;       // (dim, tag) -> name
+  std::map<std::pair<int, int>, std::string> physical_names;         // (dim, tag) -> name
   std::map<std::pair<int, int>, std::vector<int>> entity_physicals;  // (dim, tag) -> tags
   std::vector<Vec3> node_x;                                          // in file order
   std::unordered_map<Tag, Index> node_index;                         // tag -> file order
@@ -351,8 +371,7 @@ std::string patch_name(const MshFile& msh, int dim, int entity_tag) {
   if (it == msh.entity_physicals.end()) return {};
   const int physical = std::abs(it->second.front());
   const auto name = msh.physical_names.find({dim, physical});
-  return name != msh.physical_names.end() ? name->second
-                                          : "physical_"s + std::to_string(physical);
+  return name != msh.physical_names.end() ? name->second : "physical_"s + std::to_string(physical);
 }
 
 }  // namespace
@@ -441,8 +460,8 @@ Mesh read_gmsh_mesh(const std::string& path, int dim) {
       for (Index& n : nodes) {
         n = new_index[n];
         if (n < 0)
-          throw InputError(path + ": boundary element " + std::to_string(block.tags[i]) +
-                           " of \"" + patch + "\" has a node that belongs to no cell");
+          throw InputError(path + ": boundary element " + std::to_string(block.tags[i]) + " of \"" +
+                           patch + "\" has a node that belongs to no cell");
       }
       builder.add_boundary_face(std::move(nodes), patch);
     }

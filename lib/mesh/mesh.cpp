@@ -3,9 +3,10 @@
 // its node average; a polyhedral cell into pyramids over its faces.
 #include "mesh/mesh.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <map>
 
 #include "core/error.hpp"
@@ -61,11 +62,17 @@ std::vector<std::vector<Index>> cell_face_nodes(int dim, CellShape shape,
       return {{n[0], n[3], n[2], n[1]}, {n[4], n[5], n[6], n[7]}, {n[0], n[1], n[5], n[4]},
               {n[1], n[2], n[6], n[5]}, {n[2], n[3], n[7], n[6]}, {n[3], n[0], n[4], n[7]}};
     case CellShape::Prism:
-      return {{n[0], n[2], n[1]}, {n[3], n[4], n[5]}, {n[0], n[1], n[4], n[3]},
-              {n[1], n[2], n[5], n[4]}, {n[2], n[0], n[3], n[5]}};
+      return {{n[0], n[2], n[1]},
+              {n[3], n[4], n[5]},
+              {n[0], n[1], n[4], n[3]},
+              {n[1], n[2], n[5], n[4]},
+              {n[2], n[0], n[3], n[5]}};
     case CellShape::Pyramid:
-      return {{n[0], n[3], n[2], n[1]}, {n[0], n[1], n[4]}, {n[1], n[2], n[4]},
-              {n[2], n[3], n[4]}, {n[3], n[0], n[4]}};
+      return {{n[0], n[3], n[2], n[1]},
+              {n[0], n[1], n[4]},
+              {n[1], n[2], n[4]},
+              {n[2], n[3], n[4]},
+              {n[3], n[0], n[4]}};
     default:
       throw MeshError("a 2D cell shape in a 3D mesh");
   }
@@ -158,10 +165,10 @@ void Mesh::compute_geometry() {
 void Mesh::check_quality() const {
   for (Index c = 0; c < n_cells(); ++c) {
     if (!(cell_volume_[c] > 0))
-      throw MeshError(fmt::format("cell {} at ({:.4g}, {:.4g}, {:.4g}) is inverted or degenerate "
-                                  "(volume {:.3g})",
-                                  c, cell_centroid_[c].x(), cell_centroid_[c].y(),
-                                  cell_centroid_[c].z(), cell_volume_[c]));
+      throw MeshError(fmt::format(
+          "cell {} at ({:.4g}, {:.4g}, {:.4g}) is inverted or degenerate "
+          "(volume {:.3g})",
+          c, cell_centroid_[c].x(), cell_centroid_[c].y(), cell_centroid_[c].z(), cell_volume_[c]));
   }
   Real size = min_cell_size();
   Real tiny = 1e-12 * std::pow(size, dim_ - 1);
@@ -173,10 +180,10 @@ void Mesh::check_quality() const {
     // The area vector must point out of the owner: from the owner's centroid to the face.
     Vec3 d = face_centroid_[f] - cell_centroid_[face_owner_[f]];
     if (face_area_[f].dot(d) <= 0)
-      throw MeshError(fmt::format("face {} at ({:.4g}, {:.4g}, {:.4g}) points into its cell {}: "
-                                  "inverted or tangled cell",
-                                  f, face_centroid_[f].x(), face_centroid_[f].y(),
-                                  face_centroid_[f].z(), face_owner_[f]));
+      throw MeshError(fmt::format(
+          "face {} at ({:.4g}, {:.4g}, {:.4g}) points into its cell {}: "
+          "inverted or tangled cell",
+          f, face_centroid_[f].x(), face_centroid_[f].y(), face_centroid_[f].z(), face_owner_[f]));
   }
 }
 
@@ -273,8 +280,8 @@ Mesh MeshBuilder::build(const std::string& source, const std::string& default_pa
       } else {
         RawFace& face = raw[it->second];
         if (face.neighbour >= 0)
-          throw MeshError(fmt::format("{}: a face of cell {} is shared by more than two cells",
-                                      source, c));
+          throw MeshError(
+              fmt::format("{}: a face of cell {} is shared by more than two cells", source, c));
         face.neighbour = c;
         cell_raw_faces[c].push_back(it->second);
       }

@@ -54,7 +54,9 @@ class Mesh {
   const Vec3& face_centroid(Index f) const { return face_centroid_[f]; }
   std::span<const Index> face_nodes(Index f) const;
   // Patch index of a boundary face, -1 for an interior face.
-  int face_patch(Index f) const { return f < n_interior_faces_ ? -1 : face_patch_[f - n_interior_faces_]; }
+  int face_patch(Index f) const {
+    return f < n_interior_faces_ ? -1 : face_patch_[f - n_interior_faces_];
+  }
 
   // Patches.
   const std::vector<Patch>& patches() const { return patches_; }

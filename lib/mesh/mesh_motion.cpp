@@ -2,9 +2,10 @@
 // side patches, and the validity check. See mesh_motion.hpp for the equations and defaults.
 #include "mesh/mesh_motion.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <limits>
 #include <memory>
 #include <utility>
@@ -21,7 +22,8 @@ std::vector<int> patch_ids(const Mesh& mesh, const std::vector<std::string>& nam
   std::vector<int> ids;
   for (const auto& name : names) {
     const int p = mesh.find_patch(name);
-    if (p < 0) throw InputError(fmt::format("mesh motion: {} patch '{}' is not in the mesh", what, name));
+    if (p < 0)
+      throw InputError(fmt::format("mesh motion: {} patch '{}' is not in the mesh", what, name));
     ids.push_back(p);
   }
   return ids;

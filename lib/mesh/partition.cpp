@@ -1,9 +1,10 @@
 #include "mesh/partition.hpp"
 
-#include <algorithm>
 #include <fmt/format.h>
-#include <map>
 #include <metis.h>
+
+#include <algorithm>
+#include <map>
 
 #include "core/error.hpp"
 
@@ -36,9 +37,9 @@ Partition partition_cells(const Mesh& mesh, int n_parts, std::span<const int> we
     options[METIS_OPTION_CONTIG] = 1;  // connected parts where the graph allows
     options[METIS_OPTION_SEED] = 1;    // reproducible
     std::vector<idx_t> part(nc);
-    int status = METIS_PartGraphKway(&nvtxs, &ncon, xadj.data(), adjncy.data(), vwgt.data(),
-                                     nullptr, nullptr, &nparts, nullptr, nullptr, options,
-                                     &objval, part.data());
+    int status =
+        METIS_PartGraphKway(&nvtxs, &ncon, xadj.data(), adjncy.data(), vwgt.data(), nullptr,
+                            nullptr, &nparts, nullptr, nullptr, options, &objval, part.data());
     if (status != METIS_OK) throw SolverError(fmt::format("METIS failed with status {}", status));
     std::copy(part.begin(), part.end(), result.part.begin());
   } else if (n_parts > 1) {
@@ -78,7 +79,8 @@ LocalMesh extract_local_mesh(const Mesh& global, const Partition& partition, int
     for (Index i = layer_begin; i < layer_end; ++i)
       for (Index f : global.cell_faces(cells[i])) {
         if (global.is_boundary(f)) continue;
-        Index other = global.face_owner(f) == cells[i] ? global.face_neighbour(f) : global.face_owner(f);
+        Index other =
+            global.face_owner(f) == cells[i] ? global.face_neighbour(f) : global.face_owner(f);
         if (!taken[other]) {
           taken[other] = 1;
           cells.push_back(other);

@@ -15,9 +15,9 @@ namespace rfmems {
 
 struct Partition {
   int n_parts = 1;
-  std::vector<int> part;      // per global cell
-  Index edge_cut = 0;         // interior faces between parts
-  double imbalance = 1.0;     // largest part weight / mean part weight
+  std::vector<int> part;   // per global cell
+  Index edge_cut = 0;      // interior faces between parts
+  double imbalance = 1.0;  // largest part weight / mean part weight
 };
 
 // k-way partition with optional per-cell weights (empty: all 1).

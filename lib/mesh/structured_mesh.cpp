@@ -1,7 +1,8 @@
 #include "mesh/structured_mesh.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "core/error.hpp"
 
@@ -62,24 +63,27 @@ Mesh make_structured_mesh(const BoxSpec& spec, const NodeMap& map) {
                             node(i + 1, j + 1, k + 1), node(i, j + 1, k + 1)});
     for (int k = 0; k < nz; ++k)
       for (int j = 0; j < ny; ++j) {
-        builder.add_boundary_face({node(0, j, k), node(0, j + 1, k), node(0, j + 1, k + 1),
-                                   node(0, j, k + 1)}, "left");
-        builder.add_boundary_face({node(nx, j, k), node(nx, j + 1, k), node(nx, j + 1, k + 1),
-                                   node(nx, j, k + 1)}, "right");
+        builder.add_boundary_face(
+            {node(0, j, k), node(0, j + 1, k), node(0, j + 1, k + 1), node(0, j, k + 1)}, "left");
+        builder.add_boundary_face(
+            {node(nx, j, k), node(nx, j + 1, k), node(nx, j + 1, k + 1), node(nx, j, k + 1)},
+            "right");
       }
     for (int k = 0; k < nz; ++k)
       for (int i = 0; i < nx; ++i) {
-        builder.add_boundary_face({node(i, 0, k), node(i + 1, 0, k), node(i + 1, 0, k + 1),
-                                   node(i, 0, k + 1)}, "bottom");
-        builder.add_boundary_face({node(i, ny, k), node(i + 1, ny, k), node(i + 1, ny, k + 1),
-                                   node(i, ny, k + 1)}, "top");
+        builder.add_boundary_face(
+            {node(i, 0, k), node(i + 1, 0, k), node(i + 1, 0, k + 1), node(i, 0, k + 1)}, "bottom");
+        builder.add_boundary_face(
+            {node(i, ny, k), node(i + 1, ny, k), node(i + 1, ny, k + 1), node(i, ny, k + 1)},
+            "top");
       }
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i) {
-        builder.add_boundary_face({node(i, j, 0), node(i + 1, j, 0), node(i + 1, j + 1, 0),
-                                   node(i, j + 1, 0)}, "back");
-        builder.add_boundary_face({node(i, j, nz), node(i + 1, j, nz), node(i + 1, j + 1, nz),
-                                   node(i, j + 1, nz)}, "front");
+        builder.add_boundary_face(
+            {node(i, j, 0), node(i + 1, j, 0), node(i + 1, j + 1, 0), node(i, j + 1, 0)}, "back");
+        builder.add_boundary_face(
+            {node(i, j, nz), node(i + 1, j, nz), node(i + 1, j + 1, nz), node(i, j + 1, nz)},
+            "front");
       }
   }
   return builder.build(dim == 2 ? "rectangle generator" : "box generator");

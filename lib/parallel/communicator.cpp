@@ -53,11 +53,21 @@ Communicator Communicator::world() {
 
 Communicator Communicator::serial() { return Communicator(nullptr, 0, 1); }
 
-Real Communicator::sum(Real x) const { return all_reduce(handle_, is_serial(), x, MPI_DOUBLE, MPI_SUM); }
-Index Communicator::sum(Index x) const { return all_reduce(handle_, is_serial(), x, MPI_INT64_T, MPI_SUM); }
-Real Communicator::max(Real x) const { return all_reduce(handle_, is_serial(), x, MPI_DOUBLE, MPI_MAX); }
-Index Communicator::max(Index x) const { return all_reduce(handle_, is_serial(), x, MPI_INT64_T, MPI_MAX); }
-Real Communicator::min(Real x) const { return all_reduce(handle_, is_serial(), x, MPI_DOUBLE, MPI_MIN); }
+Real Communicator::sum(Real x) const {
+  return all_reduce(handle_, is_serial(), x, MPI_DOUBLE, MPI_SUM);
+}
+Index Communicator::sum(Index x) const {
+  return all_reduce(handle_, is_serial(), x, MPI_INT64_T, MPI_SUM);
+}
+Real Communicator::max(Real x) const {
+  return all_reduce(handle_, is_serial(), x, MPI_DOUBLE, MPI_MAX);
+}
+Index Communicator::max(Index x) const {
+  return all_reduce(handle_, is_serial(), x, MPI_INT64_T, MPI_MAX);
+}
+Real Communicator::min(Real x) const {
+  return all_reduce(handle_, is_serial(), x, MPI_DOUBLE, MPI_MIN);
+}
 
 void Communicator::sum_in_place(std::span<Real> values) const {
   if (is_serial() || values.empty()) return;

@@ -58,7 +58,7 @@ class DistributedLocalOperator : public DistributedSecondOrderOperator {
   Communicator comm_;
   int block_;
   Index n_owned_ = 0, n_global_ = 0;
-  Real damping_time_ = 0;  // the local operator's, the same on every rank
+  Real damping_time_ = 0;                  // the local operator's, the same on every rank
   std::unique_ptr<DistributedMesh> mesh_;  // on the heap: local_ keeps a reference to it
   std::unique_ptr<SecondOrderOperator> local_;
   CsrPattern owned_pattern_;

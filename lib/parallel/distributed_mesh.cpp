@@ -13,7 +13,8 @@ DistributedMesh distribute_mesh(const Mesh& global, const Communicator& comm, in
   if (comm.is_root()) d.partition = partition_cells(global, comm.size(), weights);
   d.partition.n_parts = comm.size();
   comm.broadcast(d.partition.part);
-  d.local = extract_local_mesh(global, d.partition, comm.rank(), comm.is_serial() ? 0 : ghost_layers);
+  d.local =
+      extract_local_mesh(global, d.partition, comm.rank(), comm.is_serial() ? 0 : ghost_layers);
   d.exchange = GhostExchange(comm, d.local);
   return d;
 }

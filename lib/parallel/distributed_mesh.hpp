@@ -16,9 +16,9 @@
 namespace rfmems {
 
 struct DistributedMesh {
-  LocalMesh local;          // owned cells first, then ghosts (local.global_cell, owner_part)
-  Partition partition;      // of the global mesh (edge cut, imbalance)
-  GhostExchange exchange;   // refreshes ghost cells' values
+  LocalMesh local;         // owned cells first, then ghosts (local.global_cell, owner_part)
+  Partition partition;     // of the global mesh (edge cut, imbalance)
+  GhostExchange exchange;  // refreshes ghost cells' values
   Index n_global_cells = 0;
 };
 

@@ -27,8 +27,7 @@ class MatrixSystem : public DistributedSystem {
   std::vector<Real> differential_components() const override {
     return std::vector<Real>(a_.n_owned, 0.0);
   }
-  void residual(Real, std::span<const Real> y, std::span<const Real>,
-                std::span<Real> r) override {
+  void residual(Real, std::span<const Real> y, std::span<const Real>, std::span<Real> r) override {
     std::copy(y.begin(), y.begin() + a_.n_owned, work_.begin());
     exchange_ghosts(work_);
     for (Index i = 0; i < a_.n_owned; ++i) {
@@ -105,9 +104,8 @@ struct DistributedLinearSolver::Impl {
 
   static int times(void* data, N_Vector v, N_Vector z) {
     Impl& p = *static_cast<Impl*>(data);
-    return p.guard.run_or_stop([&] {
-      p.linearization.apply(0.0, sundials::local_span(v), sundials::local_span(z));
-    });
+    return p.guard.run_or_stop(
+        [&] { p.linearization.apply(0.0, sundials::local_span(v), sundials::local_span(z)); });
   }
   static int precondition(void* data, N_Vector r, N_Vector z, realtype, int) {
     Impl& p = *static_cast<Impl*>(data);
@@ -131,8 +129,7 @@ bool DistributedLinearSolver::schwarz() const { return impl_->schwarz; }
 
 void DistributedLinearSolver::factor() { impl_->linearization.setup(0.0, 0.0, {}, {}); }
 
-DistributedLinearStats DistributedLinearSolver::solve(std::span<const Real> b,
-                                                      std::span<Real> x) {
+DistributedLinearStats DistributedLinearSolver::solve(std::span<const Real> b, std::span<Real> x) {
   Impl& p = *impl_;
   auto bv = sundials::local_span(p.b.get());
   auto xv = sundials::local_span(p.x.get());

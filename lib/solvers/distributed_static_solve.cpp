@@ -1,5 +1,4 @@
 #include "solvers/distributed_static_solve.hpp"
-#include "solvers/callback_guard.hpp"
 
 #include <fmt/format.h>
 #include <kinsol/kinsol.h>
@@ -12,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "parallel/distributed_structural_systems.hpp"
+#include "solvers/callback_guard.hpp"
 #include "solvers/distributed_linearization.hpp"
 #include "solvers/parallel_vector.hpp"
 
@@ -39,7 +39,6 @@ struct Problem {
                           : DistributedLinearization::Preconditioner::BlockJacobi),
         t(time),
         no_derivative(op.owned_size(), 0.0) {}
-
 };
 
 Problem& problem_of(void* data) { return *static_cast<Problem*>(data); }

@@ -1,11 +1,12 @@
 #include "solvers/kinsol_solver.hpp"
 
-#include <algorithm>
-#include <utility>
-#include <cmath>
 #include <fmt/format.h>
 #include <kinsol/kinsol.h>
 #include <sunmatrix/sunmatrix_sparse.h>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
 
 #include "core/error.hpp"
 
@@ -67,7 +68,8 @@ NonlinearStats KinsolSolver::solve(Real t, std::span<Real> y) {
                     scale_u_.get(), scale_f_.get());
   guard_.rethrow();
   if (flag < 0)
-    throw SolverError(fmt::format("KINSOL failed with flag {} ({})", flag, KINGetReturnFlagName(flag)));
+    throw SolverError(
+        fmt::format("KINSOL failed with flag {} ({})", flag, KINGetReturnFlagName(flag)));
   long nni = 0, nje = 0, nli = 0;
   KINGetNumNonlinSolvIters(mem_, &nni);
   KINGetNumJacEvals(mem_, &nje);

@@ -1,8 +1,9 @@
 #include "solvers/sundials_handles.hpp"
 
-#include <algorithm>
 #include <sunlinsol/sunlinsol_klu.h>
 #include <sunmatrix/sunmatrix_sparse.h>
+
+#include <algorithm>
 
 #include "core/error.hpp"
 
@@ -22,8 +23,8 @@ Vector make_serial_vector(Index n, SUNContext ctx) {
 }
 
 Matrix make_csr_matrix(const CsrPattern& pattern, SUNContext ctx) {
-  SUNMatrix m = SUNSparseMatrix(pattern.n_rows(), pattern.n_rows(), std::max<Index>(pattern.nnz(), 1),
-                                CSR_MAT, ctx);
+  SUNMatrix m = SUNSparseMatrix(pattern.n_rows(), pattern.n_rows(),
+                                std::max<Index>(pattern.nnz(), 1), CSR_MAT, ctx);
   if (!m) throw SolverError("SUNSparseMatrix failed");
   load_pattern(pattern, m);
   return Matrix(m);

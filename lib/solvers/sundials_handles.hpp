@@ -1,12 +1,12 @@
 // RAII owners for SUNDIALS objects. This directory is the only place that includes SUNDIALS.
 #pragma once
-#include <memory>
-#include <span>
-
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
 #include <sundials/sundials_linearsolver.h>
 #include <sundials/sundials_matrix.h>
+
+#include <memory>
+#include <span>
 
 #include "core/system_operator.hpp"
 

@@ -41,7 +41,8 @@ std::vector<ElasticityBoundary> reference_boundaries(const Mesh& mesh) {
   for (std::size_t p = 0; p < bcs.size(); ++p) {
     const std::string& name = mesh.patches()[p].name;
     if (name == "left")
-      bcs[p] = {ElasticityBoundary::Kind::Fixed, [](const Vec3& x, double) { return beam.displacement(x); }};
+      bcs[p] = {ElasticityBoundary::Kind::Fixed,
+                [](const Vec3& x, double) { return beam.displacement(x); }};
     else if (name == "right")
       bcs[p] = {ElasticityBoundary::Kind::Traction,
                 [](const Vec3& x, double) { return Vec3(0, beam.stress(x)[2], 0); }};
@@ -97,7 +98,8 @@ TEST(CantileverShear, ReferenceSolutionIsConsistent) {
 TEST(CantileverShear, CubicReconstructionIsExactForTheCubicSolution) {
   for (int n : {40, 80}) {
     Result r = solve(n, n / 10, 3);
-    std::printf("cubic, mesh %dx%d: tip error %.3e, rms error %.3e\n", n, n / 10, r.tip_error, r.rms_error);
+    std::printf("cubic, mesh %dx%d: tip error %.3e, rms error %.3e\n", n, n / 10, r.tip_error,
+                r.rms_error);
     EXPECT_EQ(r.newton, 1);
     EXPECT_LT(r.rms_error, 1e-8);
     EXPECT_LT(r.tip_error, 1e-5);  // includes the linear reconstruction to the probe point
@@ -108,7 +110,8 @@ TEST(CantileverShear, LinearReconstructionConvergesAtSecondOrder) {
   Result r[3] = {solve(160, 16, 1), solve(320, 32, 1), solve(640, 64, 1)};
   for (int i = 0; i < 3; ++i) {
     EXPECT_EQ(r[i].newton, 1) << "a linear static problem needs one Newton step";
-    std::printf("linear, mesh %d: tip error %.4e  rms error %.4e\n", 160 << i, r[i].tip_error, r[i].rms_error);
+    std::printf("linear, mesh %d: tip error %.4e  rms error %.4e\n", 160 << i, r[i].tip_error,
+                r[i].rms_error);
   }
   EXPECT_LT(r[2].tip_error, 0.005);
   double order_tip = test_support::observed_order(r[0].tip_error, r[2].tip_error, 4.0);

@@ -39,9 +39,8 @@ struct ThresholdRun {
 
 ThresholdRun threshold_run(const std::string& cells) {
   const std::string dir = std::string(RFMEMS_SOURCE_DIR) + "/cases/creep_switch_hold";
-  const CaseFile cf = CaseFile::load(
-      dir + "/case.yaml",
-      {"mesh.cells=" + cells, "creep.outputs=20", "creep.lifetime.gap_threshold=2.5 um"});
+  const CaseFile cf = CaseFile::load(dir + "/case.yaml", {"mesh.cells=" + cells, "creep.outputs=20",
+                                                          "creep.lifetime.gap_threshold=2.5 um"});
   const CreepCase c = read_creep_case(cf.root(), dir);
   const CreepRunModel model = make_plate_creep_model(c);
 
@@ -56,17 +55,18 @@ ThresholdRun threshold_run(const std::string& cells) {
       const Vec3& x = mesh.nodes()[node];
       const bool edge = std::abs(x.y()) < 1e-12 || std::abs(x.y() - kWidth) < 1e-12;
       if (edge && std::abs(x.x() - kLength / 2) < 1e-12)
-        r.edge_midpoint_gap = std::min(
-            r.edge_midpoint_gap, c.initial_gap + c.plate->op->deflection_at(cell, x, 0, y));
+        r.edge_midpoint_gap = std::min(r.edge_midpoint_gap,
+                                       c.initial_gap + c.plate->op->deflection_at(cell, x, 0, y));
     }
   }
   const CreepRunResult result = run_creep(model, c.settings);
   EXPECT_EQ(result.end, CreepRunResult::End::GapThreshold) << cells;
   r.time = result.lifetime;
-  std::printf("%s: smallest gap at t = 0 %.6f um (edge midpoint %.6f um, cell centres %.6f um); "
-              "2.5 um at %.4f h (%ld steps)\n",
-              cells.c_str(), 1e6 * r.initial_min_gap, 1e6 * r.edge_midpoint_gap,
-              1e6 * r.centre_min_gap, r.time / 3600, result.steps);
+  std::printf(
+      "%s: smallest gap at t = 0 %.6f um (edge midpoint %.6f um, cell centres %.6f um); "
+      "2.5 um at %.4f h (%ld steps)\n",
+      cells.c_str(), 1e6 * r.initial_min_gap, 1e6 * r.edge_midpoint_gap, 1e6 * r.centre_min_gap,
+      r.time / 3600, result.steps);
   return r;
 }
 

@@ -49,7 +49,8 @@ namespace fs = std::filesystem;
 
 constexpr double kE = 1e7, kNu = 0.3, kT = 1e4, kA = 0.5;
 const KirschHole kirsch{kA, kT, kE, kNu};
-const std::string kHoleGeo = std::string(RFMEMS_SOURCE_DIR) + "/cases/kirsch_hole/plate_with_hole.geo";
+const std::string kHoleGeo =
+    std::string(RFMEMS_SOURCE_DIR) + "/cases/kirsch_hole/plate_with_hole.geo";
 
 // Plane-strain Hooke's law written out here (not taken from lib/) so that the reference check
 // does not depend on the code under test. Returns sigma_xx, sigma_yy, sigma_xy.
@@ -60,10 +61,10 @@ Vec3 plane_strain_stress(double exx, double eyy, double gxy) {
 
 struct Result {
   Index cells;
-  double h;             // sqrt(mean cell area)
-  double rms_sxx;       // [Pa]
-  double rms_u;         // [m]
-  double rms_sxx_exact; // [Pa] cell stress reconstructed from the exact centroid displacements
+  double h;              // sqrt(mean cell area)
+  double rms_sxx;        // [Pa]
+  double rms_u;          // [m]
+  double rms_sxx_exact;  // [Pa] cell stress reconstructed from the exact centroid displacements
   long newton;
   double seconds;
 };
@@ -115,21 +116,29 @@ Result solve(double h, const fs::path& dir) {
     u_exact[2 * c] = u.x();
     u_exact[2 * c + 1] = u.y();
   }
-  const std::vector<Mat3> grad = op.cell_gradients(0.0, s.y), grad_exact = op.cell_gradients(0.0, u_exact);
+  const std::vector<Mat3> grad = op.cell_gradients(0.0, s.y),
+                          grad_exact = op.cell_gradients(0.0, u_exact);
   double sum_s = 0, sum_u = 0, sum_e = 0, area = 0;
   for (Index c = 0; c < mesh.n_cells(); ++c) {
     const Vec3& xc = mesh.cell_centroid(c);
     const double v = mesh.cell_volume(c), sxx = kirsch.stress(xc)[0];
-    const double ds = material.stress(grad[c])(0, 0) - sxx, de = material.stress(grad_exact[c])(0, 0) - sxx;
+    const double ds = material.stress(grad[c])(0, 0) - sxx,
+                 de = material.stress(grad_exact[c])(0, 0) - sxx;
     const Vec3 du = Vec3(s.y[2 * c], s.y[2 * c + 1], 0) - kirsch.displacement(xc);
     sum_s += ds * ds * v;
     sum_e += de * de * v;
     sum_u += du.squaredNorm() * v;
     area += v;
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return {mesh.n_cells(), std::sqrt(area / mesh.n_cells()), std::sqrt(sum_s / area), std::sqrt(sum_u / area),
-          std::sqrt(sum_e / area), s.stats.newton_iters, seconds};
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return {mesh.n_cells(),
+          std::sqrt(area / mesh.n_cells()),
+          std::sqrt(sum_s / area),
+          std::sqrt(sum_u / area),
+          std::sqrt(sum_e / area),
+          s.stats.newton_iters,
+          seconds};
 }
 
 // Slope of the least-squares line through (log h_i, log e_i).
@@ -155,7 +164,8 @@ TEST(KirschReference, HookesLawOfDisplacementGivesStress) {
     const Vec3 hooke = plane_strain_stress(ux.x(), uy.y(), ux.y() + uy.x());
     const Vec3 exact = kirsch.stress(x);
     for (int i = 0; i < 3; ++i)
-      EXPECT_NEAR(hooke[i], exact[i], tol) << "component " << i << " at (" << x.x() << ", " << x.y() << ")";
+      EXPECT_NEAR(hooke[i], exact[i], tol)
+          << "component " << i << " at (" << x.x() << ", " << x.y() << ")";
   }
 }
 
@@ -163,8 +173,10 @@ TEST(KirschReference, SatisfiesSymmetryAndHoleConditions) {
   // Magnitude of the displacement near the hole, for the tolerances: u ~ T a / mu.
   const double u_scale = kT * kA / kirsch.mu();
   for (double s : {0.5, 0.8, 1.4, 2.0}) {
-    EXPECT_NEAR(kirsch.displacement(Vec3(0, s, 0)).x(), 0.0, 1e-12 * u_scale) << "u_x on x = 0, y = " << s;
-    EXPECT_NEAR(kirsch.displacement(Vec3(s, 0, 0)).y(), 0.0, 1e-12 * u_scale) << "u_y on y = 0, x = " << s;
+    EXPECT_NEAR(kirsch.displacement(Vec3(0, s, 0)).x(), 0.0, 1e-12 * u_scale)
+        << "u_x on x = 0, y = " << s;
+    EXPECT_NEAR(kirsch.displacement(Vec3(s, 0, 0)).y(), 0.0, 1e-12 * u_scale)
+        << "u_y on y = 0, x = " << s;
     // The symmetry faces carry no shear: sigma_xy = 0 on both axes.
     EXPECT_NEAR(kirsch.stress(Vec3(0, s, 0))[2], 0.0, 1e-12 * kT);
     EXPECT_NEAR(kirsch.stress(Vec3(s, 0, 0))[2], 0.0, 1e-12 * kT);
@@ -184,12 +196,13 @@ TEST(KirschReference, SatisfiesSymmetryAndHoleConditions) {
 
 TEST(KirschHole, StressAndDisplacementConvergeAtSecondOrder) {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::temp_directory_path() / ("rfmems_kirsch_" + std::to_string(getpid()) + "_" + info->name());
+  const fs::path dir = fs::temp_directory_path() /
+                       ("rfmems_kirsch_" + std::to_string(getpid()) + "_" + info->name());
   fs::create_directories(dir);
 
   // Rows are printed as each mesh finishes (the finest takes most of the time).
-  std::printf("%8s %9s %13s %13s %7s %7s %15s %8s\n", "cells", "h_mean", "rms sxx [Pa]", "rms |u| [m]",
-              "p(sxx)", "p(u)", "sxx(exact u)", "time [s]");
+  std::printf("%8s %9s %13s %13s %7s %7s %15s %8s\n", "cells", "h_mean", "rms sxx [Pa]",
+              "rms |u| [m]", "p(sxx)", "p(u)", "sxx(exact u)", "time [s]");
   std::vector<Result> r;
   for (double h : {0.2, 0.1, 0.05, 0.025}) {
     r.push_back(solve(h, dir));
@@ -202,8 +215,8 @@ TEST(KirschHole, StressAndDisplacementConvergeAtSecondOrder) {
       p_si = test_support::observed_order(prev.rms_sxx, x.rms_sxx, prev.h / x.h);
       p_ui = test_support::observed_order(prev.rms_u, x.rms_u, prev.h / x.h);
     }
-    std::printf("%8ld %9.5f %13.5e %13.5e %7.3f %7.3f %15.5e %8.2f\n", static_cast<long>(x.cells), x.h, x.rms_sxx,
-                x.rms_u, p_si, p_ui, x.rms_sxx_exact, x.seconds);
+    std::printf("%8ld %9.5f %13.5e %13.5e %7.3f %7.3f %15.5e %8.2f\n", static_cast<long>(x.cells),
+                x.h, x.rms_sxx, x.rms_u, p_si, p_ui, x.rms_sxx_exact, x.seconds);
     std::fflush(stdout);
   }
   fs::remove_all(dir);

@@ -17,9 +17,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "../support/convergence_order.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/electrostatics/electrostatic_solver.hpp"
-#include "../support/convergence_order.hpp"
 
 namespace rfmems {
 namespace {
@@ -81,8 +81,8 @@ Errors solve_on(int n, int degree) {
   Real f2 = 0, area = 0;
   for (Index f = 0; f < mesh.n_faces(); ++f) {
     const Real a = mesh.face_area(f).norm();
-    const Real e = solver.face_flux(f) / a -
-                   exact_gradient(mesh.face_centroid(f)).dot(mesh.face_area(f) / a);
+    const Real e =
+        solver.face_flux(f) / a - exact_gradient(mesh.face_centroid(f)).dot(mesh.face_area(f) / a);
     f2 += e * e * a;
     area += a;
   }
@@ -97,7 +97,8 @@ TEST(LaplaceManufactured, SecondOrderOnPerturbedSkewedMeshes) {
       h.push_back(1.0 / n);
       ep.push_back(e.potential);
       ef.push_back(e.flux);
-      std::printf("degree %d  n %4d  potential L2 %.3e  flux RMS %.3e\n", degree, n, e.potential, e.flux);
+      std::printf("degree %d  n %4d  potential L2 %.3e  flux RMS %.3e\n", degree, n, e.potential,
+                  e.flux);
     }
     const Real order_potential = fitted_order(h, ep), order_flux = fitted_order(h, ef);
     std::printf("degree %d: observed order potential %.2f, flux %.2f\n", degree, order_potential,

@@ -41,9 +41,10 @@ TEST(PlateTouchingPoint, ConvergesAtSecondOrder) {
   const double v20 = touching_voltage("[20, 2]"), v40 = touching_voltage("[40, 4]"),
                v80 = touching_voltage("[80, 8]");
   const double richardson = v80 + (v80 - v40) / 3;
-  std::printf("touching point: %.4f V (20 x 2), %.4f V (40 x 4), %.4f V (80 x 8); Richardson "
-              "(order 2) %.4f V; 40 x 4 off by %.3f %%; differences %.4f, %.4f V\n",
-              v20, v40, v80, richardson, 100 * (v40 / richardson - 1), v40 - v20, v80 - v40);
+  std::printf(
+      "touching point: %.4f V (20 x 2), %.4f V (40 x 4), %.4f V (80 x 8); Richardson "
+      "(order 2) %.4f V; 40 x 4 off by %.3f %%; differences %.4f, %.4f V\n",
+      v20, v40, v80, richardson, 100 * (v40 / richardson - 1), v40 - v20, v80 - v40);
   EXPECT_LT(std::abs(v40 / richardson - 1), 0.01);
   EXPECT_LT(std::abs(v80 - v40), std::abs(v40 - v20) / 4);
 }

@@ -61,7 +61,9 @@ Errors solve_on(int n) {
   const Real l_bottom = 0.05, l_top = 0.08;
   bc.sides[static_cast<int>(Side::Left)] = StokesSide::make_wall({velocity, 0.0});
   bc.sides[static_cast<int>(Side::Bottom)] = StokesSide::make_wall(
-      {[=](const Point2& q) { return Point2(velocity(q).x() - l_bottom * du_dy(q), velocity(q).y()); },
+      {[=](const Point2& q) {
+         return Point2(velocity(q).x() - l_bottom * du_dy(q), velocity(q).y());
+       },
        l_bottom});
   bc.sides[static_cast<int>(Side::Top)] = StokesSide::make_wall(
       {[=](const Point2& q) { return Point2(velocity(q).x() + l_top * du_dy(q), velocity(q).y()); },

@@ -29,9 +29,11 @@ std::vector<ElasticityBoundary> boundaries(const Mesh& mesh) {
   std::vector<ElasticityBoundary> bcs;
   for (const Patch& p : mesh.patches()) {
     if (p.name == "left")
-      bcs.push_back({ElasticityBoundary::Kind::Fixed, [](const Vec3&, double) { return Vec3::Zero().eval(); }});
+      bcs.push_back({ElasticityBoundary::Kind::Fixed,
+                     [](const Vec3&, double) { return Vec3::Zero().eval(); }});
     else
-      bcs.push_back({ElasticityBoundary::Kind::Traction, [](const Vec3&, double) { return Vec3(0, -1e5, 0); }});
+      bcs.push_back({ElasticityBoundary::Kind::Traction,
+                     [](const Vec3&, double) { return Vec3(0, -1e5, 0); }});
   }
   return bcs;
 }
@@ -70,7 +72,8 @@ TEST(DistributedMesh, GhostsReceiveTheirOwnersValues) {
   std::vector<Real> gathered = gather_to_root(comm, d.local, values, block, global.n_cells());
   if (comm.is_root()) {
     ASSERT_EQ(static_cast<Index>(gathered.size()), global.n_cells() * block);
-    for (Index g = 0; g < global.n_cells(); ++g) EXPECT_EQ(gathered[block * g], static_cast<Real>(g));
+    for (Index g = 0; g < global.n_cells(); ++g)
+      EXPECT_EQ(gathered[block * g], static_cast<Real>(g));
   }
 }
 
@@ -108,7 +111,8 @@ TEST(DistributedMesh, DistributedResidualEqualsTheSerialOne) {
     Real diff = 0;
     for (std::size_t i = 0; i < r_serial.size(); ++i)
       diff = std::max(diff, std::abs(r_gathered[i] - r_serial[i]));
-    std::printf("ranks %d: max |r_distributed - r_serial| / max |r| = %.2e\n", comm.size(), diff / scale);
+    std::printf("ranks %d: max |r_distributed - r_serial| / max |r| = %.2e\n", comm.size(),
+                diff / scale);
     EXPECT_LT(diff, 1e-12 * scale);
   }
   // Global reductions agree with the serial norm.

@@ -62,7 +62,8 @@ Result solve(int nx, int ny, int nz) {
     if (name == "left")
       bcs[p] = {ElasticityBoundary::Kind::Fixed, {}};
     else if (name == "right")
-      bcs[p] = {ElasticityBoundary::Kind::Traction, [](const Vec3&, double) { return Vec3(0, -P / A, 0); }};
+      bcs[p] = {ElasticityBoundary::Kind::Traction,
+                [](const Vec3&, double) { return Vec3(0, -P / A, 0); }};
     else
       bcs[p] = {ElasticityBoundary::Kind::Traction, {}};
   }
@@ -92,7 +93,8 @@ Result solve(int nx, int ny, int nz) {
       v_sum += mesh.cell_volume(c);
     }
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return {sum / area, s_sum / v_sum, s.stats.newton_iters, seconds};
 }
 
@@ -101,13 +103,16 @@ Result solve(int nx, int ny, int nz) {
 TEST(CantileverBox3D, TipDeflectionMatchesBeamTheoryWithShear) {
   const int sizes[2][3] = {{80, 8, 8}, {160, 8, 8}};
   Result r[2];
-  std::printf("reference w(L) = %.6e m (bending %.6e, shear %.6e)\n", -w_reference, -w_bending, -w_shear);
+  std::printf("reference w(L) = %.6e m (bending %.6e, shear %.6e)\n", -w_reference, -w_bending,
+              -w_shear);
   for (int i = 0; i < 2; ++i) {
     r[i] = solve(sizes[i][0], sizes[i][1], sizes[i][2]);
-    std::printf("%3d x %2d x %2d: tip u_y = %.6e m, error %+.3f %%, root sigma_xx (upper half) = %.4e Pa, %ld "
-                "Newton, %.2f s\n",
-                sizes[i][0], sizes[i][1], sizes[i][2], r[i].tip, 100 * (-r[i].tip / w_reference - 1),
-                r[i].root_sigma_xx, r[i].newton, r[i].seconds);
+    std::printf(
+        "%3d x %2d x %2d: tip u_y = %.6e m, error %+.3f %%, root sigma_xx (upper half) = %.4e Pa, "
+        "%ld "
+        "Newton, %.2f s\n",
+        sizes[i][0], sizes[i][1], sizes[i][2], r[i].tip, 100 * (-r[i].tip / w_reference - 1),
+        r[i].root_sigma_xx, r[i].newton, r[i].seconds);
     std::fflush(stdout);
     EXPECT_EQ(r[i].newton, 1) << "a linear static problem needs one Newton step";
   }

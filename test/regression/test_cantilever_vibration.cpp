@@ -31,11 +31,13 @@ TEST(CantileverVibration, FrequencyAndAmplitudeUnderAdaptiveBdf) {
   std::vector<ElasticityBoundary> bcs(mesh.patches().size());
   for (std::size_t p = 0; p < bcs.size(); ++p) {
     const std::string& name = mesh.patches()[p].name;
-    if (name == "left") bcs[p] = {ElasticityBoundary::Kind::Fixed, {}};
+    if (name == "left")
+      bcs[p] = {ElasticityBoundary::Kind::Fixed, {}};
     else if (name == "right")
       bcs[p] = {ElasticityBoundary::Kind::Traction,
                 [=](const Vec3&, double t) { return Vec3(0, tau * std::min(t / ramp, 1.0), 0); }};
-    else bcs[p] = {ElasticityBoundary::Kind::Traction, {}};
+    else
+      bcs[p] = {ElasticityBoundary::Kind::Traction, {}};
   }
   ElasticityOperator op(mesh, {E, nu, rho, Hypothesis::PlaneStress}, bcs);
 
@@ -66,7 +68,8 @@ TEST(CantileverVibration, FrequencyAndAmplitudeUnderAdaptiveBdf) {
   ida.initialize(0.0, y0, yp0);
   std::vector<double> t, w;
   const int samples_per_period = 200;
-  for (double tout = period / samples_per_period; tout <= t_end; tout += period / samples_per_period) {
+  for (double tout = period / samples_per_period; tout <= t_end;
+       tout += period / samples_per_period) {
     ida.advance(tout);
     t.push_back(ida.time());
     w.push_back(tip(ida.y().subspan(0, op.size())));
@@ -75,10 +78,11 @@ TEST(CantileverVibration, FrequencyAndAmplitudeUnderAdaptiveBdf) {
   IntegratorStats stats = ida.stats();
   double f = 1 / osc.period;
   double decay = 1 - osc.last_amplitude / osc.first_amplitude;
-  std::printf("f = %.5f Hz (Euler-Bernoulli %.5f Hz, %+.3f %%), %d periods, amplitude %.4e -> %.4e "
-              "(decay %.3f %%); IDA: %ld steps, %ld residuals, %ld Jacobians, last order %d\n",
-              f, f_eb, 100 * (f / f_eb - 1), osc.n_periods, osc.first_amplitude, osc.last_amplitude,
-              100 * decay, stats.steps, stats.residual_evals, stats.jacobian_evals, stats.last_order);
+  std::printf(
+      "f = %.5f Hz (Euler-Bernoulli %.5f Hz, %+.3f %%), %d periods, amplitude %.4e -> %.4e "
+      "(decay %.3f %%); IDA: %ld steps, %ld residuals, %ld Jacobians, last order %d\n",
+      f, f_eb, 100 * (f / f_eb - 1), osc.n_periods, osc.first_amplitude, osc.last_amplitude,
+      100 * decay, stats.steps, stats.residual_evals, stats.jacobian_evals, stats.last_order);
   EXPECT_GE(osc.n_periods, 10);
   EXPECT_NEAR(f / f_eb, 1.0, 0.01);
   EXPECT_LT(std::abs(decay), 0.01);

@@ -56,9 +56,10 @@ void compare(Case which, Real kn) {
     drho = std::max(drho, std::abs(ms[c].rho - mc[c].rho) / p->rho0);
     du = std::max(du, (ms[c].u - mc[c].u).norm() / u_scale);
   }
-  std::printf("Kn %g: sequential %d iterations, COMET %d cycles (%d levels); max diff T %.1e rho "
-              "%.1e u %.1e\n",
-              kn, rs.iterations, rc.cycles, rc.levels, dT, drho, du);
+  std::printf(
+      "Kn %g: sequential %d iterations, COMET %d cycles (%d levels); max diff T %.1e rho "
+      "%.1e u %.1e\n",
+      kn, rs.iterations, rc.cycles, rc.levels, dT, drho, du);
   EXPECT_LT(dT, 1e-6);
   EXPECT_LT(drho, 1e-6);
   EXPECT_LT(du, 1e-6);

@@ -35,7 +35,7 @@ namespace {
 
 constexpr Real kE = 200e9, kL = 1e-3, kSigma0 = 100e6, kHours = 3600;
 const CreepLaw kLaw{1e-8, 20, 1, 0.5, 0.7e9};
-constexpr Real kLifeStrain = 2e-3;                                   // e_c
+constexpr Real kLifeStrain = 2e-3;  // e_c
 constexpr Real kGap0 = 5e-6, kThreshold = kGap0 - kL * (kLifeStrain + kSigma0 / kE);
 
 class BarCreep : public CreepSystem {
@@ -121,8 +121,8 @@ TEST(CreepLifetime, IdaGapRootFindsTheClosedFormLife) {
   const Real life = closed_form_life();
   ASSERT_GT(life, 100 * kHours);
   const CreepRunResult r = run_creep(bar_model(), settings(2 * life, 20));
-  std::printf("closed-form life %.6f h, IDA root %.6f h (%ld steps, %ld segments)\n",
-              life / kHours, r.lifetime / kHours, r.steps, r.segments);
+  std::printf("closed-form life %.6f h, IDA root %.6f h (%ld steps, %ld segments)\n", life / kHours,
+              r.lifetime / kHours, r.steps, r.segments);
   EXPECT_EQ(r.end, CreepRunResult::End::GapThreshold);
   EXPECT_NEAR(r.lifetime, life, 1e-5 * life);
   EXPECT_NEAR(kGap0 - r.state[0], kThreshold, 1e-6 * kThreshold);

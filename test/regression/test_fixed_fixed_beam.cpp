@@ -35,13 +35,16 @@ Beam make_beam(int nx, int ny, double h) {
   std::vector<ElasticityBoundary> bcs(beam.mesh.patches().size());
   for (std::size_t p = 0; p < bcs.size(); ++p) {
     const std::string& name = beam.mesh.patches()[p].name;
-    if (name == "left" || name == "right") bcs[p] = {ElasticityBoundary::Kind::Fixed, {}};
+    if (name == "left" || name == "right")
+      bcs[p] = {ElasticityBoundary::Kind::Fixed, {}};
     else if (name == "top")
-      bcs[p] = {ElasticityBoundary::Kind::Traction, [](const Vec3&, double) { return Vec3(0, -q, 0); }};
-    else bcs[p] = {ElasticityBoundary::Kind::Traction, {}};
+      bcs[p] = {ElasticityBoundary::Kind::Traction,
+                [](const Vec3&, double) { return Vec3(0, -q, 0); }};
+    else
+      bcs[p] = {ElasticityBoundary::Kind::Traction, {}};
   }
-  beam.op = std::make_unique<ElasticityOperator>(beam.mesh, LinearElastic{E, nu, 7854, Hypothesis::PlaneStress},
-                                                 bcs);
+  beam.op = std::make_unique<ElasticityOperator>(
+      beam.mesh, LinearElastic{E, nu, 7854, Hypothesis::PlaneStress}, bcs);
   return beam;
 }
 
@@ -69,8 +72,8 @@ TEST(FixedFixedBeam, CoupledMatchesEulerBernoulliInOneNewtonStep) {
   Beam beam = make_beam(160, 16, h_slender);
   StaticSolution s = solve_static(*beam.op, 0.0);
   double w = centre_deflection(beam, s.y);
-  std::printf("coupled: w_max = %.6e m, Euler-Bernoulli %.6e m, error %.3f %%\n", w, euler_bernoulli,
-              100 * (w / euler_bernoulli - 1));
+  std::printf("coupled: w_max = %.6e m, Euler-Bernoulli %.6e m, error %.3f %%\n", w,
+              euler_bernoulli, 100 * (w / euler_bernoulli - 1));
   EXPECT_EQ(s.stats.newton_iters, 1);
   EXPECT_NEAR(w / euler_bernoulli, 1.0, 0.01);
 }

@@ -37,9 +37,9 @@ TEST(IbmCouetteSecondOrder, Knudsen01WithinOnePercentAt10Rows) {
   const Comparison first20 = compare(0.1, 20, 10, TransportOrder::FirstOrder);
   for (const Comparison& c : runs) EXPECT_LE(c.balance, 1e-6);
   auto shear = [](const Comparison& c) { return c.ib_shear / c.tau; };
-  const Real own_order = std::log(std::abs((shear(runs[0]) - shear(runs[1])) /
-                                           (shear(runs[1]) - shear(runs[2])))) /
-                         std::log(h_ratio(20, 40));
+  const Real own_order =
+      std::log(std::abs((shear(runs[0]) - shear(runs[1])) / (shear(runs[1]) - shear(runs[2])))) /
+      std::log(h_ratio(20, 40));
   std::printf(
       "second order: IBM own shear order %.2f; shear difference at m = 20 %.2e (first order "
       "%.2e)\n",

@@ -47,8 +47,8 @@ TEST(KineticCouette, Knudsen01MatchesSlipSolutionWithFirstOrderConvergence) {
 
 TEST(KineticCouette, Knudsen001MatchesSlipSolution) {
   const CouetteRun r = run_couette(0.01, 20);
-  std::printf("Kn = 0.01, 20 cells: RMS error %.3f %%, %d iterations, %.2f s\n",
-              100 * r.rms_error, r.solve.iterations, r.solve.seconds);
+  std::printf("Kn = 0.01, 20 cells: RMS error %.3f %%, %d iterations, %.2f s\n", 100 * r.rms_error,
+              r.solve.iterations, r.solve.seconds);
   EXPECT_TRUE(r.solve.converged);
   EXPECT_LE(r.rms_error, 0.02);
 }
@@ -59,10 +59,11 @@ TEST(KineticCouette, SecondOrderWallShearGivesTheViscosityAtKnudsen001) {
   const CouetteRun second =
       run_couette(kn, 20, CollisionModel::Esbgk, 8, 1.0, 2, TransportOrder::SecondOrder);
   const CouetteRun first = run_couette(kn, 20, CollisionModel::Esbgk, 8, 1.0, 2);
-  std::printf("Kn = 0.01, 2 x 20 cells, 8^3: wall shear / slip theory %.5f (second order, %d "
-              "iterations), %.3f (first order)\n",
-              second.force_bottom.z() / tau_slip, second.solve.iterations,
-              first.force_bottom.z() / tau_slip);
+  std::printf(
+      "Kn = 0.01, 2 x 20 cells, 8^3: wall shear / slip theory %.5f (second order, %d "
+      "iterations), %.3f (first order)\n",
+      second.force_bottom.z() / tau_slip, second.solve.iterations,
+      first.force_bottom.z() / tau_slip);
   EXPECT_TRUE(second.solve.converged);
   EXPECT_NEAR(second.force_bottom.z() / tau_slip, 1, 0.01);
   EXPECT_GT(first.force_bottom.z() / tau_slip, 2);
@@ -79,9 +80,10 @@ TEST(KineticCouette, OneColumnMeshKeepsTheSecondOrderGradientAlongItsColumn) {
       run_couette(kn, 20, CollisionModel::Esbgk, 8, 1.0, 1, TransportOrder::SecondOrder);
   const CouetteRun two =
       run_couette(kn, 20, CollisionModel::Esbgk, 8, 1.0, 2, TransportOrder::SecondOrder);
-  std::printf("Kn = 0.01, 20 rows, second order: wall shear / slip theory %.6f (1 column), "
-              "%.6f (2 columns)\n",
-              one.force_bottom.z() / tau_slip, two.force_bottom.z() / tau_slip);
+  std::printf(
+      "Kn = 0.01, 20 rows, second order: wall shear / slip theory %.6f (1 column), "
+      "%.6f (2 columns)\n",
+      one.force_bottom.z() / tau_slip, two.force_bottom.z() / tau_slip);
   EXPECT_TRUE(one.solve.converged);
   EXPECT_NEAR(one.force_bottom.z() / two.force_bottom.z(), 1, 1e-3);
   EXPECT_NEAR(one.force_bottom.z() / tau_slip, 1, 0.01);
@@ -108,9 +110,10 @@ TEST(KineticCouette, WallForcesBalanceAndConvergeToSlipTheory) {
   // so the wall force converges at O(h): Richardson-extrapolate 20 and 40 cells.
   const Real force_20 = r20.force_bottom.z(), force_40 = r40.force_bottom.z();
   const Real extrapolated = 2 * force_40 - force_20;
-  std::printf("wall force 20 cells %.5e, 40 cells %.5e, extrapolated %.5e N/m; mean cell "
-              "stress %.5e Pa; slip theory %.5e Pa\n",
-              force_20, force_40, extrapolated, r40.shear_stress, tau_slip);
+  std::printf(
+      "wall force 20 cells %.5e, 40 cells %.5e, extrapolated %.5e N/m; mean cell "
+      "stress %.5e Pa; slip theory %.5e Pa\n",
+      force_20, force_40, extrapolated, r40.shear_stress, tau_slip);
   // Steady state: the drag on the top wall balances the push on the bottom one.
   EXPECT_LE(std::abs(r40.force_top.z() + r40.force_bottom.z()) / force_40, 1e-4);
   EXPECT_LE(std::abs(r40.force_top.x()) + std::abs(r40.force_bottom.x()), 1e-6 * force_40);

@@ -18,8 +18,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <memory>
 #include <cstdio>
+#include <memory>
 #include <numbers>
 
 #include "mesh/structured_mesh.hpp"
@@ -58,8 +58,7 @@ Slab solve_slab(int ny, Real kn, const VelocityGrid& grid) {
   slab.op = std::make_unique<KineticOperator>(g, grid, gas, bcs);
   slab.rho = gas.density_for_knudsen(kn, kCold, kL);
   slab.f.resize(slab.op->size());
-  slab.op->initialize(slab.f,
-                      [&](const Vec3&) { return GasState{slab.rho, Vec3::Zero(), kCold}; });
+  slab.op->initialize(slab.f, [&](const Vec3&) { return GasState{slab.rho, Vec3::Zero(), kCold}; });
   const KineticSolveResult result = solve_sequential(*slab.op, slab.f);
   EXPECT_TRUE(result.converged);
   return slab;

@@ -65,7 +65,8 @@ Impedance measure(Real kn, int points) {
   const Real c0 = gas.thermal_speed(kT);
   const VelocityGrid grid = VelocityGrid::uniform(points, points, points, 3.5 * c0);
   const Real rho = gas.density_for_knudsen(kn, kT, kL), p_a = gas.pressure(rho, kT);
-  const Real up = bulk_pressure(kV, rho, g, grid, gas), down = bulk_pressure(-kV, rho, g, grid, gas);
+  const Real up = bulk_pressure(kV, rho, g, grid, gas),
+             down = bulk_pressure(-kV, rho, g, grid, gas);
   Impedance z;
   z.coefficient = (up - down) / (2 * kV) * c0 / p_a;
   z.even = (up + down) / (2 * p_a) - 1;

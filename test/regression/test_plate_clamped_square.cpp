@@ -188,8 +188,9 @@ TEST(PlateClampedSquare, NonOrthogonalMesh) {
   const double slenderness[] = {10, 1000};
   for (int k = 0; k < 2; ++k) {
     const Centre c = solve(40, slenderness[k], 0.06);
-    std::printf("curved 40x40, L/h = %5.0f: w/wref = %.5f (%+.3f %% from the reference), Newton %ld\n",
-                slenderness[k], c.w, 100 * (c.w / references[k] - 1), c.newton);
+    std::printf(
+        "curved 40x40, L/h = %5.0f: w/wref = %.5f (%+.3f %% from the reference), Newton %ld\n",
+        slenderness[k], c.w, 100 * (c.w / references[k] - 1), c.newton);
     EXPECT_NEAR(c.w / references[k], 1.0, 0.001);
     EXPECT_EQ(c.newton, 1);
   }

@@ -18,12 +18,13 @@
 // 10, 20 x 20 and 40 x 40: e(1000)/e(10) of the centre deflection, relative to each exact value,
 // within 10 % of 1 (measured 1.084, 1.043, 0.980), and in units of q a^4/D (1.031, 0.992,
 // 0.931); e(1000)/e(100) within 1 % (1.001-1.002); the same Newton count (1) and linear
-// iteration count (0: KLU) at every L/h. (Mx: 1.12, 1.09, 1.03, reported, not asserted.) The soft support (moments free, so beta.t is free too) has a twisting-moment
-// boundary layer of width ~h. Thick (L/h = 10, resolved): more flexible than the hard support
-// (measured +8 %). Thin (L/h = 1000, layer 25 times thinner than a cell): the mesh smears the
-// layer over a cell, so the centre deflection converges to Kirchhoff's at first order in the
-// cell size (measured +3.7 %, +1.8 %, +0.9 % on 20, 40, 80 cells a side): asserted within 2 %
-// on 40 x 40 and an observed order >= 0.9 from 20 x 20.
+// iteration count (0: KLU) at every L/h. (Mx: 1.12, 1.09, 1.03, reported, not asserted.) The soft
+// support (moments free, so beta.t is free too) has a twisting-moment boundary layer of width ~h.
+// Thick (L/h = 10, resolved): more flexible than the hard support (measured +8 %). Thin (L/h =
+// 1000, layer 25 times thinner than a cell): the mesh smears the layer over a cell, so the centre
+// deflection converges to Kirchhoff's at first order in the cell size (measured +3.7 %, +1.8 %,
+// +0.9 % on 20, 40, 80 cells a side): asserted within 2 % on 40 x 40 and an observed order >= 0.9
+// from 20 x 20.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -145,15 +146,17 @@ TEST(PlateSimplySupported, NoLockingAtFixedMeshAgainstExactMindlin) {
       moment[k] = c.mx / ref.mx - 1;
       newton[k] = c.newton;
       linear[k] = c.linear;
-      std::printf("%2dx%-2d L/h = %5.0f: w error %+.4e relative, %+.4e q a^4/D; Mx error %+.4e; "
-                  "Newton %ld, linear %ld\n",
-                  n, n, slenderness[k], relative[k], absolute[k], moment[k], newton[k], linear[k]);
+      std::printf(
+          "%2dx%-2d L/h = %5.0f: w error %+.4e relative, %+.4e q a^4/D; Mx error %+.4e; "
+          "Newton %ld, linear %ld\n",
+          n, n, slenderness[k], relative[k], absolute[k], moment[k], newton[k], linear[k]);
       EXPECT_GT(relative[k], 0.0);  // a real discretisation error, not round-off
     }
-    std::printf("%2dx%-2d e(1000)/e(10): relative %.4f, absolute %.4f, Mx %.4f; e(1000)/e(100) "
-                "%.4f\n",
-                n, n, relative[2] / relative[0], absolute[2] / absolute[0], moment[2] / moment[0],
-                relative[2] / relative[1]);
+    std::printf(
+        "%2dx%-2d e(1000)/e(10): relative %.4f, absolute %.4f, Mx %.4f; e(1000)/e(100) "
+        "%.4f\n",
+        n, n, relative[2] / relative[0], absolute[2] / absolute[0], moment[2] / moment[0],
+        relative[2] / relative[1]);
     EXPECT_NEAR(relative[2] / relative[0], 1.0, 0.10) << n << " x " << n;
     EXPECT_NEAR(absolute[2] / absolute[0], 1.0, 0.10) << n << " x " << n;
     EXPECT_NEAR(relative[2] / relative[1], 1.0, 0.01) << n << " x " << n;

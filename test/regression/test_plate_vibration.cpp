@@ -30,10 +30,10 @@
 #include <cstdio>
 
 #include "../support/oscillation.hpp"
+#include "core/reduced_inertia_system.hpp"
 #include "core/structural_systems.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/plate/plate_operator.hpp"
-#include "core/reduced_inertia_system.hpp"
 #include "solvers/ida_integrator.hpp"
 #include "solvers/static_solve.hpp"
 

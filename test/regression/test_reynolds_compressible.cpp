@@ -101,10 +101,11 @@ Errors compare(double sigma, int periods, int nx, int ny, SpringDamper* out = nu
   SpringDamper exact = blech(sigma, omega, pa);
   SpringDamper fv = simulate(sigma, periods, nx, ny);
   Errors e{fv.spring / exact.spring - 1, fv.damping / exact.damping - 1};
-  std::printf("sigma = %g, %d x %d: k_s = %.5e N/m (Blech %.5e, %+.2f %%), c = %.5e N s/m "
-              "(Blech %.5e, %+.2f %%)\n",
-              sigma, nx, ny, fv.spring, exact.spring, 100 * e.spring, fv.damping, exact.damping,
-              100 * e.damping);
+  std::printf(
+      "sigma = %g, %d x %d: k_s = %.5e N/m (Blech %.5e, %+.2f %%), c = %.5e N s/m "
+      "(Blech %.5e, %+.2f %%)\n",
+      sigma, nx, ny, fv.spring, exact.spring, 100 * e.spring, fv.damping, exact.damping,
+      100 * e.damping);
   if (out) *out = fv;
   return e;
 }

@@ -77,11 +77,12 @@ TEST(ReynoldsIncompressible, StripForceAndSecondOrderConvergence) {
   std::vector<double> errors;
   for (int nx : {10, 20, 40, 80}) {
     // Long in y: one cell between the Wall ends makes the film exactly one-dimensional.
-    double force = rigid_plate_force(W, length, nx, 1, FilmBoundary::Kind::Open,
-                                     FilmBoundary::Kind::Wall) / length;
+    double force =
+        rigid_plate_force(W, length, nx, 1, FilmBoundary::Kind::Open, FilmBoundary::Kind::Wall) /
+        length;
     double error = std::abs(force / exact - 1);
-    std::printf("strip nx = %d: F = %.6e N/m (exact %.6e), error %.3e, 2 (h/W)^2 = %.3e\n",
-                nx, force, exact, error, 2.0 / (nx * nx));
+    std::printf("strip nx = %d: F = %.6e N/m (exact %.6e), error %.3e, 2 (h/W)^2 = %.3e\n", nx,
+                force, exact, error, 2.0 / (nx * nx));
     EXPECT_GT(force, 0);  // a closing gap pushes the plate away from the substrate
     EXPECT_NEAR(error, 2.0 / (nx * nx), 1e-6);
     errors.push_back(error);
@@ -93,8 +94,9 @@ TEST(ReynoldsIncompressible, StripForceAndSecondOrderConvergence) {
     EXPECT_NEAR(order, 2.0, 0.01);
   }
   // The same strip turned by 90 degrees (Open bottom/top, Wall left/right).
-  double turned = rigid_plate_force(length, W, 1, 40, FilmBoundary::Kind::Wall,
-                                    FilmBoundary::Kind::Open) / length;
+  double turned =
+      rigid_plate_force(length, W, 1, 40, FilmBoundary::Kind::Wall, FilmBoundary::Kind::Open) /
+      length;
   EXPECT_NEAR(turned / exact - 1, 2.0 / (40 * 40), 1e-6);
 }
 
@@ -109,8 +111,8 @@ TEST(ReynoldsIncompressible, RectangularPlateMatchesBlechSeries) {
               1.0, 0.01);  // 1 - 0.63/200
   std::vector<double> errors;
   for (int n : {10, 20, 40}) {
-    double force = rigid_plate_force(a, b, 2 * n, n, FilmBoundary::Kind::Open,
-                                     FilmBoundary::Kind::Open);
+    double force =
+        rigid_plate_force(a, b, 2 * n, n, FilmBoundary::Kind::Open, FilmBoundary::Kind::Open);
     double damping = -force / kGapRate;
     double error = std::abs(damping / c - 1);
     std::printf("plate %d x %d: c = %.6e, error %.3e\n", 2 * n, n, damping, error);

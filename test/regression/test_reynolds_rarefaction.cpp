@@ -33,8 +33,8 @@ double strip_damping(const GasProperties& gas) {
   std::vector<FilmBoundary> bcs(mesh.patches().size());
   for (std::size_t i = 0; i < bcs.size(); ++i) {
     const std::string& name = mesh.patches()[i].name;
-    bcs[i].kind = (name == "left" || name == "right") ? FilmBoundary::Kind::Open
-                                                      : FilmBoundary::Kind::Wall;
+    bcs[i].kind =
+        (name == "left" || name == "right") ? FilmBoundary::Kind::Open : FilmBoundary::Kind::Wall;
   }
   ReynoldsFilm film(mesh, gas, bcs);
   std::vector<double> gap(film.size(), kGap), rate(film.size(), kGapRate);

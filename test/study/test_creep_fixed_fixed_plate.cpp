@@ -148,7 +148,7 @@ TEST(CreepFixedFixedPlate, ExplicitEulerConvergesToIdaForTheTable41Law) {
 // The thesis's series (Table 4.1: mesh 81 x 21; q = 4 MPa, 0.6 MPa and 60 kPa for L/h = 10,
 // 20 and 30-60): plastic centre deflection after 500 h at two IDA tolerances.
 TEST(CreepFixedFixedPlate, Table41SeriesOnTheThesisMesh) {
-  const std::pair<Real, Real> series[] = {{10, 4e6},  {20, 6e5},  {30, 6e4},
+  const std::pair<Real, Real> series[] = {{10, 4e6}, {20, 6e5}, {30, 6e4},
                                           {40, 6e4}, {50, 6e4}, {60, 6e4}};
   std::printf("Table 4.1 law, 81 x 21, 500 h:\n");
   for (auto [slenderness, load] : series) {

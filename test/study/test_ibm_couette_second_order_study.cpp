@@ -42,7 +42,9 @@ void sweep(Real kn, int nv, std::initializer_list<int> ms) {
   }
 }
 
-TEST(IbmCouetteSecondOrderStudy, Knudsen01FirstAgainstSecondOrder) { sweep(0.1, 10, {10, 20, 40, 80}); }
+TEST(IbmCouetteSecondOrderStudy, Knudsen01FirstAgainstSecondOrder) {
+  sweep(0.1, 10, {10, 20, 40, 80});
+}
 
 TEST(IbmCouetteSecondOrderStudy, Knudsen001FirstAgainstSecondOrder) { sweep(0.01, 8, {10, 20}); }
 

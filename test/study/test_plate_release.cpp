@@ -12,8 +12,8 @@
 // the whole plate unless the hold voltage is several times the static pull-out; the film
 // damps part of it, lowering the dynamic pull-out. Measured (2026-12-02): V_PO 21.50 V;
 // from 200 V 87.5 V without gas, 73.4 V with the film at 1 atm; from 1.5 V_PO 22.51 V and
-// 22.17 V (51 s CPU in all). Asserts those orderings: from 200 V above 2.5 V_PO with and without gas, the film
-// lower by more than 5 %; from 1.5 V_PO within 10 % above V_PO, the film lower.
+// 22.17 V (51 s CPU in all). Asserts those orderings: from 200 V above 2.5 V_PO with and without
+// gas, the film lower by more than 5 %; from 1.5 V_PO within 10 % above V_PO, the film lower.
 #include <gtest/gtest.h>
 
 #include "../support/coarse_plate_contact.hpp"

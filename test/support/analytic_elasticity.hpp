@@ -36,16 +36,19 @@ struct KirschHole {
   Vec3 stress(const Vec3& x) const {
     double r = std::hypot(x.x(), x.y()), th = std::atan2(x.y(), x.x());
     double a2 = a * a / (r * r), a4 = a2 * a2;
-    return Vec3(T * (1 - a2 * (1.5 * std::cos(2 * th) + std::cos(4 * th)) + 1.5 * a4 * std::cos(4 * th)),
-                T * (-a2 * (0.5 * std::cos(2 * th) - std::cos(4 * th)) - 1.5 * a4 * std::cos(4 * th)),
-                T * (-a2 * (0.5 * std::sin(2 * th) + std::sin(4 * th)) + 1.5 * a4 * std::sin(4 * th)));
+    return Vec3(
+        T * (1 - a2 * (1.5 * std::cos(2 * th) + std::cos(4 * th)) + 1.5 * a4 * std::cos(4 * th)),
+        T * (-a2 * (0.5 * std::cos(2 * th) - std::cos(4 * th)) - 1.5 * a4 * std::cos(4 * th)),
+        T * (-a2 * (0.5 * std::sin(2 * th) + std::sin(4 * th)) + 1.5 * a4 * std::sin(4 * th)));
   }
   Vec3 displacement(const Vec3& x) const {
     double r = std::hypot(x.x(), x.y()), th = std::atan2(x.y(), x.x());
     double k = kappa(), c = a * T / (8 * mu());
-    return Vec3(c * (r / a * (k + 1) * std::cos(th) + 2 * a / r * ((1 + k) * std::cos(th) + std::cos(3 * th)) -
+    return Vec3(c * (r / a * (k + 1) * std::cos(th) +
+                     2 * a / r * ((1 + k) * std::cos(th) + std::cos(3 * th)) -
                      2 * std::pow(a / r, 3) * std::cos(3 * th)),
-                c * (r / a * (k - 3) * std::sin(th) + 2 * a / r * ((1 - k) * std::sin(th) + std::sin(3 * th)) -
+                c * (r / a * (k - 3) * std::sin(th) +
+                     2 * a / r * ((1 - k) * std::sin(th) + std::sin(3 * th)) -
                      2 * std::pow(a / r, 3) * std::sin(3 * th)),
                 0.0);
   }

@@ -79,8 +79,7 @@ inline Profile body_fitted(Real kn, int m, int nv,
   return p;
 }
 
-inline Profile immersed(Real kn, int m, int nv,
-                        TransportOrder order = TransportOrder::FirstOrder) {
+inline Profile immersed(Real kn, int m, int nv, TransportOrder order = TransportOrder::FirstOrder) {
   const double t0 = process_cpu_seconds();
   const Real h = H / (m + theta), W = columns * h;
   BoxSpec spec;

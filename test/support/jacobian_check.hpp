@@ -19,7 +19,7 @@ struct JacobianCheck {
   // max over entries of |J_fd - J_analytic| / (|J_analytic| + 1e-6 max_j |J_analytic| of the
   // row): every entry checked on its own scale (small coupling entries next to large ones).
   double max_entry_relative = 0;
-  Index worst_row = -1;                          // where max_row_relative occurs
+  Index worst_row = -1;                              // where max_row_relative occurs
   Index worst_entry_row = -1, worst_entry_col = -1;  // where max_entry_relative occurs
   double relative() const { return max_abs_difference / max_abs_entry; }
 };
@@ -37,10 +37,9 @@ inline std::vector<double> analytic_jacobian(SystemOperator& op, double t, doubl
 // central difference of dF_i/dy_j + c_j dF_i/dy'_j with step steps[j] (for y_j and y'_j),
 // analytic the CSR value (0 outside the pattern).
 template <class Visit>
-void for_each_jacobian_entry(SystemOperator& op, double t, double c_j,
-                             const std::vector<double>& y, const std::vector<double>& yp,
-                             const std::vector<double>& steps, const std::vector<double>& values,
-                             Visit&& visit) {
+void for_each_jacobian_entry(SystemOperator& op, double t, double c_j, const std::vector<double>& y,
+                             const std::vector<double>& yp, const std::vector<double>& steps,
+                             const std::vector<double>& values, Visit&& visit) {
   const Index n = op.size();
   const CsrPattern& pattern = op.jacobian_pattern();
   std::vector<double> yy = y, yyp = yp, rp(n), rm(n), column(n);
@@ -87,19 +86,19 @@ inline JacobianCheck check_jacobian(SystemOperator& op, double t, double c_j,
       row_entry[i] = std::max(row_entry[i], std::abs(values[p]));
       row_scaled[i] = std::max(row_scaled[i], std::abs(values[p]) * unit[pattern.col_idx[p]]);
     }
-  for_each_jacobian_entry(op, t, c_j, y, yp, steps, values,
-                          [&](Index i, Index j, double fd, double analytic) {
-    const double difference = std::abs(fd - analytic);
-    result.max_abs_difference = std::max(result.max_abs_difference, difference);
-    row_difference[i] = std::max(row_difference[i], difference);
-    const double entry_relative =
-        difference * unit[j] / (std::abs(analytic) * unit[j] + 1e-6 * row_scaled[i] + 1e-300);
-    if (entry_relative > result.max_entry_relative) {
-      result.max_entry_relative = entry_relative;
-      result.worst_entry_row = i;
-      result.worst_entry_col = j;
-    }
-  });
+  for_each_jacobian_entry(
+      op, t, c_j, y, yp, steps, values, [&](Index i, Index j, double fd, double analytic) {
+        const double difference = std::abs(fd - analytic);
+        result.max_abs_difference = std::max(result.max_abs_difference, difference);
+        row_difference[i] = std::max(row_difference[i], difference);
+        const double entry_relative =
+            difference * unit[j] / (std::abs(analytic) * unit[j] + 1e-6 * row_scaled[i] + 1e-300);
+        if (entry_relative > result.max_entry_relative) {
+          result.max_entry_relative = entry_relative;
+          result.worst_entry_row = i;
+          result.worst_entry_col = j;
+        }
+      });
   for (Index i = 0; i < n; ++i)
     if (row_entry[i] > 0 && row_difference[i] / row_entry[i] > result.max_row_relative) {
       result.max_row_relative = row_difference[i] / row_entry[i];

@@ -89,8 +89,8 @@ std::size_t restore(const Checkpoint& cp, const std::string& file, std::size_t n
 }
 
 // Records the series row and the output fields at (t, state).
-void record(const CreepRunModel& model, CreepSystem& system, Real t,
-            std::span<const Real> state, CreepRunResult& r) {
+void record(const CreepRunModel& model, CreepSystem& system, Real t, std::span<const Real> state,
+            CreepRunResult& r) {
   r.series_times.push_back(t);
   r.series.push_back(model.sample(system, t, state));
   CreepOutput out;
@@ -113,23 +113,21 @@ SegmentEnd implicit_segment(const CreepRunModel& model, const CreepRunSettings& 
   // Start where the previous segment's steps had grown to (IDA cuts it if the error test
   // fails): saves most of the restart's ramp-up from a tiny first step.
   options.initial_step = s.segment_initial_step_from_previous ? r.last_step : 0;
-  options.linear_solver = s.krylov && system.has_preconditioner()
-                              ? IdaOptions::LinearSolver::Spgmr
-                              : IdaOptions::LinearSolver::Klu;
+  options.linear_solver = s.krylov && system.has_preconditioner() ? IdaOptions::LinearSolver::Spgmr
+                                                                  : IdaOptions::LinearSolver::Klu;
   IdaIntegrator ida(system, options);
   std::vector<int> root_kind;  // which End each root is
   if (s.gap_threshold_event) root_kind.push_back(static_cast<int>(End::GapThreshold));
   if (s.collapse_event) root_kind.push_back(static_cast<int>(End::Collapse));
   if (!root_kind.empty()) {
-    ida.set_roots(static_cast<int>(root_kind.size()),
-                  [&](Real t, std::span<const Real> y, std::span<const Real> yp,
-                      std::span<Real> g) {
-                    int k = 0;
-                    const Real gap = model.min_gap(y);
-                    if (s.gap_threshold_event) g[k++] = gap - s.gap_threshold;
-                    if (s.collapse_event)
-                      g[k++] = gap + s.collapse_fraction * t * model.min_gap_rate(y, yp);
-                  });
+    ida.set_roots(
+        static_cast<int>(root_kind.size()),
+        [&](Real t, std::span<const Real> y, std::span<const Real> yp, std::span<Real> g) {
+          int k = 0;
+          const Real gap = model.min_gap(y);
+          if (s.gap_threshold_event) g[k++] = gap - s.gap_threshold;
+          if (s.collapse_event) g[k++] = gap + s.collapse_fraction * t * model.min_gap_rate(y, yp);
+        });
   }
   ida.initialize(r.final_time, r.state, r.state_dot);
   SegmentEnd end;
@@ -178,8 +176,7 @@ SegmentEnd explicit_segment(const CreepRunModel& model, const CreepRunSettings& 
   Real collapse_prev = std::numeric_limits<Real>::quiet_NaN();
   SegmentEnd end;
   while (euler.time() < t_next) {
-    const Real target =
-        (t_next - euler.time() <= dt * (1 + 1e-9)) ? t_next : euler.time() + dt;
+    const Real target = (t_next - euler.time() <= dt * (1 + 1e-9)) ? t_next : euler.time() + dt;
     try {
       euler.advance(target);
     } catch (const SolverError& e) {
@@ -260,8 +257,8 @@ void CreepRunSettings::validate() const {
   Real previous = 0;
   for (Real t : output_times) {
     if (!(t > previous))
-      throw InputError(fmt::format("creep run: output times must be > 0 and increasing ({} after {})",
-                                   t, previous));
+      throw InputError(fmt::format(
+          "creep run: output times must be > 0 and increasing ({} after {})", t, previous));
     previous = t;
   }
   if (integration == Integration::Explicit && !(explicit_dt > 0))
@@ -269,8 +266,8 @@ void CreepRunSettings::validate() const {
   if (!(rtol > 0) || !(atol > 0))
     throw InputError(fmt::format("creep run: rtol and atol must be > 0 ({}, {})", rtol, atol));
   if (collapse_event && !(collapse_fraction > 0 && collapse_fraction < 1))
-    throw InputError(fmt::format("creep run: collapse fraction must be in (0, 1), got {}",
-                                 collapse_fraction));
+    throw InputError(
+        fmt::format("creep run: collapse fraction must be in (0, 1), got {}", collapse_fraction));
   if (checkpoint_every_steps < 0 || checkpoint_every_seconds < 0)
     throw InputError("creep run: checkpoint intervals must be >= 0");
 }
@@ -298,8 +295,7 @@ CreepRunResult run_creep(const CreepRunModel& model, const CreepRunSettings& s,
           checkpoint_file, restart->settings_hash, s.settings_hash));
     next = restore(*restart, checkpoint_file, model.series_columns.size(), r);
     wall_before = restart->numbers.count("wall_time_s") ? restart->numbers.at("wall_time_s") : 0;
-    if (next == 0 || next > s.output_times.size() ||
-        r.final_time != s.output_times[next - 1])
+    if (next == 0 || next > s.output_times.size() || r.final_time != s.output_times[next - 1])
       throw InputError(fmt::format("{}: checkpoint time {} is not an output time of this case",
                                    checkpoint_file, r.final_time));
     r.restarted = true;
@@ -333,9 +329,10 @@ CreepRunResult run_creep(const CreepRunModel& model, const CreepRunSettings& s,
       return r;
     }
     const bool last = next + 1 == s.output_times.size();
-    const bool due =
-        (s.checkpoint_every_steps > 0 && r.steps - steps_at_checkpoint >= s.checkpoint_every_steps) ||
-        (s.checkpoint_every_seconds > 0 && wall() - wall_at_checkpoint >= s.checkpoint_every_seconds);
+    const bool due = (s.checkpoint_every_steps > 0 &&
+                      r.steps - steps_at_checkpoint >= s.checkpoint_every_steps) ||
+                     (s.checkpoint_every_seconds > 0 &&
+                      wall() - wall_at_checkpoint >= s.checkpoint_every_seconds);
     if (!s.checkpoint_path.empty() && due && !last) {
       write_checkpoint(s.checkpoint_path, make_checkpoint(s, r, next + 1, wall()));
       ++r.checkpoints_written;

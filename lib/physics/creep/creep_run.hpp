@@ -44,24 +44,24 @@ namespace rfmems {
 struct CreepRunSettings {
   enum class Integration { Implicit, Explicit };
   Integration integration = Integration::Implicit;
-  Real explicit_dt = 3600;            // [s], explicit only
-  Real rtol = 1e-6, atol = 1e-12;     // IDA (atol on the states: strains and metres)
+  Real explicit_dt = 3600;         // [s], explicit only
+  Real rtol = 1e-6, atol = 1e-12;  // IDA (atol on the states: strains and metres)
   // Each segment's first IDA step: the last step of the previous segment (true), or IDA's own
   // estimate (false: restarts from a small step, ~10 more steps per segment).
   bool segment_initial_step_from_previous = true;
-  bool krylov = true;                 // IDA's linear solver: SPGMR with the system's
-                                      // preconditioner (if it has one), else KLU
-  std::vector<Real> output_times;     // > 0, increasing; the last one is the end time
+  bool krylov = true;              // IDA's linear solver: SPGMR with the system's
+                                   // preconditioner (if it has one), else KLU
+  std::vector<Real> output_times;  // > 0, increasing; the last one is the end time
   // Lifetime events (need CreepRunModel::min_gap).
   bool gap_threshold_event = false;
-  Real gap_threshold = 0;             // [m]
+  Real gap_threshold = 0;  // [m]
   bool collapse_event = false;
-  Real collapse_fraction = 1e-3;      // eps of the collapse root
+  Real collapse_fraction = 1e-3;  // eps of the collapse root
   // Checkpoints (written at output times; 0: trigger off; no path: none).
   std::string checkpoint_path;
   long checkpoint_every_steps = 0;
   Real checkpoint_every_seconds = 0;
-  std::string settings_hash;          // stored in checkpoints, checked on restart
+  std::string settings_hash;  // stored in checkpoints, checked on restart
 
   Real end_time() const { return output_times.empty() ? 0 : output_times.back(); }
   // Throws InputError for inconsistent settings.
@@ -82,7 +82,7 @@ struct CreepRunModel {
   // The fields kept for an output (written to the result file at the end and carried in
   // checkpoints).
   std::function<std::map<std::string, std::vector<double>>(CreepSystem&, Real t,
-                                                             std::span<const Real> state)>
+                                                           std::span<const Real> state)>
       output_fields;
   // Called after every segment (progress reports): time reached, last step, steps so far.
   std::function<void(Real t, Real last_step, long steps)> on_segment;
@@ -100,15 +100,15 @@ struct CreepRunResult {
   Real lifetime = std::numeric_limits<Real>::quiet_NaN();  // the event's time, if one ended it
   std::vector<Real> state, state_dot;                      // at final_time
   std::vector<Real> series_times;
-  std::vector<std::vector<double>> series;                 // rows of series_columns
-  std::vector<CreepOutput> outputs;                        // t = 0, the output times, the event
-  long steps = 0;                                          // integrator steps, all segments
-  Real last_step = 0;                                      // IDA's last step size
-  long segments = 0;                                       // integrated in this process
+  std::vector<std::vector<double>> series;  // rows of series_columns
+  std::vector<CreepOutput> outputs;         // t = 0, the output times, the event
+  long steps = 0;                           // integrator steps, all segments
+  Real last_step = 0;                       // IDA's last step size
+  long segments = 0;                        // integrated in this process
   int checkpoints_written = 0;
   bool restarted = false;
   Real restart_time = 0;
-  std::string message;                                     // EquilibriumLost: the solver's
+  std::string message;  // EquilibriumLost: the solver's
 
   bool life_reached() const { return end != End::EndTime; }
 };

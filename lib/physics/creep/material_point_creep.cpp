@@ -29,8 +29,8 @@ void MaterialPointCreep::residual(Real t, std::span<const Real> y, std::span<con
   for (int i = 0; i < 7; ++i) r[i] = yp[i] - g[i];
 }
 
-void MaterialPointCreep::jacobian(Real t, Real c_j, std::span<const Real> y,
-                                  std::span<const Real>, std::span<Real> values) {
+void MaterialPointCreep::jacobian(Real t, Real c_j, std::span<const Real> y, std::span<const Real>,
+                                  std::span<Real> values) {
   const auto dg = pack(law_.rate_hardening_derivative(stress_(t), y[kEff]));
   for (int i = 0; i < 7; ++i)
     for (int j = 0; j < 7; ++j)

@@ -556,8 +556,8 @@ bool PlateCreepSystem::install_hold(CreepHoldVoltage hold) {
               "plate creep hold voltage: a gap point of dof {} reads dof {}, not a plate unknown",
               e.dof, term.dof));
   }
-  auto load = std::make_unique<ParallelPlateActuation>(plate_, hold.elements, hold.initial_gap,
-                                                       hold.law);
+  auto load =
+      std::make_unique<ParallelPlateActuation>(plate_, hold.elements, hold.initial_gap, hold.law);
   const Real v2 = hold.voltage * hold.voltage;
   load->set_voltage_squared([v2](Real) { return v2; });
   const CsrPattern& before = structural_pattern();
@@ -573,8 +573,7 @@ Real PlateCreepSystem::min_gap(std::span<const Real> state) const {
                     : std::numeric_limits<Real>::infinity();
 }
 
-void PlateCreepSystem::structural_residual(Real t, std::span<const Real> state,
-                                           std::span<Real> r) {
+void PlateCreepSystem::structural_residual(Real t, std::span<const Real> state, std::span<Real> r) {
   const Index ns = structural_size();
   if (hold_load_)
     hold_load_->internal_residual(t, state.first(ns), r.first(ns));

@@ -1,6 +1,7 @@
 #include "physics/elasticity/elasticity_operator.hpp"
 
 #include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -38,9 +39,12 @@ ElasticityOperator::ElasticityOperator(const Mesh& mesh, const LinearElastic& ma
       mesh_,
       [this](Index f) {
         switch (boundaries_[mesh_.face_patch(f)].kind) {
-          case Kind::Fixed: return BoundaryPoint::Value;
-          case Kind::Symmetry: return BoundaryPoint::Mirror;
-          default: return BoundaryPoint::None;
+          case Kind::Fixed:
+            return BoundaryPoint::Value;
+          case Kind::Symmetry:
+            return BoundaryPoint::Mirror;
+          default:
+            return BoundaryPoint::None;
         }
       },
       reconstruction_degree > 0 ? reconstruction_degree : default_reconstruction_degree(dim_));
@@ -212,9 +216,9 @@ void ElasticityOperator::add_internal_forces(Real t, std::span<const Real> u, bo
       add(c, -body_force_(mesh_.cell_centroid(c), t) * mesh_.cell_volume(c));
 }
 
-void ElasticityOperator::append_side_terms(const FaceSide& s, Real grad_factor,
-                                           Real value_factor, const Mat3& value_map,
-                                           const Vec3& e, std::vector<Term>& terms) const {
+void ElasticityOperator::append_side_terms(const FaceSide& s, Real grad_factor, Real value_factor,
+                                           const Mat3& value_map, const Vec3& e,
+                                           std::vector<Term>& terms) const {
   // p(x_f) = u_c + sum_j s_j (v_j - u_c), grad p(x_f) = sum_j (v_j - u_c) g_j^T with
   // v_j = M_j u_{cell_j} (or a constant boundary value, which has no derivative).
   auto points = reconstruction_->points(s.cell);
@@ -262,8 +266,8 @@ void ElasticityOperator::stiffness(Real, std::span<const Real>, std::span<Real> 
     // F = mu (G S + G^T S) + lambda tr(G) S with G = a h^T, a = T u_c:
     // dF/da = mu (h.S) I + mu h S^T + lambda S h^T.
     for (const Term& term : terms) {
-      Mat3 dF = mu_ * term.h.dot(S) * I + mu_ * term.h * S.transpose() +
-                lambda_ * S * term.h.transpose();
+      Mat3 dF =
+          mu_ * term.h.dot(S) * I + mu_ * term.h * S.transpose() + lambda_ * S * term.h.transpose();
       Mat3 block = out * dF * term.T;
       sparsity_->add_block(values, p, term.cell, -block);
       if (n >= 0) sparsity_->add_block(values, n, term.cell, block);

@@ -102,8 +102,8 @@ class ElasticityOperator : public SecondOrderOperator {
  private:
   struct Term {
     Index cell;
-    Mat3 T;   // acts on u_cell
-    Vec3 h;   // G_f += (T u_cell) h^T
+    Mat3 T;  // acts on u_cell
+    Vec3 h;  // G_f += (T u_cell) h^T
   };
   // Evaluation weights of one cell's reconstruction at one face centroid.
   struct FaceSide {
@@ -121,8 +121,7 @@ class ElasticityOperator : public SecondOrderOperator {
   void add_internal_forces(Real t, std::span<const Real> u, bool homogeneous, Real scale,
                            std::span<Real> r) const;
   // p_c(x_f) and grad p_c(x_f) for one face side (after compute_point_deltas).
-  void evaluate_side(const FaceSide& s, std::span<const Real> u, Vec3& value,
-                     Mat3& gradient) const;
+  void evaluate_side(const FaceSide& s, std::span<const Real> u, Vec3& value, Mat3& gradient) const;
   // Linear terms of G_f from one side: grad_factor * grad p + value_factor * value_map p e^T.
   void append_side_terms(const FaceSide& s, Real grad_factor, Real value_factor,
                          const Mat3& value_map, const Vec3& e, std::vector<Term>& terms) const;
@@ -139,15 +138,15 @@ class ElasticityOperator : public SecondOrderOperator {
   Real mu_, lambda_;
   std::unique_ptr<PolynomialReconstruction> reconstruction_;
   std::unique_ptr<BlockSparsity> sparsity_;
-  std::vector<FaceSide> sides_;             // two per face (the second unused on boundaries)
+  std::vector<FaceSide> sides_;  // two per face (the second unused on boundaries)
   std::vector<Real> side_value_;
   std::vector<Vec3> side_gradient_;
-  std::vector<Index> point_offset_;         // per cell, into its stencil points (and deltas)
-  mutable std::vector<Vec3> point_delta_;   // scratch: v_j - u_c
-  std::vector<Vec3> centroid_gradient_;     // parallel to the stencil points
-  std::vector<Vec3> face_e_;                // unit vector P -> N (or P -> face centroid)
-  std::vector<Real> face_d_;                // |d|
-  Real damping_time_ = 0;                   // beta of the Kelvin-Voigt damping
+  std::vector<Index> point_offset_;        // per cell, into its stencil points (and deltas)
+  mutable std::vector<Vec3> point_delta_;  // scratch: v_j - u_c
+  std::vector<Vec3> centroid_gradient_;    // parallel to the stencil points
+  std::vector<Vec3> face_e_;               // unit vector P -> N (or P -> face centroid)
+  std::vector<Real> face_d_;               // |d|
+  Real damping_time_ = 0;                  // beta of the Kelvin-Voigt damping
 };
 
 }  // namespace rfmems

@@ -93,7 +93,7 @@ BoundaryEntry read_pressure(const CaseNode& entry, const PatchContext& ctx) {
   if (centroids.empty()) return b;  // an empty patch carries no load
   auto locator = std::make_shared<const PointLocator>(std::move(centroids), ctx.mesh.dim());
   b.bc.value = [locator, normals = std::move(normals), p, ramp = b.ramp](const Vec3& x,
-                                                                          Real t) -> Vec3 {
+                                                                         Real t) -> Vec3 {
     return -ramp_factor(t, ramp) * p * normals[locator->nearest(x)];
   };
   return b;
@@ -197,8 +197,8 @@ ElasticityScene build_elasticity_scene(const CaseNode& root, const std::string& 
   // default depends on the dimension (see ElasticityOperator).
   const std::map<std::string, int> degrees{
       {"default", 0}, {"linear", 1}, {"quadratic", 2}, {"cubic", 3}};
-  const int degree = degrees.at(model.get_choice(
-      "reconstruction", {"default", "linear", "quadratic", "cubic"}, "default"));
+  const int degree = degrees.at(
+      model.get_choice("reconstruction", {"default", "linear", "quadratic", "cubic"}, "default"));
 
   std::vector<ElasticityBoundary> bcs = read_boundaries(root, *scene.mesh, scene.load_time);
   VectorField body_force = read_body_force(root, dim);
@@ -216,9 +216,12 @@ ElasticityScene build_elasticity_scene(const CaseNode& root, const std::string& 
 
 std::string ElasticityScene::kind() const {
   switch (material.hypothesis) {
-    case Hypothesis::PlaneStress: return "plane_stress";
-    case Hypothesis::PlaneStrain: return "plane_strain";
-    case Hypothesis::ThreeD: return "3d";
+    case Hypothesis::PlaneStress:
+      return "plane_stress";
+    case Hypothesis::PlaneStrain:
+      return "plane_strain";
+    case Hypothesis::ThreeD:
+      return "3d";
   }
   return "?";
 }
@@ -252,15 +255,14 @@ std::vector<double> as_vectors(std::span<const Real> u, Index n_cells, int dim) 
 
 }  // namespace
 
-void ElasticityScene::write_fields(ResultWriter& writer, int index, Real t,
-                                   std::span<const Real> u, std::span<const Real> v) const {
+void ElasticityScene::write_fields(ResultWriter& writer, int index, Real t, std::span<const Real> u,
+                                   std::span<const Real> v) const {
   const Index nc = mesh->n_cells();
   const int dim = mesh->dim();
   writer.write_cell_field_at(index, t, "displacement", as_vectors(u, nc, dim), 3,
                              {"ux", "uy", "uz"});
   if (!v.empty())
-    writer.write_cell_field_at(index, t, "velocity", as_vectors(v, nc, dim), 3,
-                               {"vx", "vy", "vz"});
+    writer.write_cell_field_at(index, t, "velocity", as_vectors(v, nc, dim), 3, {"vx", "vy", "vz"});
   const std::vector<Mat3> gradients = op->cell_gradients(t, u);
   std::vector<double> stress(static_cast<std::size_t>(6 * nc));
   for (Index c = 0; c < nc; ++c) {
@@ -282,16 +284,19 @@ std::vector<Vec3> ElasticityScene::probe_values(const std::vector<Probe>& probes
 
 std::vector<GapElement> ElasticityScene::gap_elements(const std::string& patch_name) const {
   const int p = mesh->find_patch(patch_name);
-  if (p < 0) throw InputError(fmt::format("the mesh has no patch '{}' facing the electrode", patch_name));
+  if (p < 0)
+    throw InputError(fmt::format("the mesh has no patch '{}' facing the electrode", patch_name));
   const Patch& patch = mesh->patches()[p];
   const int dim = mesh->dim();
   std::vector<GapElement> elements;
   for (Index f = patch.first_face; f < patch.first_face + patch.n_faces; ++f) {
     const Index owner = mesh->face_owner(f);
     if (owner >= mesh->n_owned_cells()) continue;
-    GapElement e{owner * dim + (dim - 1), mesh->face_area(f).norm(),
+    GapElement e{owner * dim + (dim - 1),
+                 mesh->face_area(f).norm(),
                  Vec3::Constant(std::numeric_limits<Real>::infinity()),
-                 Vec3::Constant(-std::numeric_limits<Real>::infinity()), {}};
+                 Vec3::Constant(-std::numeric_limits<Real>::infinity()),
+                 {}};
     for (Index node : mesh->face_nodes(f)) {
       e.lo = e.lo.cwiseMin(mesh->nodes()[node]);
       e.hi = e.hi.cwiseMax(mesh->nodes()[node]);

@@ -25,9 +25,8 @@ SegregatedStats solve_segregated(ElasticityOperator& op, Real t, std::vector<Rea
   const int dim = op.dim();
   const Index nc = op.mesh().n_cells();
   const LinearElastic& m = op.material();
-  const Real kappa = options.diffusivity == SegregatedOptions::Diffusivity::Mu
-                         ? m.mu()
-                         : 2 * m.mu() + m.lambda();
+  const Real kappa =
+      options.diffusivity == SegregatedOptions::Diffusivity::Mu ? m.mu() : 2 * m.mu() + m.lambda();
   std::vector<std::unique_ptr<KluFactorization>> factors;
   for (int k = 0; k < dim; ++k) {
     CsrPattern pattern;

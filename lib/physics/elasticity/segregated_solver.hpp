@@ -17,8 +17,8 @@ namespace rfmems {
 struct SegregatedOptions {
   enum class Diffusivity { Mu, TwoMuPlusLambda };
   Diffusivity diffusivity = Diffusivity::TwoMuPlusLambda;
-  Real relaxation = 1.0;            // alpha
-  Real relative_tolerance = 1e-8;   // on ||R||_inf / ||R(u0)||_inf
+  Real relaxation = 1.0;           // alpha
+  Real relative_tolerance = 1e-8;  // on ||R||_inf / ||R(u0)||_inf
   int max_outer_iterations = 100000;
 };
 

@@ -3,9 +3,10 @@
 // See electrostatic_solver.hpp for the discretisation.
 #include "physics/electrostatics/electrostatic_solver.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
-#include <fmt/format.h>
 
 #include "core/error.hpp"
 #include "fv/polynomial_reconstruction.hpp"
@@ -33,7 +34,8 @@ ElectrostaticSolver::ElectrostaticSolver(const Mesh& mesh,
                                          ElectrostaticsOptions options)
     : mesh_(mesh), options_(options) {
   if (!(options_.permittivity > 0))
-    throw InputError(fmt::format("electrostatics: permittivity {} is not > 0", options_.permittivity));
+    throw InputError(
+        fmt::format("electrostatics: permittivity {} is not > 0", options_.permittivity));
   if (options_.reconstruction_degree < 0 || options_.reconstruction_degree > 2)
     throw InputError(fmt::format("electrostatics: reconstruction degree {} is not 0, 1 or 2",
                                  options_.reconstruction_degree));
@@ -46,7 +48,8 @@ ElectrostaticSolver::ElectrostaticSolver(const Mesh& mesh,
   for (const Patch& patch : patches) {
     auto it = boundaries.find(patch.name);
     if (it == boundaries.end())
-      throw InputError(fmt::format("electrostatics: no boundary condition for patch '{}'", patch.name));
+      throw InputError(
+          fmt::format("electrostatics: no boundary condition for patch '{}'", patch.name));
     boundary_.push_back(it->second);
     const auto kind = it->second.kind;
     has_potential = has_potential || kind == PotentialBoundary::Kind::Potential;
@@ -115,7 +118,7 @@ void ElectrostaticSolver::solve(const std::function<Real(const Vec3&)>& charge_d
         mesh_,
         [&](Index f) {
           return boundary_[mesh_.face_patch(f)].kind == Kind::ZeroFlux ? BoundaryPoint::Mirror
-                                                                        : BoundaryPoint::Value;
+                                                                       : BoundaryPoint::Value;
         },
         options_.reconstruction_degree);
 
@@ -132,9 +135,10 @@ void ElectrostaticSolver::solve(const std::function<Real(const Vec3&)>& charge_d
       const Index N = mesh_.face_neighbour(f);
       const Real dn = (mesh_.cell_centroid(N) - mesh_.cell_centroid(P)).dot(n);
       if (!(dn > 0))
-        throw MeshError(fmt::format("electrostatics: face {} at ({:.4g}, {:.4g}, {:.4g}): the "
-                                    "centroids of cells {} and {} are not on opposite sides",
-                                    f, xf.x(), xf.y(), xf.z(), P, N));
+        throw MeshError(
+            fmt::format("electrostatics: face {} at ({:.4g}, {:.4g}, {:.4g}): the "
+                        "centroids of cells {} and {} are not on opposite sides",
+                        f, xf.x(), xf.y(), xf.z(), P, N));
       add_reconstruction(F, P, xf, -eps * area / dn, 0.5 * eps * area * n);
       add_reconstruction(F, N, xf, eps * area / dn, 0.5 * eps * area * n);
       continue;
@@ -164,8 +168,9 @@ void ElectrostaticSolver::solve(const std::function<Real(const Vec3&)>& charge_d
       add_row(floating_unknown_[p], flux[f], 1.0);
     rhs[floating_unknown_[p]] += boundary_[p].value;
   }
-  std::sort(entries.begin(), entries.end(),
-            [](const auto& a, const auto& b) { return a.first != b.first ? a.first < b.first : a.second.first < b.second.first; });
+  std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
+    return a.first != b.first ? a.first < b.first : a.second.first < b.second.first;
+  });
   CsrPattern pattern;
   pattern.row_ptr.assign(n_unknowns_ + 1, 0);
   std::vector<Real> values;
@@ -186,8 +191,8 @@ void ElectrostaticSolver::solve(const std::function<Real(const Vec3&)>& charge_d
 
   // Factorise: reuse the symbolic analysis when only the values changed.
   start = std::chrono::steady_clock::now();
-  stats_.symbolic_reused = lu_ && pattern.row_ptr == pattern_.row_ptr &&
-                           pattern.col_idx == pattern_.col_idx;
+  stats_.symbolic_reused =
+      lu_ && pattern.row_ptr == pattern_.row_ptr && pattern.col_idx == pattern_.col_idx;
   if (stats_.symbolic_reused) {
     lu_->refactor(values);
   } else {
@@ -219,7 +224,8 @@ Real ElectrostaticSolver::patch_potential(const std::string& name) const {
   const PotentialBoundary& bc = boundary_[p];
   if (floating_unknown_[p] >= 0) return solution_.at(floating_unknown_[p]);
   if (bc.kind == PotentialBoundary::Kind::Potential && !bc.field) return bc.value;
-  throw InputError(fmt::format("electrostatics: patch '{}' is not a conductor at one potential", name));
+  throw InputError(
+      fmt::format("electrostatics: patch '{}' is not a conductor at one potential", name));
 }
 
 Vec3 ElectrostaticSolver::reconstructed_gradient(Index c, const Vec3& x) const {

@@ -32,7 +32,7 @@ std::vector<Real> patch_node_x(const Mesh& mesh, const std::string& patch);
 
 // For each node to_nodes[i] of mesh `to`, the node of `from_nodes` in mesh `from` at the
 // same position (KD-tree); throws MeshError if the nearest is farther than tolerance.
-std::vector<Index> match_nodes(const Mesh& from, std::span<const Index> from_nodes,
-                               const Mesh& to, std::span<const Index> to_nodes, Real tolerance);
+std::vector<Index> match_nodes(const Mesh& from, std::span<const Index> from_nodes, const Mesh& to,
+                               std::span<const Index> to_nodes, Real tolerance);
 
 }  // namespace rfmems

@@ -20,10 +20,10 @@
 namespace rfmems {
 
 struct ParallelPlateLaw {
-  Real dielectric_thickness = 0;      // t_d [m]
-  Real dielectric_permittivity = 1;   // eps_r
-  Real fringing_factor = 0;           // f (0: no fringing correction)
-  Real width = 0;                     // b [m] (used with fringing only)
+  Real dielectric_thickness = 0;     // t_d [m]
+  Real dielectric_permittivity = 1;  // eps_r
+  Real fringing_factor = 0;          // f (0: no fringing correction)
+  Real width = 0;                    // b [m] (used with fringing only)
 
   Real electrical_gap(Real g) const { return g + dielectric_thickness / dielectric_permittivity; }
 
@@ -40,7 +40,9 @@ struct ParallelPlateLaw {
   }
 
  private:
-  Real fringe(Real ge) const { return fringing_factor > 0 ? 1 + fringing_factor * ge / width : 1.0; }
+  Real fringe(Real ge) const {
+    return fringing_factor > 0 ? 1 + fringing_factor * ge / width : 1.0;
+  }
 };
 
 }  // namespace rfmems

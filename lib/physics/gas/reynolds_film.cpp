@@ -102,8 +102,8 @@ void ReynoldsFilm::check_state(std::span<const Real> p, std::span<const Real> ga
       throw RecoverableError("ReynoldsFilm: gap " + std::to_string(gap[c]) + " m at cell " +
                              std::to_string(c) + " (the plate touches the substrate)");
     if (!(p[c] > 0))
-      throw RecoverableError("ReynoldsFilm: pressure " + std::to_string(p[c]) +
-                             " Pa at cell " + std::to_string(c));
+      throw RecoverableError("ReynoldsFilm: pressure " + std::to_string(p[c]) + " Pa at cell " +
+                             std::to_string(c));
   }
 }
 
@@ -132,8 +132,7 @@ void ReynoldsFilm::residual(std::span<const Real> p, std::span<const Real> p_rat
 
 void ReynoldsFilm::pressure_jacobian(Real c_j, std::span<const Real> p,
                                      std::span<const Real> /*p_rate*/, std::span<const Real> gap,
-                                     std::span<const Real> gap_rate,
-                                     std::span<Real> values) const {
+                                     std::span<const Real> gap_rate, std::span<Real> values) const {
   check_state(p, gap);
   const Real pa = gas_.ambient_pressure;
   std::fill(values.begin(), values.end(), 0.0);

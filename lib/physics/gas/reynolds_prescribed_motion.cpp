@@ -120,8 +120,8 @@ std::vector<Real> ReynoldsPrescribedMotion::consistent_rate(Real t, std::span<co
   std::vector<Real> zero(size(), 0.0), r(size()), yp(size());
   residual(t, y, zero, r);
   for (Index c = 0; c < size(); ++c) {
-    Real storage = film_.mesh().cell_volume(c) *
-                   (unknown_ == Unknown::Pressure ? g_[c] : reference_gap_);
+    Real storage =
+        film_.mesh().cell_volume(c) * (unknown_ == Unknown::Pressure ? g_[c] : reference_gap_);
     yp[c] = -r[c] / storage;
   }
   return yp;

@@ -585,8 +585,8 @@ Real PlateOperator::deflection_weights(Index c, const Vec3& x, Real t,
     if (p.kind == StencilPoint::Kind::Cell)
       terms.push_back({3 * p.cell + kW, value[j]});
     else
-      constant +=
-          value[j] * bc_value(boundaries_[mesh_.face_patch(p.face)], mesh_.face_centroid(p.face), t)[0];
+      constant += value[j] * bc_value(boundaries_[mesh_.face_patch(p.face)],
+                                      mesh_.face_centroid(p.face), t)[0];
   }
   terms.push_back({3 * c + kW, own});
   return constant;

@@ -63,8 +63,14 @@ using BoundaryReader = std::function<BoundaryEntry(const CaseNode&)>;
 
 const std::map<std::string, BoundaryReader>& boundary_readers() {
   static const std::map<std::string, BoundaryReader> readers = {
-      {"clamped", [](const CaseNode&) { return BoundaryEntry{{Kind::Clamped, {}}, 0.0}; }},
-      {"free", [](const CaseNode&) { return BoundaryEntry{{Kind::Free, {}}, 0.0}; }},
+      {"clamped",
+       [](const CaseNode&) {
+         return BoundaryEntry{{Kind::Clamped, {}}, 0.0};
+       }},
+      {"free",
+       [](const CaseNode&) {
+         return BoundaryEntry{{Kind::Free, {}}, 0.0};
+       }},
       {"simply_supported",
        [](const CaseNode& e) { return read_kinematic(Kind::SimplySupportedHard, e, false); }},
       {"simply_supported_soft",
@@ -100,8 +106,7 @@ ScalarField read_pressure(const CaseNode& root, Real& load_time) {
   return [q, ramp](const Vec3&, Real t) { return ramp_factor(t, ramp) * q; };
 }
 
-void add_point_loads(const CaseNode& root, const Mesh& mesh, PlateOperator& op,
-                     Real& load_time) {
+void add_point_loads(const CaseNode& root, const Mesh& mesh, PlateOperator& op, Real& load_time) {
   if (!root.has("point_loads")) return;
   const CaseNode list = root.child("point_loads");
   const CasePointFinder finder(mesh);
@@ -180,7 +185,8 @@ std::vector<Vec3> PlateScene::probe_values(const std::vector<Probe>& probes, Rea
   std::vector<Vec3> values;
   for (const Probe& p : probes) {
     const Vec3& xc = mesh->cell_centroid(p.cell);
-    const Vec3 beta_c(y[3 * p.cell + PlateOperator::kBetaX], y[3 * p.cell + PlateOperator::kBetaY], 0);
+    const Vec3 beta_c(y[3 * p.cell + PlateOperator::kBetaX], y[3 * p.cell + PlateOperator::kBetaY],
+                      0);
     const Vec3 beta = beta_c + op->rotation_gradient_at(p.cell, xc, t, y) * (p.at - xc);
     values.emplace_back(op->deflection_at(p.cell, p.at, t, y), beta.x(), beta.y());
   }
@@ -212,7 +218,8 @@ std::vector<GapPoint> cell_gap_points(const Mesh& mesh, const PlateOperator& op,
     points.push_back(std::move(g));
   };
   if (nodes.size() == 3) {
-    const Vec3 &a = mesh.nodes()[nodes[0]], &b = mesh.nodes()[nodes[1]], &d = mesh.nodes()[nodes[2]];
+    const Vec3 &a = mesh.nodes()[nodes[0]], &b = mesh.nodes()[nodes[1]],
+               &d = mesh.nodes()[nodes[2]];
     for (const Vec3& corner : {a, b, d}) add(1.0 / 20, corner);
     for (const Vec3& midpoint : {Vec3(0.5 * (a + b)), Vec3(0.5 * (b + d)), Vec3(0.5 * (d + a))})
       add(2.0 / 15, midpoint);
@@ -247,9 +254,11 @@ std::vector<GapPoint> cell_gap_points(const Mesh& mesh, const PlateOperator& op,
 std::vector<GapElement> plate_gap_elements(const Mesh& mesh, const PlateOperator& op) {
   std::vector<GapElement> elements;
   for (Index c = 0; c < mesh.n_owned_cells(); ++c) {
-    GapElement e{3 * c + PlateOperator::kW, mesh.cell_volume(c),
+    GapElement e{3 * c + PlateOperator::kW,
+                 mesh.cell_volume(c),
                  Vec3::Constant(std::numeric_limits<Real>::infinity()),
-                 Vec3::Constant(-std::numeric_limits<Real>::infinity()), {}};
+                 Vec3::Constant(-std::numeric_limits<Real>::infinity()),
+                 {}};
     for (Index node : mesh.cell_nodes(c)) {
       e.lo = e.lo.cwiseMin(mesh.nodes()[node]);
       e.hi = e.hi.cwiseMax(mesh.nodes()[node]);

@@ -24,11 +24,12 @@ std::vector<CaseNode> patch_entries(const CaseNode& node, const Mesh& mesh) {
   std::vector<CaseNode> entries;
   for (const std::string& patch : patches) {
     if (!node.has(patch))
-      node.fail(patch, fmt::format("mesh patch '{}' has no boundary condition (given: {}; mesh "
-                                   "patches: {})",
-                                   patch,
-                                   given.empty() ? "none" : fmt::format("{}", fmt::join(given, ", ")),
-                                   fmt::join(patches, ", ")));
+      node.fail(
+          patch,
+          fmt::format("mesh patch '{}' has no boundary condition (given: {}; mesh "
+                      "patches: {})",
+                      patch, given.empty() ? "none" : fmt::format("{}", fmt::join(given, ", ")),
+                      fmt::join(patches, ", ")));
     entries.push_back(node.child(patch));
   }
   return entries;

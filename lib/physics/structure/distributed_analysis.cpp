@@ -4,9 +4,9 @@
 
 #include "core/error.hpp"
 #include "parallel/distributed_structural_systems.hpp"
-#include "physics/structure/output_schedule.hpp"
 #include "physics/elasticity/distributed_elasticity.hpp"
 #include "physics/plate/distributed_plate.hpp"
+#include "physics/structure/output_schedule.hpp"
 #include "solvers/distributed_ida_integrator.hpp"
 #include "solvers/distributed_static_solve.hpp"
 

@@ -4,8 +4,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <memory>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "core/error.hpp"
@@ -52,7 +52,8 @@ AnalysisStats run_static(StructuralModel& model, const AnalysisSettings& setting
 // The first-order system for IDA: full inertia, or the quasi-static components algebraic.
 std::unique_ptr<SystemOperator> first_order_system(StructuralModel& model) {
   const std::vector<bool> quasi_static = model.quasi_static_components();
-  const bool reduced = std::find(quasi_static.begin(), quasi_static.end(), true) != quasi_static.end();
+  const bool reduced =
+      std::find(quasi_static.begin(), quasi_static.end(), true) != quasi_static.end();
   if (reduced) return std::make_unique<ReducedInertiaSystem>(model.structure(), quasi_static);
   return std::make_unique<FirstOrderSystem>(model.structure());
 }
@@ -99,10 +100,9 @@ AnalysisStats run_transient(StructuralModel& model, const AnalysisSettings& sett
   };
   emit(0, 0.0);
 
-  const long n_intervals =
-      advance_through_outputs(ida, dt, t_end, emit, [&](Real t, const IntegratorStats& s) {
-        progress.update(t, s.last_step, s.steps);
-      });
+  const long n_intervals = advance_through_outputs(
+      ida, dt, t_end, emit,
+      [&](Real t, const IntegratorStats& s) { progress.update(t, s.last_step, s.steps); });
   stats.transient = ida.stats();
   stats.n_outputs = static_cast<int>(n_intervals) + 1;
   stats.final_time = t_end;
@@ -112,8 +112,7 @@ AnalysisStats run_transient(StructuralModel& model, const AnalysisSettings& sett
 }  // namespace
 
 AnalysisType read_analysis_type(const CaseNode& root) {
-  const std::string type =
-      root.child("analysis").get_choice("type", {"static", "transient"});
+  const std::string type = root.child("analysis").get_choice("type", {"static", "transient"});
   return type == "static" ? AnalysisType::Static : AnalysisType::Transient;
 }
 
@@ -126,13 +125,12 @@ AnalysisSettings read_analysis_settings(const CaseNode& root, const StructuralMo
   if (s.type == AnalysisType::Static) {
     const bool newton = model.static_method() == "newton";
     s.tolerance = solver.get_real("tolerance", 1e-6, Range::open(0.0, 1.0));
-    s.max_iterations = solver.get_int("max_iterations", newton ? 50 : 100000,
-                                      Range::closed(1, 1e9));
+    s.max_iterations =
+        solver.get_int("max_iterations", newton ? 50 : 100000, Range::closed(1, 1e9));
     return s;
   }
   s.end_time = analysis.get_quantity("end_time", Dimension::Time, Range::positive());
-  s.output_interval =
-      analysis.get_quantity("output_interval", Dimension::Time, Range::positive());
+  s.output_interval = analysis.get_quantity("output_interval", Dimension::Time, Range::positive());
   analysis.require(s.output_interval <= s.end_time, "output_interval",
                    "must not exceed analysis.end_time");
   analysis.require(s.end_time / s.output_interval <= 1e6, "output_interval",
@@ -140,12 +138,12 @@ AnalysisSettings read_analysis_settings(const CaseNode& root, const StructuralMo
   s.ida.rtol = solver.get_real("rtol", 1e-6, Range::open(0.0, 1.0));
   // Small-strain displacements are up to ~1e-4 of the body's size: allow rtol of that.
   s.ida.atol = solver.get_quantity("atol", Dimension::Length,
-                                   s.ida.rtol * 1e-4 * mesh_extent(model.structure_mesh()), Range::positive());
+                                   s.ida.rtol * 1e-4 * mesh_extent(model.structure_mesh()),
+                                   Range::positive());
   // BDF3-5 are not A-stable: on undamped elastodynamics (eigenvalues on the imaginary axis)
   // IDA collapses its step at those orders, so structural transients default to 2.
   s.ida.max_order = static_cast<int>(solver.get_int("max_order", 2, Range::closed(1, 5)));
-  s.ida.fixed_step =
-      solver.get_quantity("fixed_step", Dimension::Time, 0.0, Range::non_negative());
+  s.ida.fixed_step = solver.get_quantity("fixed_step", Dimension::Time, 0.0, Range::non_negative());
   return s;
 }
 

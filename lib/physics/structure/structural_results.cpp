@@ -29,8 +29,7 @@ void StructuralResults::finish(const CaseFile& case_file, const std::string& cas
                               {components.begin(), components.end()});
   std::map<std::string, double> numbers;
   const Json solver = solver_stats_json(stats);  // named: items() refers into it
-  for (const auto& [key, value] : solver.items())
-    numbers["solver_" + key] = value.get<double>();
+  for (const auto& [key, value] : solver.items()) numbers["solver_" + key] = value.get<double>();
   numbers["wall_time_s"] = wall_seconds;
   writer_.write_metadata({{"case_file", case_file.path()},
                           {"case_name", case_name},

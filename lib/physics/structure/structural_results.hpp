@@ -30,8 +30,8 @@ class StructuralResults : public AnalysisObserver {
   void output(int index, Real t, std::span<const Real> u, std::span<const Real> v) override;
 
   // Writes the probe series and the metadata and moves the file into place.
-  void finish(const CaseFile& case_file, const std::string& case_name,
-              const AnalysisStats& stats, Real wall_seconds);
+  void finish(const CaseFile& case_file, const std::string& case_name, const AnalysisStats& stats,
+              Real wall_seconds);
 
   const std::vector<Probe>& probes() const { return probes_; }
   const ProbeHistory& history() const { return history_; }

@@ -70,7 +70,8 @@ void check(CollisionModel model) {
     Vec5 Up = U, Um = U;
     Up[j] += h;
     Um[j] -= h;
-    const std::vector<Real> fp = equilibrium_of(Up, A, gas, grid), fm = equilibrium_of(Um, A, gas, grid);
+    const std::vector<Real> fp = equilibrium_of(Up, A, gas, grid),
+                            fm = equilibrium_of(Um, A, gas, grid);
     Real diff = 0, scale = 0;
     std::vector<Real> column(N);
     for (Index k = 0; k < N; ++k) {
@@ -82,7 +83,8 @@ void check(CollisionModel model) {
     EXPECT_LT(diff, 1e-6 * scale) << collision_model_name(model) << " column " << j;
     const Vec5 mom = conserved_moments(grid, column);
     for (int i = 0; i < 5; ++i)
-      EXPECT_NEAR(mom[i], i == j ? 1.0 : 0.0, 1e-10) << collision_model_name(model) << " " << i << j;
+      EXPECT_NEAR(mom[i], i == j ? 1.0 : 0.0, 1e-10)
+          << collision_model_name(model) << " " << i << j;
   }
 }
 

@@ -23,9 +23,8 @@ FaceGraph skewed_mesh() {
   spec.n[0] = 12;
   spec.n[1] = 10;
   spec.grading[0] = 2.0;
-  return face_graph_of(make_structured_mesh(spec, [](const Vec3& x) {
-    return Vec3(x.x() + 0.2 * x.y() * x.y(), x.y(), x.z());
-  }));
+  return face_graph_of(make_structured_mesh(
+      spec, [](const Vec3& x) { return Vec3(x.x() + 0.2 * x.y() * x.y(), x.y(), x.z()); }));
 }
 
 TEST(FasTransfer, ConservationAndInjection) {

@@ -31,9 +31,12 @@ FaceGraph box(int nx, int ny, Real size) {
 std::vector<KineticBoundary> heat_transfer_walls(const FaceGraph& g) {
   std::vector<KineticBoundary> bcs;
   for (const std::string& name : g.patch_names) {
-    if (name == "bottom") bcs.push_back(KineticBoundary::diffuse_wall(kT0));
-    else if (name == "top") bcs.push_back(KineticBoundary::diffuse_wall(1.2 * kT0));
-    else bcs.push_back(KineticBoundary::specular_wall());
+    if (name == "bottom")
+      bcs.push_back(KineticBoundary::diffuse_wall(kT0));
+    else if (name == "top")
+      bcs.push_back(KineticBoundary::diffuse_wall(1.2 * kT0));
+    else
+      bcs.push_back(KineticBoundary::specular_wall());
   }
   return bcs;
 }
@@ -129,11 +132,12 @@ TEST(TransientKinetic, HeatTransferReachesTheSteadyState) {
   const Real mass_drift = std::abs(op.total_mass(f_end) / mass0 - 1);
   const Real krylov_per_newton =
       static_cast<Real>(stats.linear_iters) / static_cast<Real>(stats.newton_iters);
-  std::printf("transient vs steady: max |dT/T| %.2e, |drho/rho| %.2e, mass drift %.2e; "
-              "%ld steps, %ld Newton, %.2f Krylov iterations per Newton, %ld preconditioner "
-              "setups\n",
-              dT, drho, mass_drift, stats.steps, stats.newton_iters, krylov_per_newton,
-              system.preconditioner_setups());
+  std::printf(
+      "transient vs steady: max |dT/T| %.2e, |drho/rho| %.2e, mass drift %.2e; "
+      "%ld steps, %ld Newton, %.2f Krylov iterations per Newton, %ld preconditioner "
+      "setups\n",
+      dT, drho, mass_drift, stats.steps, stats.newton_iters, krylov_per_newton,
+      system.preconditioner_setups());
   EXPECT_LE(dT, 1e-5);
   EXPECT_LE(drho, 1e-5);
   EXPECT_LE(mass_drift, 1e-6);

@@ -41,7 +41,8 @@ struct Fixture {
     law.fringing_factor = 0.65;
     law.width = 40e-6;
     act = std::make_unique<ParallelPlateActuation>(
-        *plate.op, elements_over_electrode(plate.gap_elements(""), {30e-6, 70e-6}, true), kGap, law);
+        *plate.op, elements_over_electrode(plate.gap_elements(""), {30e-6, 70e-6}, true), kGap,
+        law);
     act->set_voltage_squared([](Real t) { return (40.0 + 1e6 * t) * (40.0 + 1e6 * t); });
   }
   // A deflected plate state: w up to 0.3 gap down, rotations of its slope's size.
@@ -129,11 +130,12 @@ TEST(CouplingJacobian, PlateParallelPlateReynoldsMonolithic) {
     // Round-off of the y' differences in the rows y' - v (c_j eps |y'| / step): ~2e-6.
     EXPECT_LT(check.max_row_relative, 1e-5) << "ambient " << ambient;
     EXPECT_LT(check.max_entry_relative, 1e-4) << "ambient " << ambient;
-    std::printf("ambient %g Pa: max row-relative difference %.2e (row %ld of %ld, film from %ld), "
-                "entry-relative %.2e (%ld, %ld)\n",
-                ambient, check.max_row_relative, static_cast<long>(check.worst_row),
-                static_cast<long>(system.size()), static_cast<long>(m), check.max_entry_relative,
-                static_cast<long>(check.worst_entry_row), static_cast<long>(check.worst_entry_col));
+    std::printf(
+        "ambient %g Pa: max row-relative difference %.2e (row %ld of %ld, film from %ld), "
+        "entry-relative %.2e (%ld, %ld)\n",
+        ambient, check.max_row_relative, static_cast<long>(check.worst_row),
+        static_cast<long>(system.size()), static_cast<long>(m), check.max_entry_relative,
+        static_cast<long>(check.worst_entry_row), static_cast<long>(check.worst_entry_col));
   }
 }
 
@@ -216,12 +218,14 @@ TEST(CouplingJacobian, ContactPenaltyStiffness) {
   auto contact_error = [&](SystemOperator& op) {
     const std::vector<double> values = test_support::analytic_jacobian(op, 1e-6, 0.0, y, yp);
     std::vector<double> part(y.size(), 0.0);
-    for (const GapElement& e : f.act->elements()) part[e.dof] += contact_diagonal_part(*f.act, y, e, v2);
+    for (const GapElement& e : f.act->elements())
+      part[e.dof] += contact_diagonal_part(*f.act, y, e, v2);
     double worst = 0;
-    test_support::for_each_jacobian_entry(
-        op, 1e-6, 0.0, y, yp, steps, values, [&](Index i, Index j, double fd, double an) {
-          if (i == j && part[i] > 0) worst = std::max(worst, std::abs(fd - an) / part[i]);
-        });
+    test_support::for_each_jacobian_entry(op, 1e-6, 0.0, y, yp, steps, values,
+                                          [&](Index i, Index j, double fd, double an) {
+                                            if (i == j && part[i] > 0)
+                                              worst = std::max(worst, std::abs(fd - an) / part[i]);
+                                          });
     return worst;
   };
   const double good = contact_error(system);
@@ -252,10 +256,11 @@ TEST(CouplingJacobian, PlateReynoldsInContactMonolithic) {
   randomise_film_state(m, static_cast<Index>(w.size()), gas.ambient_pressure, rng, y, yp, steps,
                        scales);
   const auto check = test_support::check_jacobian(system, 1e-6, 3e6, y, yp, steps, scales);
-  std::printf("film + contact: row-relative %.2e (row %ld), entry-relative %.2e (%ld, %ld), "
-              "film from %ld\n",
-              check.max_row_relative, (long)check.worst_row, check.max_entry_relative,
-              (long)check.worst_entry_row, (long)check.worst_entry_col, (long)m);
+  std::printf(
+      "film + contact: row-relative %.2e (row %ld), entry-relative %.2e (%ld, %ld), "
+      "film from %ld\n",
+      check.max_row_relative, (long)check.worst_row, check.max_entry_relative,
+      (long)check.worst_entry_row, (long)check.worst_entry_col, (long)m);
   EXPECT_LT(check.max_row_relative, 1e-5);
   EXPECT_LT(check.max_entry_relative, 1e-4);
 }

@@ -29,7 +29,8 @@ TEST(LogDecrement, RecoversDampingRatioAndFrequency) {
 
 TEST(LogDecrement, NothingToMeasureWithoutOscillation) {
   std::vector<DynamicSample> h;
-  for (int i = 0; i <= 100; ++i) h.push_back({i * 1e-8, -1e-7 * (1 - std::exp(-i / 20.0)), 0, 0, 0});
+  for (int i = 0; i <= 100; ++i)
+    h.push_back({i * 1e-8, -1e-7 * (1 - std::exp(-i / 20.0)), 0, 0, 0});
   EXPECT_EQ(log_decrement(h).swings, 0);
 }
 

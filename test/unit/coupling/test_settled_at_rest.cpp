@@ -56,8 +56,8 @@ TEST(SettledAtRest, OverdampedCreepSettlesAtItsEquilibrium) {
 TEST(SettledAtRest, SlowPassageJustAboveTheFoldDoesNotSettle) {
   // mu: the imbalance at the fold, 6 % of the initial rate (1.03 V_qs); l sets the curvature.
   const double r0 = -1.0, mu = 0.06, l = kFold * kFold / (1 - mu);  // rate(0) = r0
-  const Watched w = watch([&](double x) { return r0 * (mu + (x - kFold) * (x - kFold) / l); },
-                          1e-11, 2e-6);
+  const Watched w =
+      watch([&](double x) { return r0 * (mu + (x - kFold) * (x - kFold) / l); }, 1e-11, 2e-6);
   EXPECT_FALSE(w.settled);
 }
 
@@ -93,6 +93,7 @@ TEST(SettledAtRest, NoRestAboveTheFoldVoltage) {
   EXPECT_FALSE(watch(rate, 1e-10, 2e-5, v, v_qs).settled);
   // Below V_qs the bound does not get in the way (the creep of the first test).
   const double tau = 1e-6, x_s = 0.6 * kFold;
-  EXPECT_TRUE(watch([&](double x) { return (x_s - x) / tau; }, 1e-3 * tau, 50 * tau, 0.99 * v_qs,
-                    v_qs).settled);
+  EXPECT_TRUE(
+      watch([&](double x) { return (x_s - x) / tau; }, 1e-3 * tau, 50 * tau, 0.99 * v_qs, v_qs)
+          .settled);
 }

@@ -39,7 +39,8 @@ Watched watch(const std::function<double(double)>& x, double t_end) {
     double g[2];
     rule.roots(x(t), velocity(t), g);
     int flag[2];
-    for (int k = 0; k < 2; ++k) flag[k] = g_prev[k] < 0 && g[k] >= 0 ? 1 : g_prev[k] > 0 && g[k] <= 0 ? -1 : 0;
+    for (int k = 0; k < 2; ++k)
+      flag[k] = g_prev[k] < 0 && g[k] >= 0 ? 1 : g_prev[k] > 0 && g[k] <= 0 ? -1 : 0;
     if (flag[0] > 0 && x(t) < 0) ++out.velocity_reversals;
     if ((flag[0] != 0 || flag[1] != 0) && rule.at_root(t, x(t), flag[0], flag[1])) {
       out.turned = true;
@@ -52,14 +53,18 @@ Watched watch(const std::function<double(double)>& x, double t_end) {
 }
 
 // A weakly damped higher mode at 7 w from rest, 0.5 % of the static deflection.
-double higher_mode(double t) { return 0.005 * kStatic * (1 - step_response_shape(t, 0.005, 7 * kW)); }
+double higher_mode(double t) {
+  return 0.005 * kStatic * (1 - step_response_shape(t, 0.005, 7 * kW));
+}
 
 }  // namespace
 
 TEST(TurningBack, HigherModeWigglesOnADampedCreepDoNotTurn) {
   // The creep: x_s (1 - phi) at zeta = 1.5 (the fundamental past the point where the film and
   // the electrostatic softening make it overdamped), monotone towards x_s.
-  auto x = [](double t) { return kStatic * (1 - step_response_shape(t, 1.5, kW)) + higher_mode(t); };
+  auto x = [](double t) {
+    return kStatic * (1 - step_response_shape(t, 1.5, kW)) + higher_mode(t);
+  };
   const Watched w = watch(x, 40 * 2 * M_PI / kW);
   EXPECT_GT(w.velocity_reversals, 20);  // the former rule's trigger is there
   EXPECT_FALSE(w.turned);
@@ -67,7 +72,9 @@ TEST(TurningBack, HigherModeWigglesOnADampedCreepDoNotTurn) {
 
 TEST(TurningBack, UnderdampedReturnTurnsAtTheFirstExtreme) {
   const double zeta = 0.0115, wd = kW * std::sqrt(1 - zeta * zeta);
-  auto x = [&](double t) { return kStatic * (1 - step_response_shape(t, zeta, kW)) + higher_mode(t); };
+  auto x = [&](double t) {
+    return kStatic * (1 - step_response_shape(t, zeta, kW)) + higher_mode(t);
+  };
   const Watched w = watch(x, 2 * 2 * M_PI / kW);
   ASSERT_TRUE(w.turned);
   // The extreme of the sum: the higher mode's phase moves it by at most its own period.

@@ -66,7 +66,8 @@ TEST(CreepLaw, DerivativesMatchCentralDifferences) {
       const Real eps = 1e-8 * (k + 1) * (law.B > 1e3 ? 1.0 : 1e4);
       const CreepRate d = law.rate_stress_derivative(sigma, eps, direction);
       const Real h = 1e-3 * 3e8 * 1e-3;
-      const CreepRate p = law.rate(sigma + h * direction, eps), m = law.rate(sigma - h * direction, eps);
+      const CreepRate p = law.rate(sigma + h * direction, eps),
+                      m = law.rate(sigma - h * direction, eps);
       const Mat3 fd = (p.strain_rate - m.strain_rate) / (2 * h);
       EXPECT_LT(max_abs(fd - d.strain_rate), 1e-6 * max_abs(d.strain_rate));
       EXPECT_NEAR((p.effective_rate - m.effective_rate) / (2 * h), d.effective_rate,
@@ -107,8 +108,8 @@ TEST(MaterialPointCreep, UniaxialCreepStrainMatchesTheClosedForm) {
     CreepLaw law;
     Real stress;
   };
-  for (const Case& c : {Case{sliding_law(), 1.08e8}, Case{sliding_law(), 2e8},
-                        Case{coble_law(), 1.5e8}}) {
+  for (const Case& c :
+       {Case{sliding_law(), 1.08e8}, Case{sliding_law(), 2e8}, Case{coble_law(), 1.5e8}}) {
     Mat3 sigma = Mat3::Zero();
     sigma(0, 0) = c.stress;
     MaterialPointCreep point(c.law, [&](Real) { return sigma; });

@@ -56,8 +56,8 @@ std::unique_ptr<Plate> make_plate(Real pressure, bool hold) {
     h.initial_gap = kGap;
     h.voltage = kVoltage;
     for (Index c = 0; c < p->mesh.n_cells(); ++c)
-      h.elements.push_back({3 * c + PlateOperator::kW, p->mesh.cell_volume(c), Vec3::Zero(),
-                            Vec3::Zero(), {}});
+      h.elements.push_back(
+          {3 * c + PlateOperator::kW, p->mesh.cell_volume(c), Vec3::Zero(), Vec3::Zero(), {}});
     p->system->set_hold_voltage(h);
   }
   Real best = 1e300;
@@ -98,8 +98,8 @@ TEST(PlateCreepHoldVoltage, TheGrowingLoadAcceleratesCreepAndBothIntegratorsAgre
   auto held = make_plate(0.0, true);
   auto pressed = make_plate(p0, false);
   const CreepRun hold = run_implicit(*held), constant = run_implicit(*pressed);
-  std::printf("hold %g V: w_el %.5e m, w_p %.5e m (ratio %.4e); min gap %.5e -> %.5e m\n",
-              kVoltage, hold.w_elastic, hold.w_plastic, hold.w_plastic / hold.w_elastic,
+  std::printf("hold %g V: w_el %.5e m, w_p %.5e m (ratio %.4e); min gap %.5e -> %.5e m\n", kVoltage,
+              hold.w_elastic, hold.w_plastic, hold.w_plastic / hold.w_elastic,
               hold.min_gaps.front(), hold.min_gaps.back());
   std::printf("constant p(g0) = %.4g Pa: w_el %.5e m, w_p %.5e m (ratio %.4e)\n", p0,
               constant.w_elastic, constant.w_plastic, constant.w_plastic / constant.w_elastic);

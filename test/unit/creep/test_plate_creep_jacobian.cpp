@@ -236,11 +236,11 @@ TEST(PlateCreepSystem, JacobianWithHoldVoltageMatchesFiniteDifferences) {
       EXPECT_EQ(widened, 0);
     for (Real c_j : {0.0, 2.5e2}) {
       const auto check = test_support::check_jacobian(system, 0.3, c_j, y, yp, steps, scales);
-      std::printf("gap points %d, c_j %g: entry-relative %.2e, row-relative %.2e\n", at_points,
-                  c_j, check.max_entry_relative, check.max_row_relative);
-      EXPECT_LT(check.max_entry_relative, 1e-3) << "points " << at_points << " c_j " << c_j
-                                                << " row " << check.worst_entry_row << " col "
-                                                << check.worst_entry_col;
+      std::printf("gap points %d, c_j %g: entry-relative %.2e, row-relative %.2e\n", at_points, c_j,
+                  check.max_entry_relative, check.max_row_relative);
+      EXPECT_LT(check.max_entry_relative, 1e-3)
+          << "points " << at_points << " c_j " << c_j << " row " << check.worst_entry_row << " col "
+          << check.worst_entry_col;
       EXPECT_LT(check.max_row_relative, 1e-6)
           << "points " << at_points << " c_j " << c_j << " row " << check.worst_row;
     }

@@ -2,7 +2,8 @@
 // physics/creep/plate_creep_schur_complement.hpp) is the exact inverse: z = J^-1 r against a
 // dense LU of the assembled J, on a small distorted mesh with clamped, hard simply supported,
 // free and loaded edges, at a random state with strongly varying hardening, with and without
-// a hold voltage (at each cell's w, and at the plate's gap points), for a c_j of an IDA step of seconds and one of hours.
+// a hold voltage (at each cell's w, and at the plate's gap points), for a c_j of an IDA step of
+// seconds and one of hours.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>

@@ -34,13 +34,14 @@ std::vector<ElasticityBoundary> mixed_boundaries(const Mesh& mesh) {
   std::vector<ElasticityBoundary> bcs(mesh.patches().size());
   for (std::size_t p = 0; p < bcs.size(); ++p) {
     const std::string& name = mesh.patches()[p].name;
-    if (name == "left") bcs[p] = {ElasticityBoundary::Kind::Fixed, [](const Vec3& x, double t) {
-                                    return Vec3(1e-3 * x.y() * (1 + t), 2e-3, 0.0);
-                                  }};
-    else if (name == "bottom") bcs[p] = {ElasticityBoundary::Kind::Symmetry, {}};
-    else bcs[p] = {ElasticityBoundary::Kind::Traction, [](const Vec3&, double) {
-                     return Vec3(1e5, -2e5, 3e4);
-                   }};
+    if (name == "left")
+      bcs[p] = {ElasticityBoundary::Kind::Fixed,
+                [](const Vec3& x, double t) { return Vec3(1e-3 * x.y() * (1 + t), 2e-3, 0.0); }};
+    else if (name == "bottom")
+      bcs[p] = {ElasticityBoundary::Kind::Symmetry, {}};
+    else
+      bcs[p] = {ElasticityBoundary::Kind::Traction,
+                [](const Vec3&, double) { return Vec3(1e5, -2e5, 3e4); }};
   }
   return bcs;
 }

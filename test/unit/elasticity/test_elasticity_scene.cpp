@@ -45,16 +45,19 @@ std::vector<Real> residual(ElasticityScene& scene, Real t, const std::vector<Rea
   return r;
 }
 
-const std::string kSides = "  left: {type: fixed}\n  top: {type: free}\n  bottom: {type: symmetry}\n";
+const std::string kSides =
+    "  left: {type: fixed}\n  top: {type: free}\n  bottom: {type: symmetry}\n";
 
 TEST(ElasticityScene, PressureIsTractionAgainstTheNormal) {
-  ElasticityScene pressure = scene_of(plate_case(kSides + "  right: {type: pressure, value: 2 MPa}\n"));
+  ElasticityScene pressure =
+      scene_of(plate_case(kSides + "  right: {type: pressure, value: 2 MPa}\n"));
   ElasticityScene traction =
       scene_of(plate_case(kSides + "  right: {type: traction, value: [-2 MPa, 0]}\n"));
   std::vector<Real> u(pressure.op->size());
   for (std::size_t i = 0; i < u.size(); ++i) u[i] = 1e-6 * std::sin(0.7 * static_cast<double>(i));
   const auto rp = residual(pressure, 0, u), rt = residual(traction, 0, u);
-  for (std::size_t i = 0; i < rp.size(); ++i) EXPECT_NEAR(rp[i], rt[i], 1e-9 * std::abs(rt[i]) + 1e-12);
+  for (std::size_t i = 0; i < rp.size(); ++i)
+    EXPECT_NEAR(rp[i], rt[i], 1e-9 * std::abs(rt[i]) + 1e-12);
 }
 
 TEST(ElasticityScene, RampScalesTheLoadLinearly) {
@@ -78,13 +81,18 @@ TEST(ElasticityScene, EveryPatchNeedsExactlyOneEntry) {
   EXPECT_EQ(error_of([] { scene_of(plate_case(kSides)); }),
             "s.yaml: key 'boundaries.right': mesh patch 'right' has no boundary condition "
             "(given: left, top, bottom; mesh patches: left, right, bottom, top)");
-  EXPECT_EQ(error_of([] { scene_of(plate_case(kSides + "  right: {type: free}\n  hole: {type: free}\n")); }),
+  EXPECT_EQ(error_of([] {
+              scene_of(plate_case(kSides + "  right: {type: free}\n  hole: {type: free}\n"));
+            }),
             "s.yaml: key 'boundaries.hole' = {type: free}: the mesh has no patch 'hole' (mesh "
             "patches: left, right, bottom, top)");
-  EXPECT_NE(error_of([] { scene_of(plate_case(kSides + "  right: {type: clamp}\n")); })
-                .find("'boundaries.right.type' = 'clamp': expected one of"),
+  EXPECT_NE(error_of([] {
+              scene_of(plate_case(kSides + "  right: {type: clamp}\n"));
+            }).find("'boundaries.right.type' = 'clamp': expected one of"),
             std::string::npos);
-  EXPECT_EQ(error_of([] { scene_of(plate_case(kSides + "  right: {type: traction, value: [0, 1, 2]}\n")); }),
+  EXPECT_EQ(error_of([] {
+              scene_of(plate_case(kSides + "  right: {type: traction, value: [0, 1, 2]}\n"));
+            }),
             "s.yaml: key 'boundaries.right.value' = [0, 1, 2]: expected 2 components (the mesh is "
             "2D)");
 }
@@ -101,15 +109,17 @@ TEST(ElasticityScene, ModelChecks) {
   text = plate_case(bcs);
   text.replace(text.find("{hypothesis: plane_stress}"), 26,
                "{hypothesis: plane_stress, stress: segregated}");
-  EXPECT_NE(error_of([&] { scene_of(text, AnalysisType::Transient); })
-                .find("the segregated method is for static analyses only"),
+  EXPECT_NE(error_of([&] {
+              scene_of(text, AnalysisType::Transient);
+            }).find("the segregated method is for static analyses only"),
             std::string::npos);
   EXPECT_EQ(scene_of(text).stress, StressMethod::Segregated);
 }
 
 TEST(AnalysisSettings, TransientDefaults) {
   std::string text = plate_case(kSides + "  right: {type: free}\n");
-  text.replace(text.find("{type: static}"), 14, "{type: transient, end_time: 10 ms, output_interval: 1 ms}");
+  text.replace(text.find("{type: static}"), 14,
+               "{type: transient, end_time: 10 ms, output_interval: 1 ms}");
   const CaseFile cf = CaseFile::parse(text, "s.yaml");
   const ElasticityScene scene = build_elasticity_scene(cf.root(), "", AnalysisType::Transient);
   const AnalysisSettings s = read_analysis_settings(cf.root(), scene);
@@ -118,7 +128,7 @@ TEST(AnalysisSettings, TransientDefaults) {
   EXPECT_DOUBLE_EQ(s.output_interval, 0.001);
   EXPECT_DOUBLE_EQ(s.ida.rtol, 1e-6);
   EXPECT_DOUBLE_EQ(s.ida.atol, 1e-6 * 1e-4 * 1.0);  // rtol x 1e-4 x the 1 m plate
-  EXPECT_EQ(s.ida.max_order, 2);  // BDF1-2 for undamped structural dynamics
+  EXPECT_EQ(s.ida.max_order, 2);                    // BDF1-2 for undamped structural dynamics
   EXPECT_EQ(s.ida.fixed_step, 0.0);
   cf.check_all_used();
 }

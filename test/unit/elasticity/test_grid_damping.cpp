@@ -23,7 +23,9 @@ ElasticityScene beam(const std::string& model_extra = "") {
   const std::string text =
       "mesh: {type: rectangle, lower: [0 um, 1.5 um], size: [45 um, 1.5 um], cells: [46, 4]}\n"
       "material: {E: 200 GPa, nu: 0.3, density: 8912 kg/m^3}\n"
-      "model: {structure: plane, hypothesis: plane_stress" + model_extra + "}\n"
+      "model: {structure: plane, hypothesis: plane_stress" +
+      model_extra +
+      "}\n"
       "boundaries: {left: {type: fixed}, right: {type: free}, bottom: {type: free},"
       " top: {type: free}}\n";
   const CaseFile cf = CaseFile::parse(text, "beam.yaml");
@@ -32,7 +34,7 @@ ElasticityScene beam(const std::string& model_extra = "") {
 
 struct Spectrum {
   Real fastest = -std::numeric_limits<Real>::infinity();  // max Re s over all modes
-  Real first_damping_ratio = 0;                            // of the slowest mode
+  Real first_damping_ratio = 0;                           // of the slowest mode
 };
 
 Spectrum spectrum(ElasticityOperator& op) {

@@ -61,7 +61,8 @@ TEST(GapMesh, ConformsToTheBeamAndSplitsTheBottom) {
   for (std::size_t i = 0; i < top_nodes.size(); ++i)
     EXPECT_EQ(beam.nodes()[match[i]], gap.nodes()[top_nodes[i]]);
 
-  Mesh shifted = make_structured_mesh(beam_spec, [](const Vec3& p) { return Vec3(p + Vec3(1e-7, 0, 0)); });
+  Mesh shifted =
+      make_structured_mesh(beam_spec, [](const Vec3& p) { return Vec3(p + Vec3(1e-7, 0, 0)); });
   try {
     match_nodes(shifted, beam_nodes, gap, top_nodes, 1e-9);
     FAIL() << "no MeshError";
@@ -115,9 +116,11 @@ TEST(GapMesh, FourHundredByFortySolveAndRefactorAfterMotion) {
               static_cast<long long>(first.n_unknowns), static_cast<long long>(first.nnz));
   std::printf("first solve:  assembly %.3f s, analyse+factorise %.3f s, solve %.3f s\n",
               first.assembly_seconds, first.factor_seconds, first.solve_seconds);
-  std::printf("after motion: assembly %.3f s, refactorise %.3f s, solve %.3f s (fresh analyse+factorise %.3f s)\n",
-              second.assembly_seconds, second.factor_seconds, second.solve_seconds,
-              fresh.stats().factor_seconds);
+  std::printf(
+      "after motion: assembly %.3f s, refactorise %.3f s, solve %.3f s (fresh analyse+factorise "
+      "%.3f s)\n",
+      second.assembly_seconds, second.factor_seconds, second.solve_seconds,
+      fresh.stats().factor_seconds);
   std::printf("force on the beam: %.4e -> %.4e N/m, min volume ratio %.3f\n", before.force.y(),
               after.force.y(), motion.min_volume_ratio());
 }

@@ -4,10 +4,10 @@
 //   sigma = eps V / g  (minus that on the electrode),  t = -eps V^2/(2 g^2) e_y,
 //   total force -eps V^2 L/(2 g^2) e_y per metre of depth.
 // Asserted on an orthogonal mesh and on a strongly skewed one (cells sheared by up to 60
-// degrees), for reconstruction degrees 1 and 2, and in 3D on sheared hexahedra; the uncorrected two-point flux (degree 0)
-// is asserted to be wrong on the skewed mesh by more than 1 % (the correction matters).
-// Also: a floating plate carrying the charge Q = eps V L/g rises to phi = V; the charges of
-// the two plates are opposite (Gauss); bad boundary input raises InputError.
+// degrees), for reconstruction degrees 1 and 2, and in 3D on sheared hexahedra; the uncorrected
+// two-point flux (degree 0) is asserted to be wrong on the skewed mesh by more than 1 % (the
+// correction matters). Also: a floating plate carrying the charge Q = eps V L/g rises to phi = V;
+// the charges of the two plates are opposite (Gauss); bad boundary input raises InputError.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -62,7 +62,8 @@ Real plate_error(const ElectrostaticSolver& solver) {
 Real potential_error(const Mesh& mesh, const ElectrostaticSolver& solver) {
   Real error = 0;
   for (Index c = 0; c < mesh.n_cells(); ++c)
-    error = std::max(error, std::abs(solver.potential()[c] - V * (mesh.cell_centroid(c).y() + g) / g));
+    error =
+        std::max(error, std::abs(solver.potential()[c] - V * (mesh.cell_centroid(c).y() + g) / g));
   return error / V;
 }
 

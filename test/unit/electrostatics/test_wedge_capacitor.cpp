@@ -83,7 +83,8 @@ TEST(WedgeCapacitor, ForceAndMomentAfterMeshMotion) {
 
   Real worst = 0;
   for (Index c = 0; c < mesh.n_cells(); ++c)
-    worst = std::max(worst, std::abs(solver.potential()[c] - exact_potential(mesh.cell_centroid(c))));
+    worst =
+        std::max(worst, std::abs(solver.potential()[c] - exact_potential(mesh.cell_centroid(c))));
   std::printf("max cell potential error %.3e V (V = %g V)\n", worst, V);
   EXPECT_LT(worst, 1e-3);
 }

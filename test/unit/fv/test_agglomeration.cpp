@@ -101,7 +101,8 @@ void check_hierarchy(const FaceGraph& fine, Index min_cells) {
     g = &a.coarse;
   }
   std::printf("hierarchy:");
-  for (const Agglomeration& a : levels) std::printf(" %lld", static_cast<long long>(a.coarse.n_cells()));
+  for (const Agglomeration& a : levels)
+    std::printf(" %lld", static_cast<long long>(a.coarse.n_cells()));
   std::printf("\n");
   // It stopped because the next level would be too small (or too little reduction).
   const Agglomeration next = agglomerate(*g);
@@ -127,8 +128,9 @@ TEST(Agglomeration, SkewedGradedRectangle) {
   spec.n[1] = 20;
   spec.grading[0] = 3.0;
   spec.grading[1] = 0.5;
-  const FaceGraph fine = face_graph_of(make_structured_mesh(
-      spec, [](const Vec3& x) { return Vec3(x.x() + 0.3 * x.y(), x.y() + 0.1 * std::sin(3 * x.x()), x.z()); }));
+  const FaceGraph fine = face_graph_of(make_structured_mesh(spec, [](const Vec3& x) {
+    return Vec3(x.x() + 0.3 * x.y(), x.y() + 0.1 * std::sin(3 * x.x()), x.z());
+  }));
   check_hierarchy(fine, 10);
 }
 

@@ -103,8 +103,7 @@ MassHistory run(ReynoldsPrescribedMotion::Unknown unknown) {
     std::vector<double> y(ida.y().begin(), ida.y().end());
     h.max_relative_drift = std::max(h.max_relative_drift, std::abs(op.mass(t, y) / mass0 - 1));
     for (double p : op.pressure(t, y))
-      h.max_pressure_swing =
-          std::max(h.max_pressure_swing, std::abs(p / gas.ambient_pressure - 1));
+      h.max_pressure_swing = std::max(h.max_pressure_swing, std::abs(p / gas.ambient_pressure - 1));
   }
   h.steps = ida.stats().steps;
   return h;

@@ -44,8 +44,8 @@ Mesh skewed_mesh() {
 std::vector<FilmBoundary> mixed_boundaries(const Mesh& mesh) {
   std::vector<FilmBoundary> bcs(mesh.patches().size());
   for (std::size_t i = 0; i < bcs.size(); ++i)
-    bcs[i].kind = mesh.patches()[i].name == "bottom" ? FilmBoundary::Kind::Wall
-                                                     : FilmBoundary::Kind::Open;
+    bcs[i].kind =
+        mesh.patches()[i].name == "bottom" ? FilmBoundary::Kind::Wall : FilmBoundary::Kind::Open;
   return bcs;
 }
 
@@ -152,8 +152,8 @@ TEST(ReynoldsPrescribedMotion, AdaptorJacobianMatchesFiniteDifferences) {
   ReynoldsFilm film(mesh, gas, mixed_boundaries(mesh));
   const double g0 = 2e-6, omega = 2e5;
   auto gap = [&](const Vec3& x, double t) {
-    return g0 * (1 + 0.3 * std::sin(x.x() / kLength * 3.0) * std::cos(omega * t) +
-                 0.1 * x.y() / kWidth);
+    return g0 *
+           (1 + 0.3 * std::sin(x.x() / kLength * 3.0) * std::cos(omega * t) + 0.1 * x.y() / kWidth);
   };
   auto gap_rate = [&](const Vec3& x, double t) {
     return -g0 * 0.3 * std::sin(x.x() / kLength * 3.0) * omega * std::sin(omega * t);

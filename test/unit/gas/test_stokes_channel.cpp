@@ -35,14 +35,14 @@ StokesBoundaries channel(Real slip, Real top_speed, Real p_left, OpenTangential 
   b.sides[static_cast<int>(Side::Left)] = StokesSide::open(p_left, t);
   b.sides[static_cast<int>(Side::Right)] = StokesSide::open(0.0, t);
   b.sides[static_cast<int>(Side::Bottom)] = StokesSide::make_wall({.slip_length = slip});
-  b.sides[static_cast<int>(Side::Top)] = StokesSide::make_wall(
-      {[top_speed](const Point2&) { return Point2(top_speed, 0); }, slip});
+  b.sides[static_cast<int>(Side::Top)] =
+      StokesSide::make_wall({[top_speed](const Point2&) { return Point2(top_speed, 0); }, slip});
   return b;
 }
 
 struct ChannelRun {
   Real u_error = 0, v_max = 0, p_error = 0;  // max over faces / cells
-  Point2 bottom, top;                         // wall forces
+  Point2 bottom, top;                        // wall forces
 };
 
 template <class U, class P>
@@ -57,8 +57,8 @@ ChannelRun run(const MacGrid& g, const StokesBoundaries& b, U exact_u, P exact_p
     for (int i = 0; i < g.nx(); ++i) r.v_max = std::max(r.v_max, std::abs(op.v(i, j)->evaluate(x)));
   for (int j = 0; j < g.ny(); ++j)
     for (int i = 0; i < g.nx(); ++i)
-      r.p_error =
-          std::max(r.p_error, std::abs(op.pressure(i, j).evaluate(x) - exact_p(g.cell_centre(i, j))));
+      r.p_error = std::max(r.p_error,
+                           std::abs(op.pressure(i, j).evaluate(x) - exact_p(g.cell_centre(i, j))));
   r.bottom = boundary_force(op, x, Across::side(Side::Bottom));
   r.top = boundary_force(op, x, Across::side(Side::Top));
   return r;

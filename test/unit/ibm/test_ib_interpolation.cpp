@@ -26,10 +26,10 @@
 #include <cmath>
 #include <functional>
 
+#include "../../support/convergence_order.hpp"
 #include "ibm/cell_marking.hpp"
 #include "ibm/ib_interpolation.hpp"
 #include "mesh/structured_mesh.hpp"
-#include "../../support/convergence_order.hpp"
 
 namespace rfmems {
 namespace {

@@ -264,8 +264,7 @@ TEST_P(ClosedBoxWithMovingBody, ConservesMass) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ImmersedKineticGas, ClosedBoxWithMovingBody,
-                         ::testing::Values(TransportOrder::FirstOrder,
-                                           TransportOrder::SecondOrder),
+                         ::testing::Values(TransportOrder::FirstOrder, TransportOrder::SecondOrder),
                          [](const auto& info) {
                            return std::string(transport_order_name(info.param));
                          });

@@ -80,9 +80,7 @@ TEST(Probes, AttachToTheNearestCell) {
   EXPECT_NEAR(mesh.cell_centroid(probes[1].cell).y(), -0.015, 1e-12);
 }
 
-TEST(Probes, NoneWithoutTheKey) {
-  EXPECT_TRUE(probes_from("name: x\n", beam()).empty());
-}
+TEST(Probes, NoneWithoutTheKey) { EXPECT_TRUE(probes_from("name: x\n", beam()).empty()); }
 
 TEST(Probes, PointOutsideTheMeshIsAnInputErrorNamingTheProbe) {
   const Mesh mesh = beam();
@@ -91,8 +89,9 @@ TEST(Probes, PointOutsideTheMeshIsAnInputErrorNamingTheProbe) {
   EXPECT_NE(message.find("p.yaml: key 'probes[0].at'"), std::string::npos) << message;
   EXPECT_NE(message.find("probe 'far' lies outside the mesh"), std::string::npos) << message;
   // On the boundary (within round-off) is inside.
-  EXPECT_EQ(error_of([&] { probes_from("probes:\n  - {name: edge, at: [2.0000000001, 0.02]}\n", mesh); }),
-            "");
+  EXPECT_EQ(
+      error_of([&] { probes_from("probes:\n  - {name: edge, at: [2.0000000001, 0.02]}\n", mesh); }),
+      "");
 }
 
 TEST(Probes, NamesMustBeUniqueAndPlain) {
@@ -101,8 +100,9 @@ TEST(Probes, NamesMustBeUniqueAndPlain) {
               probes_from("probes:\n  - {name: a, at: [1, 0]}\n  - {name: a, at: [0, 0]}\n", mesh);
             }).find("another probe has this name"),
             std::string::npos);
-  EXPECT_NE(error_of([&] { probes_from("probes:\n  - {name: a/b, at: [1, 0]}\n", mesh); })
-                .find("'probes[0].name'"),
+  EXPECT_NE(error_of([&] {
+              probes_from("probes:\n  - {name: a/b, at: [1, 0]}\n", mesh);
+            }).find("'probes[0].name'"),
             std::string::npos);
 }
 

@@ -18,9 +18,9 @@
 namespace rfmems::test_support {
 
 struct CouetteRun {
-  std::vector<Real> y, u;   // cell centres and velocity along the walls
-  Real rms_error = 0;       // RMS over cells of (u - u_slip) / U
-  Real shear_stress = 0;    // tau_zy averaged over the cells
+  std::vector<Real> y, u;  // cell centres and velocity along the walls
+  Real rms_error = 0;      // RMS over cells of (u - u_slip) / U
+  Real shear_stress = 0;   // tau_zy averaged over the cells
   Vec3 force_top = Vec3::Zero(), force_bottom = Vec3::Zero();  // gas on the walls, N/m
   KineticSolveResult solve;
 };
@@ -38,8 +38,7 @@ inline CouetteRun run_couette(Real kn, int ny, CollisionModel model = CollisionM
   bcs[g.find_patch("bottom")] = KineticBoundary::diffuse_wall(T0, Vec3::Zero(), sigma);
   bcs[g.find_patch("top")] = KineticBoundary::diffuse_wall(T0, Vec3(0, 0, U), sigma);
   const Real rho = gas.density_for_knudsen(kn, T0, H);
-  KineticOperator op(g, VelocityGrid::uniform(nv, nv, nv, 3.5 * gas.thermal_speed(T0)), gas,
-                     bcs);
+  KineticOperator op(g, VelocityGrid::uniform(nv, nv, nv, 3.5 * gas.thermal_speed(T0)), gas, bcs);
   TransportScheme scheme;
   scheme.order = order;
   op.set_transport(scheme);

@@ -37,8 +37,9 @@ std::vector<Real> random_distribution(const VelocityGrid& grid, unsigned seed) {
   const Real vx = 2 * kArgonEs.R * kT0, vy = 1.5 * kArgonEs.R * kT0, vz = kArgonEs.R * kT0;
   for (Index k = 0; k < grid.size(); ++k) {
     const Vec3 C = grid.c[k] - Vec3(60, -25, 10);
-    f[k] = kRho0 * std::exp(-C.x() * C.x() / (2 * vx) - C.y() * C.y() / (2 * vy) -
-                            C.z() * C.z() / (2 * vz) + 0.3 * C.x() * C.y() / vx) *
+    f[k] = kRho0 *
+           std::exp(-C.x() * C.x() / (2 * vx) - C.y() * C.y() / (2 * vy) -
+                    C.z() * C.z() / (2 * vz) + 0.3 * C.x() * C.y() / vx) *
            (1 + noise(rng)) * 1e-7;
   }
   return f;
@@ -105,8 +106,8 @@ TEST(KineticCollision, DiscreteMaxwellianAtRestIsAFixedPoint) {
     EXPECT_NEAR(m.T / kT0, 1, 1e-13);
     EXPECT_LE(m.u.norm(), 1e-12 * gas.thermal_speed(kT0));
     EquilibriumCoefficients a = a0;  // warm start at the solution
-    const EquilibriumSolveInfo info = solve_equilibrium(equilibrium_target(m, gas), gas.model,
-                                                        grid, a);
+    const EquilibriumSolveInfo info =
+        solve_equilibrium(equilibrium_target(m, gas), gas.model, grid, a);
     EXPECT_LE(info.iterations, 1);
     evaluate_equilibrium(a, grid, feq);
     Real diff = 0, scale = 0;
@@ -170,9 +171,9 @@ std::pair<Real, Real> relaxation_rates(const KineticGas& gas) {
     for (Index k = 0; k < grid.size(); ++k) {
       const Vec3 C = grid.c[k] - Vec3(30, -20, 10);
       const Real s2 = C.squaredNorm() / (2 * RT);
-      f[k] = 1e-13 * std::exp(-s2) *
-             (1 + 0.2 * C.x() * C.y() / RT + 0.1 * C.sum() / std::sqrt(RT) * (s2 - 2.5) +
-              noise(rng));
+      f[k] =
+          1e-13 * std::exp(-s2) *
+          (1 + 0.2 * C.x() * C.y() / RT + 0.1 * C.sum() / std::sqrt(RT) * (s2 - 2.5) + noise(rng));
     }
   }
   const MacroState m0 = moments(f, grid, gas);
@@ -206,8 +207,7 @@ std::pair<Real, Real> relaxation_rates(const KineticGas& gas) {
   // and the noise's small components do not distort the rates.
   const Real rate_stress =
       -std::log((m1.stress.cwiseProduct(m0.stress)).sum() / m0.stress.squaredNorm()) / t;
-  const Real rate_heat =
-      -std::log(m1.heat_flux.dot(m0.heat_flux) / m0.heat_flux.squaredNorm()) / t;
+  const Real rate_heat = -std::log(m1.heat_flux.dot(m0.heat_flux) / m0.heat_flux.squaredNorm()) / t;
   return {rate_stress / nu, rate_heat / nu};
 }
 

@@ -158,8 +158,8 @@ TEST(KineticOperator, MaxwellianAtRestIsAFixedPoint) {
 TEST(KineticOperator, WallForceOfGasAtRestIsPressureTimesArea) {
   const FaceGraph g = box_graph(4, 3);
   std::vector<KineticBoundary> bcs(g.patch_names.size(), KineticBoundary::diffuse_wall(kT0));
-  KineticOperator op(g, VelocityGrid::uniform(16, 16, 16, 4.0 * gas().thermal_speed(kT0)),
-                     gas(), bcs);
+  KineticOperator op(g, VelocityGrid::uniform(16, 16, 16, 4.0 * gas().thermal_speed(kT0)), gas(),
+                     bcs);
   std::vector<Real> f(op.size());
   op.initialize(f, [](const Vec3&) { return GasState{kRho0, Vec3::Zero(), kT0}; });
   const Real p = kRho0 * gas().R * kT0;

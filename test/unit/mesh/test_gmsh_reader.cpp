@@ -19,7 +19,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kHoleGeo = std::string(RFMEMS_SOURCE_DIR) + "/cases/kirsch_hole/plate_with_hole.geo";
+const std::string kHoleGeo =
+    std::string(RFMEMS_SOURCE_DIR) + "/cases/kirsch_hole/plate_with_hole.geo";
 const char* const kHolePatches[] = {"hole", "symmetry_y", "right", "top", "symmetry_x"};
 
 // Each test gets its own scratch directory, removed afterwards.
@@ -144,7 +145,8 @@ std::string square_msh(const std::string& triangles) {
          "0 0 0\n1 0 0\n1 1 0\n0 1 0\n$EndNodes\n"
          "$Elements\n2 6 1 9\n"
          "1 1 1 4\n1 10 20\n2 20 30\n3 30 40\n4 40 10\n"
-         "2 1 2 2\n" + triangles + "$EndElements\n";
+         "2 1 2 2\n" +
+         triangles + "$EndElements\n";
 }
 
 TEST_F(GmshReader, ClockwiseMeshIsReversed) {
@@ -164,19 +166,20 @@ TEST_F(GmshReader, MixedOrientationIsMeshError) {
 }
 
 TEST_F(GmshReader, UnitHexahedron) {
-  const std::string path = write("hex.msh",
-      "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
-      "$PhysicalNames\n1\n2 1 \"walls\"\n$EndPhysicalNames\n"
-      "$Entities\n0 0 1 1\n"
-      "1 0 0 0 1 1 1 1 1 0\n"
-      "1 0 0 0 1 1 1 0 1 1\n"
-      "$EndEntities\n"
-      "$Nodes\n1 8 1 8\n3 1 0 8\n1\n2\n3\n4\n5\n6\n7\n8\n"
-      "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n$EndNodes\n"
-      "$Elements\n2 7 1 7\n"
-      "2 1 3 6\n1 1 4 3 2\n2 5 6 7 8\n3 1 2 6 5\n4 2 3 7 6\n5 3 4 8 7\n6 4 1 5 8\n"
-      "3 1 5 1\n7 1 2 3 4 5 6 7 8\n"
-      "$EndElements\n");
+  const std::string path =
+      write("hex.msh",
+            "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+            "$PhysicalNames\n1\n2 1 \"walls\"\n$EndPhysicalNames\n"
+            "$Entities\n0 0 1 1\n"
+            "1 0 0 0 1 1 1 1 1 0\n"
+            "1 0 0 0 1 1 1 0 1 1\n"
+            "$EndEntities\n"
+            "$Nodes\n1 8 1 8\n3 1 0 8\n1\n2\n3\n4\n5\n6\n7\n8\n"
+            "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n$EndNodes\n"
+            "$Elements\n2 7 1 7\n"
+            "2 1 3 6\n1 1 4 3 2\n2 5 6 7 8\n3 1 2 6 5\n4 2 3 7 6\n5 3 4 8 7\n6 4 1 5 8\n"
+            "3 1 5 1\n7 1 2 3 4 5 6 7 8\n"
+            "$EndElements\n");
   const Mesh mesh = read_gmsh_mesh(path);
   EXPECT_EQ(mesh.dim(), 3);
   ASSERT_EQ(mesh.n_cells(), 1);

@@ -18,11 +18,13 @@ std::vector<ElasticityBoundary> boundaries(const Mesh& mesh) {
   std::vector<ElasticityBoundary> bcs;
   for (const Patch& p : mesh.patches()) {
     if (p.name == "left")
-      bcs.push_back({ElasticityBoundary::Kind::Fixed, [](const Vec3& x, double) { return Vec3(0, 1e-4 * x.y(), 0); }});
+      bcs.push_back({ElasticityBoundary::Kind::Fixed,
+                     [](const Vec3& x, double) { return Vec3(0, 1e-4 * x.y(), 0); }});
     else if (p.name == "bottom")
       bcs.push_back({ElasticityBoundary::Kind::Symmetry, {}});
     else
-      bcs.push_back({ElasticityBoundary::Kind::Traction, [](const Vec3&, double) { return Vec3(0, -1e5, 0); }});
+      bcs.push_back({ElasticityBoundary::Kind::Traction,
+                     [](const Vec3&, double) { return Vec3(0, -1e5, 0); }});
   }
   return bcs;
 }
@@ -51,7 +53,8 @@ TEST(Partition, KwayPartitionCoversEveryCellOnce) {
     if (parts == 2) {  // a good cut of a 40 x 10 strip is short: about one cross-section
       EXPECT_LE(p.edge_cut, 20);
     }
-    std::printf("%d parts: edge cut %ld, imbalance %.3f\n", parts, static_cast<long>(p.edge_cut), p.imbalance);
+    std::printf("%d parts: edge cut %ld, imbalance %.3f\n", parts, static_cast<long>(p.edge_cut),
+                p.imbalance);
   }
 }
 

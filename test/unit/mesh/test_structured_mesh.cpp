@@ -104,7 +104,8 @@ void check_boundary(const Mesh& mesh, const BoxSpec& spec) {
       EXPECT_EQ(mesh.face_neighbour(f), -1);
       const Vec3& S = mesh.face_area(f);
       EXPECT_NEAR((S / S.norm() - side.normal).norm(), 0.0, 1e-12) << name << " face " << f;
-      EXPECT_NEAR(mesh.face_centroid(f)[side.axis], side.coordinate, 1e-12) << name << " face " << f;
+      EXPECT_NEAR(mesh.face_centroid(f)[side.axis], side.coordinate, 1e-12)
+          << name << " face " << f;
       area += S.norm();
     }
     // Side area (2D: length times unit depth).
@@ -183,7 +184,8 @@ TEST(StructuredMesh, GradedRectangle) {
   EXPECT_LT(worst_closure(mesh), 1e-14);
 
   // Grading: last/first sizes along x (bottom faces) and y (left faces).
-  const std::vector<Real> sx = face_sizes_along(mesh, "bottom", 0), sy = face_sizes_along(mesh, "left", 1);
+  const std::vector<Real> sx = face_sizes_along(mesh, "bottom", 0),
+                          sy = face_sizes_along(mesh, "left", 1);
   ASSERT_EQ(sx.size(), static_cast<std::size_t>(nx));
   ASSERT_EQ(sy.size(), static_cast<std::size_t>(ny));
   EXPECT_NEAR(sx.back() / sx.front(), 4.0, 1e-12);
@@ -224,8 +226,8 @@ TEST(StructuredMesh, ShearedCellsKeepVolumeAndClosure) {
   // with non-orthogonal faces, yet the volume is unchanged.
   for (const BoxSpec& spec : {graded_rectangle(), graded_box()}) {
     const Mesh plain = make_structured_mesh(spec);
-    const Mesh sheared =
-        make_structured_mesh(spec, [](const Vec3& x) { return Vec3(x.x() + 0.4 * x.y() + 0.2 * x.z(), x.y(), x.z()); });
+    const Mesh sheared = make_structured_mesh(
+        spec, [](const Vec3& x) { return Vec3(x.x() + 0.4 * x.y() + 0.2 * x.z(), x.y(), x.z()); });
     EXPECT_NEAR(total_volume(sheared), total_volume(plain), 1e-12);
     for (Index c = 0; c < plain.n_cells(); ++c)
       EXPECT_NEAR(sheared.cell_volume(c), plain.cell_volume(c), 1e-12 * plain.cell_volume(c));

@@ -70,7 +70,8 @@ Mesh parallelogram_mesh(int n) {
   spec.upper = Vec3(1, 1, 0);
   spec.n[0] = n;
   spec.n[1] = n;
-  return make_structured_mesh(spec, [](const Vec3& x) { return Vec3(x.x() + 0.3 * x.y(), x.y(), 0); });
+  return make_structured_mesh(spec,
+                              [](const Vec3& x) { return Vec3(x.x() + 0.3 * x.y(), x.y(), 0); });
 }
 
 struct RuleErrors {
@@ -128,10 +129,10 @@ TEST(PlateGapPoints, TrianglesAndParallelogramsIntegrateACubicExactly) {
   for (const bool triangles : {true, false}) {
     const Mesh mesh = triangles ? triangle_mesh(6) : parallelogram_mesh(6);
     const RuleErrors e = rule_errors(mesh);
-    std::printf("%s: %zu points per cell; max |sum a_q - 1| %.1e, |mean - exact| %.1e, "
-                "corner not a point by %.1e\n",
-                triangles ? "triangles" : "parallelograms", e.points, e.fraction_sum, e.mean,
-                e.corner);
+    std::printf(
+        "%s: %zu points per cell; max |sum a_q - 1| %.1e, |mean - exact| %.1e, "
+        "corner not a point by %.1e\n",
+        triangles ? "triangles" : "parallelograms", e.points, e.fraction_sum, e.mean, e.corner);
     EXPECT_EQ(e.points, triangles ? 7u : 9u);
     EXPECT_LT(e.fraction_sum, 1e-14);
     EXPECT_LT(e.mean, 1e-10);

@@ -80,14 +80,13 @@ double worst_class_difference(SystemOperator& op, double t, double c_j,
                               double step) {
   double diff[3][3] = {}, scale[3][3] = {};
   const std::vector<double> values = test_support::analytic_jacobian(op, t, c_j, y, yp);
-  test_support::for_each_jacobian_entry(
-      op, t, c_j, y, yp, std::vector<double>(y.size(), step), values,
-      [&](Index i, Index j, double fd, double analytic) {
-        double& d = diff[i % 3][j % 3];
-        double& s = scale[i % 3][j % 3];
-        d = std::max(d, std::abs(fd - analytic));
-        s = std::max(s, std::abs(analytic));
-      });
+  test_support::for_each_jacobian_entry(op, t, c_j, y, yp, std::vector<double>(y.size(), step),
+                                        values, [&](Index i, Index j, double fd, double analytic) {
+                                          double& d = diff[i % 3][j % 3];
+                                          double& s = scale[i % 3][j % 3];
+                                          d = std::max(d, std::abs(fd - analytic));
+                                          s = std::max(s, std::abs(analytic));
+                                        });
   double worst = 0;
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 3; ++b) {

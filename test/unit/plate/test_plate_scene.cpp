@@ -19,7 +19,8 @@ constexpr double E = 200e9, h = 4e-6, L = 400e-6, b = 40e-6;
 // A strip L x b, 20 x 2 cells unless given, nu = 0 (cylindrical bending); `rest` completes
 // the case.
 std::string strip_case(const std::string& rest, const std::string& cells = "[20, 2]") {
-  return "mesh: {type: rectangle, size: [400 um, 40 um], cells: " + cells + "}\n"
+  return "mesh: {type: rectangle, size: [400 um, 40 um], cells: " + cells +
+         "}\n"
          "material: {E: 200 GPa, nu: 0, density: 7854}\n"
          "model: {structure: plate, thickness: 4 um}\n"
          "" +
@@ -51,8 +52,9 @@ double net_force(const std::vector<double>& r) {
 
 TEST(PlateScene, PointLoadActsOnTheNearestCell) {
   PlateScene scene = scene_of(strip_case(
-      kCantilever + "  right: {type: free}\n"
-                    "point_loads:\n  - {at: [390 um, 10 um], force: -2 uN, moment: [1 nN*m, 0 N*m]}\n"));
+      kCantilever +
+      "  right: {type: free}\n"
+      "point_loads:\n  - {at: [390 um, 10 um], force: -2 uN, moment: [1 nN*m, 0 N*m]}\n"));
   const auto r = residual_at_rest(scene, 0.0);
   // Cells are 20 um x 20 um: (390, 10) um is the centroid of the last cell of the first row.
   const Index c = 19;
@@ -66,9 +68,9 @@ TEST(PlateScene, PointLoadActsOnTheNearestCell) {
 }
 
 TEST(PlateScene, RampsScalePressureAndEdgeLoads) {
-  PlateScene scene = scene_of(strip_case(
-      kCantilever + "  right: {type: load, shear: -100 N/m, ramp: 2 ms}\n"
-                    "pressure: {value: -1 kPa, ramp: 4 ms}\n"));
+  PlateScene scene =
+      scene_of(strip_case(kCantilever + "  right: {type: load, shear: -100 N/m, ramp: 2 ms}\n"
+                                        "pressure: {value: -1 kPa, ramp: 4 ms}\n"));
   EXPECT_DOUBLE_EQ(scene.ramp_end_time(), 4e-3);
   const auto r_full = residual_at_rest(scene, 4e-3), r_late = residual_at_rest(scene, 1.0);
   const auto r_1ms = residual_at_rest(scene, 1e-3);
@@ -104,13 +106,15 @@ TEST(PlateScene, StructureChosenByName) {
   const CaseFile plane = CaseFile::parse(
       "mesh: {type: rectangle, size: [1 m, 0.1 m], cells: [4, 2]}\n"
       "material: {E: 1 GPa, nu: 0.3}\nmodel: {structure: plane, hypothesis: plane_strain}\n"
-      "boundaries: {left: {type: fixed}, right: {type: free}, top: {type: free}, bottom: {type: free}}\n",
+      "boundaries: {left: {type: fixed}, right: {type: free}, top: {type: free}, bottom: {type: "
+      "free}}\n",
       "q.yaml");
   EXPECT_EQ(build_structure(plane.root(), "", AnalysisType::Static)->kind(), "plane_strain");
 
   const CaseFile wrong = CaseFile::parse(
       "mesh: {type: rectangle, size: [1 m, 0.1 m], cells: [4, 2]}\n"
-      "material: {E: 1 GPa, nu: 0.3}\nmodel: {structure: beam}\n", "r.yaml");
+      "material: {E: 1 GPa, nu: 0.3}\nmodel: {structure: beam}\n",
+      "r.yaml");
   try {
     build_structure(wrong.root(), "", AnalysisType::Static);
     FAIL() << "no error";

@@ -37,7 +37,8 @@ class Oscillators : public SecondOrderOperator {
       failed_once = true;
       throw RecoverableError("try a smaller step");
     }
-    for (std::size_t i = 0; i < k_.size(); ++i) r[i] = k_[i] * y[i] + c_[i] * std::pow(y[i], 3) - f_[i];
+    for (std::size_t i = 0; i < k_.size(); ++i)
+      r[i] = k_[i] * y[i] + c_[i] * std::pow(y[i], 3) - f_[i];
   }
   const CsrPattern& stiffness_pattern() const override { return pattern_; }
   void stiffness(Real, std::span<const Real> y, std::span<Real> v) override {
@@ -64,7 +65,8 @@ void run_oscillators(IdaOptions::LinearSolver solver) {
   ida.initialize(0.0, y0, yp0);
   ida.advance(3.0);
   const double w[3] = {1, 2, 5};
-  for (int i = 0; i < 3; ++i) EXPECT_NEAR(ida.y()[i], std::cos(w[i] * 3.0), 1e-6) << "oscillator " << i;
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(ida.y()[i], std::cos(w[i] * 3.0), 1e-6) << "oscillator " << i;
   IntegratorStats s = ida.stats();
   EXPECT_GT(s.steps, 50);
   if (solver == IdaOptions::LinearSolver::Spgmr) {
@@ -84,9 +86,8 @@ TEST(Ida, RootFindingLocatesTheFirstZero) {
   options.rtol = 1e-8;
   options.atol = 1e-12;
   IdaIntegrator ida(system, options);
-  ida.set_roots(1, [](double, std::span<const double> y, std::span<const double>, std::span<double> g) {
-    g[0] = y[0];
-  });
+  ida.set_roots(1, [](double, std::span<const double> y, std::span<const double>,
+                      std::span<double> g) { g[0] = y[0]; });
   std::vector<double> y0 = {1, 0}, yp0 = {0, -4};
   ida.initialize(0.0, y0, yp0);
   EXPECT_EQ(ida.advance(10.0), IdaIntegrator::Status::Root);

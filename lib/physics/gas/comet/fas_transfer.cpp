@@ -29,8 +29,8 @@ void restrict_residual(const Agglomeration& a, Index block, std::span<const Real
   }
 }
 
-void prolong_correction(const Agglomeration& a, Index block, std::span<const Real> coarse_correction,
-                        std::span<Real> fine_values) {
+void prolong_correction(const Agglomeration& a, Index block,
+                        std::span<const Real> coarse_correction, std::span<Real> fine_values) {
   const Index nf = static_cast<Index>(a.coarse_of_fine.size());
   const Index n_coarse_owned = a.coarse.n_owned_cells;
   for (Index c = 0; c < nf; ++c) {

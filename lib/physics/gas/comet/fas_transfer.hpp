@@ -25,7 +25,7 @@ void restrict_solution(const FaceGraph& fine, const Agglomeration& a, Index bloc
 void restrict_residual(const Agglomeration& a, Index block, std::span<const Real> fine_values,
                        std::span<Real> coarse_values);
 // fine_values[c] += coarse_correction[coarse_of_fine[c]], per block entry.
-void prolong_correction(const Agglomeration& a, Index block, std::span<const Real> coarse_correction,
-                        std::span<Real> fine_values);
+void prolong_correction(const Agglomeration& a, Index block,
+                        std::span<const Real> coarse_correction, std::span<Real> fine_values);
 
 }  // namespace rfmems

@@ -54,11 +54,11 @@ class TransientKineticSystem : public SystemOperator {
   using Mat5 = Eigen::Matrix<Real, 5, 5>;
   KineticOperator& op_;
   EquilibriumMomentDerivative derivative_;
-  std::vector<Real> scratch_;            // N, per-cell residual pieces
-  std::vector<Real> inverse_diagonal_;   // n_owned x N
-  std::vector<Real> z_;                  // n_owned x 5N: Z = D^-1 B
+  std::vector<Real> scratch_;                           // N, per-cell residual pieces
+  std::vector<Real> inverse_diagonal_;                  // n_owned x N
+  std::vector<Real> z_;                                 // n_owned x 5N: Z = D^-1 B
   std::vector<Eigen::PartialPivLU<Mat5>> capacitance_;  // I + C Z per owned cell
-  std::vector<Real> weighted_basis_;     // 5 N: C = w_k psi_k (same for every cell)
+  std::vector<Real> weighted_basis_;                    // 5 N: C = w_k psi_k (same for every cell)
   long setups_ = 0;
 };
 

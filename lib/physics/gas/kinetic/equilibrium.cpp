@@ -1,7 +1,7 @@
 #include "physics/gas/kinetic/equilibrium.hpp"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 #include <string>
 

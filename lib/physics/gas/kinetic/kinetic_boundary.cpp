@@ -12,11 +12,16 @@ namespace rfmems {
 
 const char* kinetic_boundary_kind_name(KineticBoundaryKind kind) {
   switch (kind) {
-    case KineticBoundaryKind::DiffuseWall: return "diffuse_wall";
-    case KineticBoundaryKind::SpecularWall: return "specular_wall";
-    case KineticBoundaryKind::Pressure: return "pressure";
-    case KineticBoundaryKind::Symmetry: return "symmetry";
-    case KineticBoundaryKind::External: return "external";
+    case KineticBoundaryKind::DiffuseWall:
+      return "diffuse_wall";
+    case KineticBoundaryKind::SpecularWall:
+      return "specular_wall";
+    case KineticBoundaryKind::Pressure:
+      return "pressure";
+    case KineticBoundaryKind::Symmetry:
+      return "symmetry";
+    case KineticBoundaryKind::External:
+      return "external";
   }
   return "?";
 }
@@ -99,23 +104,22 @@ std::vector<Real> boundary_maxwellian(const KineticBoundary& bc, const VelocityG
   std::vector<Real> m;
   if (bc.kind == KineticBoundaryKind::DiffuseWall) {
     m.resize(grid.size());
-    const EquilibriumCoefficients a = equilibrium(
-        maxwellian_target(1.0, bc.velocity, bc.temperature, gas), gas.model, grid);
+    const EquilibriumCoefficients a =
+        equilibrium(maxwellian_target(1.0, bc.velocity, bc.temperature, gas), gas.model, grid);
     evaluate_equilibrium(a, grid, m);
   } else if (bc.kind == KineticBoundaryKind::Pressure) {
     m.resize(grid.size());
     const Real rho = bc.pressure / (gas.R * bc.temperature);
-    const EquilibriumCoefficients a = equilibrium(
-        maxwellian_target(rho, Vec3::Zero(), bc.temperature, gas), gas.model, grid);
+    const EquilibriumCoefficients a =
+        equilibrium(maxwellian_target(rho, Vec3::Zero(), bc.temperature, gas), gas.model, grid);
     evaluate_equilibrium(a, grid, m);
   }
   return m;
 }
 
-void fill_boundary_face(const KineticBoundary& bc, const Vec3& area,
-                        std::span<const Real> f_owner, const VelocityGrid& grid,
-                        std::span<const Index> reflection, std::span<const Real> maxwellian,
-                        std::span<Real> f_face) {
+void fill_boundary_face(const KineticBoundary& bc, const Vec3& area, std::span<const Real> f_owner,
+                        const VelocityGrid& grid, std::span<const Index> reflection,
+                        std::span<const Real> maxwellian, std::span<Real> f_face) {
   const Index n = grid.size();
   switch (bc.kind) {
     case KineticBoundaryKind::External:

@@ -44,10 +44,10 @@ const char* kinetic_boundary_kind_name(KineticBoundaryKind kind);
 
 struct KineticBoundary {
   KineticBoundaryKind kind = KineticBoundaryKind::SpecularWall;
-  Real temperature = 0;           // K (diffuse wall, pressure)
-  Vec3 velocity = Vec3::Zero();   // m/s (diffuse wall)
-  Real accommodation = 1;         // sigma in [0, 1] (diffuse wall)
-  Real pressure = 0;              // Pa (pressure boundary)
+  Real temperature = 0;          // K (diffuse wall, pressure)
+  Vec3 velocity = Vec3::Zero();  // m/s (diffuse wall)
+  Real accommodation = 1;        // sigma in [0, 1] (diffuse wall)
+  Real pressure = 0;             // Pa (pressure boundary)
 
   static KineticBoundary diffuse_wall(Real T, const Vec3& velocity = Vec3::Zero(),
                                       Real accommodation = 1);
@@ -79,9 +79,8 @@ std::vector<Real> boundary_maxwellian(const KineticBoundary& bc, const VelocityG
 // Fills f_face (all ordinates) on a boundary face with area vector `area` (outward from the
 // gas) from the owner's distribution. `reflection` is grid.reflection_map(area / |area|)
 // when bc.needs_reflection(), else may be empty; `maxwellian` is boundary_maxwellian(bc, ...).
-void fill_boundary_face(const KineticBoundary& bc, const Vec3& area,
-                        std::span<const Real> f_owner, const VelocityGrid& grid,
-                        std::span<const Index> reflection, std::span<const Real> maxwellian,
-                        std::span<Real> f_face);
+void fill_boundary_face(const KineticBoundary& bc, const Vec3& area, std::span<const Real> f_owner,
+                        const VelocityGrid& grid, std::span<const Index> reflection,
+                        std::span<const Real> maxwellian, std::span<Real> f_face);
 
 }  // namespace rfmems

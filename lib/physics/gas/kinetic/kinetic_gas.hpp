@@ -25,11 +25,11 @@ CollisionModel collision_model_from_name(const std::string& name);
 const char* collision_model_name(CollisionModel model);
 
 struct KineticGas {
-  Real R = 208.13;          // specific gas constant, J/(kg K) (argon: 8.314462618 / 0.039948)
-  Real mu_ref = 2.117e-5;   // viscosity at T_ref, Pa s
-  Real T_ref = 273.15;      // K
-  Real omega = 0.81;        // viscosity exponent
-  Real prandtl = 2.0 / 3.0; // used by ESBGK
+  Real R = 208.13;           // specific gas constant, J/(kg K) (argon: 8.314462618 / 0.039948)
+  Real mu_ref = 2.117e-5;    // viscosity at T_ref, Pa s
+  Real T_ref = 273.15;       // K
+  Real omega = 0.81;         // viscosity exponent
+  Real prandtl = 2.0 / 3.0;  // used by ESBGK
   CollisionModel model = CollisionModel::Esbgk;
 
   // Argon as in the thesis (sec. 5.5.1, after Bird): mu_ref = 2.117e-5 Pa s at 273.15 K,

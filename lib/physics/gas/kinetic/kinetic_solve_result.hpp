@@ -10,12 +10,12 @@ namespace rfmems {
 
 struct KineticSolveResult {
   bool converged = false;
-  int iterations = 0;             // outer iterations (sequential: sweeps; COMET: cycles)
-  Real initial_residual = 0;      // ||r_0||_2
-  Real final_residual = 0;        // ||r||_2 at exit
-  Real residual_ratio = 0;        // final / initial
-  double seconds = 0;             // wall time
-  std::vector<Real> history;      // residual ratio after each iteration
+  int iterations = 0;         // outer iterations (sequential: sweeps; COMET: cycles)
+  Real initial_residual = 0;  // ||r_0||_2
+  Real final_residual = 0;    // ||r||_2 at exit
+  Real residual_ratio = 0;    // final / initial
+  double seconds = 0;         // wall time
+  std::vector<Real> history;  // residual ratio after each iteration
 };
 
 }  // namespace rfmems

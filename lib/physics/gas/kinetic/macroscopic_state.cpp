@@ -4,8 +4,7 @@
 
 namespace rfmems {
 
-MacroState moments(std::span<const Real> f_cell, const VelocityGrid& grid,
-                   const KineticGas& gas) {
+MacroState moments(std::span<const Real> f_cell, const VelocityGrid& grid, const KineticGas& gas) {
   const Index n = grid.size();
   MacroState m;
   Real rho = 0;

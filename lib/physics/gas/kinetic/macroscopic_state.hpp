@@ -22,12 +22,11 @@ struct MacroState {
   Real rho = 0;
   Vec3 u = Vec3::Zero();
   Real T = 0, p = 0;
-  Mat3 stress = Mat3::Zero();     // viscous Cauchy stress -(P - p I)
+  Mat3 stress = Mat3::Zero();  // viscous Cauchy stress -(P - p I)
   Vec3 heat_flux = Vec3::Zero();
   Mat3 pressure_tensor = Mat3::Zero();  // P = rho Theta
 };
 
-MacroState moments(std::span<const Real> f_cell, const VelocityGrid& grid,
-                   const KineticGas& gas);
+MacroState moments(std::span<const Real> f_cell, const VelocityGrid& grid, const KineticGas& gas);
 
 }  // namespace rfmems

@@ -15,8 +15,7 @@ VelocityGrid VelocityGrid::uniform(int n1, int n2, int n3, Real extent) {
 VelocityGrid VelocityGrid::uniform(int n1, int n2, int n3, const Vec3& extent) {
   if (n1 < 2 || n2 < 2 || n3 < 2)
     throw InputError("velocity grid: need at least 2 points per direction, got " +
-                     std::to_string(n1) + " x " + std::to_string(n2) + " x " +
-                     std::to_string(n3));
+                     std::to_string(n1) + " x " + std::to_string(n2) + " x " + std::to_string(n3));
   if (!(extent.minCoeff() > 0))
     throw InputError("velocity grid: the extent must be > 0 in every direction");
   VelocityGrid g;

@@ -24,11 +24,11 @@
 namespace rfmems {
 
 struct VelocityGrid {
-  std::array<int, 3> n{0, 0, 0};   // points per direction
-  Vec3 extent = Vec3::Zero();      // half-width per direction, m/s
-  Vec3 spacing = Vec3::Zero();     // dc per direction, m/s
-  std::vector<Vec3> c;             // ordinates, m/s
-  std::vector<Real> w;             // quadrature weights, m^3/s^3
+  std::array<int, 3> n{0, 0, 0};  // points per direction
+  Vec3 extent = Vec3::Zero();     // half-width per direction, m/s
+  Vec3 spacing = Vec3::Zero();    // dc per direction, m/s
+  std::vector<Vec3> c;            // ordinates, m/s
+  std::vector<Real> w;            // quadrature weights, m^3/s^3
   // Velocity scale of the equilibrium's polynomial basis, xi = c / reference_speed (the
   // largest half-width), so that the Newton unknowns of equilibrium.hpp are O(1)-conditioned.
   Real reference_speed = 1.0;

@@ -65,12 +65,12 @@ enum class OpenTangential { ZeroGradient, ZeroStress, Velocity };
 struct StokesSide {
   enum class Kind { Wall, Symmetry, Open };
   Kind kind = Kind::Wall;
-  StokesWall wall;                                         // Wall
-  ScalarField ambient_pressure = [](const Point2&) { return 0.0; };  // Open: p_a
-  OpenTangential tangential = OpenTangential::ZeroGradient;          // Open
+  StokesWall wall;                                                      // Wall
+  ScalarField ambient_pressure = [](const Point2&) { return 0.0; };     // Open: p_a
+  OpenTangential tangential = OpenTangential::ZeroGradient;             // Open
   ScalarField tangential_velocity = [](const Point2&) { return 0.0; };  // Open, Velocity
-  Real tangential_slip_length = 0;  // Open, Velocity: l [m]
-  Real normal_impedance = 0;        // Open: Z [Pa s/m]; 0: the ambient traction alone
+  Real tangential_slip_length = 0;                                      // Open, Velocity: l [m]
+  Real normal_impedance = 0;  // Open: Z [Pa s/m]; 0: the ambient traction alone
 
   static StokesSide make_wall(StokesWall w) {
     StokesSide s;

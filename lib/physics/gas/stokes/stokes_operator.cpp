@@ -72,8 +72,8 @@ std::optional<AffineForm> StokesOperator::face(int i, int j, bool vertical) cons
     return AffineForm::unknown(-1);  // interior; numbered in the constructor
   }
   const Point2 at = vertical ? grid_.u_face(i, j) : grid_.v_face(i, j);
-  const Side beyond = vertical ? (before ? Side::Right : Side::Left)
-                               : (before ? Side::Top : Side::Bottom);
+  const Side beyond =
+      vertical ? (before ? Side::Right : Side::Left) : (before ? Side::Top : Side::Bottom);
   const Across wall = before ? across_cell(i, j, beyond) : across_cell(bi, bj, beyond);
   if (wall.kind == Across::Kind::Block)
     return AffineForm::known(problem_.boundaries.blocks[wall.index].velocity(at)[d]);
@@ -165,7 +165,8 @@ ControlVolumeBalance StokesOperator::balance(int i, int j, bool vertical) const 
       // Traction of the ambient gas, -(p_a + Z u_n) n, n = sign e_d, u_n = sign u_face.
       const StokesSide& side = problem_.boundaries.sides[a.index];
       AffineForm traction = AffineForm::known(-sign * side.ambient_pressure(at) * h);
-      if (side.normal_impedance != 0) traction -= (side.normal_impedance * h) * *face(i, j, vertical);
+      if (side.normal_impedance != 0)
+        traction -= (side.normal_impedance * h) * *face(i, j, vertical);
       b.edges.push_back({traction, a});
       return;
     }
@@ -194,9 +195,7 @@ ControlVolumeBalance StokesOperator::balance(int i, int j, bool vertical) const 
 }
 
 ControlVolumeBalance StokesOperator::u_balance(int i, int j) const { return balance(i, j, true); }
-ControlVolumeBalance StokesOperator::v_balance(int i, int j) const {
-  return balance(i, j, false);
-}
+ControlVolumeBalance StokesOperator::v_balance(int i, int j) const { return balance(i, j, false); }
 
 void StokesOperator::assemble() {
   const int nx = grid_.nx(), ny = grid_.ny();
