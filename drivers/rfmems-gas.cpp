@@ -16,6 +16,8 @@
 // heat_flux (W/m^2), stress (viscous, Pa, Voigt xx yy zz yz xz xy). /solver/residual: the
 // ratio ||r|| / ||r_0|| per iteration. Exit codes as rfmems-solid: 0 success; 2 bad input (one
 // line on stderr, no result file); 1 other failures (including no convergence).
+#include <fmt/format.h>
+
 #include <cstdio>
 #include <iostream>
 #include <map>
@@ -31,10 +33,12 @@
 #include "io/input_solve.hpp"
 #include "io/interrupt_cleanup.hpp"
 #include "io/json_summary.hpp"
+#include "io/progress.hpp"
 #include "io/result_writer.hpp"
 #include "parallel/communication_counters.hpp"
 #include "parallel/communicator.hpp"
 #include "physics/gas/kinetic/kinetic_case.hpp"
+#include "solvers/convergence_forecast.hpp"
 
 namespace {
 
@@ -98,12 +102,37 @@ int run(const DriverOptions& options) {
   std::vector<Real> f(op.size());
   op.initialize(f, [&](const Vec3&) { return scene.initial; });
   const bool quiet = options.quiet || !world.is_root();
+  // Progress every 5 s with the contraction rate's forecast of the time still needed; once
+  // that forecast passes kSlowForecastSeconds, one warning with the remedy.
+  constexpr double kSlowForecastSeconds = 600;
+  const bool sequential = scene.solver.type == "sequential";
   double last_print = -10;
+  bool warned_slow = false;
+  std::vector<Real> ratios;
   auto monitor = [&](int iteration, Real ratio) {
-    if (!quiet && elapsed() - last_print > 5) {
+    ratios.push_back(ratio);
+    if (quiet || elapsed() - last_print <= 5) return true;
+    last_print = elapsed();
+    const auto forecast = ConvergenceForecast::of(ratios, scene.solver.tolerance);
+    if (!forecast) {
       std::fprintf(stderr, "iteration %d: residual ratio %.3e (%.0f s)\n", iteration, ratio,
                    elapsed());
-      last_print = elapsed();
+      return true;
+    }
+    const double seconds_left = forecast->remaining * elapsed() / iteration;
+    std::fprintf(stderr,
+                 "iteration %d: residual ratio %.3e, %.5f per iteration, ~%.2g more to %.0e "
+                 "(~%s) (%.0f s)\n",
+                 iteration, ratio, forecast->rate, forecast->remaining, scene.solver.tolerance,
+                 format_duration(seconds_left).c_str(), elapsed());
+    if (!warned_slow && seconds_left > kSlowForecastSeconds) {
+      warned_slow = true;
+      std::fprintf(stderr, "rfmems-gas: warning: at this rate the solve needs ~%s more%s\n",
+                   format_duration(seconds_left).c_str(),
+                   sequential ? "; the sequential solver's rate tends to 1 near the continuum "
+                                "(Kn -> 0), where solver.type: comet converges in far fewer "
+                                "iterations"
+                              : "");
     }
     return true;
   };
@@ -174,10 +203,14 @@ int run(const DriverOptions& options) {
   summary["output"] = {{"h5", output}, {"xdmf", output.substr(0, output.rfind('.')) + ".xdmf"}};
   summary["validity"] = validity.to_json();
   summary["wall_time_s"] = elapsed();
+  if (!result.converged && !result.stop_reason.empty())
+    throw SolverError(
+        fmt::format("{}{}", result.stop_reason,
+                    sequential ? " (near the continuum use solver.type: comet)" : ""));
   if (!result.converged)
-    throw SolverError("rfmems-gas: no convergence after " + std::to_string(result.iterations) +
-                      " iterations (residual ratio " + std::to_string(result.residual_ratio) +
-                      ", tolerance " + std::to_string(scene.solver.tolerance) + ")");
+    throw SolverError(
+        fmt::format("no convergence after {} iterations (residual ratio {:.3e}, tolerance {:.1e})",
+                    result.iterations, result.residual_ratio, scene.solver.tolerance));
   if (!world.is_root()) return 0;
   writer->write_metadata({{"case_file", case_file.path()},
                           {"case_name", name},

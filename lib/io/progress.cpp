@@ -8,12 +8,6 @@
 
 namespace rfmems {
 
-namespace {
-
-// A terminal is refreshed a few times per second; a log gets one line per 5 s.
-constexpr double kTerminalInterval = 0.25;
-constexpr double kLogInterval = 5.0;
-
 std::string format_duration(double s) {
   if (!std::isfinite(s) || s < 0) return "?";
   if (s < 60) return fmt::format("{:.1f} s", s);
@@ -21,6 +15,12 @@ std::string format_duration(double s) {
   if (total < 3600) return fmt::format("{}m{:02}s", total / 60, total % 60);
   return fmt::format("{}h{:02}m", total / 3600, (total % 3600) / 60);
 }
+
+namespace {
+
+// A terminal is refreshed a few times per second; a log gets one line per 5 s.
+constexpr double kTerminalInterval = 0.25;
+constexpr double kLogInterval = 5.0;
 
 double seconds(std::chrono::steady_clock::duration d) {
   return std::chrono::duration<double>(d).count();

@@ -8,6 +8,9 @@
 
 namespace rfmems {
 
+// A wall-time span for a person: "12.3 s", "4m05s", "2h10m"; "?" when not finite.
+std::string format_duration(double seconds);
+
 class ProgressReporter {
  public:
   // quiet: print nothing. t_end: the simulated end time (<= 0: unknown, no estimate).

@@ -178,6 +178,23 @@ else
   fail "squeeze film"
 fi
 
+# ---- near the continuum the sequential solver says early that its cap will not do -----------
+# Kn = 1e-4: source iteration contracts by ~0.997 per sweep and slows further; with a cap of
+# 20000 sweeps the contraction rate forecasts the cap's failure within its first tenth: exit 1,
+# one line with the rate and the remedy (COMET), no result file.
+start=$SECONDS
+"$DRIVER" "$CAVITY" --set "mesh.cells=[20, 20]" --set initial.knudsen=1e-4 \
+  --set "velocity_grid.points=[6, 6, 6]" --set solver.max_iterations=20000 \
+  -o "$WORK/slow.h5" --quiet >/dev/null 2>"$WORK/err"
+rc=$?
+if [ $rc -eq 1 ] && grep -q "contraction rate" "$WORK/err" && grep -q "solver.type: comet" "$WORK/err" &&
+   [ ! -e "$WORK/slow.h5" ] &&
+   $PY -c "import re,sys; n=int(re.search(r'after (\d+) of its 20000', open(sys.argv[1]).read()).group(1)); assert n <= 2000, n; print('stopped after', n, 'sweeps')" "$WORK/err"; then
+  pass "Kn 1e-4 sequential: stopped early by the forecast ($((SECONDS - start)) s)"
+else
+  fail "Kn 1e-4 sequential (exit $rc): $(cat "$WORK/err")"
+fi
+
 # ---- bad input: exit 2, one line naming file and key, no result file (common.sh) ------------
 expect_input_error bad_collision "gas.collision" "$COUETTE" --set gas.collision=bgk2
 expect_input_error missing_boundary "boundaries.left" "$COUETTE" \

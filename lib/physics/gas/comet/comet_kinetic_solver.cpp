@@ -44,6 +44,7 @@ KineticSolveResult solve_comet(KineticOperator& op, std::span<Real> f, CometOpti
   out.final_residual = r.residual_ratio * r.initial_residual;
   out.seconds = r.wall_seconds;
   out.history = r.history;
+  out.stop_reason = r.stop_reason;
   return out;
 }
 

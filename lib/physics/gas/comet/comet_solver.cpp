@@ -9,6 +9,7 @@
 #include "parallel/communication_counters.hpp"
 #include "physics/gas/comet/fas_transfer.hpp"
 #include "physics/gas/kinetic/sequential_solver.hpp"
+#include "solvers/convergence_forecast.hpp"
 
 namespace rfmems {
 
@@ -222,6 +223,7 @@ CometResult CometSolver::solve(std::span<Real> f) {
     so.tolerance = options_.tolerance;
     so.max_iterations = options_.max_cycles;
     so.monitor = options_.monitor;
+    so.stop_when_hopeless = options_.stop_when_hopeless;
     const KineticSolveResult rs = solve_sequential(fine_, f, so);
     CometResult r;
     r.method = "sequential";
@@ -231,6 +233,7 @@ CometResult CometSolver::solve(std::span<Real> f) {
     r.initial_residual = rs.initial_residual;
     r.residual_ratio = rs.residual_ratio;
     r.history = rs.history;
+    r.stop_reason = rs.stop_reason;
     r.level_cells = {fine_.communicator().sum(fine_.graph().n_owned_cells)};
     r.mass_rescaled = fine_.is_closed();
     r.wall_seconds =
@@ -291,6 +294,11 @@ CometResult CometSolver::solve(std::span<Real> f) {
       if (ratio <= options_.tolerance) {
         result.converged = true;
         break;
+      }
+      if (options_.stop_when_hopeless) {
+        result.stop_reason = ConvergenceForecast::hopeless(result.history, options_.tolerance,
+                                                           options_.max_cycles, "COMET");
+        if (!result.stop_reason.empty()) break;
       }
       if (options_.monitor && !options_.monitor(result.cycles, ratio)) break;
     }

@@ -104,6 +104,9 @@ struct CometOptions {
   Real sequential_above_knudsen = 0.2;  // <= 0: always COMET
   Real tolerance = 1e-6;                // on ||r||_2 / ||r_0||_2
   int max_cycles = 1000;
+  // Stop as soon as the contraction rate forecasts that max_cycles will not reach the
+  // tolerance (solvers/convergence_forecast.hpp); false runs to the cap.
+  bool stop_when_hopeless = true;
   // Called after every cycle with (cycle, residual ratio); return false to stop.
   std::function<bool(int, Real)> monitor;
 };
@@ -127,6 +130,7 @@ struct CometResult {
   CometCycle cycle_shape = CometCycle::V;  // the cycle run (Auto resolved)
   bool coarse_symmetric = true;            // the coarse sweeps run
   std::vector<double> level_seconds;       // wall seconds in smoothing and residuals, per level
+  std::string stop_reason;                 // the forecast's sentence when it stopped the solve
 };
 
 class CometSolver {

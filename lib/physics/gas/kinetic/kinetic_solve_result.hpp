@@ -2,6 +2,7 @@
 // Residual scaling (kinetic_operator.hpp): ratio = ||r||_2 / ||r_0||_2 of the full steady
 // residual, r_0 that of the initial state; converged when ratio <= tolerance (1e-6 default).
 #pragma once
+#include <string>
 #include <vector>
 
 #include "core/types.hpp"
@@ -16,6 +17,9 @@ struct KineticSolveResult {
   Real residual_ratio = 0;    // final / initial
   double seconds = 0;         // wall time
   std::vector<Real> history;  // residual ratio after each iteration
+  // Set when the solve stopped before its cap because its contraction rate forecast that the
+  // cap would not suffice (solvers/convergence_forecast.hpp): the sentence that says so.
+  std::string stop_reason;
 };
 
 }  // namespace rfmems

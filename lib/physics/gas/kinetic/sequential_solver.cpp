@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "physics/gas/kinetic/downwind_ordering.hpp"
+#include "solvers/convergence_forecast.hpp"
 
 namespace rfmems {
 
@@ -79,6 +80,11 @@ KineticSolveResult solve_sequential(KineticOperator& op, std::span<Real> f,
     result.history.push_back(result.residual_ratio);
     result.converged = result.residual_ratio <= options.tolerance;
     if (!std::isfinite(result.residual_ratio)) break;
+    if (!result.converged && options.stop_when_hopeless) {
+      result.stop_reason = ConvergenceForecast::hopeless(
+          result.history, options.tolerance, options.max_iterations, "the sequential solver");
+      if (!result.stop_reason.empty()) break;
+    }
     if (options.monitor && !options.monitor(result.iterations, result.residual_ratio)) break;
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

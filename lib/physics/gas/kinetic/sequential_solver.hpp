@@ -31,6 +31,9 @@ namespace rfmems {
 struct SequentialOptions {
   Real tolerance = 1e-6;  // on ||r|| / ||r_0||
   int max_iterations = 200000;
+  // Stop as soon as the contraction rate forecasts that max_iterations will not reach the
+  // tolerance (solvers/convergence_forecast.hpp); false runs to the cap.
+  bool stop_when_hopeless = true;
   // Called after every iteration with (iteration, ratio); return false to stop.
   std::function<bool(int, Real)> monitor;
 };
