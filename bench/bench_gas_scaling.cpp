@@ -20,7 +20,7 @@
 // Communication, counted by the exchange layer (parallel/communication_counters.hpp), per
 // rank: point-to-point messages, bytes, ghost exchanges and reductions per iteration (COMET:
 // per V-cycle), with the rank's owned / ghost cells and neighbour count (the inputs of the
-// communication model in docs/BENCHMARKS.md).
+// communication model in docs/mpi.md).
 //
 // The bench launches itself under mpirun (`--mpirun`, default "mpirun --allow-run-as-root
 // --oversubscribe") once per (solver, mesh, P) and collects the workers' lines: run it

@@ -9,7 +9,8 @@
 //   plate   the mid-surface strip [0, L] x [0, b] (b = L/10 by default), long edges free,
 //           cubic reconstruction; transient: ReducedInertiaSystem (rotations quasi-static).
 //           --plate-grading g grades its meshes towards the clamped ends and the free edges
-//           (docs/BENCHMARKS.md section 12); --plate-degree sets the reconstruction degree.
+//           (docs/verification.md, "Plate against plane-stress elasticity"); --plate-degree sets
+//           the reconstruction degree.
 //   plane   the section [0, L] x [-h/2, h/2] in plane stress (sigma out of plane = 0: the
 //           strip's interior bends with free anticlastic curvature, M_yy = 0, so its bending
 //           stiffness is E h^3/12 per width, the plane-stress value, not D = E h^3/(12(1-nu^2))

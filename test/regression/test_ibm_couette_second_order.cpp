@@ -5,7 +5,8 @@
 // `transport: second_order` (Venkatakrishnan, boundary reconstruction; the body-fitted run on
 // 4 columns so that its LS stencils span the plane).
 //
-// Asserted (numbers printed; docs/BENCHMARKS.md section 33 has the table):
+// Asserted (numbers printed; docs/ibm.md, "Second-order transport on the immersed boundary: Couette
+// and the coarse switch" has the table):
 //  - Kn = 0.1, m = 10, 20, 40 (10^3 velocities): the IBM's shear and profile within 1 % of the
 //    body-fitted run already at m = 10 (measured +6.2e-4 and the profile below); at m = 20 the
 //    shear difference is >= 10x smaller than first order's at m = 20 (measured 4.7e-4 against

@@ -1,6 +1,7 @@
-// Dynamic pull-in of the immersed-boundary cantilever switch (issue 8) by bisection on a coarse
-// scene, against the distributed closed form (the full scene's figures: docs/BENCHMARKS.md 21).
-// Scene helper as in test/unit/coupling/test_immersed_switch.cpp.
+// Dynamic pull-in of the immersed-boundary cantilever switch by bisection on a coarse
+// scene, against the distributed closed form (the full scene's figures: docs/immersed_switch.md,
+// "Coupled stepping, dynamic pull-in, gas models"). Scene helper as in
+// test/unit/coupling/test_immersed_switch.cpp.
 //
 // Backgrounds are 151 x 51 / 101 x 31, where the figures below were measured. They were chosen
 // because on 150 x 50 / 100 x 30 the beam's top and tip lie on grid lines and slivers gave a
