@@ -108,6 +108,69 @@ def comet_two_ranks():
     return markdown(rows)
 
 
+def comet_by_regime():
+    """bench_comet_vs_sequential's rows with the default cycle (auto) and the V-cycle beside it."""
+    rows = [x for x in read_jsonl(FIGURES / "comet_cycle_by_regime.jsonl") if "case" in x]
+    out = [["mesh", "case", "Kn", "method (cycle)", "cycles", "CPU [s]", "fine sweeps",
+            "sequential iterations / CPU [s]", "sequential / default (CPU)", "V-cycle: cycles / CPU [s]"]]
+    for x in rows:
+        if x["cycle"] != "auto":
+            continue
+        v = next((y for y in rows if y["cycle"] == "V" and (y["cells"], y["case"], y["kn"]) ==
+                  (x["cells"], x["case"], x["kn"])), None)
+        run = x["comet_cycle_run"] + ("1" if not x["comet_coarse_symmetric"] else "")
+        method = (f"COMET ({run})" + (", forced" if x["kn"] >= 0.2 else "") if x["comet_method"] == "comet"
+                  else "sequential (the default's hand-over)")
+        seq = (f"{x['seq_iterations']} / {x['seq_cpu_seconds']:.1f}" if x.get("seq_cpu_seconds") and
+               x["comet_method"] == "comet" else "-")
+        speed = f"{x['speedup_cpu']:.2f}" if x.get("speedup_cpu") else "-"
+        out.append([f"{x['cells']} x {x['cells']}", x["case"].replace("_", " "), f"{x['kn']:g}", method,
+                    str(x["comet_cycles"]), f"{x['comet_cpu_seconds']:.2f}",
+                    f"{x['comet_fine_sweep_equivalents']:.1f}" if x["comet_method"] == "comet" else "-",
+                    seq, speed, f"{v['comet_cycles']} / {v['comet_cpu_seconds']:.2f}" if v else "-"])
+    return markdown(out)
+
+
+def gas_damping_second_order_sweep():
+    """The damping sweep with second-order transport (420 cells, 8^3 velocities) and its ratios."""
+    rows = [["p [Pa]", "Kn", "solver", "iterations", "CPU [s]", "c ESBGK [N s/m^2]", "zeta ESBGK",
+             "/ free mol. isolated (discrete)", "/ Reynolds-Veijola", "/ R-V + elongation"]]
+    seen = set()
+    for x in read_jsonl(FIGURES / "gas_damping_regimes_second_order.jsonl"):
+        key = x["pressure"]
+        if (x["refine"], x["points"], x.get("transport"), x.get("extra")) != (1, 8, "second_order", []) \
+                or key in seen:
+            continue
+        seen.add(key)
+        p = x["pressure"]
+        ptext = f"{p:g}" if p < 1e4 else f"{p / 10 ** int(math.log10(p)):g}e{int(math.log10(p))}"
+        rve = "-" if x["knudsen"] > 1 else f"{x['esbgk'] / x['reynolds_veijola_elongation']:.2f}"
+        rows.append([ptext, f"{x['knudsen']:.3g}", x["solver"], str(x["iterations"]), f"{x['cpu_seconds']:.2f}",
+                     f"{x['esbgk']:.4e}", f"{x['damping_ratio_esbgk']:.3e}",
+                     f"{x['esbgk'] / x['free_molecular_discrete']:.3f}",
+                     f"{x['esbgk'] / x['reynolds_veijola']:.2f}", rve])
+    return markdown(rows)
+
+
+def immersed_esbgk_case_keys():
+    """rfmems-pullin's JSON of the ESBGK switch at 123 V with the case's keys, serial and 2 ranks."""
+    rows = [["run", "pull-in time [us]", "IDA / gas steps", "wall [s]", "gas [s]", "structure [s]",
+             "electrostatics [s]", "interpolation [s]", "marking [s]", "MPI wait [s]", "wall per step [s]"]]
+    for name, label in (("immersed_esbgk_case_keys_123V_np2_quiet.json", "2 ranks (rank 0's CPU by physics)"),
+                        ("immersed_esbgk_case_keys_123V_np1_quiet.json", "serial")):
+        d = json.load(open(FIGURES / name))
+        im, cpu = d["immersed"], d["immersed"]["cpu"]
+        wall = d["wall_time_s"]
+        comm = d.get("communication_rank0")
+        rows.append([label, f"{1e6 * im['transient']['pull_in_time']:.6f}",
+                     f"{cpu['structure_steps']} / {cpu['gas_steps']}",
+                     f"{wall:.1f}",
+                     f"{cpu['gas_s']:.1f}", f"{cpu['structure_s']:.2f}", f"{cpu['electrostatics_s']:.2f}",
+                     f"{cpu['interpolation_s']:.2f}", f"{cpu['marking_s']:.2f}",
+                     f"{comm['wait_cpu_s']:.1f}" if comm else "-", f"{wall / cpu['structure_steps']:.3f}"])
+    return markdown(rows)
+
+
 TABLES = {
     "verification-checks": csv_table("verification_checks.csv"),
     "performance-ratios": csv_table("performance_ratios.csv"),
@@ -116,6 +179,11 @@ TABLES = {
     "pullin-laplace-dynamic": pullin_laplace_dynamic,
     "coupling-default-study-ab": coupling_default_study_ab,
     "comet-two-ranks": comet_two_ranks,
+    "comet-by-regime": comet_by_regime,
+    "gas-damping-second-order-sweep": gas_damping_second_order_sweep,
+    "immersed-esbgk-case-keys": immersed_esbgk_case_keys,
+    "immersed-switch-figures": csv_table("immersed_switch_figures.csv"),
+    "ibm-couette": csv_table("ibm_couette.csv"),
 }
 
 
