@@ -52,19 +52,29 @@ def csv_table(name):
 
 
 def pullin_laplace_dynamic():
-    """The mesh table, and the observed order and Richardson value of the three plane meshes."""
-    rows = read_csv("pullin_laplace_dynamic_meshes.csv")
-    plane = [float(r[3]) for r in rows[1:] if r[0].startswith("plane")]
-    d1, d2 = plane[0] - plane[1], plane[1] - plane[2]
+    """bench_pullin_models --sections laplace_dynamic: the plane + Laplace switch on three meshes
+    and the plate + parallel-plate switch; the plane meshes' observed order and Richardson value."""
+    first = read_jsonl(FIGURES / "pullin_models_laplace_dynamic.jsonl")
+    finest = read_jsonl(FIGURES / "pullin_models_laplace_dynamic_200x16.jsonl")
+    plane = [x for x in first + finest if x.get("model") == "plane+laplace"]
+    plate = [x for x in finest if x.get("model") == "plate+parallel_plate"]
+    v = [x["v_mid"] for x in plane]
+    d1, d2 = v[0] - v[1], v[1] - v[2]
     ratio = d1 / d2
-    p = math.log2(ratio)
-    richardson = plane[2] - d2 / (ratio - 1)
-    errors = [abs(v - richardson) / richardson for v in plane]
-    header = rows[0] + ["error against Richardson"]
-    body = [r + [f"{100 * e:.2g} %"] for r, e in zip(rows[1:], errors)] + [r + ["-"] for r in rows[4:]]
-    return markdown([header] + body) + (
-        f"\nPlane + Laplace: successive differences {d1:.3f} and {d2:.3f} V, ratio {ratio:.2f}, "
-        f"observed order **{p:.2f}**, Richardson value **{richardson:.3f} V**.\n")
+    richardson = v[2] - d2 / (ratio - 1)
+    rows = [["model", "mesh", "V_dyn bracket [V]", "midpoint [V]", "error against Richardson", "t_PI [us]",
+             "runs", "IDA steps", "CPU [s]"]]
+    for x in plane + plate:
+        err = f"{100 * abs(x['v_mid'] - richardson) / richardson:.3f} %" if x in plane else "-"
+        rows.append([x["model"].replace("+", " + ").replace("_", " "), x["mesh"].replace("x", " x ").replace("+gap", ", gap "),
+                     f"({x['not_pulling_in']:.3f}, {x['dynamic_v_pi']:.3f}]", f"{x['v_mid']:.3f}", err,
+                     f"{1e6 * x['pull_in_time_s']:.2f}", str(x["runs"]), str(x["steps"]), f"{x['cpu_s']:.2f}"])
+    summary = next(x for x in finest if x.get("variant") == "laplace_dynamic_summary")
+    return markdown(rows) + (
+        f"\nPlane + Laplace: successive differences {d1:.3f} and {d2:.3f} V, ratio {ratio:.2f}, observed "
+        f"order **{math.log2(ratio):.2f}**, Richardson value **{richardson:.3f} V**. CPU of the finest plane "
+        f"+ Laplace run over the plate's, same run: **{summary['ratio_cpu_finest']:.0f}x** "
+        f"({summary['ratio_wall_finest']:.0f}x in wall).\n")
 
 
 def coupling_default_study_ab():
