@@ -1,7 +1,7 @@
 // bench_plate_vs_plane: the same fixed-fixed strip solved with the Mindlin-Reissner plate
 // (physics/plate) and with plane-stress elasticity (physics/elasticity), statically and after
 // a step load, each at the cheapest mesh that reaches a target accuracy: wall times and their
-// ratio (issue 3: "the plate >= 100x faster at the same deflection accuracy").
+// ratio (the goal: "the plate >= 100x faster at the same deflection accuracy").
 //
 // The structure: L = 400 um, h = 4 um (L/h = 100), E = 200 GPa, nu = 0.31, rho = 7854 kg/m^3,
 // both short ends clamped, uniform pressure p = 1 kPa pushing down (-z for the plate, -y on the

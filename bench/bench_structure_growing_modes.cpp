@@ -1,4 +1,4 @@
-// Growing modes of the immersed switch's semi-discrete beam (issue 8's spurious touch-down,
+// Growing modes of the immersed switch's semi-discrete beam (the spurious touch-down,
 // docs/immersed_switch.md, "Grid damping"). The undamped structure M u'' + K u = f(u) linearised at
 // rest, M u'' + (K - J) u = 0 with J = df/du, has the modes u ~ exp(s t), s^2 = -lambda, lambda an
 // eigenvalue of M^-1 (K - J). A symmetric positive K gives lambda > 0 and s = +-i omega; the

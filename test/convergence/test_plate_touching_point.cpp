@@ -13,7 +13,7 @@
 // Measured now: 29.154, 30.624, 30.645 V (20 x 2, 40 x 4, 80 x 8) and 30.651 V on 160 x 16
 // (the order-2 Richardson value from 40 x 4 and 80 x 8, 30.652 V, within 1 mV of it).
 // Asserted: the case mesh within 1 % of the order-2 Richardson extrapolation from 40 x 4 and
-// 80 x 8 (the brief of issue 4), and the difference shrinking by at least 4 from
+// 80 x 8, and the difference shrinking by at least 4 from
 // (20 x 2, 40 x 4) to (40 x 4, 80 x 8) (second order or better).
 #include <gtest/gtest.h>
 

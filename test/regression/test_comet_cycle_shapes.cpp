@@ -1,5 +1,5 @@
 // COMET's cycle shapes (CometOptions::cycle_shape: V, W, F) on the heat-transfer square
-// (argon ESBGK, 20 x 20 cells, 8^3 velocities, 6 levels), issue 6's "cycle count nearly flat
+// (argon ESBGK, 20 x 20 cells, 8^3 velocities, 6 levels), the goal "cycle count nearly flat
 // in Kn" (docs/kinetic.md, "COMET cycle shapes").
 //
 // Asserted:
@@ -11,7 +11,7 @@
 //  - the default cycle (Auto, by regime): F-cycles with one-pass coarse sweeps below a domain
 //    Kn of 0.02, V-cycles (symmetric sweeps) above; at Kn = 0.01 it reaches the V-cycle's
 //    steady state (1e-4) in fewer cycles and fewer fine-sweep equivalents (work) than V, and
-//    within 2x the cycles it takes at Kn = 1 (issue 6's goal, docs/kinetic.md, "COMET cycle by
+//    within 2x the cycles it takes at Kn = 1 (the goal, docs/kinetic.md, "COMET cycle by
 //    regime");
 //  - mass held to round-off (1e-12 relative), no damped step;
 //  - a cycle name other than V, W, F is an InputError.

@@ -1,5 +1,5 @@
-// Couette flow through the immersed boundary with second-order transport (issue 8;
-// immersed_kinetic_gas.hpp "Second-order transport"): the set-up of test_ibm_couette.cpp (argon
+// Couette flow through the immersed boundary with second-order transport
+// (immersed_kinetic_gas.hpp "Second-order transport"): the set-up of test_ibm_couette.cpp (argon
 // between a fixed diffuse wall and an immersed plate 0.4 h above the last grid line, moving
 // along z at 10 m/s), both the IBM and the body-fitted reference with
 // `transport: second_order` (Venkatakrishnan, boundary reconstruction; the body-fitted run on

@@ -1,4 +1,4 @@
-// Study (label `study`): COMET's cycle count against the Knudsen number (issue 6: "nearly
+// Study (label `study`): COMET's cycle count against the Knudsen number (the goal: "nearly
 // flat in Kn, at Kn = 0.01 within 2x of its count at Kn = 1").
 //
 // Heat transfer and cavity (test/unit/comet/comet_cases.hpp, argon ESBGK), 20 x 20 cells, 8^3

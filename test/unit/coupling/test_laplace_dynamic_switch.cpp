@@ -129,7 +129,7 @@ TEST(LaplaceDynamicSwitch, SmallStepSwingsToTwiceTheStaticDeflection) {
   RecordProperty("frequency_hz", std::to_string(free.frequency));
 }
 
-// Issue 4: dynamic / quasi-static pull-in voltage of the plane + Laplace switch 0.91 +- 0.02
+// The dynamic / quasi-static pull-in voltage of the plane + Laplace switch 0.91 +- 0.02
 // (thesis 165/181). Both from the same coarse scene: the quasi-static fold by the Aitken
 // iteration (laplace_pull_in.hpp), the dynamic V_PI by bisection to 0.5 V on staggered runs
 // (rtol 1e-4, per-kind error weights). The lumped parallel-plate value is 0.919, a beam's a
