@@ -194,6 +194,7 @@ TABLES = {
     "immersed-esbgk-case-keys": immersed_esbgk_case_keys,
     "immersed-switch-figures": csv_table("immersed_switch_figures.csv"),
     "ibm-couette": csv_table("ibm_couette.csv"),
+    "coupling-schemes-transient": csv_table("coupling_schemes_transient.csv"),
 }
 
 
