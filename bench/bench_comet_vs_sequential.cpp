@@ -1,6 +1,6 @@
 // bench_comet_vs_sequential: COMET (point-coupled Gauss-Seidel + FAS agglomeration multigrid,
 // physics/gas/comet) against the sequential source iteration (physics/gas/kinetic) on the two
-// convergence problems of thesis sec. 5.6 / issue 6, one JSON line per (case, Kn) row with
+// convergence problems of thesis ch. 5, one JSON line per (case, Kn) row with
 // both solvers' iterations, wall times and the speed-up (thesis Tables 5.3-5.4).
 //
 //   heat_transfer  square of side L, diffuse top 327.78 K / bottom 273.15 K, specular sides

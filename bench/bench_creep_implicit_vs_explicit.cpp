@@ -1,6 +1,6 @@
 // bench_creep_implicit_vs_explicit: 500 h creep of the fixed-fixed plate of thesis sec. 4.6.1
 // (bench_creep_support.hpp: L/h = 60, clamped short edges), implicit IDA against the thesis's
-// explicit Euler (ExplicitCreepIntegrator) at equal final accuracy (issue 5's benchmark; goal:
+// explicit Euler (ExplicitCreepIntegrator) at equal final accuracy (the goal:
 // implicit >= 20x faster).
 //
 //   reference  IDA (Schur-preconditioned SPGMR) at --ref-rtol (1e-9): w_p,ref(500 h)

@@ -1,5 +1,5 @@
 // bench_electrostatics_mpi: CPU per immersed field solve, serial KLU against the distributed
-// solve (GMRES + KLU on the rank-local blocks), issue 8, docs/BENCHMARKS.md section 35.
+// solve (GMRES + KLU on the rank-local blocks), docs/mpi.md, "Distributed immersed electrostatics".
 //
 // Problem: the cantilever switch of cases/cantilever_switch (beam 45 x 1.5 um on 185 x 11
 // cells, background 75 x 10 um, electrode under the beam, 100 V), the beam bent down as

@@ -1,5 +1,5 @@
-// bench_gas_scaling: strong and weak scaling of the distributed kinetic solvers (issue 7,
-// thesis sec. 5.4-5.5: COMET 13.4-14.1x on 16 ranks, the sequential solver 1.7-4.5x), one
+// bench_gas_scaling: strong and weak scaling of the distributed kinetic solvers (thesis
+// ch. 5: COMET 13.4-14.1x on 16 ranks, the sequential solver 1.7-4.5x), one
 // JSON line per run and one per scaling row.
 //
 // Problem: the heat-transfer square of bench_comet_vs_sequential (argon ESBGK, diffuse top
@@ -20,7 +20,7 @@
 // Communication, counted by the exchange layer (parallel/communication_counters.hpp), per
 // rank: point-to-point messages, bytes, ghost exchanges and reductions per iteration (COMET:
 // per V-cycle), with the rank's owned / ghost cells and neighbour count (the inputs of the
-// communication model in docs/BENCHMARKS.md).
+// communication model in docs/mpi.md).
 //
 // The bench launches itself under mpirun (`--mpirun`, default "mpirun --allow-run-as-root
 // --oversubscribe") once per (solver, mesh, P) and collects the workers' lines: run it

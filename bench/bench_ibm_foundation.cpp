@@ -1,4 +1,4 @@
-// Cost of the immersed-boundary building blocks per coupled step (issue 8), on the thesis's
+// Cost of the immersed-boundary building blocks per coupled step, on the thesis's
 // cantilever switch geometry (Fig. 6.5): background 75 um x 10 um, beam 45 um x 1.5 um whose
 // bottom is 1.5 um above the electrode, anchored in the left wall; the beam's surface is the
 // boundary of its 185 x 11 structure mesh (392 faces).

@@ -1,4 +1,4 @@
-// Cost per coupled step of the ESBGK gas on the immersed boundary (issue 8, brief item 5), on
+// Cost per coupled step of the ESBGK gas on the immersed boundary (brief item 5), on
 // the thesis's cantilever switch geometry (Fig. 6.5): background 75 um x 10 um (150 x 50 by
 // default), beam 45 um x 1.5 um, bottom 1.5 um above the substrate, anchored in the left wall,
 // its surface the boundary of a 185 x 11 structure mesh (392 segments); air at 300 K and

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The immersed ESBGK gas on MPI ranks (issue 8's benchmark "wall time serial and on 2 ranks").
+"""The immersed ESBGK gas on MPI ranks (wall time serial and on 2 ranks).
 
 Runs rfmems-pullin on cases/cantilever_switch with gas: esbgk (transient, a step voltage, a
 short end time: ~20 coupled steps), serially and under `mpirun --bind-to none -np P`, one after

@@ -1,4 +1,4 @@
-// The immersed-boundary cantilever switch (issue 8, cases/cantilever_switch): cost per coupled
+// The immersed-boundary cantilever switch (cases/cantilever_switch): cost per coupled
 // step split by physics, and the error of the staggered coupling against the implicit one and
 // against a tighter tolerance.
 //

@@ -1,6 +1,6 @@
 // Cost of the contact phase of the plate switch (cases/switch_plate with 0.1 um of eps_r = 7.6
-// on the electrode and the contact penalty g_c = 75 nm, delta = 7.5 nm; docs/BENCHMARKS.md
-// section 28): one JSON line per phase, CPU seconds of this process.
+// on the electrode and the contact penalty g_c = 75 nm, delta = 7.5 nm; docs/pull-in.md,
+// "Contact and pull-out"): one JSON line per phase, CPU seconds of this process.
 //
 //   approach:     step to --voltage from rest, touch-down, on in contact for --delay (IDA);
 //   pull_out:     the quasi-static pull-out from the state at the drop (pseudo-transient

@@ -1,7 +1,7 @@
 // bench_plate_vs_plane: the same fixed-fixed strip solved with the Mindlin-Reissner plate
 // (physics/plate) and with plane-stress elasticity (physics/elasticity), statically and after
 // a step load, each at the cheapest mesh that reaches a target accuracy: wall times and their
-// ratio (issue 3: "the plate >= 100x faster at the same deflection accuracy").
+// ratio (the goal: "the plate >= 100x faster at the same deflection accuracy").
 //
 // The structure: L = 400 um, h = 4 um (L/h = 100), E = 200 GPa, nu = 0.31, rho = 7854 kg/m^3,
 // both short ends clamped, uniform pressure p = 1 kPa pushing down (-z for the plate, -y on the
@@ -9,7 +9,8 @@
 //   plate   the mid-surface strip [0, L] x [0, b] (b = L/10 by default), long edges free,
 //           cubic reconstruction; transient: ReducedInertiaSystem (rotations quasi-static).
 //           --plate-grading g grades its meshes towards the clamped ends and the free edges
-//           (docs/BENCHMARKS.md section 12); --plate-degree sets the reconstruction degree.
+//           (docs/verification.md, "Plate against plane-stress elasticity"); --plate-degree sets
+//           the reconstruction degree.
 //   plane   the section [0, L] x [-h/2, h/2] in plane stress (sigma out of plane = 0: the
 //           strip's interior bends with free anticlastic curvature, M_yy = 0, so its bending
 //           stiffness is E h^3/12 per width, the plane-stress value, not D = E h^3/(12(1-nu^2))

@@ -21,15 +21,16 @@
 //    does the same for a laplace scene's dynamic study). Plate (20, 40, 80 cells long) vs
 //    plane + parallel-plate (25, 50, 100), bisection to --dyn-tolerance (0.1 V). The
 //    three-mesh Richardson value is reported as computed; with a pre-asymptotic coarsest mesh
-//    (the 25 x 2 beam) it is meaningless (docs/BENCHMARKS.md sec. 5c).
-// 2b. Dynamic V_PI with the full field (--sections laplace_dynamic; docs/BENCHMARKS.md sec. 27):
+//    (the 25 x 2 beam) it is meaningless (docs/pull-in.md).
+// 2b. Dynamic V_PI with the full field (--sections laplace_dynamic; docs/pull-in.md, "Plate +
+// parallel plate against plane + Laplace"):
 //    plane + Laplace (coupling/laplace_dynamic_switch.hpp: the field recomputed once per IDA
 //    step, gap-scaled lagged load inside the step; beams nx x nx/12.5, gap cells 2 ny) against
 //    the plate + parallel-plate (monolithic IDA), the same bisection (0.8-1.02 x each model's
 //    own quasi-static V_PI, to --laplace-dyn-tolerance) and the same IDA settings for both:
 //    rtol --laplace-dyn-rtol (1e-4), order <= 2, per-kind error weights (state_tolerances.hpp:
 //    atol rtol g0 on displacements, rtol g0 omega_1 on velocities, omega_1 = 2 pi 131 kHz, the
-//    measured first mode of sec. 6e). The scalar atol 1e-4 g0 of item 2 puts 3.75e-10 m/s on
+//    measured first mode, docs/pull-in.md). The scalar atol 1e-4 g0 of item 2 puts 3.75e-10 m/s on
 //    the velocities and makes the plane beam take ~5500 steps per run (measured on 50 x 4),
 //    each with a field solve. Accuracy of each model against its own finer mesh.
 // 3. The default case (cases/switch_plate/case.yaml as the driver runs it: plate 40 x 4 +

@@ -42,10 +42,10 @@
 //       [--families ...] [--rate-factors 1 10 0] [--t-ref T (exploration: skip the reference)]
 //       [--case switch_plate_damped --end-time 40e-6 --free-voltage 20]
 //       [--ida-nonlin-conv C --ida-max-newton N --ida-dcj D --ida-eta-max-fx E ... : IDA's Newton
-//        and step controls (IdaOptions) for the adaptive families only, sec. 51]
-// docs/BENCHMARKS.md sections 6 (scalar atol), 6e (error weights, cutting fixed steps), 32
-// (the squeeze-film-dominated switch, cases/switch_plate_damped), 43 (four voltages) and 51
-// (IDA's controls).
+//        and step controls (IdaOptions) for the adaptive families only]
+// Results: docs/pull-in.md, "Work against error" (scalar atol, error weights, cutting fixed
+// steps, four voltages, IDA's controls, the fold) and "Damped switches" (the
+// squeeze-film-dominated switch, cases/switch_plate_damped).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -237,7 +237,7 @@ int main(int argc, char** argv) {
   app.add_option("--cases", cases, "the repository's cases/ directory");
   app.add_option("--case", case_name,
                  "the switch case under --cases (switch_plate; switch_plate_damped: the "
-                 "squeeze-film-dominated one, BENCHMARKS sec. 32)");
+                 "squeeze-film-dominated one, docs/pull-in.md)");
   app.add_option("--end-time", g_end_time, "every run gives up (not pulled in) at this time [s]");
   app.add_option("--free-voltage", free_voltage,
                  "step voltage [V] of the free response that measures omega_1");

@@ -1,4 +1,4 @@
-// Reynolds-film damping of the gas damping study's beam (issue 8; docs/gas_damping.md): the
+// Reynolds-film damping of the gas damping study's beam (docs/gas_damping.md): the
 // quasi-static, linearised Reynolds equation with Veijola's effective viscosity on a strip
 // (lib/physics/gas/reynolds_film.hpp, reynolds_quasi_static.hpp), width w = 45 um (and
 // w + 2 dL with Veijola-Pursula-Raback's edge elongation dL = 0.8488 g (1 + 2.676 Kn^0.659),

@@ -1,4 +1,4 @@
-// Continuum reference for the gas damping case (issue 8; docs/gas_damping.md): steady Stokes
+// Continuum reference for the gas damping case (docs/gas_damping.md): steady Stokes
 // flow around the beam of cases/gas_damping_regimes (half domain 43.5 x 29.5 um, beam half
 // width b = 22.5 um, thickness 1.5 um, gap 7 um, symmetry at x = 0, open right and top), the
 // beam moving at -0.1 m/s through the fixed geometry (quasi-steady, as the kinetic case),

@@ -1,5 +1,5 @@
 // bench_structure_distributed: the cantilever's static solve with the structure on
-// distributed vectors (issue 7, docs/BENCHMARKS.md section 29) against the serial KLU solve.
+// distributed vectors (docs/mpi.md, "Distributed structure") against the serial KLU solve.
 //
 // Problem: cases/cantilever_static (plane stress, L = 2 m, h = 0.04 m, clamped left end, end
 // shear 1000 Pa), nx x ny cells, cubic reconstruction. Run under mpirun -np P; one JSON line

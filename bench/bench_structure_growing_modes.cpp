@@ -1,10 +1,10 @@
-// Growing modes of the immersed switch's semi-discrete beam (issue 8's spurious touch-down,
-// docs/BENCHMARKS.md section 47). The undamped structure M u'' + K u = f(u) linearised at rest,
-// M u'' + (K - J) u = 0 with J = df/du, has the modes u ~ exp(s t), s^2 = -lambda,
-// lambda an eigenvalue of M^-1 (K - J). A symmetric positive K gives lambda > 0 and s = +-i
-// omega; the cell-centred FV stiffness is not symmetric, and a complex pair lambda = a +- i b
-// gives s with real part |Im sqrt(lambda)| > 0 for one of each pair: a mode that grows from
-// round-off at that rate unless the integrator damps it.
+// Growing modes of the immersed switch's semi-discrete beam (the spurious touch-down,
+// docs/immersed_switch.md, "Grid damping"). The undamped structure M u'' + K u = f(u) linearised at
+// rest, M u'' + (K - J) u = 0 with J = df/du, has the modes u ~ exp(s t), s^2 = -lambda, lambda an
+// eigenvalue of M^-1 (K - J). A symmetric positive K gives lambda > 0 and s = +-i omega; the
+// cell-centred FV stiffness is not symmetric, and a complex pair lambda = a +- i b gives s with
+// real part |Im sqrt(lambda)| > 0 for one of each pair: a mode that grows from round-off at that
+// rate unless the integrator damps it.
 //
 // For the case (--set overrides as rfmems-pullin takes them; an immersed switch's beam, or the
 // FV elasticity structure of any other case, without the load), one JSON line per operator:

@@ -1,4 +1,4 @@
-// rfmems-creep: creep of a plate structure over hundreds of hours (thesis ch. 4, issue 5):
+// rfmems-creep: creep of a plate structure over hundreds of hours (thesis ch. 4):
 // a membrane under a pressure and/or a hold voltage sags as its bending stresses creep; with
 // a gap the run reports the switch's creep life (the gap reaches a threshold, or the membrane
 // collapses onto the electrode when the held equilibrium disappears). Implicit (IDA) or

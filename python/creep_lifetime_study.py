@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Creep life of a held switch vs hold voltage: a derating curve (issue 5).
+"""Creep life of a held switch vs hold voltage: a derating curve.
 
 Runs rfmems-creep on a switch creep case (default cases/creep_switch_hold/case.yaml) at each
 hold voltage (--set actuation.voltage=V, end time long enough for the life to be reached),

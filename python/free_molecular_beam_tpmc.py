@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Free-molecular damping of the gas damping study's beam over its substrate, by a linearised
 (deviational) test-particle Monte Carlo: an independent reference for ESBGK at Kn >> 1
-(issue 8, docs/gas_damping.md).
+(docs/gas_damping.md).
 
 Collisionless gas, f = M + df with M the ambient Maxwellian (rho, T) and df linear in the beam
 velocity U = (0, -V). Geometry of cases/gas_damping_regimes (full width): substrate y = 0

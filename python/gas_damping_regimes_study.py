@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Gas damping across regimes (issue 8): ESBGK against the free-molecular, Reynolds/Veijola
+"""Gas damping across regimes: ESBGK against the free-molecular, Reynolds/Veijola
 and continuum references, 0.1 Pa - 1e5 Pa.
 
 A series of rfmems-gas runs on cases/gas_damping_regimes/case.yaml (beam 45 um x 1.5 um,

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Communication model of the distributed kinetic solvers (issue 7, docs/BENCHMARKS.md sec. 12).
+"""Communication model of the distributed kinetic solvers (docs/mpi.md).
 
 Reads the JSON lines of bench/bench_gas_scaling (worker lines) and projects the parallel
 efficiency of one iteration (COMET: one V-cycle) to 64-512 ranks on a cluster network:

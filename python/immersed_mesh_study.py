@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Mesh-refinement table of rfmems-pullin runs of the immersed switch (docs/BENCHMARKS.md 46).
+"""Mesh-refinement table of rfmems-pullin runs of the immersed switch (docs/immersed_switch.md, "Mesh independence").
 
 For three or more runs of one refinement family (coarse to fine), each a --json result with
 its .h5 history: pull-in time, tip deflection at fixed times, change per refinement, and the

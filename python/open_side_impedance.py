@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """The pressure jump against the normal velocity along the open sides of a gas damping run
-(issue 8; docs/gas_damping.md "Why ESBGK sat 10.5 % above the Stokes reference"): in the cells
+(docs/gas_damping.md "Why ESBGK sat 10.5 % above the Stokes reference"): in the cells
 next to the right and top pressure boundaries of an rfmems-gas output (the case
 cases/gas_damping_regimes), C = (p - p_a) / (p_a u_n / sqrt(2 R T)) by least squares, and the
 share of the beam's swept flux V b that leaves through the right side.

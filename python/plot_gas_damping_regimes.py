@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""One plot, damping ratio vs pressure, all gas models (issue 8; docs/gas_damping.md).
+"""One plot, damping ratio vs pressure, all gas models (docs/gas_damping.md).
 
 Reads the JSON lines of python/gas_damping_regimes_study.py (ESBGK runs; the references are
 recomputed on a dense pressure grid by the same module's formulas) and writes a PNG.

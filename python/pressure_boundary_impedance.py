@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The normal impedance of the kinetic pressure boundary (issue 8; docs/gas_damping.md "Why
+"""The normal impedance of the kinetic pressure boundary (docs/gas_damping.md "Why
 ESBGK sat 10.5 % above the Stokes reference"), measured with rfmems-gas.
 
 Slab L x L (2 x N quads, specular sides): the bottom a diffuse wall moving along its normal

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Squeeze-film damping of the ESBGK gas (thesis sec. 5.5.3, Tables 5.5-5.7; issue 6).
+"""Squeeze-film damping of the ESBGK gas (thesis sec. 5.5.3, Tables 5.5-5.7).
 
 Two studies on cases/gas_squeeze_film/case.yaml, each a series of rfmems-gas runs:
 

@@ -1,4 +1,4 @@
-// Gas damping across regimes (issue 8): a beam moving normally above a substrate, 2D cross
+// Gas damping across regimes: a beam moving normally above a substrate, 2D cross
 // section, half domain with the beam's symmetry plane at x = 0. Beam 45 um wide (half width
 // b = 22.5 um) and 1.5 um thick (the cantilever switch's beam), gap g = 7 um (so that
 // Kn = lambda / g reaches 0.009 at 1e5 Pa in argon at 273.15 K); the open sides (pressure

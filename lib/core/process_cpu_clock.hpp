@@ -1,6 +1,6 @@
 // CPU seconds of the process (CLOCK_PROCESS_CPUTIME_ID), and a scope that adds its CPU time to
 // a counter: per-physics cost accounting of coupled runs on a loaded machine, where wall time
-// is noisy (docs/BENCHMARKS.md reports CPU time beside wall time).
+// is noisy (the results pages under docs/ report CPU time beside wall time).
 #pragma once
 #include <time.h>
 

@@ -131,7 +131,7 @@ LogDecrement log_decrement(const std::vector<DynamicSample>& history);
 // frequency within 2 %, so its extrema are the fundamental's - its zeta and frequency are
 // reported instead: at light damping they are the less biased by higher modes (a higher mode
 // of 1-2 % of the static deflection biases the fit's zeta 2-3x more, test_step_response_fit),
-// and they keep docs/BENCHMARKS.md 6e's figures.
+// as in docs/pull-in.md, "Work against error".
 struct FreeResponse {
   bool fitted = false;              // false: too few samples or no motion, nothing measured
   bool from_log_decrement = false;  // damping_ratio and frequency are the log decrement's

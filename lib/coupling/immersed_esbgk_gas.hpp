@@ -1,4 +1,4 @@
-// The ESBGK gas in the coupled immersed-boundary switch (issue 8): the ImmersedGasModel
+// The ESBGK gas in the coupled immersed-boundary switch: the ImmersedGasModel
 // (immersed_gas.hpp) that wraps ImmersedKineticGas (lib/ibm) on the switch's background mesh.
 //
 // reset(surface): a fresh gas, the body at rest, the equilibrium at (rho0 = p0 / (R T0), 0, T0)
@@ -8,7 +8,7 @@
 //
 // Boundaries of make_switch_background's patches: electrode and substrate diffuse at T0 (the
 // thesis's diffuse substrate), left diffuse at T0 (the anchor wall the beam is clamped in),
-// top and right pressure at (p0, T0) (the open sides, issue 8).
+// top and right pressure at (p0, T0) (the open sides).
 #pragma once
 #include <memory>
 #include <string>

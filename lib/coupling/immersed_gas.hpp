@@ -1,4 +1,4 @@
-// The gas slot of the immersed-boundary switch (issue 8): what a gas model must offer the
+// The gas slot of the immersed-boundary switch: what a gas model must offer the
 // coupling manager (immersed_switch.hpp), so that the ESBGK gas on the background mesh
 // (helper ibmgas, lib/ibm) plugs in beside the cheap models without touching the manager.
 //

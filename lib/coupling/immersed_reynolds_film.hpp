@@ -1,5 +1,5 @@
 // A 1D isothermal compressible Reynolds film under the beam of the immersed switch (the
-// "reynolds" model of the gas slot, immersed_gas.hpp; thesis sec. 1.5 for the equation):
+// "reynolds" model of the gas slot, immersed_gas.hpp; thesis ch. 1 for the equation):
 //
 //   d(p h)/dt = d/dx( h^3 p Q(Kn) / (12 mu) dp/dx ),   Kn = lambda(p) / h,
 //

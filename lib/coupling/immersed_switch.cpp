@@ -191,7 +191,7 @@ std::vector<Vec3> ImmersedSwitch::vertex_displacements(std::span<const Real> u) 
   // between neighbouring cells is nearly symmetric, as a conservative force's must be (a
   // vertex moved by one of its cells only made cell c's load follow cell c+1's motion but
   // hardly the reverse, and left cell 0 at the clamp nearly without its own stiffness;
-  // docs/BENCHMARKS.md section 47).
+  // docs/immersed_switch.md, "Grid damping").
   const std::vector<Mat3> gradients = beam_.cell_gradients(0.0, u);
   const Mesh& mesh = beam_.mesh();
   const std::size_t n = vertex_node_.size();

@@ -1,4 +1,4 @@
-// The coupling manager of the immersed-boundary switch (issue 8, thesis ch. 6): a plane
+// The coupling manager of the immersed-boundary switch (thesis ch. 6): a plane
 // elastic beam on its own structure mesh moving through a fixed Cartesian background mesh
 // that carries the potential (beam at V, an immersed equipotential; bottom electrode at 0)
 // and, through the gas slot (immersed_gas.hpp), the gas.

@@ -2,7 +2,7 @@
 // (pull-in is then certain), so that the run can end early as pulled in: the rule for strongly
 // damped or overdamped switches, whose runs between V_dyn and V_qs creep slowly past the fold
 // and would otherwise be counted "no pull-in" at end_time, making the bisection's answer a
-// figure of end_time (docs/BENCHMARKS.md sections 44 and 49). Shared by the dynamic runners as
+// figure of end_time (docs/pull-in.md, "Bisection end rules"). Shared by the dynamic runners as
 // the turning and settle rules are (run_dynamic in dynamic_pull_in.hpp, the field-coupled
 // beams through step_voltage_run.hpp).
 //
@@ -48,7 +48,7 @@ namespace rfmems {
 
 struct QuasiStaticPullIn;
 
-// The default m (docs/BENCHMARKS.md section 49).
+// The default m (docs/pull-in.md, "Bisection end rules").
 inline constexpr Real kPastFoldMargin = 0.05;
 
 // The quasi-static fold and the unstable branch beyond it (the samples outwards from the fold).

@@ -7,9 +7,9 @@
 // not: the contact front sits between cells, and the cell next to it is softened by
 // V^2 eps0 / g_ec^3 per area, more than the plate's bending stiffness per cell at the default
 // switch's 10-20 um cells above ~50 V, so the branch folds each time the front moves by a cell
-// (docs/BENCHMARKS.md section 28). Each solve therefore first follows the pseudo-transient
-// flow from the previous contact state (pseudo_transient_relaxation.hpp: the nearest stable
-// equilibrium, through those local snaps) and then polishes with Newton.
+// (docs/pull-in.md, "Contact and pull-out"). Each solve therefore first follows the
+// pseudo-transient flow from the previous contact state (pseudo_transient_relaxation.hpp: the
+// nearest stable equilibrium, through those local snaps) and then polishes with Newton.
 //
 // From a state resting on the dielectric (pulled in: the end of a dynamic approach, or
 // press_onto_dielectric) the equilibrium R(y) + V^2 q(y) = 0 is solved at start_voltage, then at

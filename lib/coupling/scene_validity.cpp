@@ -69,7 +69,7 @@ void check_plate(const SceneDescription &s, ValidityReport &r) {
     r.warnings.push_back(creep ? fmt::format("plate creep: L/h = {:.3g} below {:g} (the plate "
                                              "neglects shear "
                                              "creep: 15 % at L/h = 10, 2.5 % at 30, "
-                                             "docs/BENCHMARKS.md sec. 9; "
+                                             "docs/creep.md; "
                                              "creep.shear_creep: true includes it)",
                                              slenderness, limit)
                                : fmt::format("plate: L/h = {:.3g} below {:g} (thick plate: "

@@ -18,9 +18,9 @@
 //      (elongation) correction, of order the gap per open edge (Veijola 2004), is left out.
 //  - Plate (Mindlin-Reissner; length L along x, thickness h):
 //      creep: L/h >= 20 for the bending-only plate (the thesis's: shear creep neglected):
-//        docs/BENCHMARKS.md sec. 9 measured the centre deflection off by 15 % at L/h = 10,
-//        2.5 % at 30, 0.75 % at 60 against the continuum. With creep.shear_creep the plate is
-//        within 0.5 % of the continuum at L/h = 10, 30 and 60 (docs/creep.md), so the
+//        docs/creep.md ("Plate against continuum") measured the centre deflection off by 15 % at
+//        L/h = 10, 2.5 % at 30, 0.75 % at 60 against the continuum. With creep.shear_creep the
+//        plate is within 0.5 % of the continuum at L/h = 10, 30 and 60 (docs/creep.md), so the
 //        static / dynamic limit applies;
 //      static / dynamic: L/h >= 10. Mindlin's first-order shear deformation is in the plate;
 //        below L/h ~ 10 the through-thickness (3D, thick-plate) stresses it neglects matter.

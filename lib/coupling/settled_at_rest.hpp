@@ -26,7 +26,7 @@
 //                underdamped run at V_dyn approaches with the velocity and film force dying;
 //                and above the fold voltage there is no equilibrium to rest at (within 0.1 %
 //                of V_qs the film's share, ~2 (V / V_qs - 1) of F_el, falls below s: a slow
-//                passage there looked settled; docs/BENCHMARKS.md section 49).
+//                passage there looked settled; docs/pull-in.md, "Bisection end rules").
 //
 // s = settle_tolerance (default 1e-2); the rule is off without the fold's deflection (0) or
 // with s = 0. Checked after every step IDA accepts.
@@ -36,7 +36,7 @@
 
 namespace rfmems {
 
-// The default s (docs/BENCHMARKS.md section 44).
+// The default s (docs/pull-in.md, "Bisection end rules").
 inline constexpr Real kSettleTolerance = 1e-2;
 
 class SettledAtRest {

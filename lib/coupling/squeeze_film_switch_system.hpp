@@ -11,7 +11,7 @@
 // column p_c), and in the film rows dF/dp + c_j dF/dp' on the p columns, dF/dg on the w
 // columns and dF/dg' on the v columns (the gap rate is the state v, not a derivative). So IDA
 // sees the exact coupled tangent: no staggering error and no stability limit from the
-// coupling. The film is where the damping of the switch comes from (thesis sec. 2.7.3:
+// coupling. The film is where the damping of the switch comes from (thesis ch. 2:
 // pull-in slows as the pressure rises).
 #pragma once
 #include <vector>

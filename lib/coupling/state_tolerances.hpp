@@ -4,7 +4,7 @@
 // IDA weighs component i by 1 / (rtol |y_i| + atol_i). One scalar atol on unknowns in m, rad,
 // m/s and Pa weighs none of them by its physics; from rest (|y| = 0) atol alone sets the
 // test, and a tiny one makes IDA follow every small high-frequency bending mode a voltage step
-// excites (docs/BENCHMARKS.md sec. 6c). Scales that follow from one length tolerance d:
+// excites (docs/pull-in.md, "Work against error"). Scales that follow from one length tolerance d:
 //
 //   displacement   d [m]            an error of d in the gap is what the quantity of interest
 //                                    (the pull-in time, the gap history) tolerates;

@@ -12,7 +12,7 @@
 // decrement (dynamic_pull_in.hpp, LogDecrement) needs several swings of the fundamental; on a
 // squeeze-film-damped switch (zeta ~ 0.5) there is one overshoot, and the extrema it finds
 // belong to a weakly damped higher mode riding on the settled fundamental (0.016 at 937 kHz
-// against 0.54, cases/switch_plate_damped, docs/BENCHMARKS.md sections 32 and 39). A higher
+// against 0.54, cases/switch_plate_damped, docs/pull-in.md, "Damped switches"). A higher
 // mode of small amplitude only adds to the residual.
 //
 // The fit is started from a grid of damping ratios, each with the frequency that puts phi's

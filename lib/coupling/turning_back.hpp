@@ -5,7 +5,7 @@
 // The control's velocity changing sign is not enough: on a squeeze-film-damped switch the
 // slow creep towards the fold carries the wiggles of weakly damped higher modes, each a zero
 // of the velocity (cases/switch_plate_damped: "84 V does not pull in" while 76 V does,
-// docs/BENCHMARKS.md sections 32 and 39). A turning counts once the control x (< 0 towards
+// docs/pull-in.md, "Damped switches"). A turning counts once the control x (< 0 towards
 // the electrode) has retreated from its extreme x_min by a fraction r of that excursion:
 //
 //     x - x_min >= r |x_min|.
@@ -28,7 +28,7 @@
 
 namespace rfmems {
 
-// The default r: 2 % of the excursion (docs/BENCHMARKS.md section 39).
+// The default r: 2 % of the excursion (docs/pull-in.md, "Damped switches").
 inline constexpr Real kTurningRetreat = 0.02;
 
 class TurningBack {

@@ -54,9 +54,10 @@ std::vector<Index> pair_cells(const FaceGraph& fine, Index& n_coarse) {
   return group;
 }
 
-// Step 6 of thesis sec. 5.4: the owners tell the fine ghosts their coarse cells. Numbers the
-// owned coarse cells globally, gives each distinct coarse cell of a fine ghost a local ghost
-// index after the owned ones, and completes coarse_of_fine, coarse_global, coarse_owner.
+// Step 6 of the thesis's parallel agglomeration (ch. 5): the owners tell the fine ghosts their
+// coarse cells. Numbers the owned coarse cells globally, gives each distinct coarse cell of a fine
+// ghost a local ghost index after the owned ones, and completes coarse_of_fine, coarse_global,
+// coarse_owner.
 Index number_coarse_ghosts(const FaceGraph& fine, const Communicator& comm,
                            const GhostExchange& fine_exchange, Index n_coarse_owned,
                            Agglomeration& a) {

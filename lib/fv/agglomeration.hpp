@@ -1,5 +1,5 @@
 // Coarse levels of a FaceGraph by pairwise agglomeration, for the geometric (FAS) multigrid of
-// COMET (thesis sec. 5.3.2-5.4, after Mathur & Murthy): "each fine level cell is agglomerated
+// COMET (thesis ch. 5, after Mathur & Murthy): "each fine level cell is agglomerated
 // to the neighbouring cell with which it shares the largest face area".
 //
 // Pairing: cells are visited in index order; an unpaired cell takes the unpaired neighbour
@@ -18,9 +18,10 @@
 // volume and every patch's area vector exactly; it is exact for the upwind flux c.S of a
 // state that is uniform on the merged face, which is what first-order upwind assumes anyway.
 //
-// Distributed meshes (thesis sec. 5.4 steps 5-7): a rank's FaceGraph holds its owned cells
-// and one ghost layer. Each rank pairs only its owned cells with owned neighbours, so a coarse
-// cell never crosses ranks and a coarse level is again "owned coarse cells, then ghosts":
+// Distributed meshes (steps 5-7 of the thesis's parallel algorithm, ch. 5): a rank's FaceGraph
+// holds its owned cells and one ghost layer. Each rank pairs only its owned cells with owned
+// neighbours, so a coarse cell never crosses ranks and a coarse level is again "owned coarse cells,
+// then ghosts":
 //   - owned coarse cells are numbered rank by rank (global number = the rank's offset, an
 //     exclusive sum of the owned coarse counts, + local index);
 //   - the coarse global number and owner rank of every owned fine cell go to the ranks that

@@ -2,7 +2,7 @@
 // volumes and centroids, and faces (owner, neighbour, outward area vector, patch).
 //
 // Why not the Mesh itself: the kinetic gas solver runs on the Mesh's cells and on coarse
-// levels made by agglomerating them (COMET's geometric multigrid, thesis sec. 5.3.3), whose
+// levels made by agglomerating them (COMET's geometric multigrid, thesis ch. 5), whose
 // cells are unions of fine cells with no node lists. Both are a FaceGraph, so one upwind
 // discretisation serves every level.
 //

@@ -1,4 +1,4 @@
-// The immersed background's partition under MPI (issues 7 and 8), shared by the distributed
+// The immersed background's partition under MPI, shared by the distributed
 // ESBGK gas and the distributed electrostatics: METIS k-way on the background's cell graph,
 // weight 16 for a cell FLUID at the given (rest) marking and 1 otherwise (the work is per
 // FLUID cell), computed on the root and broadcast so that every rank holds the same answer

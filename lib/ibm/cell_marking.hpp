@@ -1,4 +1,4 @@
-// Marking of a fixed 2D background FV mesh against an immersed body (thesis sec. 6.1.1,
+// Marking of a fixed 2D background FV mesh against an immersed body (thesis ch. 6,
 // after the 8 steps of its ref. [135]):
 //
 //   1. IB cells: the cells whose interior the body's surface cuts. Candidates come from a

@@ -1,5 +1,5 @@
-// One rank's part of the immersed gas's FLUID graph (fluid_face_graph.hpp) under MPI (issues 7
-// and 8): the FLUID cells of the background cells this rank owns, then ghost FLUID cells, with
+// One rank's part of the immersed gas's FLUID graph (fluid_face_graph.hpp) under
+// MPI: the FLUID cells of the background cells this rank owns, then ghost FLUID cells, with
 // the faces of the owned cells and a GhostExchange over them.
 //
 // Why every rank holds the global FLUID graph and restricts it here: the marking, the IB

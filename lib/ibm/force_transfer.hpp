@@ -1,6 +1,6 @@
 // Transfer of loads from the background mesh's IB faces to the structure's surface faces
 // (the segments of the ImmersedSurface), and the dual map of the wall velocity back (thesis
-// sec. 6.1.2: "the fluid traction and electrostatic forces are calculated on the background
+// ch. 6: "the fluid traction and electrostatic forces are calculated on the background
 // mesh and are interpolated back to the solid surface mesh").
 //
 // A force F_k = t_k |S_k| on IB face k (centroid x_k; t_k the gas or Maxwell traction on the

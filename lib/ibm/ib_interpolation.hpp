@@ -1,4 +1,4 @@
-// Least-squares interpolation to the immersed-boundary faces (thesis sec. 6.1.2; the fit of
+// Least-squares interpolation to the immersed-boundary faces (thesis ch. 6; the fit of
 // Ollivier-Gooch & Van Altena 2002 as in fv/polynomial_reconstruction, centred on the face).
 //
 // For each IB face f (centroid x_f, beside FLUID cell c_f) the value phi(x_f) is a fixed
@@ -22,7 +22,7 @@
 // far side would enter). `wall_point_admissible` lets a caller drop segments, e.g. for the
 // ESBGK gas the faces at which ordinate c does not leave the wall (c . n <= 0).
 //
-// The one-sided corner case (thesis sec. 7.2.5). Where admissible wall points exist on one
+// The one-sided corner case (thesis ch. 7). Where admissible wall points exist on one
 // side of a corner only, or none at all (all wall points dropped), x_f is no longer
 // surrounded by its stencil: the value is extrapolated, the fit's condition number grows and
 // it amplifies the data (sum |w_j|, the Lebesgue constant, grows; > 1 means overshoot, and
@@ -89,7 +89,7 @@ class IbInterpolation {
  public:
   IbInterpolation(const Mesh& background, const CellMarking& marking, const ImmersedSurface& body,
                   IbInterpolationOptions options = {});
-  // The thesis's step 1 for the gas (sec. 6.1.2): values at the surface segments' midpoints
+  // The thesis's step 1 for the gas (ch. 6): values at the surface segments' midpoints
   // (the structure's faces) from the FLUID cells alone, seeded at the FLUID cell nearest each
   // midpoint; the same fit and rule (an extrapolation by about a cell, so most of these
   // stencils are one-sided). face(k) is then segment k.

@@ -1,5 +1,5 @@
 // The distribution function on the IB faces of the immersed kinetic gas: the thesis's three
-// steps (sec. 6.1.2) as the ExternalFaceValues of the "immersed" patch of a FluidFaceGraph.
+// steps (ch. 6) as the ExternalFaceValues of the "immersed" patch of a FluidFaceGraph.
 //
 //   (i)   At the surface segments' midpoints (the structure's faces, unit outward normal n_j),
 //         the ordinates going INTO the solid (c_k . n_j < 0) from the FLUID cells alone:

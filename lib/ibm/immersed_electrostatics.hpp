@@ -1,4 +1,4 @@
-// Electrostatics on the background mesh with an immersed conductor (issue 8; thesis sec. 6.2:
+// Electrostatics on the background mesh with an immersed conductor (thesis ch. 6:
 // "the electrostatic field is solved on the background mesh"):
 //
 //   div(eps grad phi) = 0   on the FLUID cells,
@@ -26,7 +26,7 @@
 // normal out of the body (the conductor is pulled into the field), ready for ForceTransfer.
 // Reuses PotentialBoundary and the permittivity of lib/physics/electrostatics.
 //
-// Under MPI (distribute(comm), issue 8): the background is partitioned once, at the first
+// Under MPI (distribute(comm)): the background is partitioned once, at the first
 // solve's marking (background_partition.hpp, as the gas's); every rank marks and fits from the
 // same global data (the caller's), assembles the rows of the FLUID cells it owns (global
 // columns: the fits reach FLUID cells a few rings away, those are ghosts) and the ghost rows
@@ -61,7 +61,7 @@ namespace rfmems {
 enum class IbFaceFlux { FitGradient, TwoPoint };
 
 // Factorisation per solve: Reuse keeps the symbolic analysis (and pivots) while the pattern is
-// unchanged; Fresh analyses and factorises every call (the old path, kept as the reference).
+// unchanged; Fresh analyses and factorises every call (the reference to check Reuse against).
 enum class LuReuse { Reuse, Fresh };
 
 class KluFactorization;

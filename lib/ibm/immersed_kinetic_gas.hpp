@@ -38,7 +38,7 @@
 // conserve_mass_on_remark, closed domains only: no pressure patch), so M is an invariant of
 // every set_body too; the scale factor differs from 1 by O((rho_cell - rho_ref) dA / M).
 //
-// Under MPI (options.comm with more than one rank; issues 7 and 8): the background is
+// Under MPI (options.comm with more than one rank): the background is
 // partitioned once (METIS k-way on its cell graph, weights 16 for a FLUID cell at the first
 // marking, 1 otherwise: the gas's cost is its FLUID cells), on the root and broadcast. Every
 // rank marks, fits, transfers and builds the global FLUID graph from the same global data
@@ -54,7 +54,7 @@
 // re-marking runs per owned cell, with a ghost exchange between its filling passes, so it fills the
 // cells the serial one fills, in the same passes. GasStepper::Ida is serial only.
 //
-// Second-order transport (options.transport, issue 8; second_order_transport.hpp): the FLUID
+// Second-order transport (options.transport; second_order_transport.hpp): the FLUID
 // graph's KineticOperator gets the body-fitted gas's scheme unchanged (LS gradient, limiter,
 // deferred correction). Near the body:
 //   - the gradient stencil of a cell is its FLUID face neighbours only; the IB faces are

@@ -1,5 +1,5 @@
 // The closed surface of an immersed body in 2D: a simple polygon whose segments
-// are the structure's surface faces (thesis sec. 6.1.1, step 2: "a surface mesh
+// are the structure's surface faces (thesis ch. 6, step 2: "a surface mesh
 // is created from the solid"). Vertices run counterclockwise, so the outward
 // normal of segment k (v_k -> v_k+1) is its tangent rotated clockwise, as for a
 // Mesh boundary face.

@@ -1,4 +1,4 @@
-// Checkpoints of long runs (issue 5: creep runs of thousands of hours): everything a run
+// Checkpoints of long runs (creep runs of thousands of hours): everything a run
 // needs to resume at model time t exactly as if it had never stopped.
 //
 // HDF5 layout (one file, written ATOMICALLY: "<path>.tmp.<pid>", closed, then renamed over

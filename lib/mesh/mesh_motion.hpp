@@ -1,4 +1,4 @@
-// Mesh motion for the electrostatic gap under a deflecting beam (thesis sec. 2.5): the nodes
+// Mesh motion for the electrostatic gap under a deflecting beam (thesis ch. 2): the nodes
 // of the moving patches (the beam's face) take a prescribed displacement, the nodes of the
 // fixed patches (the electrode, the substrate) stay, and every other node follows by
 //

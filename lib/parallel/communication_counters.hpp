@@ -1,6 +1,6 @@
 // What this process has sent through lib/parallel since it started: point-to-point messages
 // and their bytes (ghost exchanges), and collective reductions (norms, masses, forces). The
-// scaling benchmark's communication model (docs/BENCHMARKS.md, issue 7) reads the difference
+// scaling benchmark's communication model (docs/mpi.md) reads the difference
 // of two snapshots around a solve, so the figures are measured by the exchange layer itself,
 // not estimated. Counting is a few integer additions per message, and two clock reads around
 // each wait (Waitall of an exchange, a reduction): always on. The time in waits is what

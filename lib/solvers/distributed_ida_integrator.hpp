@@ -1,5 +1,5 @@
 // Transient integration of a DistributedSystem with SUNDIALS IDA on the MPI parallel
-// N_Vector (issue 7): variable-order variable-step BDF as IdaIntegrator, with SPGMR (left
+// N_Vector: variable-order variable-step BDF as IdaIntegrator, with SPGMR (left
 // preconditioned) for the Newton systems, the exact distributed Jacobian-vector product of
 // dF/dy + c_j dF/dy' and a rank-local KLU preconditioner (solvers/distributed_linearization.hpp:
 // the Schur complement K + c_j^2 M by additive Schwarz on the overlap for a structural
@@ -12,7 +12,7 @@
 // Krylov tolerance (IDA's eps_lin) set by the preconditioner's quality,
 // DistributedLinearization::krylov_tolerance_factor(): SUNDIALS' 0.05 let block Jacobi on a
 // damped beam end 3.6e-2 (2 ranks) and 6.1e-2 (3 ranks) off the serial answer with GMRES
-// converged every time (docs/BENCHMARKS.md section 51).
+// converged every time (docs/mpi.md, "Krylov tolerance").
 #pragma once
 #include <memory>
 #include <span>

@@ -1,4 +1,4 @@
-// A linear system A x = b with its rows distributed over the ranks (issue 8: the immersed
+// A linear system A x = b with its rows distributed over the ranks (the immersed
 // electrostatics under MPI), solved by right-preconditioned restarted GMRES (SUNDIALS SPGMR,
 // modified Gram-Schmidt) on N_Vector_Parallel with the preconditioners of
 // distributed_linearization.hpp: restricted additive Schwarz with KLU on the rank's

@@ -10,7 +10,7 @@
 // Newton for a nonlinear one.
 //
 // Block Jacobi drops the couplings between parts: on P ranks the Krylov solver has to
-// recover them, so its iterations grow with P (docs/BENCHMARKS.md section 29). One rank: the
+// recover them, so its iterations grow with P (docs/mpi.md, "Distributed structure"). One rank: the
 // block is the whole Jacobian and one iteration solves exactly.
 //
 // Restricted additive Schwarz (Cai & Sarkis 1999), where the system offers its overlapping
@@ -58,7 +58,7 @@ class DistributedLinearization {
   // IDA's Newton tolerance with this preconditioner: 5e-4 with the overlap (the Schwarz
   // variants), 5e-7 with block Jacobi, which drops the parts' coupling (measured on the
   // cantilever with and without damping, 2 and 3 ranks: the serial step count and answer, where
-  // SUNDIALS' 0.05 gave up to 6e-2 off; docs/BENCHMARKS.md section 51).
+  // SUNDIALS' 0.05 gave up to 6e-2 off; docs/mpi.md, "Krylov tolerance").
   Real krylov_tolerance_factor() const;
   // The strongest preconditioner the system offers (Schur Schwarz, Schwarz, block Jacobi).
   static Preconditioner best_for(DistributedSystem& system, bool with_derivative_terms);

@@ -1,4 +1,4 @@
-// Static equilibrium R(t, y) = 0 of a distributed structural operator (issue 7): KINSOL on
+// Static equilibrium R(t, y) = 0 of a distributed structural operator: KINSOL on
 // SUNDIALS' MPI parallel N_Vector, Newton with SPGMR (right-preconditioned GMRES, modified
 // Gram-Schmidt) for the linear systems, the exact distributed Jacobian-vector product and a
 // KLU preconditioner on the rank-local blocks (restricted additive Schwarz on the ghost

@@ -22,7 +22,7 @@ struct IdaOptions {
   // IDA's eps_lin (IDASetEpsLin): a Krylov solve stops at ||P^-1 r||_WRMS <= factor x the
   // Newton tolerance (0.33). The error of the correction, (P^-1 J)^-1 P^-1 r, is that times up
   // to ||(P^-1 J)^-1||, which a preconditioner dropping strong couplings makes large; the
-  // error lands in the step's solution and its error estimate (docs/BENCHMARKS.md section 51).
+  // error lands in the step's solution and its error estimate (docs/mpi.md, "Krylov tolerance").
   // 0: the integrator's default: SUNDIALS' 0.05 in IdaIntegrator (its Spgmr preconditioner
   // an LU of the Jacobian or the operator's own), DistributedLinearization::
   // krylov_tolerance_factor() in DistributedIdaIntegrator.

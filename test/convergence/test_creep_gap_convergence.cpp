@@ -7,7 +7,7 @@
 // physics/creep/plate_creep_system.hpp, creep_plate_model.hpp). Why this can fail: the free
 // long edges curl towards the electrode (anticlastic bending, w_y = nu w_xx (y - b/2)), so the
 // membrane is lowest at the edges' midpoints (x = L/2, y = 0 or b), half a cell outside the
-// cell centres that creep sampled before (2026-12-02; docs/BENCHMARKS.md section 45), 4 nm
+// cell centres that creep sampled before (2026-12-02; docs/creep.md, "The gap creep samples"), 4 nm
 // above it on 40 x 4. Asserted:
 //   - at t = 0 the smallest gap is the plate's own reconstruction at an edge midpoint (to
 //     1e-15 m), and below every cell centre's gap;

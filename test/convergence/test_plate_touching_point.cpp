@@ -9,11 +9,11 @@
 // w_y = nu w_xx (y - b/2)), so the surface touches first at the edges' midpoints. With one
 // point per cell (the cell centre, half a cell inside the edge) the touching point was first
 // order in the cell width: 21.56, 26.76, 28.93, 29.85 V on 20 x 2 ... 160 x 16 (observed order
-// 1.3; docs/BENCHMARKS.md sections 28 and 38), 12.7 % low on the case's 40 x 4 mesh.
+// 1.3; docs/pull-in.md, "Contact and pull-out"), 12.7 % low on the case's 40 x 4 mesh.
 // Measured now: 29.154, 30.624, 30.645 V (20 x 2, 40 x 4, 80 x 8) and 30.651 V on 160 x 16
 // (the order-2 Richardson value from 40 x 4 and 80 x 8, 30.652 V, within 1 mV of it).
 // Asserted: the case mesh within 1 % of the order-2 Richardson extrapolation from 40 x 4 and
-// 80 x 8 (the brief of issue 4), and the difference shrinking by at least 4 from
+// 80 x 8, and the difference shrinking by at least 4 from
 // (20 x 2, 40 x 4) to (40 x 4, 80 x 8) (second order or better).
 #include <gtest/gtest.h>
 

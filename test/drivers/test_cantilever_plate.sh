@@ -6,7 +6,7 @@
 # area at the tip's gap), the undamped dynamic/static ratio 0.91 +- 0.01, so the dynamic
 # pull-in near 120.6 V and not the lumped 101 V; the film raises the dynamic pull-in voltage
 # and damps the 80 V response by more than 10x the integrator's own damping; the pull-in
-# time's check is written. docs/BENCHMARKS.md section 57.
+# time's check is written. docs/immersed_switch.md, "The cheap model: plate strip".
 #
 # Usage: bash test_cantilever_plate.sh <directory of rfmems-pullin> <source directory>
 set -uo pipefail

@@ -2,13 +2,13 @@
 # rfmems-pullin's coupling section (coupling/coupling_settings.hpp) with pull_in.mode: transient
 # on a coarse switch_plate (plate 20 x 2, parallel-plate, Reynolds film at 1 atm), a 180 V
 # step from rest to 5 us (before touch-down near 6 us), solver.rtol 1e-5 (the sub-integrators'
-# rtol of docs/BENCHMARKS.md section 8). The centre deflection at 5 us from each scheme
-# against the monolithic system at rtol 1e-6, with the accuracy section 8 measured (40 x 4):
-#   monolithic rtol 1e-5 and strongly coupled (H = 0.1 us): within 1e-4 (section 8: 2.1e-5 at
+# rtol of docs/coupling.md, "Coupling schemes on the same scene"). The centre deflection at 5 us from each scheme
+# against the monolithic system at rtol 1e-6, with the accuracy measured there (40 x 4):
+#   monolithic rtol 1e-5 and strongly coupled (H = 0.1 us): within 1e-4 (measured: 2.1e-5 at
 #     rtol 1e-4, 4.1e-5 strongly coupled at H = 0.1 us, the sub-integrators' rtol floor);
 #   staggered: first order in H (the lagged interface), error at H = 0.1 us in [2e-4, 2e-3]
-#     (section 8: 5.2e-4; below 2e-4 it would not be lagging, i.e. not partitioned) and the
-#     observed order from H = 0.2 us in [0.7, 1.6] (section 8: 1.24);
+#     (measured: 5.2e-4; below 2e-4 it would not be lagging, i.e. not partitioned) and the
+#     observed order from H = 0.2 us in [0.7, 1.6] (measured: 1.24);
 # the counters (one pass per macro step staggered, more strongly coupled), the history in the
 # result file, and the bad-input contract of every coupling and pull_in.transient key.
 #
@@ -76,14 +76,14 @@ print(f"w(5 us) = {1e6 * w['reference']:.6f} um; errors: monolithic rtol 1e-5 {e
       "residual evals " + ", ".join(f"{n} {runs[n]['pull_in']['transient']['residual_evals']}" for n in runs))
 PY
 then
-  pass "the three schemes agree at 5 us within section 8's accuracy for their step"
+  pass "the three schemes agree at 5 us within the measured accuracy for their step"
 else
   fail "coupling-scheme figures"
 fi
 
 # To touch-down (contact at 2 % of the gap, near 6 us): on this coarse plate the partitioned
-# schemes reach it (on the case's 40 x 4 plate they do not finish, docs/BENCHMARKS.md
-# section 8). Their lag shifts the pull-in time by O(H): measured 3.5e-4 (strongly coupled,
+# schemes reach it (on the case's 40 x 4 plate they do not finish, docs/coupling.md,
+# "Coupling schemes on the same scene"). Their lag shifts the pull-in time by O(H): measured 3.5e-4 (strongly coupled,
 # the tolerance floor near contact) and 1.5e-3 (staggered, H = 0.1 us = 1.7 % of t_PI);
 # bounds 1e-3 and 5e-3, the monolithic rtol 1e-5 one 1e-4 (measured 4.4e-6).
 for n in "reference 1e-6 monolithic" "monolithic 1e-5 monolithic" "strong 1e-5 strongly_coupled" \

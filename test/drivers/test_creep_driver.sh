@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # rfmems-creep end to end:
-#   - checkpoint/restart contract (issue 5): the fixed-fixed creep case runs uninterrupted
+#   - checkpoint/restart contract: the fixed-fixed creep case runs uninterrupted
 #     (writing wall-clock checkpoints, which must not change its arithmetic);
 #     then again with a checkpoint at every output, killed with SIGKILL after a random delay
 #     once a checkpoint exists, and restarted from it: the final states of the two result

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# rfmems-gas on cases/gas_damping_regimes (issue 8, docs/gas_damping.md) at both ends of the
+# rfmems-gas on cases/gas_damping_regimes (docs/gas_damping.md) at both ends of the
 # pressure range, 420 cells, 8^3 velocities, the case's second-order transport (~25 s CPU):
 #  - free molecular (1 Pa and 10 Pa, Kn = 904 and 90 on the 7 um gap): the damping is
 #    proportional to p (collisionless: Kn no longer matters) to 1 % (measured 0.2 %), and at

@@ -126,7 +126,7 @@ else
 fi
 
 # ---- COMET's cycle from the case (solver.cycle): the default against an explicit V ---------
-# docs/BENCHMARKS.md section 19: below a domain Kn of 0.02 the default (auto) runs F-cycles
+# docs/kinetic.md, "COMET cycle by regime": below a domain Kn of 0.02 the default (auto) runs F-cycles
 # with one-pass coarse sweeps, which need fewer cycles than the V-cycle near continuum; the
 # same steady state (both stop at 1e-6 of the initial residual).
 if "$DRIVER" "${COMET_ARGS[@]}" --set solver.type=comet --set solver.cycle=V \

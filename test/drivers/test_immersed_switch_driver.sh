@@ -65,8 +65,8 @@ fi
 
 # The dynamic bisection (no gas, to 2 V) with its early ends armed by the quasi-static curve:
 # runs past the unstable equilibrium end early, and V_dyn and the pull-in time are those of the
-# code without the rules (122.5 V, BENCHMARKS 50; t_PI 2.157482 us since the contact root watches
-# the surface's vertices, BENCHMARKS 52: 2.172058 us at the cells' centroids), with the
+# code without the rules (122.5 V, docs/immersed_switch.md, "Grid damping"; t_PI 2.157482 us since the contact root watches
+# the surface's vertices, docs/immersed_switch.md, "The tip and the contact gap": 2.172058 us at the cells' centroids), with the
 # histories and the small-signal response of every scene's dynamic study.
 if "$DRIVER" "$CASE" "${COARSE[@]}" --set pull_in.dynamic.tolerance=2V -o "$WORK/dyn.h5" \
     --json --quiet >"$WORK/dyn.json" 2>"$WORK/err" &&

@@ -4,9 +4,9 @@
 # (stop_at_turning: true; coupling/turning_back.hpp, settled_at_rest.hpp,
 # past_unstable_equilibrium.hpp) agrees with transient runs: its lower end does not pull in
 # within the window, its upper end - above V_qs, ended past the fold - touches down at ~160 us,
-# long after the window that once counted it "no pull-in" (docs/BENCHMARKS.md sec. 49). The
+# long after the window that once counted it "no pull-in" (docs/pull-in.md, "Bisection end rules"). The
 # former turning rule (a velocity zero of the control) took the higher modes' wiggles on the
-# creep for a turning and reported 85 V while 82.5 V pulls in (sec. 39). The small-signal fit
+# creep for a turning and reported 85 V while 82.5 V pulls in (docs/pull-in.md, "Damped switches"). The small-signal fit
 # gives the fundamental's damping ratio (~0.5; the log decrement the higher mode's, < 0.1).
 #
 # Usage: bash test_pullin_damped.sh <directory of rfmems-pullin> <source directory>

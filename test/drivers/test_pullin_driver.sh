@@ -35,7 +35,7 @@ t_atm, t_kpa = (d["dynamic"]["histories"][0] for d in (atm, kpa))
 assert t_atm["pulled_in"] and t_kpa["pulled_in"] and t_atm["pull_in_time"] > t_kpa["pull_in_time"], (t_atm, t_kpa)
 # The pull-in time's check (the upper end again at 0.1 x the tolerances) estimates the reported
 # time's error: at 1 atm the bisection ends at 173.9056 V, where t_PI converges to 11.76621 us
-# (pull_in.mode=transient at that voltage, rtol 1e-6 and 1e-7 agree to 6e-8; BENCHMARKS 56)
+# (pull_in.mode=transient at that voltage, rtol 1e-6 and 1e-7 agree to 6e-8; docs/pull-in.md, "Work against error")
 # and the default rtol 1e-3 is 1.1 % off; the estimate must say so within a factor 2, and the
 # check be closer to the converged time than a quarter of the estimate.
 c = atm["dynamic"]["pull_in_time_check"]

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # rfmems-pullin on an overdamped switch (cases/switch_plate_damped at 10 atm over a 1.5 um gap,
-# 20 x 6 cells: small-signal zeta ~1.7; docs/BENCHMARKS.md sections 44 and 49): the bisection's
+# 20 x 6 cells: small-signal zeta ~1.7; docs/pull-in.md, "Bisection end rules"): the bisection's
 # answer no longer depends on end_time. Runs between V_dyn and V_qs creep past the fold for
 # hundreds of microseconds; before the past-fold rule (coupling/past_unstable_equilibrium.hpp)
 # a 50 us window counted them "no pull-in" and gave (54.73, 54.88] V = 1.134 V_qs, a 1000 us

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# rfmems-solid with solver.distributed: true (issue 7): the cantilever distributed over 1, 2
+# rfmems-solid with solver.distributed: true: the cantilever distributed over 1, 2
 # and 3 ranks (METIS parts, KINSOL + GMRES with additive Schwarz KLU blocks on the parallel N_Vector)
 # writes one result file on rank 0 whose displacement field equals the serial KLU run's to
 # 2e-7 of its largest value (the round-off floor of this L/h = 50 beam is ~4e-8,
@@ -49,7 +49,7 @@ TRANSIENT=("$SRC/cases/cantilever_vibration/case.yaml" --set "mesh.cells=[40, 4]
 "$DRIVER" "${TRANSIENT[@]}" --json -o "$WORK/tserial.h5" >"$WORK/tserial.json" 2>"$WORK/err" ||
   fail "serial transient: $(cat "$WORK/err")"
 # The JSON reports GMRES solves that missed IDA's Krylov tolerance (krylov_conv_fails): with the
-# Schur preconditioner and its eps_lin (BENCHMARKS 51) this beam has none.
+# Schur preconditioner and its eps_lin (docs/mpi.md, "Krylov tolerance") this beam has none.
 if "${MPIRUN[@]}" -np 2 "$DRIVER" "${TRANSIENT[@]}" --set solver.distributed=true --json \
     -o "$WORK/t2.h5" >"$WORK/t2.json" 2>"$WORK/err" &&
    compare "$WORK/tserial.h5" "$WORK/t2.h5" displacement 1e-3 &&

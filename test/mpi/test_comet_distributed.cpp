@@ -1,4 +1,4 @@
-// COMET on a distributed mesh (issue 7, thesis sec. 5.4) under mpirun -np P gives the serial
+// COMET on a distributed mesh (thesis sec. 5.4) under mpirun -np P gives the serial
 // answer: agglomeration per part, coarse ghosts exchanged, Gauss-Seidel within a part with
 // ghost exchanges between passes (block Jacobi between parts), global norms and masses.
 //

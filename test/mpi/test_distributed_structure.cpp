@@ -1,4 +1,4 @@
-// The structure on distributed vectors (issue 7) under mpirun -np P: the FV elasticity
+// The structure on distributed vectors under mpirun -np P: the FV elasticity
 // operator distributed over METIS parts (physics/elasticity/distributed_elasticity.hpp),
 // solved by KINSOL / IDA on SUNDIALS' parallel N_Vector with GMRES and a block-Jacobi KLU
 // preconditioner (solvers/distributed_static_solve.hpp, distributed_ida_integrator.hpp):
@@ -206,7 +206,7 @@ void expect_cantilever_transient_equals_serial_ida(double damping_time) {
     // c_j^2 M, dominates: its preconditioned residual then understates the correction's error
     // by orders of magnitude, and with SUNDIALS' Krylov tolerance (eps_lin 0.05) the run ended
     // 3.6e-2 off the serial answer on 2 ranks, 6.1e-2 on 3, with every GMRES solve converged
-    // (docs/BENCHMARKS.md section 51). The integrator's per-preconditioner tolerance
+    // (docs/mpi.md, "Krylov tolerance"). The integrator's per-preconditioner tolerance
     // (DistributedLinearization::krylov_tolerance_factor) is what this checks.
     DistributedIdaIntegrator ida(system, options, overlap);
     std::vector<double> owned_zero(system.owned_size(), 0.0);

@@ -1,4 +1,4 @@
-// The immersed electrostatics under mpirun -np P gives the serial KLU answer (issues 7 and 8):
+// The immersed electrostatics under mpirun -np P gives the serial KLU answer:
 // the background partitioned once, each rank assembling its owned FLUID rows (the IB fits'
 // columns a few rings away as ghosts), GMRES with restricted additive Schwarz KLU on the
 // overlap to ||b - A phi|| <= 1e-13 ||b||, the potential summed to every rank and the IB-face

@@ -1,4 +1,4 @@
-// The immersed ESBGK gas under mpirun -np P gives the serial answer (issues 7 and 8): the
+// The immersed ESBGK gas under mpirun -np P gives the serial answer: the
 // background partitioned once, every rank marking and fitting from the same global data, the
 // FLUID cells of each rank's part plus the transport ghosts and the IB band, ghost exchanges
 // after every sweep (block Jacobi between parts), global norms, masses and IB-face forces

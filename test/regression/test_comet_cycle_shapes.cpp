@@ -1,6 +1,6 @@
 // COMET's cycle shapes (CometOptions::cycle_shape: V, W, F) on the heat-transfer square
-// (argon ESBGK, 20 x 20 cells, 8^3 velocities, 6 levels), issue 6's "cycle count nearly flat
-// in Kn" (BENCHMARKS section 17).
+// (argon ESBGK, 20 x 20 cells, 8^3 velocities, 6 levels), the goal "cycle count nearly flat
+// in Kn" (docs/kinetic.md, "COMET cycle shapes").
 //
 // Asserted:
 //  - W and F converge (||r||/||r_0|| <= 1e-6) at Kn = 0.01 to the V-cycle's steady state: the
@@ -11,7 +11,8 @@
 //  - the default cycle (Auto, by regime): F-cycles with one-pass coarse sweeps below a domain
 //    Kn of 0.02, V-cycles (symmetric sweeps) above; at Kn = 0.01 it reaches the V-cycle's
 //    steady state (1e-4) in fewer cycles and fewer fine-sweep equivalents (work) than V, and
-//    within 2x the cycles it takes at Kn = 1 (issue 6's goal, BENCHMARKS section 19);
+//    within 2x the cycles it takes at Kn = 1 (the goal, docs/kinetic.md, "COMET cycle by
+//    regime");
 //  - mass held to round-off (1e-12 relative), no damped step;
 //  - a cycle name other than V, W, F is an InputError.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// COMET and the sequential solver converge to the same steady fields (issue 6).
+// COMET and the sequential solver converge to the same steady fields.
 //
 // Heat transfer and lid-driven cavity (test/unit/comet/comet_cases.hpp: argon, ESBGK), 10 x 10
 // cells, 8^3 velocities, Kn = 0.1 and (heat transfer) Kn = 1; both solvers to

@@ -1,4 +1,4 @@
-// Couette flow through the immersed boundary (issue 8 Verification, "IBM accuracy"): argon
+// Couette flow through the immersed boundary (the "IBM accuracy" check): argon
 // between a fixed diffuse wall (y = 0, a background boundary) and an immersed plate whose lower
 // surface is at y = H = (m + theta) h, off the grid (theta = 0.4), moving along z at U = 10 m/s
 // (the invariant direction, as in test/unit/kinetic/couette_flow.hpp; specular sides). The

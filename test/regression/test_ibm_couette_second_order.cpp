@@ -1,11 +1,12 @@
-// Couette flow through the immersed boundary with second-order transport (issue 8;
-// immersed_kinetic_gas.hpp "Second-order transport"): the set-up of test_ibm_couette.cpp (argon
+// Couette flow through the immersed boundary with second-order transport
+// (immersed_kinetic_gas.hpp "Second-order transport"): the set-up of test_ibm_couette.cpp (argon
 // between a fixed diffuse wall and an immersed plate 0.4 h above the last grid line, moving
 // along z at 10 m/s), both the IBM and the body-fitted reference with
 // `transport: second_order` (Venkatakrishnan, boundary reconstruction; the body-fitted run on
 // 4 columns so that its LS stencils span the plane).
 //
-// Asserted (numbers printed; docs/BENCHMARKS.md section 33 has the table):
+// Asserted (numbers printed; docs/ibm.md, "Second-order transport on the immersed boundary: Couette
+// and the coarse switch" has the table):
 //  - Kn = 0.1, m = 10, 20, 40 (10^3 velocities): the IBM's shear and profile within 1 % of the
 //    body-fitted run already at m = 10 (measured +6.2e-4 and the profile below); at m = 20 the
 //    shear difference is >= 10x smaller than first order's at m = 20 (measured 4.7e-4 against

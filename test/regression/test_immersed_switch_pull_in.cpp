@@ -1,6 +1,7 @@
-// Dynamic pull-in of the immersed-boundary cantilever switch (issue 8) by bisection on a coarse
-// scene, against the distributed closed form (the full scene's figures: docs/BENCHMARKS.md 21).
-// Scene helper as in test/unit/coupling/test_immersed_switch.cpp.
+// Dynamic pull-in of the immersed-boundary cantilever switch by bisection on a coarse
+// scene, against the distributed closed form (the full scene's figures: docs/immersed_switch.md,
+// "Coupled stepping, dynamic pull-in, gas models"). Scene helper as in
+// test/unit/coupling/test_immersed_switch.cpp.
 //
 // Backgrounds are 151 x 51 / 101 x 31, where the figures below were measured. They were chosen
 // because on 150 x 50 / 100 x 30 the beam's top and tip lie on grid lines and slivers gave a
@@ -22,7 +23,7 @@ using namespace rfmems::test;
 
 // Osterberg & Senturia (1997): the distributed cantilever's quasi-static pull-in, no fringing,
 // V = sqrt(0.28 E h^3 g^3 / (eps L^4)) (a fit to 2D FEM within ~1 %): 132.5 V here. The
-// lumped closed form of issue 8 (k = 2 E b h^3 / (3 L^3) at the tip, A = b L at the tip gap)
+// lumped closed form (k = 2 E b h^3 / (3 L^3) at the tip, A = b L at the tip gap)
 // gives 111 V: it puts the whole area at the tip's gap, so it pulls in too early.
 Real distributed_pull_in() {
   return std::sqrt(0.28 * 200e9 * std::pow(kThickness, 3) * std::pow(kGap, 3) /

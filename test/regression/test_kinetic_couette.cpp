@@ -10,7 +10,7 @@
 //  - the wall forces balance (momentum conservation) to 1e-4; the wall shear (first order in
 //    h: upwind's numerical viscosity), Richardson-extrapolated from 20 and 40 cells, and the
 //    cells' mean shear stress match the slip solution's mu U / (H (1 + 2 Kn)) to 5 %;
-//  - the viscosity near the continuum (issue 8, the gas damping study's Kn = 0.009): at
+//  - the viscosity near the continuum (the gas damping study's Kn = 0.009): at
 //    Kn = 0.01, second-order transport on 2 x 20 cells (h = 2.5 lambda; first order's wall
 //    shear is 3.5x there, h / (2 lambda) = 2.5), 8^3 velocities as the damping case: the wall
 //    shear is mu U / (H (1 + 2 Kn)) to 1 % (measured -0.06 % with COMET; -0.14 % and -0.18 %

@@ -1,4 +1,4 @@
-// Free-molecular damping of a diffuse wall moving in a gas at rest (issue 8, the large-Kn end
+// Free-molecular damping of a diffuse wall moving in a gas at rest (the large-Kn end
 // of the gas damping study), ESBGK argon at Kn = 100 against the closed form of
 // lib/physics/gas/kinetic/free_molecular_wall.hpp.
 //

@@ -1,4 +1,4 @@
-// The normal impedance of the kinetic pressure boundary (issue 8, the continuum end of the gas
+// The normal impedance of the kinetic pressure boundary (the continuum end of the gas
 // damping study, docs/gas_damping.md "Why ESBGK sits above the Stokes reference").
 //
 // A pressure boundary feeds the ambient Maxwellian at rest (p_a, T) into the gas

@@ -10,10 +10,10 @@
 //   (Wang, Reddy & Lee, Shear Deformable Beams and Plates, 2000, ch. 7), s = (-1)^((m+n)/2-1).
 // Asserts: hard support within 0.5 % (w) and 1 % (Mx) of these at both L/h (measured
 // +0.025 %).
-// No locking, literally (issue 3: "at fixed mesh the discretisation error and the Newton/linear
-// iteration counts are the same (within 10 %) for L/h = 10 and L/h = 1000"): the hard support
-// is the case with an exact Mindlin solution at every L/h, and its rotations and moments are
-// the same field at every L/h (only w gains the smooth term Mc/(kGh)), so the discretisation
+// No locking, literally (the criterion: "at fixed mesh the discretisation error and the
+// Newton/linear iteration counts are the same (within 10 %) for L/h = 10 and L/h = 1000"): the hard
+// support is the case with an exact Mindlin solution at every L/h, and its rotations and moments
+// are the same field at every L/h (only w gains the smooth term Mc/(kGh)), so the discretisation
 // errors at two L/h are comparable without a Richardson reference of uncertain order. On 10 x
 // 10, 20 x 20 and 40 x 40: e(1000)/e(10) of the centre deflection, relative to each exact value,
 // within 10 % of 1 (measured 1.084, 1.043, 0.980), and in units of q a^4/D (1.031, 0.992,

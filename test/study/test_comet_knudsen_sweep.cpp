@@ -1,4 +1,4 @@
-// Study (label `study`): COMET's cycle count against the Knudsen number (issue 6: "nearly
+// Study (label `study`): COMET's cycle count against the Knudsen number (the goal: "nearly
 // flat in Kn, at Kn = 0.01 within 2x of its count at Kn = 1").
 //
 // Heat transfer and cavity (test/unit/comet/comet_cases.hpp, argon ESBGK), 20 x 20 cells, 8^3
@@ -6,7 +6,8 @@
 // cycle (by regime: V-cycles at Kn 1 and 0.1, F-cycles with one-pass coarse sweeps at 0.01;
 // comet_solver.hpp), to ||r|| / ||r_0|| <= 1e-6. Asserted: every run converges; cycles(Kn =
 // 0.01) <= 2 cycles(Kn = 1) for both cases (the goal; heat transfer 9 vs 6 measured in
-// test_comet_cycle_shapes; with V-cycles everywhere it was 14 vs 6 = 2.3x, BENCHMARKS 10).
+// test_comet_cycle_shapes; with V-cycles everywhere it was 14 vs 6 = 2.3x, docs/kinetic.md, "COMET
+// cycle by regime").
 #include <gtest/gtest.h>
 
 #include <cstdio>

@@ -8,7 +8,7 @@
 //  - staggered (one pass): first order in H (the lagged interface).
 // Asserts the orders (from H and H/2) and that the strongly coupled error at the finest H is
 // within 0.2 %; prints the cost (residual evaluations) of each, the figures of
-// docs/BENCHMARKS.md ("Coupling schemes").
+// docs/coupling.md ("Coupling schemes on the same scene").
 #include <gtest/gtest.h>
 
 #include <chrono>

@@ -1,10 +1,11 @@
 // Couette flow through the immersed boundary, first against second-order transport on the
-// same meshes (issue 8; docs/BENCHMARKS.md section 33 reports the figures): the set-up of
-// test/regression/test_ibm_couette.cpp, each scheme against the body-fitted run of the same
-// scheme on the same rows (the body-fitted second-order run on 4 columns). Kn = 0.1 at
-// m = 10, 20, 40, 80 (10^3 velocities), Kn = 0.01 at m = 10, 20 (8^3). Printed per run: the
-// IBM's shear against the body-fitted one, against slip theory, its sweeps and CPU seconds.
-// Label study (~2.7 min CPU, 1.1 min of it Kn = 0.01, m = 20 with second order).
+// same meshes (docs/ibm.md, "Second-order transport on the immersed boundary: Couette and the
+// coarse switch" reports the figures): the set-up of test/regression/test_ibm_couette.cpp, each
+// scheme against the body-fitted run of the same scheme on the same rows (the body-fitted
+// second-order run on 4 columns). Kn = 0.1 at m = 10, 20, 40, 80 (10^3 velocities), Kn = 0.01 at m
+// = 10, 20 (8^3). Printed per run: the IBM's shear against the body-fitted one, against slip
+// theory, its sweeps and CPU seconds. Label study (~2.7 min CPU, 1.1 min of it Kn = 0.01, m = 20
+// with second order).
 //
 // Asserted: with second order the IBM is within 1 % of its body-fitted run on every mesh, and
 // its difference is below first order's on every mesh; the momentum balance to 2e-6.

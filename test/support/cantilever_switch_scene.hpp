@@ -1,4 +1,4 @@
-// The thesis's cantilever switch (Fig. 6.5, issue 8) as a coarse ImmersedSwitch scene for the
+// The thesis's cantilever switch (Fig. 6.5) as a coarse ImmersedSwitch scene for the
 // coupled immersed-boundary tests: the beam 45 um x 1.5 um, bottom 1.5 um above the electrode,
 // clamped at x = 0 (the background's left wall); background 75 um x 10 um; electrode
 // [0, electrode_end] on the bottom; plane stress, E = 200 GPa, nu = 0.3, rho = 8912 kg/m^3.

@@ -1,4 +1,4 @@
-// Creep of a continuum: plane stress, plane strain or 3D (thesis sec. 4.2.1 and 4.3.1, eqs.
+// Creep of a continuum: plane stress, plane strain or 3D (thesis ch. 4, eqs.
 // 4.4-4.6 and 4.15-4.16; re-derived, the extracted text lost them), on the cell-centred FV
 // elasticity operator (physics/elasticity/elasticity_operator.hpp).
 //

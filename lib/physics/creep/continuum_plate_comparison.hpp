@@ -1,4 +1,4 @@
-// The plate-vs-continuum creep benchmark of thesis sec. 4.6.1 (Tables 4.1-4.2): a fixed-fixed
+// The plate-vs-continuum creep benchmark of thesis Tables 4.1-4.2: a fixed-fixed
 // strip of length L and thickness h = L/(L/h) under a uniform downward pressure q, its two
 // ends clamped, the rest free; creep for a given time. The same problem in two models:
 //
@@ -34,7 +34,7 @@ struct FixedFixedCreepProblem {
   Real width = 12e-6;     // plate width [m] (the plane-stress section has none)
   Real load = 6e4;        // q [Pa], downward
   Real E = 200e9, nu = 0.3, rho = 7854;
-  CreepLaw law{8.33e-6, 1.8e8, 2, 2, 1e9};  // thesis sec. 4.6.1 (grain-boundary sliding)
+  CreepLaw law{8.33e-6, 1.8e8, 2, 2, 1e9};  // thesis Table 4.1 (grain-boundary sliding)
   int continuum_source_degree = 2;          // ContinuumCreepSystem's sigma_p reconstruction degree
   // Diagnostic: the stress components the continuum's creep law sees (Voigt xx, yy, zz, xy,
   // yz, xz; ContinuumCreepSystem::set_creep_stress_mask). kBendingOnly keeps the axial stress

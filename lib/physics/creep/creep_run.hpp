@@ -1,4 +1,4 @@
-// A creep run over hundreds or thousands of hours (issue 5): integrates a CreepSystem from its
+// A creep run over hundreds or thousands of hours: integrates a CreepSystem from its
 // elastic state at t = 0 to the end time with the implicit (IDA, adaptive BDF) or the explicit
 // (forward Euler, fixed dt; the thesis's baseline) integrator, records a time series and the
 // fields at the output times, stops at the end of the switch's life, and checkpoints.

@@ -1,4 +1,4 @@
-// The thesis's creep time integration (sec. 4.5, steps 1-8), kept as the baseline: forward
+// The thesis's creep time integration (ch. 4, its steps 1-8), kept as the baseline: forward
 // Euler on the creep states with a fixed step,
 //   q^{N+1} = q^N + dt g(t^N, u^N, q^N),   then u^{N+1} from R(t^{N+1}, u, q^{N+1}) = 0,
 // the structure re-solved after every update (for the plate one back-substitution: its matrix

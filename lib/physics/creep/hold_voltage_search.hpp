@@ -1,4 +1,4 @@
-// The hold voltage that gives a held switch a prescribed gap at t = 0. The thesis (sec. 4.6.2)
+// The hold voltage that gives a held switch a prescribed gap at t = 0. The thesis (Table 4.3)
 // starts its varactor from a 1.8 um gap that the hold voltage closes elastically to 1.43 um
 // (the experiment's gap extrapolated back to t = 0) without giving the voltage; this finds it.
 //

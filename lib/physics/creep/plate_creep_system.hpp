@@ -1,4 +1,4 @@
-// Creep of a Mindlin-Reissner plate (thesis sec. 4.2.2, 4.3.2, eqs. 4.7-4.14 and 4.17-4.25;
+// Creep of a Mindlin-Reissner plate (thesis ch. 4, eqs. 4.7-4.14 and 4.17-4.25;
 // re-derived, the extracted text lost them). Only bending creeps: the in-plane bending strain
 // at height z splits into elastic and plastic parts, the transverse shear stays elastic.
 //
@@ -31,7 +31,7 @@
 // assembled once; a q row of point (c, i) depends on its own four states and, through kappa_c
 // (the centroid gradient of the plate's beta reconstruction), on the rotations of c's stencil.
 //
-// Transverse shear creep (optional, shear_creep = true; issue 5 / docs/creep.md "Shear creep").
+// Transverse shear creep (optional, shear_creep = true; docs/creep.md "Shear creep").
 // The thesis's plate lets only bending creep; the continuum's von Mises stress also carries
 // the transverse shear stress, which makes the thick-strip difference of Table 4.2. With shear
 // creep each point also holds the tensor plastic shear strains eps_p,xz, eps_p,yz, and
@@ -52,10 +52,11 @@
 // (physics/electrostatics/parallel_plate_actuation.hpp, which this system holds for it): on a
 // plate's quadrilateral cells at 3 x 3 Simpson points of its w reconstruction,
 //   F_w,e += V^2 A_e sum_q a_q p1(g0 + u_q(y)),   u_q = offset_q + sum_k weight_qk w_k,
-// one point u = w_e on other cells (plate_scene.cpp; docs/BENCHMARKS.md sections 38, 45). F_y
-// is nonlinear in w: the Jacobian's y rows are the constant ones but for the structural tangent
-// K + V^2 A_e a_q p1'(g_q) weight_qk (row w_e, the columns of the reconstruction's stencil, so
-// the y rows' pattern is the actuation's), and equilibrate() becomes a Newton iteration on it.
+// one point u = w_e on other cells (plate_scene.cpp; docs/pull-in.md, "Contact and pull-out";
+// docs/creep.md, "The gap creep samples"). F_y is nonlinear in w: the Jacobian's y rows are the
+// constant ones but for the structural tangent K + V^2 A_e a_q p1'(g_q) weight_qk (row w_e, the
+// columns of the reconstruction's stencil, so the y rows' pattern is the actuation's), and
+// equilibrate() becomes a Newton iteration on it.
 #pragma once
 #include <Eigen/Dense>
 #include <memory>

@@ -1,4 +1,4 @@
-// Through-thickness integration points of a plate section (thesis sec. 4.3.2: "typically 20"
+// Through-thickness integration points of a plate section (thesis ch. 4: "typically 20"
 // points, Simpson's rule). Composite Simpson on z in [-h/2, h/2] with an even number N of
 // intervals: N + 1 points z_i = -h/2 + i h/N, weights (h/N)/3 (1, 4, 2, 4, ..., 4, 1). It
 // integrates cubics exactly, so the elastic moment int z sigma dz of a linear stress profile

@@ -1,4 +1,4 @@
-// The FV elasticity operator on a distributed mesh (issue 7): each rank owns the cells of
+// The FV elasticity operator on a distributed mesh: each rank owns the cells of
 // its METIS part and evaluates their rows of M u'' + R(t, u) = 0.
 //
 // It runs the serial ElasticityOperator on the rank's local mesh (owned cells, then

@@ -61,9 +61,9 @@ class ElasticityOperator : public SecondOrderOperator {
   // Kelvin-Voigt damping sigma = C : (eps + beta eps'), i.e. C = beta K (the stiffness at
   // homogeneous boundary data). Its purpose here is numerical: the cell-centred stiffness is
   // not symmetric, and near clamped and free faces a few of its grid-scale modes form complex
-  // pairs that grow (docs/BENCHMARKS.md section 50); beta damps them at a rate beta omega^2 / 2,
-  // while the bending modes, 1e2-1e4 times slower, keep damping ratios beta omega / 2 of 1e-5
-  // (the switches' meshes) to 4e-4 (a coarse 3D beam).
+  // pairs that grow (docs/immersed_switch.md, "Grid damping"); beta damps them at a rate beta
+  // omega^2 / 2, while the bending modes, 1e2-1e4 times slower, keep damping ratios beta omega / 2
+  // of 1e-5 (the switches' meshes) to 4e-4 (a coarse 3D beam).
   Real damping_time() const override { return damping_time_; }
   void set_damping_time(Real beta) { damping_time_ = beta; }
   void add_damping_force(Real t, std::span<const Real> v, std::span<Real> r) override;

@@ -206,7 +206,7 @@ ElasticityScene build_elasticity_scene(const CaseNode& root, const std::string& 
                                                   std::move(body_force), degree);
   // Grid damping: the damping ratio at the grid's highest frequency of the Kelvin-Voigt
   // damping that keeps the stiffness's growing grid-scale modes decaying (ElasticityOperator::
-  // grid_damping_time; docs/BENCHMARKS.md section 50). 0: undamped.
+  // grid_damping_time; docs/immersed_switch.md, "Grid damping"). 0: undamped.
   scene.op->set_damping_time(scene.op->grid_damping_time(
       model.get_real("grid_damping", kGridDamping, Range::closed(0.0, 1.0))));
   return scene;

@@ -39,7 +39,7 @@ namespace rfmems {
 
 enum class StressMethod { Coupled, Segregated };
 
-// The default model.grid_damping (docs/BENCHMARKS.md section 50).
+// The default model.grid_damping (docs/immersed_switch.md, "Grid damping").
 inline constexpr Real kGridDamping = 0.2;
 
 std::string to_string(StressMethod method);  // "coupled", "segregated"

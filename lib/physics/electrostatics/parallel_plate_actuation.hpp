@@ -115,7 +115,7 @@ class ParallelPlateActuation : public SecondOrderOperator {
   // the net pressure (electrostatic minus contact) vanishes at s = 1 + delta / (2 g_ec) at any
   // voltage; continuing the 1/g_e^2 singularity into the penetration instead let a cell that
   // overshoots past s ~ 3 (delta = g_c/5) fall through the dielectric (IDA_CONV_FAIL on the
-  // plate; docs/BENCHMARKS.md section 28).
+  // plate; docs/pull-in.md, "Contact and pull-out").
   Real electrostatic_per_volt2(Real g) const {
     if (!contact_.enabled() || g >= contact_.gap) return law_.pressure_per_volt2(g);
     const Real u = std::min(contact_.gap - g, contact_.penetration);

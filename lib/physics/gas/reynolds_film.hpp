@@ -1,5 +1,5 @@
 // Squeeze film of gas under a moving plate: the isothermal compressible Reynolds equation
-// (the thesis's cheap gas model, sec. 2.x; Bao, "Micro mechanical transducers", ch. 3),
+// (the thesis's cheap gas model, ch. 2; Bao, "Micro mechanical transducers", ch. 3),
 // cell-centred finite volumes on the plate's 2D mesh (unit depth: areas are cell volumes).
 //
 //   d(p g)/dt = div( D grad p ),   D(p, g) = g^3 p / (12 mu_eff),   mu_eff = mu / Q(Kn)

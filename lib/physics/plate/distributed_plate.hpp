@@ -1,4 +1,4 @@
-// The FV Mindlin-Reissner plate operator on a distributed mesh (issue 7): the serial
+// The FV Mindlin-Reissner plate operator on a distributed mesh: the serial
 // PlateOperator on each rank's local mesh (parallel/distributed_local_operator.hpp), its
 // edges' conditions by patch name, the cut through the last ghost layer clamped (only that
 // layer's rows see it), pressure, point loads on the cells the rank holds and the

@@ -205,8 +205,8 @@ namespace {
 // eps0 V^2 / (2 g_e^2) (g_e ~ 88 nm) and the contact penalty act over a few um where the gap
 // varies within a cell by more than g_e (the free long edges curl towards the electrode:
 // w_y = nu w_xx y, anticlastic), so one point at the centroid senses the contact half a cell
-// inside the edge, an O(h) error in the touching point and the pull-out (docs/BENCHMARKS.md
-// section 38). With points on the cell's edges and corners the smallest gap of the
+// inside the edge, an O(h) error in the touching point and the pull-out (docs/pull-in.md,
+// "Contact and pull-out"). With points on the cell's edges and corners the smallest gap of the
 // reconstructed surface is a quadrature point, and the pressure integral is of order 4. Other
 // cell shapes keep the one-point rule (empty: the cell's own w).
 std::vector<GapPoint> cell_gap_points(const Mesh& mesh, const PlateOperator& op, Index c) {

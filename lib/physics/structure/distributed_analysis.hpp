@@ -1,5 +1,5 @@
 // The static and transient analyses of structural_analysis.hpp with the structure
-// distributed over the ranks (issue 7; case key solver.distributed: true): the continuum's
+// distributed over the ranks (case key solver.distributed: true): the continuum's
 // FV elasticity operator on METIS parts (physics/elasticity/distributed_elasticity.hpp),
 // Newton (KINSOL) or IDA on SUNDIALS' MPI parallel N_Vector, GMRES preconditioned by KLU on
 // the rank-local blocks (restricted additive Schwarz on the ghost overlap; transients on the

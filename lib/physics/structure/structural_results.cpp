@@ -74,7 +74,8 @@ Json solver_stats_json(const AnalysisStats& stats) {
     j["krylov_iterations"] = stats.type == AnalysisType::Transient ? stats.transient.linear_iters
                                                                    : stats.newton.linear_iters;
     // GMRES solves that missed IDA's eps_lin (IDAGetNumLinConvFails): a run whose count grows
-    // with its steps has a preconditioner too weak for the Krylov tolerance (BENCHMARKS 51).
+    // with its steps has a preconditioner too weak for the Krylov tolerance (docs/mpi.md, "Krylov
+    // tolerance").
     if (stats.type == AnalysisType::Transient)
       j["krylov_conv_fails"] = stats.transient.linear_conv_fails;
   }

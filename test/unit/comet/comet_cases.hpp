@@ -1,5 +1,5 @@
 // Small kinetic test problems shared by the COMET tests: the heat-transfer square and the
-// lid-driven cavity of issue 6 / thesis sec. 5.6 (argon, walls at 273.15 K; heat transfer:
+// lid-driven cavity of the thesis (ch. 5) (argon, walls at 273.15 K; heat transfer:
 // top 327.78 K, bottom 273.15 K, specular sides; cavity: all walls diffuse, lid 10 m/s), at
 // a Knudsen number set through the density on a 1 cm square, on an n x n mesh with an
 // nv^3 velocity grid over +-3.5 sqrt(2 R T0).

@@ -1,4 +1,4 @@
-// The ESBGK gas in the coupled immersed switch (issue 8): the ImmersedGasModel adapter
+// The ESBGK gas in the coupled immersed switch: the ImmersedGasModel adapter
 // (immersed_esbgk_gas.hpp) on a coarse scene (76 x 26 background, 45 x 3 beam, 6^3 velocities),
 // against the gas alone (ImmersedKineticGas driven directly) and the gas at rest.
 #include <gtest/gtest.h>

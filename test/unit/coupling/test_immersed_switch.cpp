@@ -1,4 +1,4 @@
-// The coupled immersed-boundary switch (issue 8): the thesis's cantilever (Fig. 6.5) on
+// The coupled immersed-boundary switch: the thesis's cantilever (Fig. 6.5) on
 // coarse meshes, against closed forms and the scene's own static solve.
 //
 // Backgrounds are 151 x 51 / 101 x 31, where the figures below were measured. They were chosen
@@ -191,7 +191,8 @@ TEST(ImmersedSwitch, GasEveryKStepsTilesTheRun) {
 // 2.0, 2.0e-3 -> 1.0e-3 relative), and at 20 ns the strong-with-gas tip must be closer to
 // the fine reference (strong with gas at 2 ns) than the staggered one, by 2x at least
 // (measured 3.1e-4 against 1.7e-3). The references' own spread (1 against 0.5 ns: 3.6e-4,
-// the IB marking's, docs/BENCHMARKS.md section 41) bounds what can be asserted. ~5 s CPU.
+// the IB marking's, docs/immersed_switch.md, "The ESBGK gas in the coupled switch") bounds what can
+// be asserted. ~5 s CPU.
 TEST(ImmersedSwitch, StrongCouplingWithTheFilmRemovesTheLaggedFilmForceError) {
   Cantilever c(46, 4, 101, 31);
   GasProperties air;

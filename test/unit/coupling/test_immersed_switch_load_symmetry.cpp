@@ -1,9 +1,10 @@
-// The immersed switch's electrostatic load stiffness at the clamp (issue 8, docs/BENCHMARKS.md
-// section 47). The electrostatic force is conservative, f = -dW/du with W = -C(u) V^2 / 2, so
+// The immersed switch's electrostatic load stiffness at the clamp (docs/immersed_switch.md,
+// "Grid damping"). The electrostatic force is conservative, f = -dW/du with W = -C(u) V^2 / 2, so
 // its stiffness K_cd = -df_c/du_d is symmetric. A transfer that moves the surface one-sidedly
 // (a vertex with one of its two cells only) breaks that between neighbouring cells. (It was
-// suspected of the spurious touch-down of tight adaptive runs, issue 8; that is a growing mode
-// of the beam's own FV stiffness, which the load's is 3e-8 of: BENCHMARKS section 47.)
+// suspected of the spurious touch-down of tight adaptive runs; that is a growing mode
+// of the beam's own FV stiffness, which the load's is 3e-8 of: docs/immersed_switch.md, "Grid
+// damping".)
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -61,9 +61,9 @@ DynamicOptions options(Real gap, Real rtol) {
   return o;
 }
 
-// The plane beam's parallel-plate transient system (docs/BENCHMARKS.md 7c's "noticed" defect:
-// it used to fail with "reduced inertia: 0 flags for N unknowns"): every unknown inertial,
-// [u (n); v (n)], classified as displacements and velocities.
+// The plane beam's parallel-plate transient system (the "noticed" defect of docs/pull-in.md, "Plate
+// + parallel plate against plane + Laplace": it used to fail with "reduced inertia: 0 flags for N
+// unknowns"): every unknown inertial, [u (n); v (n)], classified as displacements and velocities.
 TEST(LaplaceDynamicSwitch, PlaneBeamTransientSystemKeepsEveryInertia) {
   auto b = make_beam(25, 2, 4);
   const Index n = b->elasticity->op->size();
@@ -105,9 +105,9 @@ TEST(LaplaceDynamicSwitch, StaggeredMatchesImplicitAtSmallSteps) {
 // a uniform load, and the higher modes' phase at the turning point moves the peak by at most
 // their share; the electrostatic softening adds ~1.5 u/g = 1 % (lumped parallel plate:
 // x(1-x)^2 = a static, x(1-x) = 2a at the turning point). Measured: 2.012 (rtol 1e-5), 2.012 at
-// the scalar atol 1e-4 g0 of docs/BENCHMARKS.md sec. 7c. Held: within 3 % of 2. The turning
-// point is at half the first period; the small-signal frequency of the same scene from the
-// free response must match it.
+// the scalar atol 1e-4 g0 of docs/pull-in.md, "Plate + parallel plate against plane + Laplace".
+// Held: within 3 % of 2. The turning point is at half the first period; the small-signal frequency
+// of the same scene from the free response must match it.
 TEST(LaplaceDynamicSwitch, SmallStepSwingsToTwiceTheStaticDeflection) {
   auto b = make_beam(25, 2, 4);
   const LaplaceStatic st = b->sw->solve_static(100.0);
@@ -129,11 +129,12 @@ TEST(LaplaceDynamicSwitch, SmallStepSwingsToTwiceTheStaticDeflection) {
   RecordProperty("frequency_hz", std::to_string(free.frequency));
 }
 
-// Issue 4: dynamic / quasi-static pull-in voltage of the plane + Laplace switch 0.91 +- 0.02
+// The dynamic / quasi-static pull-in voltage of the plane + Laplace switch 0.91 +- 0.02
 // (thesis 165/181). Both from the same coarse scene: the quasi-static fold by the Aitken
 // iteration (laplace_pull_in.hpp), the dynamic V_PI by bisection to 0.5 V on staggered runs
 // (rtol 1e-4, per-kind error weights). The lumped parallel-plate value is 0.919, a beam's a
-// little lower (docs/BENCHMARKS.md 7c: 0.913 for the plate and the plane beam).
+// little lower (docs/pull-in.md, "Plate + parallel plate against plane + Laplace": 0.913 for the
+// plate and the plane beam).
 TEST(LaplaceDynamicSwitch, DynamicOverStaticPullInIsTheThesisRatio) {
   auto b = make_beam(25, 2, 4);
   LaplacePullInOptions qo;
@@ -149,8 +150,8 @@ TEST(LaplaceDynamicSwitch, DynamicOverStaticPullInIsTheThesisRatio) {
   const DynamicPullIn d = find_dynamic_pull_in([&](Real v) { return b->sw->run(v, o); }, 0.8 * v_qs,
                                                1.02 * v_qs, 0.5, o.end_time);
   const Real ratio = 0.5 * (d.voltage + d.lower) / v_qs;
-  // Measured: V_qs 553.405 V, V_dyn (505.501, 505.976], 0.9139 (sec. 7c's plane beam with the
-  // parallel-plate law on this mesh: (505.587, 505.647]).
+  // Measured: V_qs 553.405 V, V_dyn (505.501, 505.976], 0.9139 (the plane beam with the
+  // parallel-plate law of docs/pull-in.md on this mesh: (505.587, 505.647]).
   EXPECT_NEAR(ratio, 0.91, 0.02);
   EXPECT_GT(d.pull_in_time, 0);
   RecordProperty("quasi_static_v_pi", std::to_string(v_qs));

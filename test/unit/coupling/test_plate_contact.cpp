@@ -148,7 +148,7 @@ TEST(PlateContact, QuasiStaticAndDynamicPullOut) {
   // the plate first touches at the free edges' midpoints, and before the last contact lifts
   // it spreads across the width (the anticlastic curl pressed flat), which holds the plate at
   // a lower voltage. Measured 0.51 % here (2 cells across), 6.3 % and 6.5 % on 40 x 4 and
-  // 80 x 8 (docs/BENCHMARKS.md section 38).
+  // 80 x 8 (docs/pull-in.md, "Contact and pull-out").
   EXPECT_LT(out.pull_out_voltage, v_touch);
   EXPECT_GT(out.pull_out_voltage / v_touch, 1 - 1e-2);
 

@@ -1,7 +1,7 @@
 // The grid damping of the elasticity operator (model.grid_damping, Kelvin-Voigt C = beta K):
 // the cubic FV stiffness of the cantilever switch's beam is not symmetric and has complex
 // eigenvalue pairs, modes growing from round-off at up to 3e8 1/s near the clamp and the free
-// end (docs/BENCHMARKS.md sections 47 and 50); the default grid damping makes every mode
+// end (docs/immersed_switch.md, "Grid damping"); the default grid damping makes every mode
 // decay while the first bending mode's damping ratio stays below 1e-4.
 #include <gtest/gtest.h>
 

@@ -16,9 +16,9 @@
 //    (continuity: the marking does not change within the snap band, only the wall points
 //    move by 1e-3 h; measured 2.4e-5 and 1.4e-3);
 //  - they agree with the offset (0.5 h_x, 0.5 h_y) case: the total within 1 % (the IB
-//    discretisation moved the force by 0.7 % between 150 x 50 and 300 x 100, BENCHMARKS
-//    section 13), the top-of-tip force within 30 % of its own size (a fringe force 1e-4 of the
-//    total, sensitive to the corner's staircase);
+//    discretisation moved the force by 0.7 % between 150 x 50 and 300 x 100, docs/ibm.md,
+//    "Building blocks per coupled step"), the top-of-tip force within 30 % of its own size (a
+//    fringe force 1e-4 of the total, sensitive to the corner's staircase);
 //  - without snapping the total force jumps by more than 1e-3 as the tip crosses its grid
 //    line (measured 1.8e-3: the test fails on the old marking);
 //  - the same beam bent to a tip deflection of -44 nm and +-1e-3 h_y: on-line and 0.5 h

@@ -1,4 +1,4 @@
-// Tests of the ESBGK gas on the immersed boundary (lib/ibm/immersed_kinetic_gas, issue 8).
+// Tests of the ESBGK gas on the immersed boundary (lib/ibm/immersed_kinetic_gas).
 //
 // Asserted:
 //  - a body at rest in a gas at rest (the wall's temperature, diffuse walls) is a fixed point:

@@ -8,7 +8,7 @@ CometOptions read_comet_options(const CaseNode& solver) {
       solver.get_choice("coupling", {"conserved", "velocity"}, "conserved"));
   o.multigrid = solver.has("multigrid") ? solver.get_bool("multigrid") : true;
   // auto (default: F-cycles with one-pass coarse sweeps below f_cycle_below_knudsen, V-cycles
-  // above; comet_solver.hpp, docs/BENCHMARKS.md section 19) | V | W | F.
+  // above; comet_solver.hpp, docs/kinetic.md, "COMET cycle by regime") | V | W | F.
   o.cycle_shape =
       comet_cycle_from_name(solver.get_choice("cycle", {"auto", "V", "W", "F"}, "auto"));
   o.f_cycle_below_knudsen = solver.get_real("f_cycle_below_knudsen", 0.02, Range::non_negative());

@@ -87,8 +87,8 @@ void CometSolver::smooth(int l, int sweeps, bool post) {
   Level& level = *levels_[l];
   const std::span<Real> f = level_f(l);
   if (!level.collision_current) level.op->update_collision(f);
-  // Gauss-Seidel within a rank's part, the ghosts refreshed after every pass (thesis sec. 5.4
-  // step 12): block Jacobi between parts, one exchange per pass.
+  // Gauss-Seidel within a rank's part, the ghosts refreshed after every pass (the thesis's
+  // parallel COMET, step 12): block Jacobi between parts, one exchange per pass.
   // One-pass coarse sweeps: forward before the coarse visit, backward after it (the cycle
   // stays symmetric); alternating on the coarsest level.
   const bool one_pass = !options_.symmetric || (l > 0 && !coarse_symmetric_);

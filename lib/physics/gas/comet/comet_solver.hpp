@@ -1,4 +1,4 @@
-// COMET (thesis sec. 5.3.2-5.3.3): the point-coupled Gauss-Seidel sweep
+// COMET (thesis ch. 5): the point-coupled Gauss-Seidel sweep
 // (point_coupled_smoother.hpp) as the smoother of a full-approximation-scheme (FAS) geometric
 // multigrid cycle (V or F, chosen by regime: below) on agglomerated coarse levels
 // (fv/agglomeration.hpp), for the steady discrete-velocity BGK / ESBGK equation r(f) = 0 of a
@@ -21,8 +21,8 @@
 // A sweep is forward, or forward + backward when `symmetric`; with coarse_symmetric = false a
 // coarse-level sweep is one pass (forward before the coarser visit, backward after it).
 //
-// The cycle by regime (cycle_shape = Auto, the default; docs/BENCHMARKS.md section 19): near
-// continuum the V-cycle's rate decays (40 x 40 heat transfer at Kn 0.01: 0.57 per cycle, 19
+// The cycle by regime (cycle_shape = Auto, the default; docs/kinetic.md, "COMET cycle by regime"):
+// near continuum the V-cycle's rate decays (40 x 40 heat transfer at Kn 0.01: 0.57 per cycle, 19
 // cycles against 7 at Kn 1) because pairwise agglomeration with injection corrects the smooth
 // error poorly; an F-cycle visits level l about l + 1 times and keeps the count flat (9), but
 // with halving coarsening it costs ~2x a V-cycle in symmetric sweeps. With one-pass coarse
@@ -43,12 +43,12 @@
 // iterations, each ~12x cheaper than a V-cycle here (measured: bench_comet_vs_sequential, the
 // crossover near Kn = 0.1-0.2), so with sequential_above_knudsen > 0 solve() hands a domain whose
 // Knudsen number is >= that threshold to solve_sequential (same residual, tolerance, mass
-// pinning and monitor) and says so in CometResult::method ("sequential"); the issue's "choose
-// the smoother or cycle by regime". Domain Knudsen number: Bird's mean free path at the
+// pinning and monitor) and says so in CometResult::method ("sequential"): the smoother
+// and the cycle chosen by regime. Domain Knudsen number: Bird's mean free path at the
 // volume-mean density and temperature of the initial state over the largest extent of the
 // mesh's bounding box (domain_knudsen()).
 //
-// Distributed runs (issue 7, thesis sec. 5.4; the operator set_parallel on a rank's part with
+// Distributed runs (thesis ch. 5; the operator set_parallel on a rank's part with
 // one ghost layer): the coarse levels are agglomerated per part (fv/agglomeration.hpp: coarse
 // cells never cross ranks, coarse ghost numbers exchanged, coarse connectivity rebuilt per
 // level), each coarse operator gets its level's ghost exchange; a smoothing pass is

@@ -1,4 +1,4 @@
-// COMET's point-coupled Gauss-Seidel sweep (thesis sec. 5.3.2) on one level: cell by cell,
+// COMET's point-coupled Gauss-Seidel sweep (thesis ch. 5) on one level: cell by cell,
 // one Newton step on all N ordinates of the cell together with its macroscopic unknowns,
 // with the neighbours' latest values frozen (Gauss-Seidel), for the steady equation
 //     r_c(f) = s_c,   r_ck = a_k f_ck + in_k - V nu (f_eq,ck - f_ck)        (kinetic_operator.hpp)

@@ -1,5 +1,5 @@
 // The semi-discrete (transient) discrete-velocity BGK / ESBGK equation as a SystemOperator for
-// IDA (thesis eq. 5.7 with the time derivative kept; issue 6 "Transient"):
+// IDA (thesis eq. 5.7 with the time derivative kept):
 //
 //   F_ck(t, f, f') = V_c f'_ck + r_ck(f) = 0,     r: KineticOperator's steady residual
 //

@@ -1,6 +1,6 @@
 // Free-molecular momentum exchange between a diffuse wall and a gas at rest: the collisionless
-// limit (Kn -> infinity) against which the kinetic gas is checked at large Kn (issue 8, gas
-// damping across regimes).
+// limit (Kn -> infinity) against which the kinetic gas is checked at large Kn (gas
+// damping across regimes, docs/gas_damping.md).
 //
 // The gas arriving at the wall is the ambient Maxwellian M (rho, T, at rest); the wall (at
 // the gas temperature T) moves at velocity U and re-emits every molecule it receives as a

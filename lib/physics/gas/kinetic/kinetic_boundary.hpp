@@ -1,4 +1,4 @@
-// Boundary conditions of the kinetic gas (thesis sec. 5.2), as face values of the distribution
+// Boundary conditions of the kinetic gas (thesis ch. 5), as face values of the distribution
 // on a boundary face: the owner cell's values for outgoing ordinates (c . S >= 0, S outward from
 // the gas), and for incoming ordinates (c . S < 0):
 //   diffuse_wall {T, velocity, accommodation sigma (default 1)}:

@@ -2,7 +2,7 @@
 // state and solver settings, and the solver chosen by name (the rfmems-gas driver's model).
 //
 //   mesh: {type: rectangle, size: [1 m, 1 m], cells: [1, 80]}     # io/mesh_from_case.hpp
-//   gas:                                 # all optional; defaults: argon (thesis sec. 5.5.1)
+//   gas:                                 # all optional; defaults: argon (thesis ch. 5)
 //     collision: esbgk                   # bgk | esbgk
 //     R: 208.13                          # J/(kg K)
 //     mu_ref: 2.117e-5 Pa s

@@ -32,7 +32,7 @@ struct KineticGas {
   Real prandtl = 2.0 / 3.0;  // used by ESBGK
   CollisionModel model = CollisionModel::Esbgk;
 
-  // Argon as in the thesis (sec. 5.5.1, after Bird): mu_ref = 2.117e-5 Pa s at 273.15 K,
+  // Argon as in the thesis (ch. 5, after Bird): mu_ref = 2.117e-5 Pa s at 273.15 K,
   // omega = 0.81.
   static KineticGas argon(CollisionModel model = CollisionModel::Esbgk);
 

@@ -1,5 +1,5 @@
-// Second-order upwind face values for the discrete-velocity transport (issue 8,
-// docs/kinetic.md "Second-order transport"), applied by deferred correction.
+// Second-order upwind face values for the discrete-velocity transport
+// (docs/kinetic.md "Second-order transport"), applied by deferred correction.
 //
 // Per cell c and ordinate k a linear reconstruction f_ck(x) = f_ck + phi_ck g_ck . (x - x_c):
 //   g_ck  least-squares gradient over the face neighbours, weights 1/|x_j - x_c|^2

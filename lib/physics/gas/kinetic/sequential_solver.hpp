@@ -1,5 +1,5 @@
 // The sequential (source-iteration) solver of the steady discrete-velocity BGK / ESBGK
-// equation: the baseline of the literature (thesis sec. 5.3.1, Fig. 5.2) that COMET beats.
+// equation: the baseline of the literature (thesis Fig. 5.2) that COMET beats.
 //
 // One iteration:
 //   1. with the collision term lagged (f_eq and nu of the previous iterate) and the boundary

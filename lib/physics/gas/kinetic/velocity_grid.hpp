@@ -1,5 +1,5 @@
 // Discrete velocity space of the kinetic (BGK / ESBGK) gas model: a uniform Cartesian grid of
-// N1 x N2 x N3 ordinates c_k over [-E1, E1] x [-E2, E2] x [-E3, E3] (thesis sec. 5.1.1).
+// N1 x N2 x N3 ordinates c_k over [-E1, E1] x [-E2, E2] x [-E3, E3] (thesis ch. 5).
 //
 // Ordinates sit at the cell midpoints of the velocity grid, c = -E + (i + 1/2) dc with
 // dc = 2E/N, and every weight is dc1 dc2 dc3 (m^3/s^3): the midpoint rule, which is spectrally

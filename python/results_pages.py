@@ -1,0 +1,242 @@
+#!/usr/bin/env python3
+"""Regenerates the tables of the results pages (docs/*.md) from the raw data beside them.
+
+A page marks each generated table:
+
+    <!-- table: NAME -->
+    ... (written by this script) ...
+    <!-- end table -->
+
+and NAME is one of TABLES below: a function of the data files under docs/data/ (CSV with
+'#' comment lines giving the command and the date) and docs/figures/ (the benchmarks' JSON
+lines). Nothing in a marked table is typed by hand.
+
+  python3 python/results_pages.py            # rewrite every marked table in place
+  python3 python/results_pages.py --check    # exit 1 naming each page and table that differ
+"""
+import argparse
+import csv
+import json
+import math
+import pathlib
+import re
+import statistics
+import sys
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+DOCS = ROOT / "docs"
+DATA = DOCS / "data"
+FIGURES = DOCS / "figures"
+
+MARKER = re.compile(r"(<!-- table: (?P<name>[\w-]+) -->\n)(?P<body>.*?)(<!-- end table -->)", re.S)
+
+
+def markdown(rows):
+    """A Markdown table: rows[0] is the header."""
+    out = ["| " + " | ".join(rows[0]) + " |", "|" + "---|" * len(rows[0])]
+    out += ["| " + " | ".join(r) + " |" for r in rows[1:]]
+    return "\n".join(out) + "\n"
+
+
+def read_csv(name):
+    with open(DATA / name, newline="") as f:
+        return [r for r in csv.reader(line for line in f if not line.startswith("#"))]
+
+
+def read_jsonl(path):
+    return [json.loads(x) for x in open(path) if x.strip()]
+
+
+def csv_table(name):
+    return lambda: markdown(read_csv(name))
+
+
+def pullin_laplace_dynamic():
+    """bench_pullin_models --sections laplace_dynamic: the plane + Laplace switch on three meshes
+    and the plate + parallel-plate switch; the plane meshes' observed order and Richardson value."""
+    first = read_jsonl(FIGURES / "pullin_models_laplace_dynamic.jsonl")
+    finest = read_jsonl(FIGURES / "pullin_models_laplace_dynamic_200x16.jsonl")
+    plane = [x for x in first + finest if x.get("model") == "plane+laplace"]
+    plate = [x for x in finest if x.get("model") == "plate+parallel_plate"]
+    v = [x["v_mid"] for x in plane]
+    d1, d2 = v[0] - v[1], v[1] - v[2]
+    ratio = d1 / d2
+    richardson = v[2] - d2 / (ratio - 1)
+    rows = [["model", "mesh", "V_dyn bracket [V]", "midpoint [V]", "error against Richardson", "t_PI [us]",
+             "runs", "IDA steps", "CPU [s]"]]
+    for x in plane + plate:
+        err = f"{100 * abs(x['v_mid'] - richardson) / richardson:.3f} %" if x in plane else "-"
+        rows.append([x["model"].replace("+", " + ").replace("_", " "), x["mesh"].replace("x", " x ").replace("+gap", ", gap "),
+                     f"({x['not_pulling_in']:.3f}, {x['dynamic_v_pi']:.3f}]", f"{x['v_mid']:.3f}", err,
+                     f"{1e6 * x['pull_in_time_s']:.2f}", str(x["runs"]), str(x["steps"]), f"{x['cpu_s']:.2f}"])
+    summary = next(x for x in finest if x.get("variant") == "laplace_dynamic_summary")
+    return markdown(rows) + (
+        f"\nPlane + Laplace: successive differences {d1:.3f} and {d2:.3f} V, ratio {ratio:.2f}, observed "
+        f"order **{math.log2(ratio):.2f}**, Richardson value **{richardson:.3f} V**. CPU of the finest plane "
+        f"+ Laplace run over the plate's, same run: **{summary['ratio_cpu_finest']:.0f}x** "
+        f"({summary['ratio_wall_finest']:.0f}x in wall).\n")
+
+
+def coupling_default_study_ab():
+    """bench_driver_ab.py's lines: per side the median CPU and the figures it found, B / A."""
+    lines = read_jsonl(FIGURES / "coupling_default_study_ab.jsonl")
+    runs = [x for x in lines if x.get("bench") == "driver_ab"]
+    summary = next(x for x in lines if x.get("bench") == "driver_ab_summary")
+    rows = [["build", "runs", "median CPU [s]", "CPU range [s]", "V_qs [V]", "V_dyn [V]", "t_PI [us]",
+             "bisection runs", "steps"]]
+    for side in ("a", "b"):
+        r = [x for x in runs if x["side"] == side]
+        cpu = [x["cpu_s"] for x in r]
+        f = r[0]
+        same = all((x["v_qs"], x["v_dyn"], x["t_pi"]) == (f["v_qs"], f["v_dyn"], f["t_pi"]) for x in r)
+        rows.append([f["label"], str(len(r)), f"{statistics.median(cpu):.2f}",
+                     f"{min(cpu):.2f}-{max(cpu):.2f}", f"{f['v_qs']:.4f}", f"{f['v_dyn']:.4f}",
+                     f"{1e6 * f['t_pi']:.4f}" + ("" if same else " (varies)"), str(f["runs"]),
+                     str(f["steps"])])
+    return markdown(rows) + (f"\nCPU ratio {summary['label_b']} / {summary['label_a']}: "
+                             f"**{summary['ratio_b_over_a']:.3f}** (medians; {summary['date']}).\n")
+
+
+def comet_two_ranks():
+    """bench_gas_scaling's strong-scaling summaries on the quiet machine (1 -> 2 ranks)."""
+    files = [("gas_scaling_quiet_2026-12-02.jsonl", "paused"),
+             ("gas_scaling_quiet_repeats_2026-12-02.jsonl", "paused, repeat"),
+             ("gas_scaling_quiet_full_2026-12-02.jsonl", "paused, leaky")]
+    rows = [["solver", "mesh", "run", "iterations 1 -> 2", "T_1 [s]", "T_2 [s]", "speed-up",
+             "efficiency", "iteration-normalised", "CPU in MPI waits"]]
+    for name, run in files:
+        for x in read_jsonl(FIGURES / name):
+            if x.get("run") != "strong":
+                continue
+            rows.append([x["solver"] if x["solver"] != "comet" else "COMET",
+                         " x ".join(str(c) for c in x["cells_P"]), run,
+                         f"{x['iterations_1']:.0f} -> {x['iterations_P']:.0f}", f"{x['cpu_s_1']:.2f}",
+                         f"{x['cpu_s_P']:.2f}", f"{x['cpu_s_1'] / x['cpu_s_P']:.2f}",
+                         f"{100 * x['efficiency_cpu']:.0f} %",
+                         f"{100 * x['efficiency_iteration_normalised']:.0f} %",
+                         f"{100 * x['mpi_wait_cpu_share']:.1f} %"])
+    return markdown(rows)
+
+
+def comet_by_regime():
+    """bench_comet_vs_sequential's rows with the default cycle (auto) and the V-cycle beside it."""
+    rows = [x for x in read_jsonl(FIGURES / "comet_cycle_by_regime.jsonl") if "case" in x]
+    out = [["mesh", "case", "Kn", "method (cycle)", "cycles", "CPU [s]", "fine sweeps",
+            "sequential iterations / CPU [s]", "sequential / default (CPU)", "V-cycle: cycles / CPU [s]"]]
+    for x in rows:
+        if x["cycle"] != "auto":
+            continue
+        v = next((y for y in rows if y["cycle"] == "V" and (y["cells"], y["case"], y["kn"]) ==
+                  (x["cells"], x["case"], x["kn"])), None)
+        run = x["comet_cycle_run"] + ("1" if not x["comet_coarse_symmetric"] else "")
+        method = (f"COMET ({run})" + (", forced" if x["kn"] >= 0.2 else "") if x["comet_method"] == "comet"
+                  else "sequential (the default's hand-over)")
+        seq = (f"{x['seq_iterations']} / {x['seq_cpu_seconds']:.1f}" if x.get("seq_cpu_seconds") and
+               x["comet_method"] == "comet" else "-")
+        speed = f"{x['speedup_cpu']:.2f}" if x.get("speedup_cpu") else "-"
+        out.append([f"{x['cells']} x {x['cells']}", x["case"].replace("_", " "), f"{x['kn']:g}", method,
+                    str(x["comet_cycles"]), f"{x['comet_cpu_seconds']:.2f}",
+                    f"{x['comet_fine_sweep_equivalents']:.1f}" if x["comet_method"] == "comet" else "-",
+                    seq, speed, f"{v['comet_cycles']} / {v['comet_cpu_seconds']:.2f}" if v else "-"])
+    return markdown(out)
+
+
+def gas_damping_second_order_sweep():
+    """The damping sweep with second-order transport (420 cells, 8^3 velocities) and its ratios."""
+    rows = [["p [Pa]", "Kn", "solver", "iterations", "CPU [s]", "c ESBGK [N s/m^2]", "zeta ESBGK",
+             "/ free mol. isolated (discrete)", "/ Reynolds-Veijola", "/ R-V + elongation"]]
+    seen = set()
+    for x in read_jsonl(FIGURES / "gas_damping_regimes_second_order.jsonl"):
+        key = x["pressure"]
+        if (x["refine"], x["points"], x.get("transport"), x.get("extra")) != (1, 8, "second_order", []) \
+                or key in seen:
+            continue
+        seen.add(key)
+        p = x["pressure"]
+        ptext = f"{p:g}" if p < 1e4 else f"{p / 10 ** int(math.log10(p)):g}e{int(math.log10(p))}"
+        rve = "-" if x["knudsen"] > 1 else f"{x['esbgk'] / x['reynolds_veijola_elongation']:.2f}"
+        rows.append([ptext, f"{x['knudsen']:.3g}", x["solver"], str(x["iterations"]), f"{x['cpu_seconds']:.2f}",
+                     f"{x['esbgk']:.4e}", f"{x['damping_ratio_esbgk']:.3e}",
+                     f"{x['esbgk'] / x['free_molecular_discrete']:.3f}",
+                     f"{x['esbgk'] / x['reynolds_veijola']:.2f}", rve])
+    return markdown(rows)
+
+
+def immersed_esbgk_case_keys():
+    """rfmems-pullin's JSON of the ESBGK switch at 123 V with the case's keys, serial and 2 ranks."""
+    rows = [["run", "pull-in time [us]", "IDA / gas steps", "wall [s]", "gas [s]", "structure [s]",
+             "electrostatics [s]", "interpolation [s]", "marking [s]", "MPI wait [s]", "wall per step [s]"]]
+    for name, label in (("immersed_esbgk_case_keys_123V_np2_quiet.json", "2 ranks (rank 0's CPU by physics)"),
+                        ("immersed_esbgk_case_keys_123V_np1_quiet.json", "serial")):
+        d = json.load(open(FIGURES / name))
+        im, cpu = d["immersed"], d["immersed"]["cpu"]
+        wall = d["wall_time_s"]
+        comm = d.get("communication_rank0")
+        rows.append([label, f"{1e6 * im['transient']['pull_in_time']:.6f}",
+                     f"{cpu['structure_steps']} / {cpu['gas_steps']}",
+                     f"{wall:.1f}",
+                     f"{cpu['gas_s']:.1f}", f"{cpu['structure_s']:.2f}", f"{cpu['electrostatics_s']:.2f}",
+                     f"{cpu['interpolation_s']:.2f}", f"{cpu['marking_s']:.2f}",
+                     f"{comm['wait_cpu_s']:.1f}" if comm else "-", f"{wall / cpu['structure_steps']:.3f}"])
+    return markdown(rows)
+
+
+TABLES = {
+    "verification-checks": csv_table("verification_checks.csv"),
+    "performance-ratios": csv_table("performance_ratios.csv"),
+    "creep-plate-vs-continuum": csv_table("creep_plate_vs_continuum.csv"),
+    "pullin-time-check": csv_table("pullin_time_check.csv"),
+    "pullin-laplace-dynamic": pullin_laplace_dynamic,
+    "coupling-default-study-ab": coupling_default_study_ab,
+    "comet-two-ranks": comet_two_ranks,
+    "comet-by-regime": comet_by_regime,
+    "gas-damping-second-order-sweep": gas_damping_second_order_sweep,
+    "immersed-esbgk-case-keys": immersed_esbgk_case_keys,
+    "immersed-switch-figures": csv_table("immersed_switch_figures.csv"),
+    "ibm-couette": csv_table("ibm_couette.csv"),
+    "coupling-schemes-transient": csv_table("coupling_schemes_transient.csv"),
+}
+
+
+def regenerate(text, page, errors):
+    def rep(m):
+        name = m.group("name")
+        if name not in TABLES:
+            errors.append(f"{page}: table '{name}' is not one results_pages.py knows")
+            return m.group(0)
+        return m.group(1) + TABLES[name]() + m.group(4)
+    return MARKER.sub(rep, text)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--check", action="store_true",
+                    help="change nothing; exit 1 naming each page and table that differs")
+    args = ap.parse_args()
+    errors, differ, used = [], [], set()
+    for page in sorted(DOCS.glob("*.md")):
+        text = page.read_text()
+        new = regenerate(text, page.name, errors)
+        old_tables = {m.group("name"): m.group("body") for m in MARKER.finditer(text)}
+        for m in MARKER.finditer(new):
+            used.add(m.group("name"))
+            if old_tables.get(m.group("name")) != m.group("body"):
+                differ.append(f"{page.relative_to(ROOT)}: table '{m.group('name')}' differs from its data")
+        if new != text and not args.check:
+            page.write_text(new)
+    for name in sorted(set(TABLES) - used):
+        errors.append(f"table '{name}' is on no page")
+    for e in errors:
+        print(f"results_pages: {e}", file=sys.stderr)
+    if args.check:
+        for d in differ:
+            print(f"results_pages: {d}", file=sys.stderr)
+        if differ or errors:
+            sys.exit(1)
+        print(f"results_pages: {len(used)} tables match their data")
+    elif errors:
+        sys.exit(1)
+
+
+if __name__ == "__main__":
+    main()
