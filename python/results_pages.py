@@ -118,6 +118,23 @@ def comet_two_ranks():
     return markdown(rows)
 
 
+def gas_mpi_agreement():
+    """bench_gas_mpi_agreement.py: 2 ranks against serial per solver tolerance; the largest
+    relative field difference and wall difference, and both over the tolerance."""
+    rows = [["case", "tolerance", "sweeps 1 -> 2", "fields (max rel. diff.)", "walls: force / heat flow",
+             "worst / tolerance"]]
+    for x in read_jsonl(FIGURES / "gas_mpi_agreement.jsonl"):
+        fields = max(x["fields"].values())
+        force = max(w["force"] for w in x["walls"].values())
+        heat = max(w["heat_flow"] for w in x["walls"].values())
+        case = x["case"] + "".join(f" ({s})" for s in x["sets"])
+        rows.append([case, f"{x['tolerance']:.0e}",
+                     f"{x['iterations'][0]} -> {x['iterations'][1]}", f"{fields:.1e}",
+                     f"{force:.1e} / {heat:.1e}",
+                     f"{max(fields, force, heat) / x['tolerance']:.0f}"])
+    return markdown(rows)
+
+
 def comet_by_regime():
     """bench_comet_vs_sequential's rows with the default cycle (auto) and the V-cycle beside it."""
     rows = [x for x in read_jsonl(FIGURES / "comet_cycle_by_regime.jsonl") if "case" in x]
@@ -190,6 +207,7 @@ TABLES = {
     "coupling-default-study-ab": coupling_default_study_ab,
     "comet-two-ranks": comet_two_ranks,
     "comet-by-regime": comet_by_regime,
+    "gas-mpi-agreement": gas_mpi_agreement,
     "gas-damping-second-order-sweep": gas_damping_second_order_sweep,
     "immersed-esbgk-case-keys": immersed_esbgk_case_keys,
     "immersed-switch-figures": csv_table("immersed_switch_figures.csv"),

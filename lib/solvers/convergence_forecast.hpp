@@ -7,8 +7,8 @@
 //   rho = (r_n / r_m)^(1 / (n - m)),  m = 3 n / 4,
 // and the iterations still needed to reach the tolerance are
 //   k = log(tol / r_n) / log(rho)      (infinite when rho >= 1: no progress).
-// The earlier iterations are left out: their fast modes decay quickly and would make rho look better
-// than the iteration's asymptotic rate (for source iteration the rate only worsens as they
+// The earlier iterations are left out: their fast modes decay quickly and would make rho look
+// better than the iteration's asymptotic rate (for source iteration the rate only worsens as they
 // die out, and tends to 1 as Kn -> 0), so the forecast errs on the side of optimism: one
 // beyond the cap is a failure that the remaining iterations would only confirm.
 #pragma once

@@ -74,6 +74,29 @@ PY
   then pass "rfmems-gas on $n ranks = serial"; else fail "rfmems-gas on $n ranks: $(head -3 "$WORK/err")"; fi
 done
 
+# At the default tolerance 1e-6 the ranks stop at a different iterate near the same steady
+# state: within 100 x the tolerance of the serial fields, and 1e2 times farther than at 1e-10
+# (the distance is the tolerance's, not a bug's; docs/mpi.md).
+LOOSE=("${GAS_ARGS[@]}" --set solver.tolerance=1e-6)
+if "$GAS" "${LOOSE[@]}" -o "$WORK/loose1.h5" >"$WORK/loose1.json" 2>"$WORK/err" &&
+   mpirun --allow-run-as-root --oversubscribe -np 2 "$GAS" "${LOOSE[@]}" -o "$WORK/loose2.h5" \
+     >"$WORK/loose2.json" 2>"$WORK/err" &&
+   $PY - "$WORK/loose1" "$WORK/loose2" "$WORK/gas1" "$WORK/gas2" <<'PY'
+import sys
+import h5py, numpy as np
+def worst(a, b):
+    fa, fb = h5py.File(a + ".h5", "r"), h5py.File(b + ".h5", "r")
+    step = sorted(k for k in fa["fields"] if k[0].isdigit())[0]
+    return max(float(np.max(np.abs(fb["fields"][step][f][()] - fa["fields"][step][f][()])) /
+                     np.max(np.abs(fa["fields"][step][f][()])))
+               for f in ("temperature", "density", "pressure", "velocity"))
+loose, tight = worst(*sys.argv[1:3]), worst(*sys.argv[3:5])
+print(f"2 ranks against serial: {loose:.1e} at tolerance 1e-6, {tight:.1e} at 1e-10")
+assert loose <= 100 * 1e-6 and loose >= 1e2 * tight, (loose, tight)
+PY
+then pass "rfmems-gas on 2 ranks: the distance to serial is the solver tolerance's"
+else fail "rfmems-gas at tolerance 1e-6 on 2 ranks: $(head -3 "$WORK/err")"; fi
+
 # Second-order transport (deferred correction; the limited slopes of ghost cells come from
 # their owners): 2 ranks equal the serial run to 1e-9 too (measured 2026-12-02: heat flows
 # 2e-11, T 7e-13, rho 3e-12; 85 -> 223 sweeps).
