@@ -2,6 +2,7 @@
 #include "io/checkpoint.hpp"
 
 #include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -181,6 +182,20 @@ std::string settings_hash(std::string_view text) {
     h *= 1099511628211ull;  // FNV prime
   }
   return fmt::format("{:016x}", h);
+}
+
+std::string case_settings_hash(const CaseFile& file, const std::string& section,
+                               const std::string& key) {
+  YAML::Node root = YAML::Load(file.effective_text());
+  if (root[section] && root[section].IsMap()) root[section].remove(key);
+  YAML::Emitter out;
+  out << root;
+  return settings_hash(out.c_str());
+}
+
+std::string checkpoint_path_for(const std::string& result) {
+  const std::string stem = result.ends_with(".h5") ? result.substr(0, result.size() - 3) : result;
+  return stem + ".checkpoint.h5";
 }
 
 }  // namespace rfmems

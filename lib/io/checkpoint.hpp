@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "io/case_file.hpp"
 
 namespace rfmems {
 
@@ -47,5 +48,13 @@ Checkpoint read_checkpoint(const std::string& path);
 // A stable 64-bit FNV-1a hash of a settings text, as 16 hex digits (the same on every build
 // and machine, unlike std::hash).
 std::string settings_hash(std::string_view text);
+
+// The settings hash of a case after its overrides, without `section.key` (the checkpoint
+// triggers: how often to checkpoint must not invalidate a checkpoint).
+std::string case_settings_hash(const CaseFile& file, const std::string& section,
+                               const std::string& key);
+
+// Where a run writing `result` (…/name.h5) keeps its checkpoint: …/name.checkpoint.h5.
+std::string checkpoint_path_for(const std::string& result);
 
 }  // namespace rfmems

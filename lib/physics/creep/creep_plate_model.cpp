@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 
 #include "physics/creep/plate_creep_system.hpp"
 
@@ -92,6 +93,19 @@ void write_plate_creep_output(const CreepCase& c, ResultWriter& writer, int inde
                              {"Mp_xx", "Mp_yy", "Mp_xy"});
   for (const char* name : {"von_mises_top", "von_mises_bottom", "creep_strain"})
     writer.write_cell_field_at(index, out.time, name, out.fields.at(name), 1);
+}
+
+void check_hold_equilibrium(const CaseNode& root, const CreepCase& creep_case,
+                            const CreepRunModel& model) {
+  if (!creep_case.hold) return;
+  try {
+    std::vector<Real> y, yp;
+    model.make_system()->initial_state(0, y, yp);
+  } catch (const std::exception&) {
+    root.child("actuation")
+        .fail("voltage",
+              "no elastic equilibrium at this hold voltage (above the pull-in voltage?)");
+  }
 }
 
 }  // namespace rfmems

@@ -21,6 +21,11 @@ namespace rfmems {
 
 CreepRunModel make_plate_creep_model(const CreepCase& creep_case);
 
+// A hold voltage above pull-in has no elastic equilibrium at t = 0: bad input naming
+// actuation.voltage (of `root`), not a solver failure. Nothing to check without a hold.
+void check_hold_equilibrium(const CaseNode& root, const CreepCase& creep_case,
+                            const CreepRunModel& model);
+
 // Writes output `index` (fields kept by the run) as step `index` of the result file.
 void write_plate_creep_output(const CreepCase& creep_case, ResultWriter& writer, int index,
                               const CreepOutput& output);

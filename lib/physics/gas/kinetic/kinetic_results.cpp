@@ -1,0 +1,97 @@
+#include "physics/gas/kinetic/kinetic_results.hpp"
+
+#include <string>
+#include <vector>
+
+#include "parallel/communication_counters.hpp"
+
+namespace rfmems {
+
+void write_kinetic_results(ResultWriter* writer, const KineticScene& scene,
+                           const KineticSolveResult& result) {
+  const KineticOperator& op = *scene.op;
+  const Index n = op.n_owned_cells();
+  std::vector<double> rho(n), T(n), p(n), u(3 * n), q(3 * n), tau(6 * n);
+  for (Index c = 0; c < n; ++c) {
+    const MacroState& m = op.macro(c);
+    rho[c] = m.rho;
+    T[c] = m.T;
+    p[c] = m.p;
+    for (int d = 0; d < 3; ++d) {
+      u[3 * c + d] = m.u[d];
+      q[3 * c + d] = m.heat_flux[d];
+    }
+    const Mat3& s = m.stress;
+    const double voigt[6] = {s(0, 0), s(1, 1), s(2, 2), s(1, 2), s(0, 2), s(0, 1)};
+    for (int i = 0; i < 6; ++i) tau[6 * c + i] = voigt[i];
+  }
+  auto write = [&](const char* name, const std::vector<double>& values, int block,
+                   std::vector<std::string> components = {}) {
+    const std::vector<double> all = scene.gather(values, block);
+    if (writer) writer->write_cell_field_at(0, 0.0, name, all, block, std::move(components));
+  };
+  write("density", rho, 1);
+  write("velocity", u, 3, {"x", "y", "z"});
+  write("temperature", T, 1);
+  write("pressure", p, 1);
+  write("heat_flux", q, 3, {"x", "y", "z"});
+  write("stress", tau, 6, {"xx", "yy", "zz", "yz", "xz", "xy"});
+  if (!writer) return;
+  std::vector<double> iterations;
+  std::vector<std::vector<double>> ratios;
+  for (std::size_t i = 0; i < result.history.size(); ++i) {
+    iterations.push_back(static_cast<double>(i + 1));
+    ratios.push_back({result.history[i]});
+  }
+  writer->write_time_series("solver", "residual", iterations, ratios, {"ratio"}, "iteration");
+}
+
+Json kinetic_summary(const KineticScene& scene, const KineticSolveResult& result,
+                     std::span<const Real> f) {
+  const KineticOperator& op = *scene.op;
+  const FaceGraph& g = *scene.graph;
+  Json summary;
+  summary["collision"] = collision_model_name(op.gas().model);
+  summary["mesh"] = {{"dim", g.dim}, {"cells", scene.mesh->n_cells()}};
+  if (scene.distributed) {
+    summary["partition"] = {{"ranks", op.communicator().size()},
+                            {"edge_cut", scene.distributed->partition.edge_cut},
+                            {"imbalance", scene.distributed->partition.imbalance}};
+    // What the root sent during the whole run (parallel/communication_counters.hpp).
+    const CommunicationCounters sent = communication_counters();
+    summary["communication_rank0"] = {{"messages", sent.messages},
+                                      {"bytes", sent.bytes},
+                                      {"ghost_exchanges", sent.exchanges},
+                                      {"reductions", sent.reductions}};
+  }
+  summary["velocity_grid"] = {{"points", op.grid().n},
+                              {"ordinates", op.grid().size()},
+                              {"extent_m_per_s", op.grid().extent.maxCoeff()}};
+  summary["initial"] = {{"density", scene.initial.rho},
+                        {"temperature", scene.initial.T},
+                        {"knudsen", scene.knudsen},
+                        {"reference_length", scene.reference_length}};
+  summary["solver"] = {{"type", scene.solver.type},
+                       {"converged", result.converged},
+                       {"iterations", result.iterations},
+                       {"tolerance", scene.solver.tolerance},
+                       {"residual_initial", result.initial_residual},
+                       {"residual_final", result.final_residual},
+                       {"residual_ratio", result.residual_ratio},
+                       {"seconds", result.seconds}};
+  Json walls = Json::object();
+  for (const std::string& name : scene.force_patches) {
+    const int p = g.find_patch(name);  // -1 on a rank without it: contributes nothing
+    const Vec3 F = op.wall_force(p, f);
+    walls[name] = {{"force", {F.x(), F.y(), F.z()}}, {"heat_flow", op.wall_heat_flow(p, f)}};
+  }
+  summary["walls"] = walls;
+  Json boundaries = Json::object();
+  for (const Patch& patch : scene.mesh->patches())
+    boundaries[patch.name] = {{"mass_flow", op.boundary_mass_flow(g.find_patch(patch.name), f)}};
+  summary["boundaries"] = boundaries;
+  summary["total_mass"] = op.total_mass(f);
+  return summary;
+}
+
+}  // namespace rfmems
