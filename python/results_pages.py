@@ -135,6 +135,23 @@ def gas_mpi_agreement():
     return markdown(rows)
 
 
+def immersed_esbgk_stepper():
+    """rfmems-pullin's JSON of the coarse ESBGK switch at 80 V, the gas by sweeps and by IDA."""
+    rows = [["gas stepper", "tip extreme [um]", "tip at 1.2 us [um]", "difference to sweeps",
+             "coupled steps", "gas CPU [s]", "gas CPU per step [ms]", "CPU / sweeps"]]
+    runs = [(name, json.load(open(FIGURES / f"immersed_esbgk_stepper_{name}_80V.json"))["pull_in"])
+            for name in ("sweeps", "ida")]
+    base = runs[0][1]
+    for name, p in runs:
+        t, c = p["transient"], p["counters"]
+        diff = abs(t["extreme_control"] / base["transient"]["extreme_control"] - 1)
+        rows.append([name, f"{-1e6 * t['extreme_control']:.5f}", f"{-1e6 * t['final_control']:.5f}",
+                     "-" if p is base else f"{diff:.1e}", str(c["gas_steps"]), f"{c['gas_s']:.1f}",
+                     f"{1e3 * c['gas_s'] / c['gas_steps']:.1f}",
+                     f"{c['gas_s'] / base['counters']['gas_s']:.1f}"])
+    return markdown(rows)
+
+
 def comet_by_regime():
     """bench_comet_vs_sequential's rows with the default cycle (auto) and the V-cycle beside it."""
     rows = [x for x in read_jsonl(FIGURES / "comet_cycle_by_regime.jsonl") if "case" in x]
@@ -208,6 +225,7 @@ TABLES = {
     "comet-two-ranks": comet_two_ranks,
     "comet-by-regime": comet_by_regime,
     "gas-mpi-agreement": gas_mpi_agreement,
+    "immersed-esbgk-stepper": immersed_esbgk_stepper,
     "gas-damping-second-order-sweep": gas_damping_second_order_sweep,
     "immersed-esbgk-case-keys": immersed_esbgk_case_keys,
     "immersed-switch-figures": csv_table("immersed_switch_figures.csv"),

@@ -9,6 +9,7 @@
 #include "coupling/immersed_reynolds_film.hpp"
 #include "io/probes.hpp"
 #include "physics/electrostatics/parallel_plate_field.hpp"
+#include "physics/gas/ambient_gas.hpp"
 #include "physics/gas/kinetic/kinetic_case.hpp"
 
 namespace rfmems {
@@ -20,32 +21,19 @@ ImmersedGasSettings read_immersed_gas(const CaseNode& root, GasModel model) {
   s.model = model;
   const CaseNode gas = root.child_or_empty("gas");
   // Keys are read (and checked) even for none, so a case toggled by --set stays valid.
-  GasProperties& g = s.film;
-  g.ambient_pressure = gas.get_quantity("pressure", Dimension::Pressure, 1.36e4, Range::positive());
-  const Real temperature =
-      gas.get_quantity("temperature", Dimension::Temperature, 300.0, Range::positive());
-  const Real mu0 = gas.get_quantity("viscosity", Dimension::Viscosity, 1.712e-5, Range::positive());
-  const Real omega = gas.get_real("omega", 0.74, Range::closed(0.5, 1.0));
-  g.viscosity = mu0 * std::pow(temperature / 273.15, omega);
-  // Mean free path of the thesis's eq. (5.30) family: lambda = mu / p sqrt(pi R T / 2), air.
-  const Real lambda = g.viscosity / g.ambient_pressure * std::sqrt(M_PI * 287.0 * temperature / 2);
-  g.mean_free_path =
-      gas.get_quantity("mean_free_path", Dimension::Length, lambda, Range::positive());
-  g.reference_pressure = g.ambient_pressure;
-  g.rarefaction = gas.get_choice("rarefaction", {"veijola", "none"}, "veijola") == "veijola"
-                      ? Rarefaction::Veijola
-                      : Rarefaction::None;
-  // esbgk: the kinetic gas on the background (immersed_esbgk_gas.hpp).
+  const AmbientGas ambient = read_ambient_gas(gas, model != GasModel::None);
+  s.film = ambient.film;
+  // esbgk: the kinetic gas on the background (immersed_esbgk_gas.hpp), mu(T) from (T0, mu0).
   ImmersedEsbgkSettings& e = s.kinetic;
   e.gas.R = 287.05;
-  e.gas.mu_ref = mu0;
-  e.gas.T_ref = 273.15;
-  e.gas.omega = omega;
+  e.gas.mu_ref = ambient.film.viscosity;
+  e.gas.T_ref = ambient.temperature;
+  e.gas.omega = ambient.omega;
   e.gas.model = gas.get_choice("collision", {"esbgk", "bgk"}, "esbgk") == "esbgk"
                     ? CollisionModel::Esbgk
                     : CollisionModel::Bgk;
-  e.pressure = g.ambient_pressure;
-  e.temperature = temperature;
+  e.pressure = ambient.film.ambient_pressure;
+  e.temperature = ambient.temperature;
   e.velocities = static_cast<int>(gas.get_int("velocities", 10, Range::closed(4, 40)));
   e.velocity_extent = gas.get_real("velocity_extent", 3.5, Range::closed(2.0, 8.0));
   // A 1e-5 step residual keeps the gas force within 0.4 % of a 1e-9 solve; the point-coupled
@@ -59,6 +47,14 @@ ImmersedGasSettings read_immersed_gas(const CaseNode& root, GasModel model) {
   e.options.max_step_sweeps =
       static_cast<int>(gas.get_int("max_step_sweeps", 2000, Range::closed(1, 100000)));
   e.options.transport = read_transport_scheme(gas);
+  // How a gas step is solved: sweeps to step_tolerance, or IDA over the step (variable-order
+  // BDF at ida_rtol, GMRES with the arrowhead preconditioner of TransientKineticSystem).
+  const bool ida = gas.get_choice("stepper", {"sweeps", "ida"}, "sweeps") == "ida";
+  e.options.stepper = ida ? GasStepper::Ida : GasStepper::Sweeps;
+  e.options.ida_rtol = gas.get_real("ida_rtol", 1e-6, Range::closed(1e-12, 1e-2));
+  if (ida && model == GasModel::Esbgk)
+    gas.require(Communicator::world().size() == 1, "stepper",
+                "the IDA stepper runs on one rank (the sweeps distribute over ranks)");
   return s;
 }
 

@@ -19,11 +19,8 @@
 //                                     # switch), else redundantly by KLU on every rank
 //   gas:                              # none (default) | reynolds | esbgk
 //     model: reynolds                 # 1D film under the beam, open at the tip
-//     pressure: 1.36e4 Pa
-//     temperature: 300 K
-//     viscosity: 1.712e-5 Pa*s        # mu0 at 273.15 K, times (T / 273.15)^omega
-//     omega: 0.74
-//     rarefaction: veijola            # veijola (default) | none
+//     pressure: 1.36e4 Pa             # and temperature, viscosity, omega, mean_free_path,
+//                                     # rarefaction: physics/gas/ambient_gas.hpp
 //     # esbgk (immersed_esbgk_gas.hpp): the kinetic gas on the background; electrode,
 //     # substrate and left diffuse at T, top and right pressure (p, T)
 //     collision: esbgk                # esbgk (default) | bgk
@@ -36,6 +33,8 @@
 //     transport: first_order          # | second_order, with limiter, limiter_k and
 //                                     # boundary_reconstruction as for rfmems-gas's solver
 //                                     # (kinetic_case.hpp; immersed_kinetic_gas.hpp)
+//     stepper: sweeps                 # | ida: IDA over each gas step (BDF at ida_rtol,
+//     ida_rtol: 1e-6                  # GMRES with COMET's arrowhead preconditioner); one rank
 #pragma once
 #include <memory>
 #include <string>

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "physics/elasticity/elasticity_scene.hpp"
+#include "physics/gas/ambient_gas.hpp"
 #include "physics/structure/structure_from_case.hpp"
 
 namespace rfmems {
@@ -15,16 +16,7 @@ std::unique_ptr<ReynoldsFilm> read_gas(const CaseNode& root, const SwitchScene& 
   const CaseNode gas = root.child("gas");
   // model: none switches the film off but still checks its keys (a case toggled by --set).
   const bool none = s.gas() == GasModel::None;
-  GasProperties g;
-  g.ambient_pressure =
-      none ? gas.get_quantity("pressure", Dimension::Pressure, 1.0, Range::positive())
-           : gas.get_quantity("pressure", Dimension::Pressure, Range::positive());
-  g.viscosity = gas.get_quantity("viscosity", Dimension::Viscosity, g.viscosity, Range::positive());
-  g.mean_free_path =
-      gas.get_quantity("mean_free_path", Dimension::Length, g.mean_free_path, Range::positive());
-  g.rarefaction = gas.get_choice("rarefaction", {"veijola", "none"}, "veijola") == "veijola"
-                      ? Rarefaction::Veijola
-                      : Rarefaction::None;
+  const GasProperties g = read_ambient_gas(gas, !none).film;
   const Mesh& mesh = s.structure->structure_mesh();
   const CaseNode bcs = root.child("boundaries");
   const CaseNode given = gas.child_or_empty("boundaries");

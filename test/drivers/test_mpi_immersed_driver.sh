@@ -74,5 +74,15 @@ if [ "$code" -eq 2 ] && [ "$(grep -c '^rfmems-pullin: ' "$WORK/bad.err")" -eq 1 
 else
   fail "bad gas key under mpirun: exit $code, $(head -2 "$WORK/bad.err")"
 fi
+# The IDA stepper is serial: asked for on 2 ranks, bad input naming gas.stepper.
+mpirun --allow-run-as-root --oversubscribe -np 2 "$DRIVER" "$CASE" --set gas.model=esbgk \
+  --set gas.stepper=ida -o "$WORK/ida.h5" --quiet >/dev/null 2>"$WORK/ida.err"
+code=$?
+if [ "$code" -eq 2 ] && [ "$(grep -c '^rfmems-pullin: ' "$WORK/ida.err")" -eq 1 ] &&
+   grep -q "gas.stepper" "$WORK/ida.err" && [ ! -e "$WORK/ida.h5" ]; then
+  pass "IDA gas stepper under mpirun -> exit 2 naming gas.stepper"
+else
+  fail "IDA gas stepper under mpirun: exit $code, $(head -2 "$WORK/ida.err")"
+fi
 
 exit $((failures > 0))
