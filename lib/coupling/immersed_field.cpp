@@ -7,10 +7,13 @@
 
 #include "core/error.hpp"
 #include "coupling/immersed_reynolds_film.hpp"
+#include "io/input_solve.hpp"
 #include "io/probes.hpp"
 #include "physics/electrostatics/parallel_plate_field.hpp"
 #include "physics/gas/ambient_gas.hpp"
+#include "physics/gas/kinetic/equilibrium.hpp"
 #include "physics/gas/kinetic/kinetic_case.hpp"
+#include "physics/gas/kinetic/velocity_grid.hpp"
 
 namespace rfmems {
 
@@ -55,6 +58,20 @@ ImmersedGasSettings read_immersed_gas(const CaseNode& root, GasModel model) {
   if (ida && model == GasModel::Esbgk)
     gas.require(Communicator::world().size() == 1, "stepper",
                 "the IDA stepper runs on one rank (the sweeps distribute over ranks)");
+  // The gas at rest at (p0, T0), and the walls at T0, need a discrete equilibrium on the grid:
+  // one that does not exist is a grid too coarse for the state, bad input.
+  if (model == GasModel::Esbgk)
+    read_with_input_solves(
+        gas, "the gas at rest has no discrete equilibrium on its velocity grid (gas.velocities)",
+        [&] {
+          const Real T0 = e.temperature;
+          const int n = e.velocities;
+          const VelocityGrid grid =
+              VelocityGrid::uniform(n, n, n, e.velocity_extent * e.gas.thermal_speed(T0));
+          return equilibrium(
+              maxwellian_target(e.pressure / (e.gas.R * T0), Vec3::Zero(), T0, e.gas), e.gas.model,
+              grid);
+        });
   return s;
 }
 

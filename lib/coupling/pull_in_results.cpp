@@ -16,7 +16,8 @@ void write_pull_in_curve(ResultWriter& writer, const QuasiStaticPullIn& quasi_st
                            "control_displacement");
 }
 
-void write_dynamic_history(ResultWriter& writer, const std::string& name, const DynamicRun& run) {
+void write_dynamic_history(ResultWriter& writer, const std::string& name, const DynamicRun& run,
+                           const std::string& force_units) {
   std::vector<double> t;
   std::vector<std::vector<double>> rows;
   for (const DynamicSample& s : run.history) {
@@ -26,7 +27,8 @@ void write_dynamic_history(ResultWriter& writer, const std::string& name, const 
   }
   writer.write_time_series(
       "dynamic", name, t, rows,
-      {"control", "min_gap", "electrostatic_force", "gas_force", "contact_force", "voltage"});
+      {"control", "min_gap", "electrostatic_force", "gas_force", "contact_force", "voltage"},
+      "time", {"m", "m", force_units, force_units, force_units, "V"});
 }
 
 Json free_response_json(const FreeResponse& r) {

@@ -14,7 +14,9 @@
 namespace rfmems {
 
 void write_pull_in_curve(ResultWriter& writer, const QuasiStaticPullIn& quasi_static);
-void write_dynamic_history(ResultWriter& writer, const std::string& name, const DynamicRun& run);
+// force_units: of the run's forces, "N" (a plate: whole) or "N/m" (a plane beam: per depth).
+void write_dynamic_history(ResultWriter& writer, const std::string& name, const DynamicRun& run,
+                           const std::string& force_units);
 
 // A small-signal response in the summaries: fitted (false: too few samples or no motion,
 // nothing measured), damping_ratio, frequency (damped),

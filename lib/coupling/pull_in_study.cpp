@@ -232,6 +232,11 @@ std::vector<Real> structure_part(const SwitchScene& scene, std::span<const Real>
                            y.begin() + static_cast<std::ptrdiff_t>(std::min(n, y.size())));
 }
 
+// The forces of a run are the structure's: a plate's whole (N), a plane beam's per depth (N/m).
+std::string force_units(const SwitchScene& scene) {
+  return scene.structure->kind() == "plate" ? "N" : "N/m";
+}
+
 void run_transient(SwitchScene& scene, CouplingManager& manager, const PullInSettings& settings,
                    ResultWriter& writer, PullInReport& report) {
   const auto wall0 = std::chrono::steady_clock::now();
@@ -245,7 +250,7 @@ void run_transient(SwitchScene& scene, CouplingManager& manager, const PullInSet
   const DynamicState& end = report.transient.final_state;
   if (!end.y.empty())
     scene.structure->write_fields(writer, 0, end.t, structure_part(scene, end.y), {});
-  write_dynamic_history(writer, "transient", report.transient);
+  write_dynamic_history(writer, "transient", report.transient, force_units(scene));
   report.histories.emplace_back(settings.transient_voltage, report.transient);  // validity
 }
 
@@ -280,7 +285,7 @@ void run_release(SwitchScene& scene, SwitchSystem& system, const PullInSettings&
       run_hold(system, scene.control, report.approach.drop, settings.hold_voltage, settings.run, r);
   DynamicRun both = report.approach.run;
   both.history.insert(both.history.end(), report.hold.history.begin(), report.hold.history.end());
-  write_dynamic_history(writer, "release", both);
+  write_dynamic_history(writer, "release", both, force_units(scene));
   report.has_release = true;
   if (settings.release_tolerance > 0) {
     // Default high end: the voltage that pulled in (holds: no drop). The dynamic pull-out can
@@ -336,7 +341,7 @@ void run_dynamic_study(SwitchScene& scene, CouplingManager& manager, const PullI
   for (std::size_t k = 0; k < voltages.size(); ++k) {
     DynamicRun run = manager.run(waveform, voltages[k], whole);
     progress.run("dynamic: history", voltages[k], run);
-    write_dynamic_history(writer, fmt::format("V{}", k), run);
+    write_dynamic_history(writer, fmt::format("V{}", k), run, force_units(scene));
     report.histories.emplace_back(voltages[k], std::move(run));
   }
   if (settings.small_signal > 0) {
@@ -345,7 +350,7 @@ void run_dynamic_study(SwitchScene& scene, CouplingManager& manager, const PullI
     o.stop_at_turning = false;
     const DynamicRun run = manager.run(VoltageWaveform{}, v, o);
     progress.run("dynamic: small signal", v, run);
-    write_dynamic_history(writer, "small_signal", run);
+    write_dynamic_history(writer, "small_signal", run, force_units(scene));
     report.small_signal_voltage = v;
     report.small_signal = free_response(run.history);
   }

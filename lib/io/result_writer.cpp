@@ -5,12 +5,14 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
 #include "io/atomic_file.hpp"
 #include "io/build_info.hpp"
 #include "io/hdf5_util.hpp"
+#include "io/quantity_units.hpp"
 #include "io/xdmf.hpp"
 
 namespace rfmems {
@@ -183,6 +185,9 @@ void ResultWriter::write_cell_field_at(int step_index, double time, const std::s
       write_dataset(w.file.get(), dataset, H5T_NATIVE_DOUBLE, values.data(),
                     {static_cast<hsize_t>(w.n_cells), static_cast<hsize_t>(n_components)}, w.path);
   write_attribute(set.get(), "time", time, w.path);
+  const std::optional<std::string> units = units_of(name);
+  if (!units) w.misuse(fmt::format("field '{}' has no units (io/quantity_units.cpp)", name));
+  write_attribute(set.get(), "units", *units, w.path);
   if (!component_names.empty()) write_attribute(set.get(), "components", component_names, w.path);
   if (new_step) {
     H5Handle g(
@@ -198,7 +203,8 @@ void ResultWriter::write_time_series(const std::string& group, const std::string
                                      const std::vector<double>& t,
                                      const std::vector<std::vector<double>>& values,
                                      const std::vector<std::string>& component_names,
-                                     const std::string& abscissa) {
+                                     const std::string& abscissa,
+                                     const std::vector<std::string>& component_units) {
   Impl& w = *impl_;
   if (w.finished) w.misuse("write_time_series after finish()");
   std::string g = group;
@@ -229,11 +235,20 @@ void ResultWriter::write_time_series(const std::string& group, const std::string
 
   if (!plain_name(abscissa) || abscissa == "values")
     w.misuse(fmt::format("invalid abscissa name '{}'", abscissa));
-  write_dataset(w.file.get(), base + "/" + abscissa, H5T_NATIVE_DOUBLE, t.data(), {t.size()},
-                w.path);
+  const H5Handle x = write_dataset(w.file.get(), base + "/" + abscissa, H5T_NATIVE_DOUBLE, t.data(),
+                                   {t.size()}, w.path);
+  if (const auto units = units_of(abscissa)) write_attribute(x.get(), "units", *units, w.path);
   const H5Handle set = write_dataset(w.file.get(), base + "/values", H5T_NATIVE_DOUBLE, flat.data(),
                                      {t.size(), n_comp}, w.path);
   if (!component_names.empty()) write_attribute(set.get(), "components", component_names, w.path);
+  // Units per component, given or by name ("" where neither says).
+  std::vector<std::string> units = component_units;
+  if (units.empty())
+    for (const std::string& c : component_names) units.push_back(units_of(c).value_or(""));
+  if (!units.empty() && units.size() != n_comp)
+    w.misuse(
+        fmt::format("time series '{}': {} units for {} components", base, units.size(), n_comp));
+  if (!units.empty()) write_attribute(set.get(), "units", units, w.path);
 }
 
 void ResultWriter::write_metadata(const std::map<std::string, std::string>& strings,

@@ -6,9 +6,11 @@
 //                          4 triangle, 5 quad, 6 tetra, 7 pyramid, 8 prism, 9 hexa) and nodes
 //   /mesh/cell_centroids   n_cells × 3,  /mesh/cell_volumes  n_cells (area in 2D)
 //   /mesh                  attributes dim, n_cells, n_nodes
-//   /fields/<step:06d>/<name>  n_cells × n_components, attribute time (group: time, step)
+//   /fields/<step:06d>/<name>  n_cells × n_components, attributes time, units, components
+//                          (group: time, step)
 //   /fields/times, /fields/steps   output times and step indices, in step order
-//   /<group>/<name>/time, /<group>/<name>/values (n_t × n_comp)   time series (probes, stats)
+//   /<group>/<name>/time, /<group>/<name>/values (n_t × n_comp)   time series (probes, stats),
+//                          each with its units (values: one per component)
 //   /metadata              attributes: strings (case text, overrides, git hash) and numbers
 //   /                      attributes format = "rfmems-result", format_version
 //
@@ -41,7 +43,8 @@ class ResultWriter {
   // the owned cells or all cells (ghosts are ignored). n_components must be 1, 3 (vectors:
   // give z even in 2D), 6 (symmetric tensor, Voigt order xx yy zz yz xz xy) or 9.
   // All fields of one step_index must share its time. component_names, if given, is stored
-  // as the dataset attribute "components".
+  // as the dataset attribute "components"; the field's unit (io/quantity_units.hpp: a name
+  // without one is a programming error) as "units".
   void write_cell_field_at(int step_index, double time, const std::string& name,
                            const std::vector<double>& values, int n_components,
                            const std::vector<std::string>& component_names = {});
@@ -49,12 +52,15 @@ class ResultWriter {
   // Writes /<group>/<name>/time (n_t) and /<group>/<name>/values (n_t × n_comp; values[i]
   // is the sample at t[i], all of the same length). group may be nested ("stats/solver").
   // abscissa names the first dataset instead of "time" (a curve in another variable, e.g.
-  // the voltage-deflection curve of a pull-in study).
+  // the voltage-deflection curve of a pull-in study). Units ("units" attributes): the
+  // abscissa's by its name; the components' as given, else by their names ("" for a name
+  // io/quantity_units.hpp does not know, such as a probe's own).
   void write_time_series(const std::string& group, const std::string& name,
                          const std::vector<double>& t,
                          const std::vector<std::vector<double>>& values,
                          const std::vector<std::string>& component_names = {},
-                         const std::string& abscissa = "time");
+                         const std::string& abscissa = "time",
+                         const std::vector<std::string>& component_units = {});
 
   // Attributes of /metadata; a name written twice keeps the last value. "git_hash" is
   // already set from the build.

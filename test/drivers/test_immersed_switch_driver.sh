@@ -135,6 +135,8 @@ expect_input_error bad_electrode "x" "$CASE" --set "actuation.electrode.x=[50 um
 expect_input_error bad_anchor "anchor_patch" "$CASE" --set actuation.immersed.anchor_patch=wall
 expect_input_error bad_gas "model" "$CASE" --set gas.model=dsmc
 expect_input_error bad_stepper "gas.stepper" "$CASE" --set gas.stepper=rk4
+expect_input_error coarse_velocity_grid "no discrete equilibrium" "$CASE" --set gas.model=esbgk \
+  --set gas.velocities=4
 # The gas keys mean the same for every model: the pressure is the case's, required with a gas.
 expect_input_error gas_without_pressure "gas.pressure" "$CASE" --set "gas={model: reynolds}"
 expect_input_error bad_scheme "scheme" "$CASE" --set coupling.scheme=monolithic

@@ -48,7 +48,10 @@ sys.exit(0 if len(v['warnings']) == $count and ($condition) else 1)" "$WORK/$nam
 }
 
 run default
-check default 0 "" "abs(r['film_knudsen'][0] - 68/3750) < 1e-9 and abs(r['film_knudsen'][1] - 68/75) < 1e-3 and r['length_over_thickness'] == [100, 100]"
+# The film's Kn = lambda / g with air's lambda = mu / p0 sqrt(pi R T0 / 2) = 67.15 nm at 1 atm and
+# 300 K (mu 1.85e-5 Pa s): over the 3.75 um gap and down to the 75 nm contact gap.
+LAMBDA_NM="(1.85e-5 / 101325 * (3.141592653589793 * 287 * 300 / 2) ** 0.5 * 1e9)"
+check default 0 "" "abs(r['film_knudsen'][0] - $LAMBDA_NM/3750) < 1e-9 and abs(r['film_knudsen'][1] - $LAMBDA_NM/75) < 1e-3 and r['length_over_thickness'] == [100, 100]"
 
 run low_pressure --set pull_in.mode=quasi_static --set gas.pressure=10Pa
 check low_pressure 1 "Veijola's fit range Kn <= 880" "r['film_knudsen'][0] > 180 and r['film_knudsen'][1] > 880"

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/error.hpp"
+#include "io/quantity_units.hpp"
 #include "io/units.hpp"
 #include "physics/creep/creep_plate_model.hpp"
 #include "physics/creep/hold_voltage_search.hpp"
@@ -20,8 +21,12 @@ void write_creep_results(ResultWriter& writer, const CreepCase& creep, const Cre
                          const CreepRunResult& result) {
   for (std::size_t k = 0; k < result.outputs.size(); ++k)
     write_plate_creep_output(creep, writer, static_cast<int>(k), result.outputs[k]);
+  // The series' columns: the probes' deflections (named by the probes), then by their names.
+  std::vector<std::string> units(creep.probes.size(), "m");
+  for (std::size_t k = creep.probes.size(); k < model.series_columns.size(); ++k)
+    units.push_back(units_of(model.series_columns[k]).value_or(""));
   writer.write_time_series("creep", "history", result.series_times, result.series,
-                           model.series_columns);
+                           model.series_columns, "time", units);
   writer.write_time_series("creep", "final_state", {result.final_time}, {result.state});
 }
 
