@@ -35,10 +35,8 @@
 //     model: reynolds                 # none | reynolds | esbgk (scene_combinations.hpp)
 //     ...                             # parallel_plate: the film under the plate (below);
 //                                     # immersed: immersed_field.hpp
-//     pressure: 1 atm                 # ambient pressure
-//     viscosity: 1.85e-5 Pa*s         # air at 300 K (default)
-//     mean_free_path: 68 nm           # at 1 atm (default; scales as 1/p)
-//     rarefaction: veijola            # veijola (default) | none
+//     pressure: 1 atm                 # ambient pressure; temperature, viscosity, omega,
+//                                     # mean_free_path, rarefaction: physics/gas/ambient_gas.hpp
 //     boundaries: {left: wall, right: wall, top: open, bottom: open}
 //                                     # default per plate edge: open where the plate edge is
 //                                     # free or loaded, wall where it is supported

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The scene validity report end to end (coupling/scene_validity.hpp) through rfmems-pullin:
 # the default switch_plate run states its film Knudsen range (lambda/g from the rest gap,
-# 68 nm / 3.75 um = 0.0181, to the contact gap, 68 nm / 75 nm = 0.907) and L/h = 100 in
+# 67.15 nm / 3.75 um = 0.0179, to the contact gap, 67.15 nm / 75 nm = 0.895) and L/h = 100 in
 # the JSON summary's `validity`, with no warning; a film at 10 Pa (Kn 184 at rest, beyond
 # Veijola's 880 at the deepest computed gap) and a 45 um thick plate (L/h = 8.9 < 10) print one
 # "rfmems-pullin: warning: ..." line each on stderr, listed in the JSON too; --quiet silences
