@@ -37,7 +37,8 @@ class GapScaledLaggedLoad : public SecondOrderOperator {
   // cross the root failed every time and IDA cut its step without end).
   static constexpr Real kClosedFraction = 1e-3;
 
-  // beam: a plane elasticity operator (unknowns u_x, u_y per cell); gap0: the gap at rest;
+  // beam: an elasticity operator whose last displacement component crosses the gap
+  // (ElasticityOperator::gap_unknown; u_y of a plane beam); gap0: the gap at rest;
   // closed_fraction: see kClosedFraction (the immersed switch keeps its 2 %).
   GapScaledLaggedLoad(ElasticityOperator& beam, Real gap0, Real closed_fraction = kClosedFraction);
 

@@ -84,7 +84,7 @@ Index LaplaceGapField::gap_cells_total() const { return gap_mesh_->n_cells(); }
 
 Real LaplaceGapField::cell_min_gap(std::span<const Real> u) const {
   Real g = 1e300;
-  for (Index c : bottom_cells_) g = std::min(g, gap_ + u[2 * c + 1]);
+  for (Index c : bottom_cells_) g = std::min(g, gap_ + u[beam_.gap_unknown(c)]);
   return g;
 }
 
@@ -111,8 +111,8 @@ std::vector<Real> LaplaceGapField::load_per_volt2(std::span<const Real> u) {
   for (std::size_t i = 0; i < load.faces.size(); ++i) {
     const Vec3 force = load.traction[i] * gap_mesh_->face_area(load.faces[i]).norm();
     const Index c = top_face_cell_[load.faces[i] - top_first_face_];
-    q[2 * c] += force.x();
-    q[2 * c + 1] += force.y();
+    q[beam_.unknown(c, 0)] += force.x();
+    q[beam_.gap_unknown(c)] += force.y();
     last_force_y_ += force.y();
   }
   return q;

@@ -57,14 +57,16 @@ Centre clamped(int n, double slenderness, int degree) {
 }
 
 // The smallest observed order each reconstruction degree reaches on 20, 40, 80 cells.
-constexpr double kMinOrder[4] = {0, 0.0, 0.0, 0.0};
+// (measured 2026-12-04: degree 3 2.14-2.29, degree 2 1.98-2.03, degree 1 1.95-1.98).
+constexpr double kMinOrder[4] = {0, 1.9, 1.9, 2.0};
 
 }  // namespace
 
 // Each degree converges at its observed order on 20, 40, 80 cells a side, for every L/h
 // (no locking: the order does not fall as the plate thins), and for thin plates the
-// Richardson value of the centre deflection is Kirchhoff's 1.26532 q a^4 / (1000 D)
-// (Timoshenko & Woinowsky-Krieger, Table 35) to the shear deformation's O((h/a)^2).
+// Richardson value of the centre deflection differs from Kirchhoff's 1.26532 q a^4 / (1000 D)
+// (Timoshenko & Woinowsky-Krieger, Table 35) by the shear deformation's O((h/a)^2), measured
+// 25.6 (h/a)^2, plus the Richardson value's own error (< 1e-4).
 TEST(PlateClampedStudy, MeshConvergenceTable) {
   constexpr double kKirchhoff = 1.26532;
   for (int degree : {3, 2, 1})
@@ -82,8 +84,10 @@ TEST(PlateClampedStudy, MeshConvergenceTable) {
       std::printf("degree %d  L/h = %6.0f  observed order %.2f  Richardson %.5f\n", degree,
                   slenderness, order, limit);
       EXPECT_GE(order, kMinOrder[degree]) << "degree " << degree << ", L/h " << slenderness;
-      if (slenderness >= 100)
-        EXPECT_NEAR(limit, kKirchhoff, 2e-3 * kKirchhoff)
+      if (slenderness >= 100) {
+        const double shear = 30.0 / (slenderness * slenderness);
+        EXPECT_NEAR(limit, kKirchhoff, shear + 1e-4)
             << "degree " << degree << ", L/h " << slenderness;
+      }
     }
 }

@@ -46,6 +46,10 @@ class ElasticityOperator : public SecondOrderOperator {
 
   Index size() const override { return mesh_.n_cells() * dim_; }
   int dim() const { return dim_; }
+  // The unknown of displacement component d of a cell (the layout: u_x, u_y[, u_z] per cell),
+  // and the one across a gap below the body: its last component (u_y in a plane, u_z in 3D).
+  Index unknown(Index cell, int d) const { return cell * dim_ + d; }
+  Index gap_unknown(Index cell) const { return unknown(cell, dim_ - 1); }
   const Mesh& mesh() const { return mesh_; }
   const LinearElastic& material() const { return material_; }
   const std::vector<ElasticityBoundary>& boundaries() const { return boundaries_; }
