@@ -23,6 +23,25 @@ expect_input_error() {
   fi
 }
 
+# expect_mpi_input_error NAME TEXT RANKS ARGS...: the same under mpirun on RANKS ranks: exit 2,
+# exactly one "<program>: " line containing TEXT (mpirun adds its own notice after it), no
+# result file.
+expect_mpi_input_error() {
+  local name="$1" text="$2" ranks="$3"
+  shift 3
+  mpirun --allow-run-as-root --oversubscribe -np "$ranks" "$DRIVER" "$@" -o "$WORK/$name.h5" \
+    --quiet >/dev/null 2>"$WORK/$name.err"
+  local code=$?
+  local program
+  program=$(basename "$DRIVER")
+  if [ "$code" -eq 2 ] && [ "$(grep -c "^$program: " "$WORK/$name.err")" -eq 1 ] &&
+     grep -q -- "^$program: .*$text" "$WORK/$name.err" && [ ! -e "$WORK/$name.h5" ]; then
+    pass "$name on $ranks ranks -> exit 2: $(grep "^$program: " "$WORK/$name.err")"
+  else
+    fail "$name on $ranks ranks: exit $code, $(head -2 "$WORK/$name.err")"
+  fi
+}
+
 # expect_json_run NAME TEXT ARGS...: the driver run with ARGS writes $WORK/NAME.h5 and its
 # --json summary $WORK/NAME.json, and exits 0 ("TEXT exits 0"; else the failure with stderr).
 expect_json_run() {

@@ -37,15 +37,7 @@ PY
 then pass "same pull-in voltage and displacement on 2 ranks"; else fail "2 ranks differ from serial"; fi
 [ -s "$WORK/mpi.h5" ] && pass "one result file" || fail "no result file from the MPI run"
 
-"${MPIRUN[@]}" "$DRIVER" "$CASE" --set pull_in.mode=bogus -o "$WORK/bad.h5" --quiet \
-  >/dev/null 2>"$WORK/bad.err"
-code=$?
-if [ "$code" -eq 2 ] && [ "$(grep -c '^rfmems-pullin: ' "$WORK/bad.err")" -eq 1 ] &&
-   grep -q "pull_in.mode" "$WORK/bad.err" && [ ! -e "$WORK/bad.h5" ]; then
-  pass "bad key under mpirun -> exit 2, one driver line"
-else
-  fail "bad key under mpirun: exit $code, $(head -2 "$WORK/bad.err")"
-fi
+expect_mpi_input_error bad_key "pull_in.mode" 2 "$CASE" --set pull_in.mode=bogus
 # --- rfmems-gas distributed ---------------------------------------------------------------
 GAS="$1/rfmems-gas"
 GAS_ARGS=("$SRC/cases/gas_heat_transfer/case.yaml" --set "mesh.cells=[10, 10]" --set initial.knudsen=0.5

@@ -65,24 +65,10 @@ PY
   else fail "np $n differs from serial"; fi
 done
 
-mpirun --allow-run-as-root --oversubscribe -np 2 "$DRIVER" "$CASE" --set gas.model=esbgk \
-  --set gas.smoother=jacobi -o "$WORK/bad.h5" --quiet >/dev/null 2>"$WORK/bad.err"
-code=$?
-if [ "$code" -eq 2 ] && [ "$(grep -c '^rfmems-pullin: ' "$WORK/bad.err")" -eq 1 ] &&
-   grep -q "smoother" "$WORK/bad.err" && [ ! -e "$WORK/bad.h5" ]; then
-  pass "bad gas key under mpirun -> exit 2, one driver line"
-else
-  fail "bad gas key under mpirun: exit $code, $(head -2 "$WORK/bad.err")"
-fi
+expect_mpi_input_error bad_gas_key "smoother" 2 "$CASE" --set gas.model=esbgk \
+  --set gas.smoother=jacobi
 # The IDA stepper is serial: asked for on 2 ranks, bad input naming gas.stepper.
-mpirun --allow-run-as-root --oversubscribe -np 2 "$DRIVER" "$CASE" --set gas.model=esbgk \
-  --set gas.stepper=ida -o "$WORK/ida.h5" --quiet >/dev/null 2>"$WORK/ida.err"
-code=$?
-if [ "$code" -eq 2 ] && [ "$(grep -c '^rfmems-pullin: ' "$WORK/ida.err")" -eq 1 ] &&
-   grep -q "gas.stepper" "$WORK/ida.err" && [ ! -e "$WORK/ida.h5" ]; then
-  pass "IDA gas stepper under mpirun -> exit 2 naming gas.stepper"
-else
-  fail "IDA gas stepper under mpirun: exit $code, $(head -2 "$WORK/ida.err")"
-fi
+expect_mpi_input_error ida_stepper "gas.stepper" 2 "$CASE" --set gas.model=esbgk \
+  --set gas.stepper=ida
 
 exit $((failures > 0))
