@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -11,11 +12,15 @@ std::optional<IterationForecast> ConvergenceForecast::of(std::span<const Real> r
                                                          Real tolerance) {
   const std::size_t n = ratios.size();
   if (n < static_cast<std::size_t>(kMinIterations)) return std::nullopt;
-  const std::size_t m = 3 * n / 4;
-  const Real now = ratios[n - 1], then = ratios[m - 1];
-  if (!(now > 0) || !(then > 0) || !std::isfinite(now) || !std::isfinite(then)) return std::nullopt;
+  const Real now = ratios[n - 1];
+  if (!(now > 0) || !std::isfinite(now)) return std::nullopt;
   IterationForecast f;
-  f.rate = std::pow(now / then, 1.0 / Real(n - m));
+  f.rate = std::numeric_limits<Real>::infinity();
+  for (const std::size_t m : {3 * n / 4, n / 2}) {
+    const Real then = ratios[m - 1];
+    if (!(then > 0) || !std::isfinite(then)) return std::nullopt;
+    f.rate = std::min(f.rate, std::pow(now / then, 1.0 / Real(n - m)));
+  }
   if (now <= tolerance)
     f.remaining = 0;
   else if (f.rate >= 1)
@@ -34,7 +39,7 @@ std::string ConvergenceForecast::hopeless(std::span<const Real> ratios, Real tol
     return fmt::format(
         "{} stopped after {} of its {} iterations: no progress over the last {} (residual "
         "ratio {:.3e}, tolerance {:.1e})",
-        solver, ratios.size(), max_iterations, ratios.size() - 3 * ratios.size() / 4, ratios.back(),
+        solver, ratios.size(), max_iterations, ratios.size() - ratios.size() / 2, ratios.back(),
         tolerance);
   return fmt::format(
       "{} stopped after {} of its {} iterations: at its contraction rate of {:.6f} per "

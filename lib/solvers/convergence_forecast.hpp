@@ -3,14 +3,16 @@
 // says so early instead of at the cap.
 //
 // A linearly converging iteration has r_n ~ C rho^n. From the residual ratios r_1..r_n the
-// contraction rate is estimated over the last quarter of the history,
-//   rho = (r_n / r_m)^(1 / (n - m)),  m = 3 n / 4,
+// contraction rate is estimated over the end of the history,
+//   rho = (r_n / r_m)^(1 / (n - m)),  the smaller of m = 3 n / 4 and m = n / 2,
 // and the iterations still needed to reach the tolerance are
 //   k = log(tol / r_n) / log(rho)      (infinite when rho >= 1: no progress).
-// The earlier iterations are left out: their fast modes decay quickly and would make rho look
-// better than the iteration's asymptotic rate (for source iteration the rate only worsens as they
-// die out, and tends to 1 as Kn -> 0), so the forecast errs on the side of optimism: one
-// beyond the cap is a failure that the remaining iterations would only confirm.
+// The early iterations are left out: their fast modes decay quickly and would make rho look
+// better than the iteration's asymptotic rate. Of the two windows the faster rate is taken, so
+// that a few noisy iterations (a multigrid cycle that gains nothing) do not read as a stall.
+// For source iteration the rate only worsens as the fast modes die out (it tends to 1 as
+// Kn -> 0), so the forecast errs on the side of optimism: one beyond the cap is a failure
+// that the remaining iterations would only confirm.
 #pragma once
 #include <optional>
 #include <span>
@@ -21,7 +23,7 @@
 namespace rfmems {
 
 struct IterationForecast {
-  Real rate = 1;       // contraction per iteration over the last quarter of the history
+  Real rate = 1;       // contraction per iteration at the end of the history
   Real remaining = 0;  // iterations still needed to reach the tolerance (inf: none suffices)
 };
 
