@@ -170,6 +170,9 @@ void ResultWriter::write_cell_field_at(int step_index, double time, const std::s
     w.misuse(fmt::format("field '{}' has {} values, expected {} ({} cells × {})", name,
                          values.size(), needed, w.n_cells, n_components));
 
+  const std::optional<std::string> units = units_of(name);
+  if (!units) w.misuse(fmt::format("field '{}' has no units (io/quantity_units.cpp)", name));
+
   const std::string group = fmt::format("fields/{:06d}", step_index);
   const std::string dataset = group + "/" + name;
   auto [it, new_step] = w.steps.try_emplace(step_index, XdmfStep{time, {}});
@@ -185,8 +188,6 @@ void ResultWriter::write_cell_field_at(int step_index, double time, const std::s
       write_dataset(w.file.get(), dataset, H5T_NATIVE_DOUBLE, values.data(),
                     {static_cast<hsize_t>(w.n_cells), static_cast<hsize_t>(n_components)}, w.path);
   write_attribute(set.get(), "time", time, w.path);
-  const std::optional<std::string> units = units_of(name);
-  if (!units) w.misuse(fmt::format("field '{}' has no units (io/quantity_units.cpp)", name));
   write_attribute(set.get(), "units", *units, w.path);
   if (!component_names.empty()) write_attribute(set.get(), "components", component_names, w.path);
   if (new_step) {
