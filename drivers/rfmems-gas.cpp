@@ -81,7 +81,7 @@ int run(const DriverOptions& options) {
   Json summary = kinetic_summary(scene, result, f);
   summary["case"] = run_case.name;
   summary["output"] = {{"h5", run_case.output},
-                       {"xdmf", run_case.output.substr(0, run_case.output.rfind('.')) + ".xdmf"}};
+                       {"xdmf", ResultWriter::sidecar_path(run_case.output)}};
   summary["validity"] = validity.to_json();
   summary["wall_time_s"] = run_case.elapsed();
   if (!result.converged && !result.stop_reason.empty())

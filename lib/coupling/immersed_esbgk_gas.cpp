@@ -8,6 +8,15 @@
 
 namespace rfmems {
 
+VelocityGrid ImmersedEsbgkSettings::velocity_grid() const {
+  const int n = velocities;
+  return VelocityGrid::uniform(n, n, n, velocity_extent * gas.thermal_speed(temperature));
+}
+
+GasState ImmersedEsbgkSettings::ambient() const {
+  return {pressure / (gas.R * temperature), Vec3::Zero(), temperature};
+}
+
 ImmersedEsbgkGas::ImmersedEsbgkGas(const Mesh& background, ImmersedEsbgkSettings settings,
                                    Real substrate_y)
     : background_(background), settings_(std::move(settings)), substrate_y_(substrate_y) {
@@ -43,13 +52,10 @@ void ImmersedEsbgkGas::reset(const ImmersedSurface& surface, Real /*t0*/) {
     else
       throw InputError("esbgk gas: background patch '" + name + "' has no gas condition");
   }
-  const Real extent = settings_.velocity_extent * settings_.gas.thermal_speed(T0);
-  const int n = settings_.velocities;
-  gas_ = std::make_unique<ImmersedKineticGas>(background_, std::move(bcs),
-                                              VelocityGrid::uniform(n, n, n, extent), settings_.gas,
-                                              settings_.options);
+  gas_ = std::make_unique<ImmersedKineticGas>(
+      background_, std::move(bcs), settings_.velocity_grid(), settings_.gas, settings_.options);
   gas_->set_body(surface, std::vector<Vec3>(surface.n_segments(), Vec3::Zero()));
-  gas_->initialize({p0 / (settings_.gas.R * T0), Vec3::Zero(), T0});
+  gas_->initialize(settings_.ambient());
   stats_ = {};
   last_ = {};
   max_knudsen_ = 0;

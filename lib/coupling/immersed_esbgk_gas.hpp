@@ -30,6 +30,10 @@ struct ImmersedEsbgkSettings {
   // rank of the program, which must then all run the coupled switch (rfmems-pullin does for
   // gas: esbgk); in a program without MPI the serial communicator.
   Communicator comm = Communicator::world();
+
+  // The n^3 grid over +-velocity_extent thermal speeds at T0, and the gas at rest at (p0, T0).
+  VelocityGrid velocity_grid() const;
+  GasState ambient() const;
 };
 
 struct ImmersedEsbgkStats {  // summed over the steps since reset

@@ -13,7 +13,6 @@
 #include "physics/gas/ambient_gas.hpp"
 #include "physics/gas/kinetic/equilibrium.hpp"
 #include "physics/gas/kinetic/kinetic_case.hpp"
-#include "physics/gas/kinetic/velocity_grid.hpp"
 
 namespace rfmems {
 
@@ -64,13 +63,9 @@ ImmersedGasSettings read_immersed_gas(const CaseNode& root, GasModel model) {
     read_with_input_solves(
         gas, "the gas at rest has no discrete equilibrium on its velocity grid (gas.velocities)",
         [&] {
-          const Real T0 = e.temperature;
-          const int n = e.velocities;
-          const VelocityGrid grid =
-              VelocityGrid::uniform(n, n, n, e.velocity_extent * e.gas.thermal_speed(T0));
-          return equilibrium(
-              maxwellian_target(e.pressure / (e.gas.R * T0), Vec3::Zero(), T0, e.gas), e.gas.model,
-              grid);
+          const GasState rest = e.ambient();
+          return equilibrium(maxwellian_target(rest.rho, rest.u, rest.T, e.gas), e.gas.model,
+                             e.velocity_grid());
         });
   return s;
 }

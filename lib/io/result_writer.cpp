@@ -42,15 +42,6 @@ long long xdmf_type(CellShape shape) {
   throw std::logic_error("xdmf_type: unknown cell shape");
 }
 
-std::string sidecar_path(const std::string& path) {
-  for (const char* ext : {".h5", ".hdf5"}) {
-    const std::string e = ext;
-    if (path.size() > e.size() && path.ends_with(e))
-      return path.substr(0, path.size() - e.size()) + ".xdmf";
-  }
-  return path + ".xdmf";
-}
-
 H5Handle create_group(hid_t location, const std::string& name, const std::string& file) {
   return H5Handle(
       check_id(H5Gcreate2(location, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), file,
@@ -90,7 +81,7 @@ ResultWriter::ResultWriter(const std::string& path, const Mesh& mesh)
     : impl_(std::make_unique<Impl>()) {
   Impl& w = *impl_;
   w.path = path;
-  w.xdmf_path = sidecar_path(path);
+  w.xdmf_path = ResultWriter::sidecar_path(path);
   w.temp_path = temp_path_for(path);
   silence_hdf5_errors();
   create_parent_directory(path);
@@ -292,6 +283,15 @@ void ResultWriter::finish() {
 
 const std::string& ResultWriter::path() const { return impl_->path; }
 const std::string& ResultWriter::xdmf_path() const { return impl_->xdmf_path; }
+
+std::string ResultWriter::sidecar_path(const std::string& path) {
+  for (const char* ext : {".h5", ".hdf5"}) {
+    const std::string e = ext;
+    if (path.size() > e.size() && path.ends_with(e))
+      return path.substr(0, path.size() - e.size()) + ".xdmf";
+  }
+  return path + ".xdmf";
+}
 bool ResultWriter::finished() const { return impl_->finished; }
 
 }  // namespace rfmems

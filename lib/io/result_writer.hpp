@@ -73,6 +73,8 @@ class ResultWriter {
 
   const std::string& path() const;
   const std::string& xdmf_path() const;
+  // The XDMF sidecar of a result path: .h5 / .hdf5 replaced by .xdmf, else .xdmf appended.
+  static std::string sidecar_path(const std::string& path);
   bool finished() const;
 
  private:

@@ -73,7 +73,7 @@ struct ElasticityScene : StructuralModel {
                                  std::span<const Real> y) const override;
   int main_probe_component() const override { return 1; }
   std::vector<GapElement> gap_elements(const std::string& patch) const override;
-  Index gap_unknown(Index cell) const override { return cell * mesh->dim() + mesh->dim() - 1; }
+  Index gap_unknown(Index cell) const override { return op->gap_unknown(cell); }
 };
 
 // Reads mesh, material, model, boundaries, body_force (and solver.segregated) from the case
