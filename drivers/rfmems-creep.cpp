@@ -63,7 +63,7 @@ int run(const DriverOptions& options) {
   const DriverCase run_case(options);
   const CaseFile& case_file = run_case.file;
   CreepCase creep = read_creep_case(run_case.root, run_case.dir);
-  case_file.check_all_used();  // a typo stops the run here, before any solving
+  if (!run_case.finish_reading()) return 0;  // a typo stops the run here, before any solving
   if (!creep_options.hold_voltage_for_gap.empty()) {
     const Json hold =
         hold_voltage_for_gap(creep, "--hold-voltage-for-gap", creep_options.hold_voltage_for_gap);
@@ -144,5 +144,5 @@ int main(int argc, char** argv) {
   return driver_main(kProgram,
                      "rfmems-creep: creep of a plate (pressure, hold voltage), creep life, "
                      "checkpoints.",
-                     argc, argv, run, RankUse::RootOnly, creep_flags);
+                     creep_case_keys(), argc, argv, run, RankUse::RootOnly, creep_flags);
 }

@@ -55,7 +55,7 @@ int run(const DriverOptions& options) {
   KineticScene scene = read_with_input_solves(
       run_case.root, "a gas state of the case has no discrete equilibrium on velocity_grid",
       [&] { return build_kinetic_scene(run_case.root, run_case.dir, world); });
-  case_file.check_all_used();  // a typo stops the run here, before any solving
+  if (!run_case.finish_reading()) return 0;  // a typo stops the run here, before any solving
   KineticOperator& op = *scene.op;
 
   std::unique_ptr<ResultWriter> writer;  // the root writes
@@ -117,5 +117,5 @@ int run(const DriverOptions& options) {
 int main(int argc, char** argv) {
   return driver_main(kProgram,
                      "rfmems-gas: steady rarefied gas flow, discrete-velocity BGK / ESBGK (FV)",
-                     argc, argv, run, RankUse::AllRanks);
+                     kinetic_case_keys(), argc, argv, run, RankUse::AllRanks);
 }

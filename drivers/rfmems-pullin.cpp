@@ -73,7 +73,7 @@ int run(const DriverOptions& options) {
   SwitchScene scene = build_switch_scene(root, run_case.dir);
   PullInSettings settings = read_pull_in_settings(root, scene);
   if (!options.quiet && world.is_root()) settings.progress = stderr;
-  case_file.check_all_used();  // a typo stops the run here, before any solving
+  if (!run_case.finish_reading()) return 0;  // a typo stops the run here, before any solving
 
   const std::string output =
       world.is_root() ? run_case.output : run_case.output + ".rank" + std::to_string(world.rank());
@@ -124,7 +124,8 @@ int run(const DriverOptions& options) {
 int main(int argc, char** argv) {
   return driver_main("rfmems-pullin",
                      "rfmems-pullin: quasi-static and dynamic pull-in of an electrostatic switch",
-                     argc, argv, run, RankUse::AllRanks, [](CLI::App& app) {
+                     join_schemas({switch_case_keys(), pull_in_case_keys()}), argc, argv, run,
+                     RankUse::AllRanks, [](CLI::App& app) {
                        app.add_flag_callback(
                            "--scenes",
                            [] {

@@ -63,7 +63,7 @@ int run(const DriverOptions& options) {
   const AnalysisSettings settings = read_analysis_settings(root, *model);
   std::vector<Probe> probes = read_probes(root.child_or_empty("probes"), model->structure_mesh());
   if (distributed) check_distributable(*model, settings, root);
-  case_file.check_all_used();  // a typo stops the run here, before any solving
+  if (!run_case.finish_reading()) return 0;  // a typo stops the run here, before any solving
 
   // The result file exists on the root only; if creating it fails there, a distributed run's
   // other ranks must not enter the collective solve (they would wait for the root forever).
@@ -113,8 +113,10 @@ int run(const DriverOptions& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return driver_main("rfmems-solid",
-                     "rfmems-solid: static and transient linear elasticity of a continuum or a "
-                     "plate (FV)",
-                     argc, argv, run, RankUse::AllRanks);
+  return driver_main(
+      "rfmems-solid",
+      "rfmems-solid: static and transient linear elasticity of a continuum or a "
+      "plate (FV)",
+      join_schemas({structure_case_keys(), structural_analysis_case_keys(), probes_case_keys()}),
+      argc, argv, run, RankUse::AllRanks);
 }

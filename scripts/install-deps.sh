@@ -20,7 +20,7 @@ packages=(
   libnanoflann-dev                      # KD-trees (mesh motion)
   libboost-dev                          # Boost.Geometry R-tree: immersed-boundary cell marking
   gmsh                                  # unstructured meshes from cases/*.geo
-  python3 python3-matplotlib python3-h5py python3-numpy  # plots (call /usr/bin/python3)
+  python3 python3-matplotlib python3-h5py python3-numpy python3-yaml  # plots, docs (call /usr/bin/python3)
 )
 
 missing=()

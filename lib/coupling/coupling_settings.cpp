@@ -32,4 +32,21 @@ CouplingOptions read_coupling_options(const CaseNode& root, const SceneChoice& c
   return o;
 }
 
+CaseSchema coupling_case_keys() {
+  return {{"coupling",
+           "the coupling scheme's settings",
+           {
+               {"tolerance", "number", "1e-06", "in (0, 1)",
+                "iterated schemes: the relative change at which a step's iteration stops"},
+               {"max_iterations", "integer", "20", "in [1, 100000]",
+                "iterated schemes: the cap per step"},
+               {"macro_step", "time", "(required for the film's partitioned schemes)", "> 0",
+                "parallel_plate field with a Reynolds film: the exchange step"},
+               {"gas_every", "integer", "1", "in [1, 1000]",
+                "immersed field: advance the gas every this many structural steps"},
+               {"strong_gas", "bool", "false", "",
+                "immersed field, strongly_coupled: the gas inside the step's iterations"},
+           }}};
+}
+
 }  // namespace rfmems

@@ -36,4 +36,7 @@ struct CouplingOptions {
 
 CouplingOptions read_coupling_options(const CaseNode& root, const SceneChoice& choice);
 
+// The keys read_coupling_options reads besides the scheme (io/case_schema.hpp).
+CaseSchema coupling_case_keys();
+
 }  // namespace rfmems

@@ -69,4 +69,8 @@ struct ImmersedField {
 std::unique_ptr<ImmersedField> read_immersed_field(const CaseNode& root, ElasticityScene& beam,
                                                    GasModel gas);
 
+// The keys read_immersed_field reads besides the actuation's electrode and control
+// (io/case_schema.hpp).
+CaseSchema immersed_case_keys();
+
 }  // namespace rfmems

@@ -86,4 +86,8 @@ struct SceneChoice {
 // default (plate) but left for the structure reader to check.
 SceneChoice read_scene_choice(const CaseNode& root);
 
+// The keys read_scene_choice reads: the scene's models, analysis and scheme
+// (io/case_schema.hpp).
+CaseSchema scene_choice_case_keys();
+
 }  // namespace rfmems

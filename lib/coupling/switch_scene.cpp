@@ -2,7 +2,11 @@
 
 #include <fmt/format.h>
 
+#include "coupling/coupling_settings.hpp"
+#include "coupling/immersed_field.hpp"
+#include "coupling/scene_combinations.hpp"
 #include "physics/elasticity/elasticity_scene.hpp"
+#include "physics/electrostatics/parallel_plate_field.hpp"
 #include "physics/gas/ambient_gas.hpp"
 #include "physics/structure/structure_from_case.hpp"
 
@@ -86,6 +90,24 @@ SwitchScene build_switch_scene(const CaseNode& root, const std::string& case_dir
       act.child_or_empty("laplace").get_int("gap_cells", 16, Range::closed(2, 10000)));
   s.film = read_gas(root, s);
   return s;
+}
+
+CaseSchema switch_case_keys() {
+  const CaseSchema own = {
+      {"",
+       "the switch's Laplace field and squeeze film",
+       {
+           {"actuation.laplace", "section", "(none)", "", "the Laplace field's grid"},
+           {"actuation.laplace.gap_cells", "integer", "16", "in [2, 10000]",
+            "cells across the gap"},
+           {"gas.boundaries", "section", "(by the structure's boundaries)", "",
+            "the film's edge conditions, by patch name"},
+           {"gas.boundaries.<patch>", "choice", "(open at free and load edges; wall elsewhere)",
+            "open, wall", "open (ambient pressure) or wall (no flow)"},
+       }},
+  };
+  return join_schemas({scene_choice_case_keys(), structure_case_keys(), parallel_plate_case_keys(),
+                       ambient_gas_case_keys(), own, immersed_case_keys(), coupling_case_keys()});
 }
 
 }  // namespace rfmems

@@ -84,4 +84,8 @@ struct SwitchScene {
 // parallel-plate and Laplace fields' common keys by read_parallel_plate_field).
 SwitchScene build_switch_scene(const CaseNode& root, const std::string& case_dir);
 
+// The keys build_switch_scene reads, its structure's, field's and gas's included
+// (io/case_schema.hpp).
+CaseSchema switch_case_keys();
+
 }  // namespace rfmems

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -25,7 +26,9 @@ struct CaseState {
   std::string text;
   std::vector<std::string> overrides;
   YAML::Node root;
-  std::set<std::string> used;  // dotted paths of keys read so far
+  std::set<std::string> used;   // dotted paths of keys read so far
+  std::set<CaseKeyRead> reads;  // every read, for the schema check
+  std::optional<CaseSchema> schema;
 };
 }  // namespace detail
 
@@ -281,15 +284,18 @@ YAML::Node CaseNode::require_key(const std::string& key) const {
   throw InputError(fmt::format("{}: missing key '{}'", file(), key_path(key)));
 }
 
+// A presence test is not a read of the schema: a reader also asks for keys it refuses.
 bool CaseNode::has(const std::string& key) const { return !absent(lookup(key)); }
 
 CaseNode CaseNode::child(const std::string& key) const {
+  note(key, "section", kRequiredKey, "");
   const YAML::Node value = require_key(key);
   if (value.IsScalar()) fail(key, "expected a map or a sequence");
   return CaseNode(state_, value, key_path(key));
 }
 
 CaseNode CaseNode::child_or_empty(const std::string& key) const {
+  note(key, "section", "(empty)", "");
   const YAML::Node value = lookup(key);
   if (!absent(value) && value.IsScalar()) fail(key, "expected a map or a sequence");
   return CaseNode(state_, absent(value) ? YAML::Node() : value, key_path(key));
@@ -399,21 +405,62 @@ Vec3 CaseNode::to_vec3(const std::string& key, const YAML::Node& value, const Di
 }
 
 // ---- CaseNode: getters ----------------------------------------------------------------------
+// Each getter first records the read (type, default and allowed values in the text forms of
+// io/case_schema.hpp) for the schema check, then reads.
 
-Real CaseNode::get_real(const std::string& key) const { return to_real(key, require_key(key)); }
+namespace {
+
+std::string real_text(double x) { return fmt::format("{}", x); }
+
+std::string range_text(const Range& range) {
+  const std::string text = range.describe();
+  constexpr std::string_view must = "must be ";
+  return text.starts_with(must) ? text.substr(must.size()) : text;
+}
+
+std::string quantity_text(double x, Dimension d) {
+  const std::string unit = si_unit(d);
+  return unit.empty() ? real_text(x) : fmt::format("{} {}", x, unit);
+}
+
+std::string string_text(const std::string& s) { return s.empty() ? "\"\"" : s; }
+
+}  // namespace
+
+void CaseNode::note(const std::string& key, const std::string& type,
+                    const std::string& default_value, const std::string& allowed) const {
+  // Sequence items share one declaration: probes[0].at and probes[1].at are probes[].at.
+  std::string path;
+  const std::string full = key_path(key);
+  for (std::size_t i = 0; i < full.size(); ++i) {
+    path += full[i];
+    if (full[i] == '[') {
+      while (i + 1 < full.size() && full[i + 1] != ']') ++i;
+    }
+  }
+  state_->reads.insert({path, type, default_value, allowed});
+}
+
+Real CaseNode::get_real(const std::string& key) const {
+  note(key, "number", kRequiredKey, "");
+  return to_real(key, require_key(key));
+}
 
 Real CaseNode::get_real(const std::string& key, Real default_value) const {
+  note(key, "number", real_text(default_value), "");
   const YAML::Node v = lookup(key);
   return absent(v) ? default_value : to_real(key, v);
 }
 
 Real CaseNode::get_real(const std::string& key, const Range& range) const {
-  const Real x = get_real(key);
+  note(key, "number", kRequiredKey, range_text(range));
+  const Real x = to_real(key, require_key(key));
   check_range(key, x, range);
   return x;
 }
 
 Real CaseNode::get_real(const std::string& key, Real default_value, const Range& range) const {
+  note(key, "number", real_text(default_value), range_text(range));
   const YAML::Node v = lookup(key);
   if (absent(v)) return default_value;
   const Real x = to_real(key, v);
@@ -421,20 +468,26 @@ Real CaseNode::get_real(const std::string& key, Real default_value, const Range&
   return x;
 }
 
-long CaseNode::get_int(const std::string& key) const { return to_int(key, require_key(key)); }
+long CaseNode::get_int(const std::string& key) const {
+  note(key, "integer", kRequiredKey, "");
+  return to_int(key, require_key(key));
+}
 
 long CaseNode::get_int(const std::string& key, long default_value) const {
+  note(key, "integer", std::to_string(default_value), "");
   const YAML::Node v = lookup(key);
   return absent(v) ? default_value : to_int(key, v);
 }
 
 long CaseNode::get_int(const std::string& key, const Range& range) const {
-  const long n = get_int(key);
+  note(key, "integer", kRequiredKey, range_text(range));
+  const long n = to_int(key, require_key(key));
   check_range(key, static_cast<double>(n), range);
   return n;
 }
 
 long CaseNode::get_int(const std::string& key, long default_value, const Range& range) const {
+  note(key, "integer", std::to_string(default_value), range_text(range));
   const YAML::Node v = lookup(key);
   if (absent(v)) return default_value;
   const long n = to_int(key, v);
@@ -442,56 +495,77 @@ long CaseNode::get_int(const std::string& key, long default_value, const Range& 
   return n;
 }
 
-bool CaseNode::get_bool(const std::string& key) const {
-  const YAML::Node v = require_key(key);
+bool CaseNode::to_bool(const std::string& key, const YAML::Node& value) const {
   bool b = false;
-  if (!v.IsScalar() || !YAML::convert<bool>::decode(v, b)) fail(key, "expected true or false");
+  if (!value.IsScalar() || !YAML::convert<bool>::decode(value, b))
+    fail(key, "expected true or false");
   return b;
 }
 
+bool CaseNode::get_bool(const std::string& key) const {
+  note(key, "bool", kRequiredKey, "");
+  return to_bool(key, require_key(key));
+}
+
 bool CaseNode::get_bool(const std::string& key, bool default_value) const {
-  return absent(lookup(key)) ? default_value : get_bool(key);
+  note(key, "bool", default_value ? "true" : "false", "");
+  const YAML::Node v = lookup(key);
+  return absent(v) ? default_value : to_bool(key, v);
 }
 
 std::string CaseNode::get_string(const std::string& key) const {
+  note(key, "text", kRequiredKey, "");
   return scalar_text(key, require_key(key), "expected a string");
 }
 
 std::string CaseNode::get_string(const std::string& key, const std::string& default_value) const {
+  note(key, "text", string_text(default_value), "");
   const YAML::Node v = lookup(key);
   return absent(v) ? default_value : scalar_text(key, v, "expected a string");
 }
 
-std::string CaseNode::get_choice(const std::string& key,
-                                 const std::vector<std::string>& allowed) const {
-  const std::string s = get_string(key);
+std::string CaseNode::to_choice(const std::string& key, const YAML::Node& value,
+                                const std::vector<std::string>& allowed) const {
+  const std::string s = scalar_text(key, value, "expected a string");
   if (std::find(allowed.begin(), allowed.end(), s) == allowed.end())
     fail(key, fmt::format("expected one of: {}", fmt::join(allowed, ", ")));
   return s;
 }
 
+std::string CaseNode::get_choice(const std::string& key,
+                                 const std::vector<std::string>& allowed) const {
+  note(key, "choice", kRequiredKey, fmt::format("{}", fmt::join(allowed, ", ")));
+  return to_choice(key, require_key(key), allowed);
+}
+
 std::string CaseNode::get_choice(const std::string& key, const std::vector<std::string>& allowed,
                                  const std::string& default_value) const {
-  return absent(lookup(key)) ? default_value : get_choice(key, allowed);
+  note(key, "choice", string_text(default_value), fmt::format("{}", fmt::join(allowed, ", ")));
+  const YAML::Node v = lookup(key);
+  return absent(v) ? default_value : to_choice(key, v, allowed);
 }
 
 Real CaseNode::get_quantity(const std::string& key, Dimension d) const {
+  note(key, quantity_type(d), kRequiredKey, "");
   return to_quantity(key, require_key(key), d);
 }
 
 Real CaseNode::get_quantity(const std::string& key, Dimension d, Real default_value) const {
+  note(key, quantity_type(d), quantity_text(default_value, d), "");
   const YAML::Node v = lookup(key);
   return absent(v) ? default_value : to_quantity(key, v, d);
 }
 
 Real CaseNode::get_quantity(const std::string& key, Dimension d, const Range& range) const {
-  const Real x = get_quantity(key, d);
+  note(key, quantity_type(d), kRequiredKey, range_text(range));
+  const Real x = to_quantity(key, require_key(key), d);
   check_range(key, x, range);
   return x;
 }
 
 Real CaseNode::get_quantity(const std::string& key, Dimension d, Real default_value,
                             const Range& range) const {
+  note(key, quantity_type(d), quantity_text(default_value, d), range_text(range));
   const YAML::Node v = lookup(key);
   if (absent(v)) return default_value;
   const Real x = to_quantity(key, v, d);
@@ -500,19 +574,24 @@ Real CaseNode::get_quantity(const std::string& key, Dimension d, Real default_va
 }
 
 Vec3 CaseNode::get_vec3(const std::string& key) const {
+  note(key, "vector", kRequiredKey, "");
   return to_vec3(key, require_key(key), nullptr);
 }
 
 Vec3 CaseNode::get_vec3(const std::string& key, const Vec3& default_value) const {
+  note(key, "vector",
+       fmt::format("[{}, {}, {}]", default_value.x(), default_value.y(), default_value.z()), "");
   const YAML::Node v = lookup(key);
   return absent(v) ? default_value : to_vec3(key, v, nullptr);
 }
 
 Vec3 CaseNode::get_vec3_quantity(const std::string& key, Dimension d) const {
+  note(key, "vector of " + quantity_type(d), kRequiredKey, "");
   return to_vec3(key, require_key(key), &d);
 }
 
 std::vector<Real> CaseNode::get_reals(const std::string& key) const {
+  note(key, "list of numbers", kRequiredKey, "");
   const YAML::Node v = require_key(key);
   if (!v.IsSequence()) fail(key, "expected a sequence of numbers");
   std::vector<Real> out(v.size());
@@ -523,6 +602,7 @@ std::vector<Real> CaseNode::get_reals(const std::string& key) const {
 }
 
 std::vector<Real> CaseNode::get_quantities(const std::string& key, Dimension d) const {
+  note(key, "list of " + quantity_type(d), kRequiredKey, "");
   const YAML::Node v = require_key(key);
   const std::string expected = "expected a sequence of " + dimension_name(d) + "s";
   if (!v.IsSequence()) fail(key, expected);
@@ -539,6 +619,7 @@ std::vector<Real> CaseNode::get_quantities(const std::string& key, Dimension d) 
 }
 
 std::vector<std::string> CaseNode::get_strings(const std::string& key) const {
+  note(key, "list of texts", kRequiredKey, "");
   const YAML::Node v = require_key(key);
   if (!v.IsSequence()) fail(key, "expected a sequence of strings");
   std::vector<std::string> out;
@@ -575,6 +656,22 @@ CaseNode CaseFile::root() const { return CaseNode(state_, state_->root, ""); }
 void CaseFile::check_all_used() const {
   if (auto key = first_unused(state_->root, "", state_->used))
     throw InputError(fmt::format("{}: unknown key '{}'", state_->file, *key));
+  const char* check = std::getenv("RFMEMS_CHECK_CASE_SCHEMA");
+  if (state_->schema && check != nullptr && *check != '\0' && std::string(check) != "0") {
+    const std::vector<CaseKeyRead> reads(state_->reads.begin(), state_->reads.end());
+    const std::vector<std::string> wrong = case_schema_mismatches(*state_->schema, reads);
+    if (!wrong.empty())
+      throw std::logic_error(
+          fmt::format("the case schema differs from the readers ({} reads of "
+                      "{}): {}",
+                      wrong.size(), state_->file, fmt::join(wrong, "; ")));
+  }
+}
+
+void CaseFile::declare_schema(const CaseSchema& schema) { state_->schema = schema; }
+
+std::vector<CaseKeyRead> CaseFile::reads() const {
+  return {state_->reads.begin(), state_->reads.end()};
 }
 
 const std::string& CaseFile::path() const { return state_->file; }

@@ -19,6 +19,7 @@
 
 #include "core/error.hpp"
 #include "core/types.hpp"
+#include "io/case_schema.hpp"
 #include "io/units.hpp"
 
 namespace rfmems {
@@ -127,12 +128,18 @@ class CaseNode {
   friend class CaseFile;
   CaseNode(std::shared_ptr<detail::CaseState> state, YAML::Node node, std::string path);
 
+  // Records a read for the schema check (text forms of io/case_schema.hpp).
+  void note(const std::string& key, const std::string& type, const std::string& default_value,
+            const std::string& allowed) const;
   // The value under key, marked as read; an undefined node if absent or null.
   YAML::Node lookup(const std::string& key) const;
   YAML::Node require_key(const std::string& key) const;  // missing → InputError
   void require_map() const;
   Real to_real(const std::string& key, const YAML::Node& value) const;
   long to_int(const std::string& key, const YAML::Node& value) const;
+  bool to_bool(const std::string& key, const YAML::Node& value) const;
+  std::string to_choice(const std::string& key, const YAML::Node& value,
+                        const std::vector<std::string>& allowed) const;
   Real to_quantity(const std::string& key, const YAML::Node& value, Dimension d) const;
   void check_range(const std::string& key, Real x, const Range& range) const;
   std::string scalar_text(const std::string& key, const YAML::Node& value,
@@ -158,8 +165,15 @@ class CaseFile {
   CaseNode root() const;
 
   // Throws "<file>: unknown key '<dotted.key>'" for the first key (in file order, override
-  // additions last in their map) that no getter, child() or has() read.
+  // additions last in their map) that no getter, child() or has() read. Then, with a declared
+  // schema and RFMEMS_CHECK_CASE_SCHEMA set (not "0"), throws std::logic_error if a read so far
+  // differs from the schema (io/case_schema.hpp): a reader and its declaration disagree.
   void check_all_used() const;
+
+  // The keys the driver reading this case accepts, for the check above.
+  void declare_schema(const CaseSchema& schema);
+  // Every read so far, one per path and form.
+  std::vector<CaseKeyRead> reads() const;
 
   const std::string& path() const;
   // The file as read, before overrides (for result metadata).

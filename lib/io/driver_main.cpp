@@ -53,12 +53,22 @@ void check_writable(const DriverOptions& options, const std::string& output) {
   ::unlink(probe.c_str());
 }
 
+// The keys DriverCase reads for every driver.
+CaseSchema run_case_keys() {
+  return {{"",
+           "the run",
+           {{"name", "text", "(the case file's directory name)", "",
+             "the case's name: results go to out/<name>.h5 (a plain file name)"}}}};
+}
+
 }  // namespace
 
 DriverCase::DriverCase(const DriverOptions& options)
     : file(CaseFile::load(options.case_path, options.overrides)),
       root(file.root()),
+      check_only_(options.check_only),
       start_(std::chrono::steady_clock::now()) {
+  file.declare_schema(options.schema);
   const fs::path path = fs::absolute(options.case_path).parent_path();
   dir = path.string();
   name = root.get_string("name", path.filename().string());
@@ -73,6 +83,11 @@ DriverCase::DriverCase(const DriverOptions& options)
   if (is_result_path(options.case_path))
     fail_output(options, output, "is the case file: the run would overwrite its input");
   check_writable(options, output);
+}
+
+bool DriverCase::finish_reading() const {
+  file.check_all_used();
+  return !check_only_;
 }
 
 double DriverCase::elapsed() const {
@@ -101,10 +116,12 @@ void print_driver_error(const std::string& program, const std::string& message) 
 
 namespace {
 
-int parse_and_run(const std::string& program, const std::string& description, int argc, char** argv,
+int parse_and_run(const std::string& program, const std::string& description,
+                  const CaseSchema& schema, int argc, char** argv,
                   const std::function<int(const DriverOptions&)>& run,
                   const ExtraOptions& extra_options, bool distributed) {
   DriverOptions options;
+  options.schema = join_schemas({run_case_keys(), schema});
   CLI::App app{description};
   app.add_option("case", options.case_path, "case file (YAML)")->required();
   app.add_option("--set", options.overrides,
@@ -121,6 +138,17 @@ int parse_and_run(const std::string& program, const std::string& description, in
       ->check(CLI::Range(std::uint64_t{1}, std::numeric_limits<std::uint64_t>::max()));
   app.add_flag("--json", options.json, "print a JSON summary on stdout");
   app.add_flag("--quiet", options.quiet, "no progress or summary lines");
+  app.add_flag("--check", options.check_only,
+               "read the case and build the model, then exit without solving (0: the case is "
+               "valid)");
+  app.add_flag_callback(
+      "--help-case",
+      [&] {
+        std::fputs(format_case_schema(program, options.schema).c_str(), stdout);
+        throw CLI::Success();
+      },
+      "print every case key this program reads (type, unit, default, allowed, meaning) and "
+      "exit");
   if (extra_options) extra_options(app);
   try {
     app.parse(argc, argv);
@@ -161,14 +189,15 @@ int parse_and_run(const std::string& program, const std::string& description, in
 
 }  // namespace
 
-int driver_main(const std::string& program, const std::string& description, int argc, char** argv,
+int driver_main(const std::string& program, const std::string& description,
+                const CaseSchema& schema, int argc, char** argv,
                 const std::function<int(const DriverOptions&)>& run, RankUse ranks,
                 const ExtraOptions& extra_options) {
   MpiSession session(&argc, &argv);
   const Communicator world = Communicator::world();
   Index code = 0;
   if (ranks == RankUse::AllRanks || world.is_root())
-    code = parse_and_run(program, description, argc, argv, run, extra_options,
+    code = parse_and_run(program, description, schema, argc, argv, run, extra_options,
                          ranks == RankUse::AllRanks);
   // One verdict for every rank: the worst (the root's, when only the root runs).
   return static_cast<int>(world.max(code));

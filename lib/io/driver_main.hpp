@@ -1,7 +1,12 @@
 // The command line every rfmems driver shares:
 //
 //   <program> CASE.yaml [--set KEY=VALUE]... [-o RESULT.h5] [--json] [--quiet]
-//             [--max-memory SIZE]
+//             [--max-memory SIZE] [--check]
+//   <program> --help-case
+//
+// --help-case prints the driver's case schema (every key its readers accept, with type, unit,
+// default, allowed values and meaning: io/case_schema.hpp) and exits 0. --check reads the case
+// and builds the model, so that every key is checked, and exits 0 before any solving.
 //
 // and its error contract: bad input (InputError, MeshError, a bad option) prints one line
 // "<program>: <message>" on stderr and exits 2; any other failure exits 1 (running out of
@@ -38,6 +43,8 @@ struct DriverOptions {
   std::string output;  // empty: out/<case name>.h5
   bool json = false;
   bool quiet = false;
+  bool check_only = false;  // --check
+  CaseSchema schema;        // the driver's
 };
 
 // The case a driver runs: loaded with the overrides, its directory (for relative mesh files),
@@ -50,8 +57,13 @@ struct DriverCase {
   CaseNode root;
   std::string dir, name, output;
   double elapsed() const;
+  // Once the readers are done: every key of the case must have been read (a typo stops the
+  // run here, before any solving; the tests also check the reads against the schema). False
+  // under --check: the case is valid and the run ends here.
+  bool finish_reading() const;
 
  private:
+  bool check_only_;
   std::chrono::steady_clock::time_point start_;
 };
 
@@ -61,8 +73,10 @@ enum class RankUse { RootOnly, AllRanks };
 // own checks (a failed check is bad input: exit 2).
 using ExtraOptions = std::function<void(CLI::App&)>;
 
-// Parses the command line and calls run(options), mapping exceptions to exit codes.
-int driver_main(const std::string& program, const std::string& description, int argc, char** argv,
+// Parses the command line and calls run(options), mapping exceptions to exit codes. `schema`
+// lists the case keys the driver's readers accept.
+int driver_main(const std::string& program, const std::string& description,
+                const CaseSchema& schema, int argc, char** argv,
                 const std::function<int(const DriverOptions&)>& run,
                 RankUse ranks = RankUse::RootOnly, const ExtraOptions& extra_options = {});
 

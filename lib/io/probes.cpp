@@ -83,4 +83,17 @@ std::vector<std::vector<double>> ProbeHistory::series(std::size_t p) const {
   return rows;
 }
 
+CaseSchema probes_case_keys() {
+  return {{"",
+           "probes: points whose displacement the results record in time",
+           {
+               {"probes", "section", "(none)", "", "a list of probes"},
+               {"probes[].name", "text", kRequiredKey, "",
+                "the probe's name in the results (unique, no '/')"},
+               {"probes[].at", "vector of length", kRequiredKey, "",
+                "the point (one coordinate per mesh dimension); the cell containing it is "
+                "recorded"},
+           }}};
+}
+
 }  // namespace rfmems

@@ -171,6 +171,12 @@ std::string dimension_name(Dimension d) {
   return "quantity";
 }
 
+std::string si_unit(Dimension d) {
+  for (const auto& e : kUnits)
+    if (e.unit.dimension == d && e.unit.factor == 1.0) return std::string(e.symbol);
+  return "";
+}
+
 std::string example_units(Dimension d) {
   std::string out;
   for (const auto& e : kUnits) {

@@ -29,6 +29,9 @@ enum class Dimension {
 // "length", "pressure", ... for error messages.
 std::string dimension_name(Dimension d);
 
+// The SI unit's symbol ("m", "Pa", "Pa s"); "" for a dimensionless number.
+std::string si_unit(Dimension d);
+
 // A few accepted symbols of a dimension, e.g. "Pa, kPa, MPa, GPa, atm, bar, torr".
 std::string example_units(Dimension d);
 

@@ -9,7 +9,7 @@
 
 int main(int argc, char** argv) {
   return rfmems::driver_main(
-      "driver_rank_failure", "fails on the last rank while the others are in a reduction", argc,
+      "driver_rank_failure", "fails on the last rank while the others are in a reduction", {}, argc,
       argv,
       [](const rfmems::DriverOptions&) {
         const rfmems::Communicator world = rfmems::Communicator::world();

@@ -31,6 +31,7 @@
 
 #include "core/types.hpp"
 #include "fv/face_graph.hpp"
+#include "io/case_schema.hpp"
 #include "physics/gas/kinetic/kinetic_gas.hpp"
 #include "physics/gas/kinetic/velocity_grid.hpp"
 
@@ -82,5 +83,8 @@ std::vector<Real> boundary_maxwellian(const KineticBoundary& bc, const VelocityG
 void fill_boundary_face(const KineticBoundary& bc, const Vec3& area, std::span<const Real> f_owner,
                         const VelocityGrid& grid, std::span<const Index> reflection,
                         std::span<const Real> maxwellian, std::span<Real> f_face);
+
+// The keys kinetic_boundaries_from_case reads under `boundaries` (io/case_schema.hpp).
+CaseSchema kinetic_boundary_case_keys();
 
 }  // namespace rfmems
