@@ -81,7 +81,8 @@ TEST(CaseSchema, AnUndeclaredKeyAndAnotherTypeAreNamed) {
 TEST(CaseSchema, CheckAllUsedComparesOnlyWhenAsked) {
   CaseFile file = CaseFile::parse("solver: {steps: 3}\n", "t.yaml");
   file.declare_schema(kSchema);
-  file.root().child("solver").get_int("steps", Range{1.0, std::numeric_limits<double>::infinity(), false, false});
+  file.root().child("solver").get_int(
+      "steps", Range{1.0, std::numeric_limits<double>::infinity(), false, false});
   file.root().child("solver").get_bool("verbose", false);  // undeclared
   ::unsetenv("RFMEMS_CHECK_CASE_SCHEMA");
   EXPECT_NO_THROW(file.check_all_used());
