@@ -174,9 +174,10 @@ std::vector<std::string> case_schema_mismatches(const CaseSchema& schema,
       continue;
     }
     auto agrees = [&](const CaseKey* key) {
-      // A reader may take any key as a node (to count a list's items) or as its raw text (a
-      // choice, a duration "500 h"); whether a section is required depends on the caller.
-      if (read.type == "section" || read.type == "text") return true;
+      // A reader may take any key as a node (to count a list's items) or another type's key
+      // as its raw text (a choice, a duration "500 h"); whether a section is required depends
+      // on the caller.
+      if (read.type == "section" || (read.type == "text" && key->type != "text")) return true;
       return key->type == read.type &&
              (!compared(key->default_value) || key->default_value == read.default_value) &&
              (!compared(key->allowed) || allowed_within(read, key->allowed));

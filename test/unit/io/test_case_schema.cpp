@@ -21,6 +21,7 @@ const CaseKeyGroup kSolver{"solver",
                                {"method", "choice", "newton", "newton, picard", "the iteration"},
                                {"steps", "integer", "(required)", ">= 1", "steps"},
                                {"interval", "time", "(end_time / 500)", "> 0", "computed"},
+                               {"label", "text", "left", "", "a text with a default"},
                            }};
 const CaseKeyGroup kBoundaries{
     "boundaries",
@@ -45,6 +46,8 @@ std::vector<std::string> mismatches_of(const std::string& variant) {
   solver.get_int("steps", Range{1.0, std::numeric_limits<double>::infinity(), false, false});
   solver.get_quantity("interval", Dimension::Time, variant == "interval" ? 7.0 : 3.0,
                       Range::positive());
+  solver.get_string("label", variant == "text default" ? "right" : "left");
+  solver.get_string("method", "newton");  // a choice read as its raw text
   if (variant == "undeclared") solver.get_bool("verbose", false);
   if (variant == "type") solver.get_real("method", 0.0);
   const CaseNode left = file.root().child("boundaries").child("left");
@@ -76,6 +79,10 @@ TEST(CaseSchema, AnUndeclaredKeyAndAnotherTypeAreNamed) {
   const auto t = mismatches_of("type");
   ASSERT_EQ(t.size(), 1u);
   EXPECT_NE(t[0].find("key 'solver.method' is read with type 'number'"), std::string::npos);
+  const auto d = mismatches_of("text default");
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_NE(d[0].find("key 'solver.label' is read with type 'text', default 'right'"),
+            std::string::npos);
 }
 
 TEST(CaseSchema, CheckAllUsedComparesOnlyWhenAsked) {
