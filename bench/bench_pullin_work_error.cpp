@@ -70,7 +70,7 @@
 #include "solvers/ida_integrator.hpp"
 
 using namespace rfmems;
-using Json = nlohmann::ordered_json;
+using OJson = nlohmann::ordered_json;  // rfmems::Json is unordered
 namespace fs = std::filesystem;
 
 namespace {
@@ -125,8 +125,8 @@ Run pull_in_run(SwitchSystem& system, Index control, double voltage, double gap,
 
 // Where an adaptive run spends its steps: the same run as run_dynamic (rest, IDACalcIC, contact
 // root) with IDA stopped every `window` to read its step count and current step size.
-Json step_profile(SwitchSystem& system, double voltage, double gap, const IdaOptions& options,
-                  double window, const StateTolerances& tolerances = {}) {
+OJson step_profile(SwitchSystem& system, double voltage, double gap, const IdaOptions& options,
+                   double window, const StateTolerances& tolerances = {}) {
   system.actuation().set_voltage_squared([voltage](Real) { return voltage * voltage; });
   std::vector<Real> y, yp;
   system.initial_state(0.0, y, yp);
@@ -139,7 +139,7 @@ Json step_profile(SwitchSystem& system, double voltage, double gap, const IdaOpt
   ida.set_roots(1, [&](Real, std::span<const Real> yy, std::span<const Real>, std::span<Real> g) {
     g[0] = system.min_gap(yy) - contact;
   });
-  Json rows = Json::array();
+  OJson rows = OJson::array();
   long before = 0;
   for (double t_out = window;; t_out += window) {
     const IdaIntegrator::Status status = ida.advance(t_out);
@@ -156,12 +156,12 @@ Json step_profile(SwitchSystem& system, double voltage, double gap, const IdaOpt
   return rows;
 }
 
-Json stats_json(const Run& run) {
-  if (!run.failure.empty()) return Json{{"failed", run.failure}, {"wall_s", run.seconds}};
-  Json j{{"pulled_in", run.pulled_in},
-         {"t_pi_s", run.t_pi},
-         {"wall_s", run.seconds},
-         {"last_order", run.stats.last_order}};
+OJson stats_json(const Run& run) {
+  if (!run.failure.empty()) return OJson{{"failed", run.failure}, {"wall_s", run.seconds}};
+  OJson j{{"pulled_in", run.pulled_in},
+          {"t_pi_s", run.t_pi},
+          {"wall_s", run.seconds},
+          {"last_order", run.stats.last_order}};
   add_integrator_stats(j, run.stats);
   return j;
 }
@@ -283,29 +283,29 @@ int main(int argc, char** argv) {
     cap = 10;
   }
 
-  Json summary_all = Json::array();
+  OJson summary_all = OJson::array();
   for (const std::string& gas : gases) {
     const std::string case_path = cases + "/" + case_name + "/case.yaml";
     const CaseFile cf = CaseFile::load(case_path, {"gas.model=" + gas});
     SwitchScene scene = build_switch_scene(cf.root(), fs::path(case_path).parent_path().string());
     const std::unique_ptr<SwitchSystem> system = make_switch_system(scene);
     const double gap = scene.gap;
-    Json common{{"bench", "pullin_work_error"},
-                {"case", case_name},
-                {"gas", gas},
-                {"voltage", voltage},
-                {"cells", scene.structure->structure_mesh().n_cells()},
-                {"unknowns", system->size()},
-                {"contact_gap", 0.02 * gap},
-                {"ida_controls",
-                 {{"nonlinear_convergence", control.nonlinear_convergence},
-                  {"max_newton_iterations", control.max_newton_iterations},
-                  {"max_convergence_failures", control.max_convergence_failures},
-                  {"jacobian_cj_change", control.jacobian_cj_change},
-                  {"step_growth_threshold", control.step_growth_threshold},
-                  {"max_step_growth", control.max_step_growth},
-                  {"convergence_failure_cut", control.convergence_failure_cut},
-                  {"initial_step_periods_over_sqrt_rtol", h0_periods}}}};
+    OJson common{{"bench", "pullin_work_error"},
+                 {"case", case_name},
+                 {"gas", gas},
+                 {"voltage", voltage},
+                 {"cells", scene.structure->structure_mesh().n_cells()},
+                 {"unknowns", system->size()},
+                 {"contact_gap", 0.02 * gap},
+                 {"ida_controls",
+                  {{"nonlinear_convergence", control.nonlinear_convergence},
+                   {"max_newton_iterations", control.max_newton_iterations},
+                   {"max_convergence_failures", control.max_convergence_failures},
+                   {"jacobian_cj_change", control.jacobian_cj_change},
+                   {"step_growth_threshold", control.step_growth_threshold},
+                   {"max_step_growth", control.max_step_growth},
+                   {"convergence_failure_cut", control.convergence_failure_cut},
+                   {"initial_step_periods_over_sqrt_rtol", h0_periods}}}};
     std::fprintf(stderr, "gas %s: %lld unknowns, step %.1f V\n", gas.c_str(),
                  static_cast<long long>(system->size()), voltage);
 
@@ -328,7 +328,7 @@ int main(int argc, char** argv) {
         system->jacobian(0.0, 1e7, y, yp, jac);
         t_jac = std::min(t_jac, now() - t1);
       }
-      Json j = common;
+      OJson j = common;
       j["variant"] = "costs";
       j["jacobian_nnz"] = jac.size();
       j["t_residual_eval_s"] = t_res;
@@ -376,7 +376,7 @@ int main(int argc, char** argv) {
         return 1;
       }
       omega_1 = 2 * M_PI * fr.frequency;
-      Json j = common;
+      OJson j = common;
       j["variant"] = "omega_1";
       j["frequency_hz"] = fr.frequency;
       j["damping_ratio"] = fr.damping_ratio;
@@ -418,7 +418,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "  %s: order <= %d, rtol %.0e ...\n", spec.name, spec.order, spec.rtol);
       refs.push_back(
           pull_in_run(*system, scene.control, voltage, gap, adaptive(spec.rtol, spec.order)));
-      Json j = common;
+      OJson j = common;
       j["variant"] = spec.name;
       j["method"] = spec.order == 5 ? "ida_o5" : "ida_o2";
       j["rtol"] = spec.rtol;
@@ -434,7 +434,7 @@ int main(int argc, char** argv) {
       return 1;
     }
     {
-      Json j = common;
+      OJson j = common;
       j["variant"] = "reference_check";
       j["t_ref_s"] = t_ref;
       for (std::size_t k = 1; k < specs.size(); ++k)
@@ -444,8 +444,8 @@ int main(int argc, char** argv) {
 
     // ---- the runs ------------------------------------------------------------------------
     std::map<std::string, std::vector<Point>> points;
-    auto record = [&](const std::string& method, Json params, const Run& run) {
-      Json j = common;
+    auto record = [&](const std::string& method, OJson params, const Run& run) {
+      OJson j = common;
       j["variant"] = "run";
       j["method"] = method;
       j.update(params);
@@ -485,7 +485,7 @@ int main(int argc, char** argv) {
           w ? (order == 2 ? w_rtols : w_o5_rtols) : (order == 2 ? rtols : o5_rtols);  // o3-o5 alike
       double last_time = 0, last_steps = 0, before_steps = 0;
       for (double rtol : list) {
-        Json params{{"rtol", rtol}, {"max_order", order}};
+        OJson params{{"rtol", rtol}, {"max_order", order}};
         if (w) {
           const StateTolerances t = weighted(rtol, af.rate_factor);
           params["velocity_rate_over_omega_1"] = af.rate_factor;
@@ -500,7 +500,7 @@ int main(int argc, char** argv) {
         const double predicted =
             before_steps > 0 ? last_time * last_steps / before_steps : last_time;
         if (predicted > cap) {
-          Json j = common;
+          OJson j = common;
           j["variant"] = "skipped";
           j["method"] = method;
           j.update(params);
@@ -524,10 +524,10 @@ int main(int argc, char** argv) {
       const bool cut = method.find("_cut") != std::string::npos;
       double last_time = 0, last_dt = 0;
       for (double dt : cut ? cut_dts : dts) {
-        Json params{{"dt", dt}, {"max_order", order}};
+        OJson params{{"dt", dt}, {"max_order", order}};
         const double predicted = last_dt > 0 ? last_time * last_dt / dt : 0;  // cost ~ 1/dt
         if (predicted > cap) {
-          Json j = common;
+          OJson j = common;
           j["variant"] = "skipped";
           j["method"] = method;
           j.update(params);
@@ -553,7 +553,7 @@ int main(int argc, char** argv) {
       auto fine = runs.begin(), coarse = std::next(fine);
       const double r = coarse->first / fine->first, rp = std::pow(r, order);
       const double t_rich = (rp * fine->second - coarse->second) / (rp - 1);
-      Json j = common;
+      OJson j = common;
       j["variant"] = "richardson_check";
       j["method"] = order == 1 ? "be" : "bdf2";
       j["dt_fine"] = fine->first;
@@ -571,7 +571,7 @@ int main(int argc, char** argv) {
     // ---- where the adaptive steps go ------------------------------------------------------
     for (double rtol : profile_rtols) {
       if (rtol <= 0) continue;  // --profile-rtols 0: no profiles
-      Json j = common;
+      OJson j = common;
       j["variant"] = "step_profile";
       j["method"] = "ida_o2";
       j["rtol"] = rtol;
@@ -587,19 +587,19 @@ int main(int argc, char** argv) {
     }
 
     // ---- work at 1 % and 0.1 % -----------------------------------------------------------
-    Json s = common;
+    OJson s = common;
     s["variant"] = "summary";
     s["t_ref_s"] = t_ref;
     for (double target : {1e-2, 1e-3}) {
-      Json t;
+      OJson t;
       auto describe = [](const Point* p) {
-        return p ? Json{{"param", p->param},
-                        {"residual_evals", p->evals},
-                        {"wall_s", p->wall},
-                        {"error", p->error}}
-                 : Json(nullptr);
+        return p ? OJson{{"param", p->param},
+                         {"residual_evals", p->evals},
+                         {"wall_s", p->wall},
+                         {"error", p->error}}
+                 : OJson(nullptr);
       };
-      Json per = Json::object();
+      OJson per = OJson::object();
       for (const auto& [m, runs] : points) {
         const Choice c = choose(runs, target);
         per[m] = {{"cheapest", describe(c.cheapest)}, {"reliable", describe(c.reliable)}};
@@ -625,7 +625,7 @@ int main(int argc, char** argv) {
         std::vector<std::string> weighted_methods;  // every ida_oK_w* run
         for (const auto& [m, runs] : points)
           if (m.find("_w") != std::string::npos) weighted_methods.push_back(m);
-        Json r = Json::object();
+        OJson r = OJson::object();
         for (const Comparison& c :
              {Comparison{"scalar_vs_fixed", {"ida_o2", "ida_o5"}, {"be", "bdf2"}},
               Comparison{"weighted_vs_fixed", weighted_methods, {"be", "bdf2"}},
@@ -634,7 +634,7 @@ int main(int argc, char** argv) {
                          {"be", "bdf2", "be_cut", "bdf2_cut"}}}) {
           const Point* a = family(c.adaptive);
           const Point* f = family(c.fixed);
-          Json e{{"adaptive", describe(a)}, {"fixed", describe(f)}};
+          OJson e{{"adaptive", describe(a)}, {"fixed", describe(f)}};
           if (a && f) {
             e["ratio_fixed_over_adaptive_evals"] = f->evals / a->evals;
             e["ratio_fixed_over_adaptive_wall"] = f->wall / a->wall;

@@ -5,8 +5,7 @@
 #include <algorithm>
 
 #include "core/error.hpp"
-#include "coupling/laplace_dynamic_switch.hpp"
-#include "coupling/laplace_pull_in.hpp"
+#include "coupling/field_coupled_beam.hpp"
 #include "coupling/partitioned_switch.hpp"
 #include "physics/elasticity/elasticity_scene.hpp"
 
@@ -60,94 +59,48 @@ class ParallelPlateManager : public CouplingManager {
   long coupling_iterations_ = 0, macro_steps_ = 0;
 };
 
-// The Laplace field in the gap mesh that follows a plane beam.
-class LaplaceManager : public CouplingManager {
+// A field that gives no exact Jacobian blocks (the Laplace field in the gap mesh that follows a
+// plane beam, the immersed-boundary field and its gas on the background): the field-coupled
+// beam's fixed points and time loop.
+class LaggedFieldManager : public CouplingManager {
  public:
-  explicit LaplaceManager(SwitchScene& scene)
-      : scene_(scene), beam_(dynamic_cast<ElasticityScene&>(*scene.structure)) {
-    LaplaceGapOptions gap;
-    gap.gap_cells = scene.laplace_gap_cells;
-    switch_ = std::make_unique<LaplaceDynamicSwitch>(*beam_.op, scene.facing_patch, scene.gap,
-                                                     scene.electrodes.front(), scene.control, gap);
-  }
+  LaggedFieldManager(SwitchScene& scene, GapField& field, LinearFunctional control,
+                     std::function<std::unique_ptr<ImmersedGasModel>()> make_gas = {})
+      : field_(field),
+        beam_(*dynamic_cast<ElasticityScene&>(*scene.structure).op, field, std::move(control)),
+        make_gas_(std::move(make_gas)) {}
 
   QuasiStaticPullIn quasi_static(const QuasiStaticOptions& options) override {
-    LaplacePullInOptions o;
-    o.sampling = options;
-    o.gap_cells = scene_.laplace_gap_cells;
-    LaplacePullIn r = trace_pull_in_laplace(beam_, scene_.facing_patch, scene_.gap,
-                                            scene_.electrodes.front(), scene_.control, o);
-    static_solves_ += r.coupling_iterations;
-    return std::move(r.result);
+    QuasiStaticPullIn r = beam_.trace_quasi_static(options);
+    static_solves_ += r.solves;
+    return r;
   }
   SwitchStatic solve_static(Real voltage) override {
-    LaplaceStatic r = switch_->solve_static(voltage);
+    BeamEquilibrium r = beam_.solve_static(voltage);
+    static_solves_ += r.iterations;
     return {std::move(r.u), r.control, r.iterations};
   }
   DynamicRun run(const VoltageWaveform& waveform, Real amplitude, const DynamicOptions& options,
                  const DynamicState* start) override {
-    return switch_->run(step_amplitude(waveform, amplitude, start, "laplace"), options);
-  }
-  Json counters() const override {
-    const LaplaceSwitchTimes& t = switch_->times();
-    return {{"static_field_solves", static_solves_},
-            {"field_solves", t.field_solves},
-            {"move_s", t.move},
-            {"field_s", t.field},
-            {"structure_s", t.structure},
-            {"structure_steps", t.structure_steps}};
-  }
-
- private:
-  SwitchScene& scene_;
-  ElasticityScene& beam_;
-  std::unique_ptr<LaplaceDynamicSwitch> switch_;
-  long static_solves_ = 0;
-};
-
-// The immersed-boundary field and its gas on the background.
-class ImmersedManager : public CouplingManager {
- public:
-  explicit ImmersedManager(SwitchScene& scene) : field_(*scene.immersed) {}
-
-  QuasiStaticPullIn quasi_static(const QuasiStaticOptions& options) override {
-    return field_.sw->trace_quasi_static(options);
-  }
-  SwitchStatic solve_static(Real voltage) override {
-    ImmersedStatic r = field_.sw->solve_static(voltage);
-    return {std::move(r.u), r.control, r.iterations};
-  }
-  DynamicRun run(const VoltageWaveform& waveform, Real amplitude, const DynamicOptions& options,
-                 const DynamicState* start) override {
-    const Real v = step_amplitude(waveform, amplitude, start, "immersed");
-    std::unique_ptr<ImmersedGasModel> gas = field_.make_gas();  // at rest
-    DynamicRun r = field_.sw->run(v, options, gas.get());
+    const Real v = step_amplitude(waveform, amplitude, start, field_.name().c_str());
+    std::unique_ptr<ImmersedGasModel> gas = make_gas_ ? make_gas_() : nullptr;  // at rest
+    DynamicRun r = beam_.run(v, options, gas.get());
     if (gas) max_knudsen_ = std::max(max_knudsen_, gas->max_knudsen());
     return r;
   }
   Json counters() const override {
-    const ImmersedPhysicsTimes& t = field_.sw->times();
-    return {{"move_s", t.move},
-            {"marking_s", t.marking},
-            {"interpolation_s", t.interpolation},
-            {"electrostatics_s", t.electrostatics},
-            {"transfer_s", t.transfer},
-            {"gas_s", t.gas},
-            {"structure_s", t.structure},
-            {"load_evaluations", t.load_evaluations},
-            {"electrostatic_analyses", t.electrostatic_analyses},
-            {"electrostatic_krylov_iterations", t.electrostatic_krylov_iterations},
-            {"coupling_iterations", t.coupling_iterations},
-            {"max_coupling_iterations", t.max_coupling_iterations},
-            {"unconverged_coupling_steps", t.unconverged_steps},
-            {"max_coupling_residual", t.max_coupling_residual},
-            {"structure_steps", t.structure_steps},
-            {"gas_steps", t.gas_steps},
-            {"gas_max_knudsen", max_knudsen_}};
+    Json j = field_.counters();
+    j.update(beam_.times().json());
+    j["static_field_solves"] = static_solves_;
+    if (make_gas_) j["gas_max_knudsen"] = max_knudsen_;
+    return j;
   }
 
  private:
-  ImmersedField& field_;
+  GapField& field_;
+  FieldCoupledBeam beam_;
+  std::function<std::unique_ptr<ImmersedGasModel>()> make_gas_;
+  long static_solves_ = 0;
   Real max_knudsen_ = 0;
 };
 
@@ -156,9 +109,13 @@ class ImmersedManager : public CouplingManager {
 std::unique_ptr<CouplingManager> make_coupling_manager(SwitchScene& scene) {
   switch (scene.field()) {
     case FieldModel::Laplace:
-      return std::make_unique<LaplaceManager>(scene);
-    case FieldModel::Immersed:
-      return std::make_unique<ImmersedManager>(scene);
+      return std::make_unique<LaggedFieldManager>(scene, *scene.laplace,
+                                                  LinearFunctional::unknown(scene.control));
+    case FieldModel::Immersed: {
+      const ImmersedField& immersed = *scene.immersed;
+      return std::make_unique<LaggedFieldManager>(scene, *immersed.sw, immersed.sw->control(),
+                                                  [&immersed] { return immersed.make_gas(); });
+    }
     case FieldModel::ParallelPlate:
       break;
   }

@@ -7,13 +7,11 @@
 //                    switch_system.hpp); staggered / strongly_coupled (with the film): film and
 //                    structure integrators exchanging per macro step (partitioned_switch.hpp);
 //                    equilibria by KINSOL under displacement control (quasi_static_pull_in.hpp);
-//   laplace          the beam under the Laplace field in the moving gap mesh, refreshed per
-//                    accepted IDA step (staggered) or in every residual (implicit)
-//                    (laplace_dynamic_switch.hpp); equilibria by the Aitken-relaxed fixed point
-//                    (laplace_pull_in.hpp);
-//   immersed         the beam through the immersed-boundary field and gas on the background
-//                    (immersed_switch.hpp): staggered, implicit or strongly_coupled per step;
-//                    equilibria by the field's fixed point.
+//   laplace,         the plane beam under a field without exact blocks (the Laplace field in
+//   immersed         the moving gap mesh, the immersed-boundary field and its gas on the
+//                    background) in the field-coupled beam's one loop (field_coupled_beam.hpp):
+//                    staggered, implicit or strongly_coupled per step; equilibria by its fixed
+//                    points.
 //
 // Every run has the same events (dynamic_pull_in.hpp: contact, turning back, settled at rest,
 // past the unstable equilibrium) and reports a DynamicRun.

@@ -1,5 +1,5 @@
 // Displacement control of an electrostatically loaded structure by a relaxed fixed point (the
-// Laplace pull-in, laplace_pull_in.hpp, and the immersed switch, immersed_switch.hpp): for a
+// field-coupled beam's quasi-static trace, field_coupled_beam.hpp): for a
 // prescribed deflection delta = l(u) of the control functional l (one unknown, or a point value
 // such as a beam's tip), iterate
 //

@@ -16,8 +16,7 @@
 // every residual call: the implicit, strongly coupled reference), and the scaled lagged model
 // stays in the Jacobian (an inexact Newton).
 //
-// It drives both field-coupled beams: the Laplace gap field (laplace_dynamic_switch.hpp) and
-// the immersed-boundary switch (immersed_switch.hpp).
+// It is the structure of the field-coupled beam's time loop (field_coupled_beam.hpp).
 #pragma once
 #include <functional>
 #include <span>

@@ -1,5 +1,5 @@
 // The gas slot of the immersed-boundary switch: what a gas model must offer the
-// coupling manager (immersed_switch.hpp), so that the ESBGK gas on the background mesh
+// field-coupled beam (field_coupled_beam.hpp), so that the ESBGK gas on the background mesh
 // (helper ibmgas, lib/ibm) plugs in beside the cheap models without touching the manager.
 //
 // Per coupled step the manager hands the gas the body's surface at the end of the step and

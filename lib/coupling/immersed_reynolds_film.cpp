@@ -3,111 +3,126 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cmath>
 
 #include "core/error.hpp"
+#include "mesh/mesh.hpp"
+#include "physics/gas/reynolds_film.hpp"
+#include "physics/gas/reynolds_prescribed_motion.hpp"
+#include "solvers/ida_integrator.hpp"
 
 namespace rfmems {
 
 ImmersedReynoldsFilm::ImmersedReynoldsFilm(const GasProperties& gas, std::vector<Index> segments,
-                                           Real substrate_y, Real wall_x, Real tip_x)
+                                           Real substrate_y, Real wall_x, Real tip_x, Real rtol)
     : gas_(gas),
       segments_(std::move(segments)),
       substrate_y_(substrate_y),
       wall_x_(wall_x),
-      tip_x_(tip_x) {
+      tip_x_(tip_x),
+      rtol_(rtol) {
   if (segments_.empty()) throw InputError("Reynolds film: no surface segments under the beam");
   if (!(tip_x > wall_x)) throw InputError("Reynolds film: the tip is not beyond the wall");
 }
 
-void ImmersedReynoldsFilm::geometry(const ImmersedSurface& s, std::vector<Real>& h,
-                                    std::vector<Real>& x, std::vector<Real>& dx) const {
-  h.clear();
-  x.clear();
-  dx.clear();
+ImmersedReynoldsFilm::~ImmersedReynoldsFilm() = default;
+
+std::vector<Real> ImmersedReynoldsFilm::gaps(const ImmersedSurface& s) const {
+  std::vector<Real> h;
+  h.reserve(segments_.size());
   for (Index k : segments_) {
-    const Real a = std::clamp(std::min(s.start(k).x(), s.end(k).x()), wall_x_, tip_x_);
-    const Real b = std::clamp(std::max(s.start(k).x(), s.end(k).x()), wall_x_, tip_x_);
     const Real gap = s.midpoint(k).y() - substrate_y_;
     if (!(gap > 0)) throw RecoverableError(fmt::format("Reynolds film: gap {:.3e} m <= 0", gap));
     h.push_back(gap);
-    x.push_back(0.5 * (a + b));
-    dx.push_back(b - a);
   }
+  return h;
 }
 
-void ImmersedReynoldsFilm::reset(const ImmersedSurface& surface, Real) {
+void ImmersedReynoldsFilm::reset(const ImmersedSurface& surface, Real t0) {
   std::sort(segments_.begin(), segments_.end(),
             [&](Index a, Index b) { return surface.midpoint(a).x() < surface.midpoint(b).x(); });
-  std::vector<Real> x, dx;
-  geometry(surface, h_, x, dx);
-  p_.assign(h_.size(), gas_.ambient_pressure);
-  max_knudsen_ = 0;
-  saved_ = {};
+  // The strip: one quad per segment between its clipped ends, unit depth along y.
+  MeshBuilder builder(2);
+  const std::size_t n = segments_.size();
+  for (std::size_t i = 0; i <= n; ++i) {
+    const Index k = segments_[std::min(i, n - 1)];
+    const Real x = i < n ? std::min(surface.start(k).x(), surface.end(k).x())
+                         : std::max(surface.start(k).x(), surface.end(k).x());
+    const Real clipped = std::clamp(x, wall_x_, tip_x_);
+    builder.add_node(Vec3(clipped, 0, 0));
+    builder.add_node(Vec3(clipped, 1, 0));
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto a = static_cast<Index>(2 * i);
+    builder.add_cell(CellShape::Quad, {a, a + 2, a + 3, a + 1});
+    builder.add_boundary_face({a, a + 2}, "sides");
+    builder.add_boundary_face({a + 3, a + 1}, "sides");
+  }
+  builder.add_boundary_face({1, 0}, "wall");
+  builder.add_boundary_face({static_cast<Index>(2 * n), static_cast<Index>(2 * n + 1)}, "tip");
+  strip_ = std::make_unique<Mesh>(builder.build("Reynolds film strip"));
+  for (Index c = 0; c < strip_->n_cells(); ++c)
+    if (!(strip_->cell_volume(c) > 0))
+      throw InputError(
+          "Reynolds film: a facing segment has no extent between the wall and the tip");
+  std::vector<FilmBoundary> boundaries(strip_->patches().size());
+  boundaries[strip_->find_patch("tip")].kind = FilmBoundary::Kind::Open;
+  film_ = std::make_unique<ReynoldsFilm>(*strip_, gas_, boundaries);
+
+  state_ = {std::vector<Real>(n, gas_.ambient_pressure), std::vector<Real>(n, 0.0), gaps(surface),
+            0.0};
+  h0_ = h1_ = state_.h;
+  t0_ = t0;
+  t1_ = t0 + 1;
+  motion_ = std::make_unique<ReynoldsPrescribedMotion>(
+      *film_,
+      [this](Real t, std::span<Real> g, std::span<Real> g_rate) {
+        const Real span = t1_ - t0_, s = std::clamp((t - t0_) / span, 0.0, 1.0);
+        for (std::size_t c = 0; c < g.size(); ++c) {
+          g[c] = (1 - s) * h0_[c] + s * h1_[c];
+          g_rate[c] = (h1_[c] - h0_[c]) / span;
+        }
+      },
+      ReynoldsPrescribedMotion::Unknown::Pressure, t0);
+  IdaOptions options;
+  options.rtol = rtol_;
+  options.atol = rtol_ * gas_.ambient_pressure;
+  options.max_order = 2;
+  ida_ = std::make_unique<IdaIntegrator>(*motion_, options);
+  ida_->initialize(t0, state_.p, state_.p_rate);
+  has_saved_ = false;
 }
 
-void ImmersedReynoldsFilm::save_checkpoint() { saved_ = {p_, h_, max_knudsen_, true}; }
+void ImmersedReynoldsFilm::save_checkpoint() {
+  saved_ = state_;
+  has_saved_ = true;
+}
 
 void ImmersedReynoldsFilm::restore_checkpoint() {
-  if (!saved_.valid) throw InputError("Reynolds film: restore without a saved checkpoint");
-  p_ = saved_.p;
-  h_ = saved_.h;
-  max_knudsen_ = saved_.max_knudsen;
+  if (!has_saved_) throw InputError("Reynolds film: restore without a saved checkpoint");
+  state_ = saved_;
 }
 
 std::vector<Vec3> ImmersedReynoldsFilm::advance(const ImmersedSurface& surface,
-                                                std::span<const Vec3>, Real, Real dt) {
-  std::vector<Real> h, x, dx;
-  geometry(surface, h, x, dx);
-  const std::size_t n = h.size();
-  const Real pa = gas_.ambient_pressure;
-  const std::vector<Real> p_old = p_, h_old = h_;
-  std::vector<Real> p = p_, a(n), b(n), c(n), r(n), cp(n), rp(n);
-  // Film coefficient h^3 p Q(Kn) / (12 mu) at a face with gap hf and pressure pf.
-  auto coefficient = [&](Real hf, Real pf) {
-    const Real kn = gas_.knudsen(pf, hf);
-    max_knudsen_ = std::max(max_knudsen_, kn);
-    return hf * hf * hf * pf * gas_.rarefaction_factor(kn) / (12 * gas_.viscosity);
-  };
-  for (int it = 0; it < 50; ++it) {
-    for (std::size_t i = 0; i < n; ++i) {
-      b[i] = h[i] * dx[i] / dt;
-      a[i] = c[i] = 0;
-      r[i] = p_old[i] * h_old[i] * dx[i] / dt;
-    }
-    for (std::size_t i = 0; i + 1 < n; ++i) {
-      const Real d = x[i + 1] - x[i];
-      const Real k = coefficient(0.5 * (h[i] + h[i + 1]), 0.5 * (p[i] + p[i + 1])) / d;
-      b[i] += k;
-      c[i] = -k;
-      b[i + 1] += k;
-      a[i + 1] = -k;
-    }
-    const Real k_tip = coefficient(h[n - 1], 0.5 * (p[n - 1] + pa)) / (0.5 * dx[n - 1]);
-    b[n - 1] += k_tip;
-    r[n - 1] += k_tip * pa;
-    // Thomas algorithm.
-    cp[0] = c[0] / b[0];
-    rp[0] = r[0] / b[0];
-    for (std::size_t i = 1; i < n; ++i) {
-      const Real m = b[i] - a[i] * cp[i - 1];
-      cp[i] = c[i] / m;
-      rp[i] = (r[i] - a[i] * rp[i - 1]) / m;
-    }
-    std::vector<Real> next(n);
-    next[n - 1] = rp[n - 1];
-    for (std::size_t i = n - 1; i-- > 0;) next[i] = rp[i] - cp[i] * next[i + 1];
-    Real change = 0;
-    for (std::size_t i = 0; i < n; ++i) change = std::max(change, std::abs(next[i] - p[i]));
-    p = std::move(next);
-    if (change <= 1e-12 * pa) break;
-  }
-  p_ = p;
-  h_ = h;
+                                                std::span<const Vec3>, Real t, Real dt) {
+  if (!film_) throw InputError("Reynolds film: advance before reset");
+  h0_ = state_.h;
+  h1_ = gaps(surface);
+  t0_ = t;
+  t1_ = t + dt;
+  // The rate consistent with the new interval's gap rate (the storage term is diagonal).
+  state_.p_rate = motion_->consistent_rate(t, state_.p);
+  ida_->reinitialize(t, state_.p, state_.p_rate);
+  ida_->advance(t + dt);
+  state_.p.assign(ida_->y().begin(), ida_->y().end());
+  state_.p_rate.assign(ida_->yp().begin(), ida_->yp().end());
+  state_.h = h1_;
+  for (std::size_t i = 0; i < segments_.size(); ++i)
+    state_.max_knudsen = std::max(state_.max_knudsen, gas_.knudsen(state_.p[i], state_.h[i]));
   std::vector<Vec3> force(surface.n_segments(), Vec3::Zero());
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < segments_.size(); ++i) {
     const Index k = segments_[i];
-    force[k] = -(p_[i] - pa) * dx[i] * surface.normal(k);
+    force[k] = -(state_.p[i] - gas_.ambient_pressure) * strip_->cell_volume(static_cast<Index>(i)) *
+               surface.normal(k);
   }
   return force;
 }

@@ -8,15 +8,7 @@
 
 #include "core/error.hpp"
 #include "core/process_cpu_clock.hpp"
-#include "core/reduced_inertia_system.hpp"
-#include "coupling/aitken_relaxation.hpp"
-#include "coupling/displacement_control_fixed_point.hpp"
-#include "coupling/gap_scaled_lagged_load.hpp"
-#include "coupling/step_voltage_run.hpp"
-#include "coupling/voltage_control_fixed_point.hpp"
 #include "ibm/force_transfer.hpp"
-#include "solvers/ida_integrator.hpp"
-#include "solvers/klu_factorization.hpp"
 
 namespace rfmems {
 
@@ -286,231 +278,41 @@ ImmersedLoad ImmersedSwitch::electrostatic_load(std::span<const Real> u, Real vo
   return load;
 }
 
-ImmersedStatic ImmersedSwitch::solve_static(Real voltage, Real tolerance, int max_iterations) {
-  // The plain fixed point (voltage_control_fixed_point.hpp), not Aitken: on a background where
-  // the beam's faces lie on grid lines the load jumps as slivers get cut
-  // (docs/immersed_switch.md), and Aitken's secant amplified the jumps (measured: omega
-  // between -8 and 15, no convergence).
-  const Index n = beam_.size();
-  std::vector<Real> k_values(beam_.stiffness_pattern().nnz()), rest(n, 0.0);
-  beam_.stiffness(0.0, rest, k_values);
-  KluFactorization stiffness(beam_.stiffness_pattern(), k_values);
-  ImmersedStatic out;
-  auto load = [&](std::span<const Real> u) {
-    ImmersedLoad l = electrostatic_load(u, voltage);
-    out.force_y = l.total.y();
-    return std::move(l.force);
-  };
-  VoltageControlResult r =
-      relax_voltage_control(stiffness, load, n, control_, tolerance, max_iterations);
-  if (!r.converged)
-    throw SolverError(
-        fmt::format("immersed switch: static solve at {:g} V not converged in {} "
-                    "iterations (above the quasi-static pull-in?)",
-                    voltage, max_iterations));
-  out.iterations = r.iterations;
-  out.control = control_(r.u);
-  out.u = std::move(r.u);
-  return out;
+BeamLoad ImmersedSwitch::load(std::span<const Real> u, Real voltage) {
+  ImmersedLoad l = electrostatic_load(u, voltage);
+  return {std::move(l.force), l.total.y()};
 }
 
-QuasiStaticPullIn ImmersedSwitch::trace_quasi_static(const QuasiStaticOptions& options,
-                                                     Real coupling_tolerance) {
-  const Index n = beam_.size();
-  std::vector<Real> k_values(beam_.stiffness_pattern().nnz()), zero(n, 0.0);
-  beam_.stiffness(0.0, zero, k_values);
-  KluFactorization stiffness(beam_.stiffness_pattern(), k_values);
-  long solves = 0;
-  auto solve = [&](Real delta, const FoldSample& from) {
-    FoldSample s{{}, from.state};
-    if (from.point.displacement != 0)
-      for (Real& v : s.state) v *= delta / from.point.displacement;
-    std::vector<Real>& u = s.state;
-    const auto load_per_volt2 = [&](std::span<const Real> state) {
-      ++solves;
-      return electrostatic_load(state, 1.0).force;
-    };
-    const DisplacementControlResult r = relax_displacement_control(
-        stiffness, load_per_volt2, control_, delta, coupling_tolerance, 200, u);
-    if (!r.converged || r.voltage_squared < 0)
-      throw SolverError(
-          fmt::format("immersed switch: quasi-static coupling failed at delta = {:.4e} m", delta));
-    s.point = {delta, std::sqrt(r.voltage_squared), min_gap(u), true, r.iterations + 1};
-    return s;
-  };
-  FoldSample rest{{0.0, 0.0, gap0_, true, 0}, std::vector<Real>(n, 0.0)};
-  QuasiStaticPullIn out = trace_fold(solve, rest, gap0_, options);
-  out.solves = solves;
-  return out;
+GapFieldTraits ImmersedSwitch::traits() const {
+  GapFieldTraits t;
+  // The equilibria by the plain fixed point, to what the background resolves: where the beam's
+  // faces lie on grid lines the load jumps as slivers get cut (docs/immersed_switch.md).
+  t.static_tolerance = 1e-7;
+  t.quasi_static_tolerance = 1e-6;
+  t.closed_fraction = 0.02;
+  t.velocity_rate = 2 * M_PI / first_period_;
+  t.turning_after = 0.25 * first_period_;
+  return t;
 }
 
-DynamicRun ImmersedSwitch::run(Real voltage, const DynamicOptions& options, ImmersedGasModel* gas) {
-  if (options.coupling.scheme == CouplingScheme::Monolithic)
-    throw InputError(
-        "immersed switch: the field gives no exact Jacobian blocks; use staggered, "
-        "implicit or strongly_coupled");
-  const Index n = beam_.size();
-  // The lagged, gap-scaled IBM load (see the header); a trial gap below 2 % of g0 is retried.
-  GapScaledLaggedLoad structure(beam_, gap0_, 0.02);
-  ReducedInertiaSystem system(structure, {});
-  std::vector<Real> y(system.size(), 0.0);
-  ImmersedLoad load = electrostatic_load(std::span<const Real>(y.data(), n), voltage);
-  structure.set_reference(load.force, std::span<const Real>(y.data(), n));
-  if (options.coupling.scheme == CouplingScheme::Implicit)
-    structure.set_exact(
-        [&](std::span<const Real> u) { return electrostatic_load(u, voltage).force; });
-  Real gas_force = 0;
-  if (gas) {
-    ScopedCpuTimer t{times_.gas};
-    gas->reset(rest_surface_, 0.0);
-  }
-  std::vector<Real> yp = system.consistent_derivative(0.0, y);
-  IdaOptions ida_options = options.ida;
-  ida_options.atols.assign(system.size(), options.ida.atol);
-  for (Index i = n; i < system.size(); ++i)
-    ida_options.atols[i] = options.ida.atol * 2 * M_PI / first_period_;
-  IdaIntegrator ida(system, ida_options);
-  ida.initialize(0.0, y, yp);
-  // The control's velocity: the same weights on the velocity unknowns.
-  const LinearFunctional velocity =
-      control_.mapped([&system](Index i) { return system.velocity_index(i); });
-  StepVoltageEvents events(
-      options.stop_at_turning, options.turning_retreat, 0.25 * first_period_,
-      early_ends(options.stop_at_turning, options.settle_tolerance, options.fold,
-                 options.stop_past_fold, options.past_fold_margin));
-  events.set_roots(ida, n, control_, velocity, options.contact_gap,
-                   [this](std::span<const Real> u) { return min_gap(u); });
+Json ImmersedSwitch::counters() const {
+  return {{"move_s", times_.move},
+          {"marking_s", times_.marking},
+          {"interpolation_s", times_.interpolation},
+          {"electrostatics_s", times_.electrostatics},
+          {"transfer_s", times_.transfer},
+          {"load_evaluations", times_.load_evaluations},
+          {"electrostatic_analyses", times_.electrostatic_analyses},
+          {"electrostatic_krylov_iterations", times_.electrostatic_krylov_iterations}};
+}
 
-  std::vector<StepRecord> records{{0.0, 0.0, 0.0, gap0_, load.total.y(), 0.0}};
-  DynamicRun out;
-  Real t_gas = 0;  // the gas's time: it advances every gas_every accepted steps
-  int since_gas = 0;
-  const bool strong = options.coupling.scheme == CouplingScheme::StronglyCoupled;
-  if (options.coupling.strong_gas && !strong)
-    throw InputError("immersed switch: strong_gas needs the strongly_coupled scheme");
-  const bool gas_inside = strong && options.coupling.strong_gas && gas;
-  if (gas_inside && options.coupling.gas_every != 1)
-    throw InputError("immersed switch: strong_gas advances the gas over every step (gas_every 1)");
-  std::vector<Real> held(n, 0.0);  // the gas load in the structure's residual
-  // The gas over [t_gas, t_end] with the body at state's displacement and velocity (its end
-  // state); the gas force per structure unknown.
-  auto advance_gas = [&](std::span<const Real> state, Real t_end) {
-    ScopedCpuTimer timer{times_.gas};
-    std::vector<Real> v(n);
-    for (Index i = 0; i < n; ++i) v[i] = state[system.velocity_index(i)];
-    const std::vector<Vec3> f = gas->advance(moved_surface(state.subspan(0, n)),
-                                             segment_velocities(v), t_gas, t_end - t_gas);
-    ++times_.gas_steps;
-    gas_force = 0;
-    for (const Vec3& x : f) gas_force += x.y();
-    return to_structure(f);
-  };
-  // Strong coupling per step (block Gauss-Seidel with Aitken relaxation, Kuettler & Wall 2008):
-  // the step is redone from IDA's checkpoint with the interface load G_k, applied in the
-  // residual as G_k (g_k / g(u))^2 with g_k the gap of iterate k's end state (k = 0 is the
-  // staggered step: G_0 = F(u_n) at g_n), until the IBM load F(u_k) at the step's end state
-  // (IDA's t_n, also after a root return) matches the load A_k applied there:
-  // |r_k| <= tol |F(u_k)|, r_k = F(u_k) - A_k; then G_{k+1} = A_k + omega_k r_k, omega_0 = 1 and
-  // Aitken's factor after. Without strong_gas the gas is advanced once, after the converged
-  // step (lagged, as in the staggered scheme). With it, every iterate also redoes the gas's
-  // step from the gas's checkpoint with u_k and its velocity, and the interface load is the
-  // sum: F = F_e(u_k) + F_g(u_k), A_k = A_e,k + H_k (H_k the gas load held over iterate k,
-  // H_0 the last step's gas force), one Aitken factor on the summed residual, each part
-  // relaxed by it (G_e = A_e + omega r_e, H = H_k + omega r_g).
-  auto strong_step = [&]() {
-    ida.save_checkpoint();
-    if (gas_inside) {
-      ScopedCpuTimer t{times_.gas};
-      gas->save_checkpoint();
-    }
-    std::vector<Real> residual_prev;
-    Real omega = 1;
-    for (int k = 0;; ++k) {
-      IdaIntegrator::Status status;
-      {
-        ScopedCpuTimer t{times_.structure};
-        status = ida.step(options.end_time);
-      }
-      const std::span<const Real> y_end = ida.internal_y();
-      const std::span<const Real> u_end = y_end.subspan(0, n);
-      const std::vector<Real> applied = structure.applied(u_end);
-      load = electrostatic_load(u_end, voltage);
-      // After a root return IDA's next call may end at the same t_n: the gas is there already.
-      const Real t_end = ida.internal_time();
-      const bool gas_steps = gas_inside && t_end > t_gas;
-      std::vector<Real> gas_load = held;
-      if (gas_steps) {
-        if (k > 0) {
-          ScopedCpuTimer t{times_.gas};
-          gas->restore_checkpoint();
-        }
-        gas_load = advance_gas(y_end, t_end);
-        if (k == 0) gas->hold_marking(true);  // the later iterates on iterate 0's marking
-      }
-      ++times_.coupling_iterations;
-      std::vector<Real> residual(n);
-      Real r2 = 0, f2 = 0;
-      for (Index i = 0; i < n; ++i) {
-        const Real total = load.force[i] + (gas_inside ? gas_load[i] : 0);
-        residual[i] = total - applied[i] - (gas_inside ? held[i] : 0);
-        r2 += residual[i] * residual[i];
-        f2 += total * total;
-      }
-      const bool converged = r2 <= options.coupling.tolerance * options.coupling.tolerance * f2;
-      if (converged || k + 1 >= options.coupling.max_iterations) {
-        times_.unconverged_steps += !converged;
-        times_.max_coupling_iterations = std::max(times_.max_coupling_iterations, k + 1);
-        if (f2 > 0)
-          times_.max_coupling_residual = std::max(times_.max_coupling_residual, std::sqrt(r2 / f2));
-        structure.set_reference(load.force, u_end);  // the next step's k = 0
-        if (gas_inside) gas->hold_marking(false);
-        if (gas_steps) {
-          held = std::move(gas_load);
-          structure.set_held(held);
-          t_gas = t_end;
-        }
-        return status;
-      }
-      if (k > 0) omega = std::clamp(aitken_factor(omega, residual, residual_prev), 0.01, 4.0);
-      std::vector<Real> next(n);
-      for (Index i = 0; i < n; ++i) next[i] = applied[i] + omega * (load.force[i] - applied[i]);
-      structure.set_reference(std::move(next), u_end);
-      if (gas_steps) {
-        for (Index i = 0; i < n; ++i) held[i] += omega * (gas_load[i] - held[i]);
-        structure.set_held(held);
-      }
-      residual_prev = std::move(residual);
-      ida.restore_checkpoint();
-    }
-  };
-  while (true) {
-    IdaIntegrator::Status status;
-    if (strong) {
-      status = strong_step();
-    } else {
-      ScopedCpuTimer t{times_.structure};
-      status = ida.step(options.end_time);
-    }
-    ++times_.structure_steps;
-    const Real t = ida.time();
-    const std::span<const Real> state = ida.y();
-    const std::span<const Real> u = state.subspan(0, n);
-    const bool stop = events.after_step(ida, status, t, control_(u), out);
-    // The coupled step's exchange: the IBM load and the gas at the accepted state.
-    if (!strong) {  // strong_step left the IBM load at IDA's internal state as reference
-      load = electrostatic_load(u, voltage);
-      structure.set_reference(load.force, u);
-    }
-    if (gas && !gas_inside && t > t_gas && (++since_gas >= options.coupling.gas_every || stop)) {
-      since_gas = 0;
-      held = advance_gas(state, t);
-      structure.set_held(held);  // the lagged gas force
-    }
-    records.push_back({t, control_(u), velocity(state), min_gap(u), load.total.y(), gas_force});
-    if (since_gas == 0 && !gas_inside) t_gas = t;
-    if (stop || events.after_record(records.back(), voltage, out)) break;
-  }
-  finish_step_voltage_run(ida, records, voltage, options.output_interval, true, out);
+void ImmersedSwitch::reset_gas(ImmersedGasModel& gas, Real t0) { gas.reset(rest_surface_, t0); }
+
+BeamLoad ImmersedSwitch::gas_load(ImmersedGasModel& gas, std::span<const Real> u,
+                                  std::span<const Real> v, Real t, Real dt) {
+  const std::vector<Vec3> f = gas.advance(moved_surface(u), segment_velocities(v), t, dt);
+  BeamLoad out{to_structure(f), 0.0};
+  for (const Vec3& x : f) out.force_y += x.y();
   return out;
 }
 

@@ -75,30 +75,31 @@ LaplaceGapField::LaplaceGapField(ElasticityOperator& beam, const std::string& bo
     top_face_cell_.push_back(it->second);
   }
   node_displacement_.resize(top_nodes.size());
-  last_min_gap_ = gap;
 }
 
 LaplaceGapField::~LaplaceGapField() = default;
 
 Index LaplaceGapField::gap_cells_total() const { return gap_mesh_->n_cells(); }
 
-Real LaplaceGapField::cell_min_gap(std::span<const Real> u) const {
+Real LaplaceGapField::min_gap(std::span<const Real> u) const {
   Real g = 1e300;
   for (Index c : bottom_cells_) g = std::min(g, gap_ + u[beam_.gap_unknown(c)]);
   return g;
 }
 
-std::vector<Real> LaplaceGapField::load_per_volt2(std::span<const Real> u) {
+Json LaplaceGapField::counters() const {
+  return {{"field_solves", solves_}, {"move_s", move_seconds_}, {"field_s", field_seconds_}};
+}
+
+BeamLoad LaplaceGapField::load(std::span<const Real> u, Real voltage) {
   const Mesh& beam_mesh = beam_.mesh();
   {
     ScopedCpuTimer timer{move_seconds_};
     const std::vector<Mat3> gradients = beam_.cell_gradients(0.0, u);
-    last_min_gap_ = gap_;
     for (std::size_t k = 0; k < node_displacement_.size(); ++k) {
       const Index node = beam_nodes_[node_match_[k]];
       node_displacement_[k] =
           beam_.displacement_at(node_owner_[k], beam_mesh.nodes()[node], u, gradients);
-      last_min_gap_ = std::min(last_min_gap_, gap_ + node_displacement_[k].y());
     }
     motion_->move(node_displacement_);
   }
@@ -106,16 +107,20 @@ std::vector<Real> LaplaceGapField::load_per_volt2(std::span<const Real> u) {
   field_->solve();
   ++solves_;
   const SurfaceLoad load = field_->surface_load("top");
-  std::vector<Real> q(beam_.size(), 0.0);
-  last_force_y_ = 0;
+  // The field scales with V, the Maxwell traction with V^2: solved at V = 1.
+  const Real v2 = voltage * voltage;
+  BeamLoad out{std::vector<Real>(beam_.size(), 0.0), 0.0};
+  Real force_y = 0;
   for (std::size_t i = 0; i < load.faces.size(); ++i) {
     const Vec3 force = load.traction[i] * gap_mesh_->face_area(load.faces[i]).norm();
     const Index c = top_face_cell_[load.faces[i] - top_first_face_];
-    q[beam_.unknown(c, 0)] += force.x();
-    q[beam_.gap_unknown(c)] += force.y();
-    last_force_y_ += force.y();
+    out.force[beam_.unknown(c, 0)] += force.x();
+    out.force[beam_.gap_unknown(c)] += force.y();
+    force_y += force.y();
   }
-  return q;
+  for (Real& f : out.force) f *= v2;
+  out.force_y = v2 * force_y;
+  return out;
 }
 
 }  // namespace rfmems

@@ -4,21 +4,22 @@
 // the beam (mesh/mesh_motion.hpp: nearest moving node by KD-tree, blending, spring smoothing).
 // The electrode is a stretch of the bottom at potential 0, the beam at V, the rest zero flux.
 //
-// One evaluation at a beam displacement u (load_per_volt2):
+// One evaluation at a beam displacement u (load):
 //   1. the beam's displacement at its bottom nodes (each from a bottom cell's reconstruction)
 //      moves the gap mesh (a cell that inverts: MeshError);
 //   2. Laplace with V = 1 (the field scales with V, the Maxwell traction with V^2);
 //   3. the traction on each top face of the gap mesh, times its area, goes to the beam cell
 //      that owns the matching bottom face: q(u), the force per V^2 per beam unknown [N/m/V^2].
 //
-// Used by the quasi-static pull-in (laplace_pull_in.hpp) and the dynamic switch
-// (laplace_dynamic_switch.hpp).
+// The field-coupled beam (field_coupled_beam.hpp) solves its equilibria and its runs with it
+// (gap_field.hpp: load = V^2 q(u)).
 #pragma once
 #include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "coupling/gap_field.hpp"
 #include "mesh/mesh_motion.hpp"
 #include "physics/elasticity/elasticity_operator.hpp"
 #include "physics/electrostatics/parallel_plate_actuation.hpp"
@@ -32,7 +33,7 @@ struct LaplaceGapOptions {
   MeshMotionOptions motion;
 };
 
-class LaplaceGapField {
+class LaplaceGapField : public GapField {
  public:
   // beam: a 2D continuum whose patch `bottom_patch` faces the electrode across `gap` (below
   // it, along -y).
@@ -42,25 +43,21 @@ class LaplaceGapField {
   LaplaceGapField(const LaplaceGapField&) = delete;
   LaplaceGapField& operator=(const LaplaceGapField&) = delete;
 
-  // q(u): force per V^2 on every beam unknown (moves the gap mesh and solves).
-  std::vector<Real> load_per_volt2(std::span<const Real> u);
-
-  // After the last evaluation: the smallest gap at the beam's bottom nodes [m] and the total
-  // force per V^2 along y [N/m/V^2] (negative: closing).
-  Real last_min_gap() const { return last_min_gap_; }
-  Real last_force_y() const { return last_force_y_; }
+  std::string name() const override { return "laplace"; }
+  // V^2 q(u), q the force per V^2 on every beam unknown (moves the gap mesh and solves at
+  // V = 1), and its total along y.
+  BeamLoad load(std::span<const Real> u, Real voltage) override;
   // The smallest gap over the bottom cells' centroid u_y (cheap, for root functions): the
   // parallel-plate law's gap measure.
-  Real cell_min_gap(std::span<const Real> u) const;
-  // Beam cells that own a bottom face.
-  const std::vector<Index>& bottom_cells() const { return bottom_cells_; }
+  Real min_gap(std::span<const Real> u) const override;
+  Real rest_gap() const override { return gap_; }
+  GapFieldTraits traits() const override { return {}; }
+  double seconds() const override { return move_seconds_ + field_seconds_; }
+  // Field solves, and the CPU seconds moving the gap mesh and in the field solve.
+  Json counters() const override;
 
-  Real gap() const { return gap_; }
   Index gap_cells_total() const;
   long solves() const { return solves_; }
-  // CPU seconds spent moving the gap mesh and in the field solve (assembly, KLU, traction).
-  double move_seconds() const { return move_seconds_; }
-  double field_seconds() const { return field_seconds_; }
 
  private:
   ElasticityOperator& beam_;
@@ -71,7 +68,6 @@ class LaplaceGapField {
   std::vector<Index> beam_nodes_, node_match_, node_owner_, top_face_cell_, bottom_cells_;
   Index top_first_face_ = 0;
   std::vector<Vec3> node_displacement_;
-  Real last_min_gap_ = 0, last_force_y_ = 0;
   long solves_ = 0;
   double move_seconds_ = 0, field_seconds_ = 0;
 };

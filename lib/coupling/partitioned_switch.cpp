@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "core/reduced_inertia_system.hpp"
 #include "coupling/aitken_relaxation.hpp"
+#include "physics/gas/reynolds_prescribed_motion.hpp"
 #include "solvers/ida_integrator.hpp"
 
 namespace rfmems {
@@ -50,39 +51,6 @@ class GasLoadedStructure : public SecondOrderOperator {
   const std::vector<Index>& w_dof_;
 };
 
-// The film with a prescribed gap and gap rate per cell.
-class FilmUnderPrescribedGap : public SystemOperator {
- public:
-  explicit FilmUnderPrescribedGap(const ReynoldsFilm& film)
-      : film_(film), g_(film.size()), gp_(film.size()) {}
-  LinearInTime gap, gap_rate;
-  Index size() const override { return film_.size(); }
-  std::vector<Real> differential_components() const override {
-    return std::vector<Real>(film_.size(), 1.0);
-  }
-  void residual(Real t, std::span<const Real> p, std::span<const Real> pp,
-                std::span<Real> r) override {
-    fill(t);
-    film_.residual(p, pp, g_, gp_, r);
-  }
-  const CsrPattern& jacobian_pattern() const override { return film_.cell_pattern(); }
-  void jacobian(Real t, Real c_j, std::span<const Real> p, std::span<const Real> pp,
-                std::span<Real> values) override {
-    fill(t);
-    film_.pressure_jacobian(c_j, p, pp, g_, gp_, values);
-  }
-
- private:
-  void fill(Real t) {
-    for (std::size_t c = 0; c < g_.size(); ++c) {
-      g_[c] = gap.at(c, t);
-      gp_[c] = gap_rate.at(c, t);
-    }
-  }
-  const ReynoldsFilm& film_;
-  std::vector<Real> g_, gp_;
-};
-
 void add_stats(IntegratorStats& sum, const IntegratorStats& s) {
   sum.steps += s.steps;
   sum.residual_evals += s.residual_evals;
@@ -115,7 +83,15 @@ PartitionedRun run_partitioned(ParallelPlateActuation& act, std::vector<bool> qu
   loaded.force.a.assign(nc, 0.0);
   loaded.force.b.assign(nc, 0.0);
   ReducedInertiaSystem structure(loaded, std::move(quasi_static));
-  FilmUnderPrescribedGap gas(film);
+  // The film under the gap and gap rate linear in time over the macro step.
+  LinearInTime gap{0, 1, std::vector<Real>(nc, g0), std::vector<Real>(nc, g0)};
+  LinearInTime gap_rate{0, 1, std::vector<Real>(nc, 0.0), std::vector<Real>(nc, 0.0)};
+  ReynoldsPrescribedMotion gas(film, [&](Real t, std::span<Real> g, std::span<Real> g_rate) {
+    for (std::size_t c = 0; c < nc; ++c) {
+      g[c] = gap.at(c, t);
+      g_rate[c] = gap_rate.at(c, t);
+    }
+  });
 
   // States at t_n.
   std::vector<Real> s(structure.size(), 0.0), sp = structure.consistent_derivative(0.0, s);
@@ -166,8 +142,8 @@ PartitionedRun run_partitioned(ParallelPlateActuation& act, std::vector<bool> qu
     for (int k = 0; k < passes; ++k) {
       ++out.coupling_iterations;
       // Film over the step under the gap motion.
-      gas.gap = {t, t1, g_n, g_end};
-      gas.gap_rate = {t, t1, gr_n, gr_end};
+      gap = {t, t1, g_n, g_end};
+      gap_rate = {t, t1, gr_n, gr_end};
       gas_ida.reinitialize(t, p, pp);
       gas_ida.advance(t1);
       p_new.assign(gas_ida.y().begin(), gas_ida.y().end());

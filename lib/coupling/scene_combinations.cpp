@@ -40,10 +40,10 @@ std::vector<SceneRow> build_table() {
       {C::Monolithic, C::Staggered, C::StronglyCoupled});
   add({S::Plane, F::ParallelPlate, G::None}, {A::QuasiStatic, A::Dynamic, A::Transient},
       {C::Monolithic});
-  // The Laplace field in the moving gap mesh gives no exact blocks: refreshed per step
-  // (staggered) or solved in every residual (implicit).
+  // The Laplace field in the moving gap mesh and the immersed field give no exact blocks: the
+  // field-coupled beam's schemes (field_coupled_beam.hpp).
   add({S::Plane, F::Laplace, G::None}, {A::Static, A::QuasiStatic, A::Dynamic, A::Transient},
-      {C::Staggered, C::Implicit});
+      {C::Staggered, C::Implicit, C::StronglyCoupled});
   for (G gas : {G::None, G::Reynolds, G::Esbgk})
     add({S::Plane, F::Immersed, gas}, {A::Static, A::QuasiStatic, A::Dynamic, A::Transient},
         {C::Staggered, C::Implicit, C::StronglyCoupled});

@@ -23,8 +23,8 @@
 //                     immersed), or the film and the structure once each per macro step
 //                     (parallel_plate with reynolds);
 //   implicit          the field solved inside every residual of the structure;
-//   strongly_coupled  Aitken-relaxed iterations per step (immersed) or macro step (parallel_plate
-//                     with reynolds) until the interface load converges.
+//   strongly_coupled  Aitken-relaxed iterations per step (laplace, immersed) or macro step
+//                     (parallel_plate with reynolds) until the interface load converges.
 // The first scheme a row lists is its default. The static analyses (static, quasi_static) solve
 // the coupled equilibrium to convergence and use no scheme: a scheme in the case is then not
 // used, so that a case switched between analyses by --set stays valid.

@@ -86,8 +86,13 @@ SwitchScene build_switch_scene(const CaseNode& root, const std::string& case_dir
   s.control = field.control;
   s.contact = field.contact;
   s.actuation = std::move(field.actuation);
-  s.laplace_gap_cells = static_cast<int>(
+  LaplaceGapOptions laplace;
+  laplace.gap_cells = static_cast<int>(
       act.child_or_empty("laplace").get_int("gap_cells", 16, Range::closed(2, 10000)));
+  if (s.field() == FieldModel::Laplace)
+    s.laplace =
+        std::make_unique<LaplaceGapField>(*dynamic_cast<ElasticityScene&>(*s.structure).op,
+                                          s.facing_patch, s.gap, s.electrodes.front(), laplace);
   s.film = read_gas(root, s);
   return s;
 }

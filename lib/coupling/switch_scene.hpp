@@ -51,6 +51,7 @@
 #include <vector>
 
 #include "coupling/immersed_field.hpp"
+#include "coupling/laplace_gap_field.hpp"
 #include "coupling/scene_combinations.hpp"
 #include "io/case_file.hpp"
 #include "physics/electrostatics/parallel_plate_field.hpp"
@@ -66,11 +67,11 @@ struct SwitchScene {
   std::vector<ElectrodeExtent> electrodes;  // at least one (laplace, immersed: one)
   std::string facing_patch;                 // plane structures
   Vec3 control_point = Vec3::Zero();
-  Index control = -1;  // parallel_plate, laplace: the controlled unknown
-  int laplace_gap_cells = 16;
-  ContactPenalty contact;                             // actuation.contact (penetration 0: none)
+  Index control = -1;      // parallel_plate, laplace: the controlled unknown
+  ContactPenalty contact;  // actuation.contact (penetration 0: none)
   std::unique_ptr<ParallelPlateActuation> actuation;  // parallel_plate
   std::unique_ptr<ReynoldsFilm> film;                 // parallel_plate with gas: reynolds
+  std::unique_ptr<LaplaceGapField> laplace;           // laplace
   std::unique_ptr<ImmersedField> immersed;            // immersed (with its gas)
 
   FieldModel field() const { return choice.models.field; }

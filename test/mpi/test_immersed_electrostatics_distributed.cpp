@@ -111,10 +111,10 @@ TEST(ImmersedElectrostaticsDistributed, CoupledCoarseSwitchGivesTheSerialTipDefl
   const Communicator world = Communicator::world();
   Cantilever c(45, 3, 76, 26);
   const DynamicOptions o = run_options(4e-7, 1e-2);
-  const DynamicRun r1 = c.scene->run(80.0, o, nullptr);
+  const DynamicRun r1 = c.coupled->run(80.0, o, nullptr);
   c.scene->distribute_electrostatics(world);
   c.scene->reset_times();
-  const DynamicRun rP = c.scene->run(80.0, o, nullptr);
+  const DynamicRun rP = c.coupled->run(80.0, o, nullptr);
   ASSERT_GT(r1.history.size(), 2u);
   ASSERT_EQ(r1.history.size(), rP.history.size());
   const Real scale = std::abs(r1.history.back().control);

@@ -217,12 +217,12 @@ TEST_P(CoupledCoarseSwitch, GivesTheSerialTipDeflection) {
   }
   ImmersedEsbgkGas serial(c.scene->background(), air(Communicator::serial()), 0.0);
   ImmersedEsbgkGas parallel(c.scene->background(), air(world), 0.0);
-  c.scene->reset_times();
-  const DynamicRun r1 = c.scene->run(80.0, o, &serial);
-  const ImmersedPhysicsTimes t1 = c.scene->times();
-  c.scene->reset_times();
-  const DynamicRun rP = c.scene->run(80.0, o, &parallel);
-  const ImmersedPhysicsTimes tP = c.scene->times();
+  c.reset_times();
+  const DynamicRun r1 = c.coupled->run(80.0, o, &serial);
+  const CoupledRunTimes t1 = c.coupled->times();
+  c.reset_times();
+  const DynamicRun rP = c.coupled->run(80.0, o, &parallel);
+  const CoupledRunTimes tP = c.coupled->times();
   if (GetParam()) {
     EXPECT_EQ(tP.coupling_iterations, t1.coupling_iterations);
     EXPECT_EQ(tP.gas_steps, t1.gas_steps);

@@ -39,8 +39,8 @@ TEST(ImmersedSwitch, CoarseBisectionWithinTheClosedFormBracket) {
   Cantilever c(46, 4, 101, 31);
   const DynamicOptions o = run_options(4e-6, 5e-5);
   const Real expected = 0.91 * distributed_pull_in();
-  const DynamicPullIn pi = find_dynamic_pull_in([&](Real v) { return c.scene->run(v, o, nullptr); },
-                                                116, 128, 3.0, o.end_time);
+  const DynamicPullIn pi = find_dynamic_pull_in(
+      [&](Real v) { return c.coupled->run(v, o, nullptr); }, 116, 128, 3.0, o.end_time);
   EXPECT_NEAR(pi.voltage / expected, 1.0, 0.08);
   EXPECT_LE(pi.voltage - pi.lower, 3.0);
   EXPECT_GT(pi.pull_in_time, 0.5 * c.scene->first_bending_period());

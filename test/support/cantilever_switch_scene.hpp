@@ -1,4 +1,4 @@
-// The thesis's cantilever switch (Fig. 6.5) as a coarse ImmersedSwitch scene for the
+// The thesis's cantilever switch (Fig. 6.5) as a coarse immersed-boundary scene for the
 // coupled immersed-boundary tests: the beam 45 um x 1.5 um, bottom 1.5 um above the electrode,
 // clamped at x = 0 (the background's left wall); background 75 um x 10 um; electrode
 // [0, electrode_end] on the bottom; plane stress, E = 200 GPa, nu = 0.3, rho = 8912 kg/m^3.
@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "coupling/field_coupled_beam.hpp"
 #include "coupling/immersed_switch.hpp"
 #include "mesh/structured_mesh.hpp"
 
@@ -17,7 +18,8 @@ constexpr Real kGap = 1.5 * um, kLength = 45 * um, kThickness = 1.5 * um;
 struct Cantilever {
   std::unique_ptr<Mesh> mesh;
   std::unique_ptr<ElasticityOperator> op;
-  std::unique_ptr<ImmersedSwitch> scene;
+  std::unique_ptr<ImmersedSwitch> scene;      // the field
+  std::unique_ptr<FieldCoupledBeam> coupled;  // the beam coupled to it
   Cantilever(int bx, int by, int gx, int gy, Real electrode_end = kLength) {
     BoxSpec spec;
     spec.lower = Vec3(0, kGap, 0);
@@ -38,6 +40,11 @@ struct Cantilever {
     // The control: u_y at the tip's bottom corner, from the tip cell of the bottom row.
     scene = std::make_unique<ImmersedSwitch>(
         *op, g, op->displacement_functional(bx - 1, Vec3(kLength, kGap, 0), 1));
+    coupled = std::make_unique<FieldCoupledBeam>(*op, *scene, scene->control());
+  }
+  void reset_times() {
+    scene->reset_times();
+    coupled->reset_times();
   }
 };
 

@@ -5,11 +5,33 @@
 
 namespace rfmems {
 
+namespace {
+
+// The gap and its rate at the cell centroids.
+CellGap at_centroids(const Mesh& mesh, FilmField gap, FilmField gap_rate) {
+  if (!gap || !gap_rate)
+    throw InputError("ReynoldsPrescribedMotion: the gap and its rate must both be given");
+  return [&mesh, gap = std::move(gap), gap_rate = std::move(gap_rate)](Real t, std::span<Real> g,
+                                                                       std::span<Real> g_rate) {
+    for (std::size_t c = 0; c < g.size(); ++c) {
+      const Vec3& x = mesh.cell_centroid(static_cast<Index>(c));
+      g[c] = gap(x, t);
+      g_rate[c] = gap_rate(x, t);
+    }
+  };
+}
+
+}  // namespace
+
 ReynoldsPrescribedMotion::ReynoldsPrescribedMotion(const ReynoldsFilm& film, FilmField gap,
                                                    FilmField gap_rate, Unknown unknown, Real t0)
-    : film_(film), gap_fn_(std::move(gap)), gap_rate_fn_(std::move(gap_rate)), unknown_(unknown) {
-  if (!gap_fn_ || !gap_rate_fn_)
-    throw InputError("ReynoldsPrescribedMotion: the gap and its rate must both be given");
+    : ReynoldsPrescribedMotion(film, at_centroids(film.mesh(), std::move(gap), std::move(gap_rate)),
+                               unknown, t0) {}
+
+ReynoldsPrescribedMotion::ReynoldsPrescribedMotion(const ReynoldsFilm& film, CellGap gap,
+                                                   Unknown unknown, Real t0)
+    : film_(film), gap_(std::move(gap)), unknown_(unknown) {
+  if (!gap_) throw InputError("ReynoldsPrescribedMotion: no gap given");
   const Index n = size();
   p_.resize(n);
   p_rate_.resize(n);
@@ -31,15 +53,15 @@ std::vector<Real> ReynoldsPrescribedMotion::differential_components() const {
 }
 
 std::vector<Real> ReynoldsPrescribedMotion::gap(Real t) const {
-  std::vector<Real> g(size());
-  for (Index c = 0; c < size(); ++c) g[c] = gap_fn_(film_.mesh().cell_centroid(c), t);
+  std::vector<Real> g(size()), g_rate(size());
+  gap_(t, g, g_rate);
   return g;
 }
 
 std::vector<Real> ReynoldsPrescribedMotion::gap_rate(Real t) const {
-  std::vector<Real> g(size());
-  for (Index c = 0; c < size(); ++c) g[c] = gap_rate_fn_(film_.mesh().cell_centroid(c), t);
-  return g;
+  std::vector<Real> g(size()), g_rate(size());
+  gap_(t, g, g_rate);
+  return g_rate;
 }
 
 std::vector<Real> ReynoldsPrescribedMotion::pressure(Real t, std::span<const Real> y) const {
@@ -70,10 +92,8 @@ Real ReynoldsPrescribedMotion::mass(Real t, std::span<const Real> y) const {
 }
 
 void ReynoldsPrescribedMotion::unpack(Real t, std::span<const Real> y, std::span<const Real> yp) {
+  gap_(t, g_, g_rate_);
   for (Index c = 0; c < size(); ++c) {
-    const Vec3& x = film_.mesh().cell_centroid(c);
-    g_[c] = gap_fn_(x, t);
-    g_rate_[c] = gap_rate_fn_(x, t);
     if (!(g_[c] > 0))
       throw RecoverableError("ReynoldsPrescribedMotion: prescribed gap <= 0 at cell " +
                              std::to_string(c));

@@ -1,6 +1,7 @@
 // The squeeze film alone, under a prescribed plate motion, as a SystemOperator for IDA
-// (transients) or KINSOL (quasi-static: y' = 0 with the gap still moving):
-//   gap g(x, t) and gap rate g'(x, t) are functions evaluated at the cell centroids.
+// (transients) or KINSOL (quasi-static: y' = 0 with the gap still moving): the gap g and gap
+// rate g' per cell at time t, either functions g(x, t), g'(x, t) evaluated at the cell
+// centroids or given per cell (a partitioned coupling's structure: its gap over a step).
 //
 // Two choices of unknown y per cell:
 //   Pressure      y = p [Pa]. F = ReynoldsFilm::residual(p, y', g, g'). What the coupled
@@ -30,6 +31,8 @@
 namespace rfmems {
 
 using FilmField = std::function<Real(const Vec3& x, Real t)>;
+// Fills the gap and its rate per cell at time t.
+using CellGap = std::function<void(Real t, std::span<Real> gap, std::span<Real> gap_rate)>;
 
 class ReynoldsPrescribedMotion : public SystemOperator {
  public:
@@ -37,6 +40,8 @@ class ReynoldsPrescribedMotion : public SystemOperator {
 
   // gap and gap_rate must be consistent (gap_rate = d gap / dt); t0 fixes g_ref.
   ReynoldsPrescribedMotion(const ReynoldsFilm& film, FilmField gap, FilmField gap_rate,
+                           Unknown unknown = Unknown::Pressure, Real t0 = 0);
+  ReynoldsPrescribedMotion(const ReynoldsFilm& film, CellGap gap,
                            Unknown unknown = Unknown::Pressure, Real t0 = 0);
 
   Index size() const override { return film_.size(); }
@@ -65,7 +70,7 @@ class ReynoldsPrescribedMotion : public SystemOperator {
   void unpack(Real t, std::span<const Real> y, std::span<const Real> yp);
 
   const ReynoldsFilm& film_;
-  FilmField gap_fn_, gap_rate_fn_;
+  CellGap gap_;
   Unknown unknown_;
   Real reference_gap_ = 1;
   std::vector<Real> p_, p_rate_, g_, g_rate_, values_;

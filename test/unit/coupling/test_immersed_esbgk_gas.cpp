@@ -190,12 +190,12 @@ TEST(ImmersedEsbgkGas, CoupledSwitchRunsAFewStepsWithTheGasForceOfTheGasAlone) {
   // bends the beam by picometres, measured 3.8e-12 m); the gas force in y stays below 1e-7 of
   // p0 times the perimeter (measured <= 5e-8 N/m of 1.29 N/m; the electrostatic pull at 80 V
   // is ~1e-2 N/m).
-  const DynamicRun at_rest = c.scene->run(0.0, o, &gas);
+  const DynamicRun at_rest = c.coupled->run(0.0, o, &gas);
   ASSERT_GT(gas.stats().steps, 0);
   for (const DynamicSample& s : at_rest.history) EXPECT_LT(std::abs(s.gas_force), 1e-7 * scale);
   EXPECT_LT(std::abs(at_rest.extreme_control), 1e-5 * kGap);
 
-  const DynamicRun closing = c.scene->run(80.0, o, &gas);
+  const DynamicRun closing = c.coupled->run(80.0, o, &gas);
   ASSERT_GT(gas.stats().steps, 1);
   EXPECT_EQ(gas.stats().unconverged, 0);
   EXPECT_LT(closing.extreme_control, 0);

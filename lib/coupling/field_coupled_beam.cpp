@@ -1,0 +1,349 @@
+#include "coupling/field_coupled_beam.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "core/process_cpu_clock.hpp"
+#include "core/reduced_inertia_system.hpp"
+#include "coupling/aitken_relaxation.hpp"
+#include "coupling/displacement_control_fixed_point.hpp"
+#include "coupling/gap_scaled_lagged_load.hpp"
+#include "coupling/immersed_gas.hpp"
+#include "coupling/state_tolerances.hpp"
+#include "coupling/turning_back.hpp"
+#include "coupling/voltage_control_fixed_point.hpp"
+#include "solvers/ida_integrator.hpp"
+#include "solvers/klu_factorization.hpp"
+
+namespace rfmems {
+
+namespace {
+
+// The state after an accepted step (or at rest).
+struct StepRecord {
+  Real t, control, velocity, min_gap, electrostatic_force, gas_force;
+};
+
+// The history at voltage from the records: every record (output_interval <= 0), or samples at
+// output_interval before the final time, cubic Hermite in the control's deflection and velocity
+// and linear in the other columns; the last record closes it either way.
+std::vector<DynamicSample> history_of(const std::vector<StepRecord>& records, Real voltage,
+                                      Real output_interval) {
+  std::vector<DynamicSample> history;
+  auto sample = [&](const StepRecord& r) {
+    DynamicSample s{r.t, r.control, r.min_gap, r.electrostatic_force, r.gas_force};
+    s.voltage = voltage;
+    return s;
+  };
+  if (output_interval <= 0) {
+    for (const StepRecord& r : records) history.push_back(sample(r));
+    return history;
+  }
+  const Real final_time = records.back().t;
+  std::size_t j = 0;
+  for (Real t = 0; t < final_time; t += output_interval) {
+    while (j + 2 < records.size() && records[j + 1].t < t) ++j;
+    const StepRecord& a = records[j];
+    const StepRecord& b = records[std::min(j + 1, records.size() - 1)];
+    const Real h = b.t - a.t;
+    const Real s = h > 0 ? std::clamp((t - a.t) / h, 0.0, 1.0) : 0.0;
+    const Real h00 = 2 * s * s * s - 3 * s * s + 1, h10 = s * s * s - 2 * s * s + s;
+    const Real h01 = -2 * s * s * s + 3 * s * s, h11 = s * s * s - s * s;
+    history.push_back(
+        sample({t, h00 * a.control + h10 * h * a.velocity + h01 * b.control + h11 * h * b.velocity,
+                0, (1 - s) * a.min_gap + s * b.min_gap,
+                (1 - s) * a.electrostatic_force + s * b.electrostatic_force,
+                (1 - s) * a.gas_force + s * b.gas_force}));
+  }
+  history.push_back(sample(records.back()));
+  return history;
+}
+
+// The stiffness of the linear beam at rest, factorised.
+KluFactorization factorised_stiffness(ElasticityOperator& beam) {
+  std::vector<Real> values(beam.stiffness_pattern().nnz()), rest(beam.size(), 0.0);
+  beam.stiffness(0.0, rest, values);
+  return KluFactorization(beam.stiffness_pattern(), values);
+}
+
+}  // namespace
+
+Json CoupledRunTimes::json() const {
+  return {{"structure_s", structure},
+          {"gas_s", gas},
+          {"structure_steps", structure_steps},
+          {"gas_steps", gas_steps},
+          {"coupling_iterations", coupling_iterations},
+          {"max_coupling_iterations", max_coupling_iterations},
+          {"unconverged_coupling_steps", unconverged_steps},
+          {"max_coupling_residual", max_coupling_residual}};
+}
+
+FieldCoupledBeam::FieldCoupledBeam(ElasticityOperator& beam, GapField& field,
+                                   LinearFunctional control)
+    : beam_(beam), field_(field), control_(std::move(control)) {
+  if (!control_.within(beam.size()))
+    throw InputError(field.name() +
+                     " field: the control is not a functional of the beam's unknowns");
+}
+
+BeamEquilibrium FieldCoupledBeam::solve_static(Real voltage) {
+  const GapFieldTraits traits = field_.traits();
+  KluFactorization stiffness = factorised_stiffness(beam_);
+  BeamEquilibrium out;
+  auto load = [&](std::span<const Real> u) {
+    BeamLoad l = field_.load(u, voltage);
+    out.force_y = l.force_y;
+    return std::move(l.force);
+  };
+  VoltageControlResult r = relax_voltage_control(stiffness, load, beam_.size(), control_,
+                                                 traits.static_tolerance, traits.max_iterations);
+  if (!r.converged)
+    throw SolverError(
+        fmt::format("{} field: static solve at {:g} V not converged in {} iterations (above the "
+                    "quasi-static pull-in?)",
+                    field_.name(), voltage, traits.max_iterations));
+  out.iterations = r.iterations;
+  out.control = control_(r.u);
+  out.u = std::move(r.u);
+  return out;
+}
+
+QuasiStaticPullIn FieldCoupledBeam::trace_quasi_static(const QuasiStaticOptions& options) {
+  const GapFieldTraits traits = field_.traits();
+  KluFactorization stiffness = factorised_stiffness(beam_);
+  long solves = 0;
+  auto solve = [&](Real delta, const FoldSample& from) {
+    FoldSample s{{}, from.state};
+    if (from.point.displacement != 0)
+      for (Real& v : s.state) v *= delta / from.point.displacement;
+    std::vector<Real>& u = s.state;
+    const auto load_per_volt2 = [&](std::span<const Real> state) {
+      ++solves;
+      return field_.load(state, 1.0).force;
+    };
+    const DisplacementControlResult r =
+        relax_displacement_control(stiffness, load_per_volt2, control_, delta,
+                                   traits.quasi_static_tolerance, traits.max_iterations, u);
+    if (!r.converged || r.voltage_squared < 0)
+      throw SolverError(fmt::format("{} field: quasi-static coupling failed at delta = {:.4e} m",
+                                    field_.name(), delta));
+    s.point = {delta, std::sqrt(r.voltage_squared), field_.min_gap(u), true, r.iterations + 1};
+    return s;
+  };
+  const Real gap = field_.rest_gap();
+  FoldSample rest{{0.0, 0.0, gap, true, 0}, std::vector<Real>(beam_.size(), 0.0)};
+  QuasiStaticPullIn out = trace_fold(solve, rest, gap, options);
+  out.solves = solves;
+  return out;
+}
+
+DynamicRun FieldCoupledBeam::run(Real voltage, const DynamicOptions& options,
+                                 ImmersedGasModel* gas) {
+  const CouplingScheme scheme = options.coupling.scheme;
+  if (scheme == CouplingScheme::Monolithic)
+    throw InputError(field_.name() +
+                     " field: it gives no exact Jacobian blocks; use staggered, implicit or "
+                     "strongly_coupled");
+  const bool strong = scheme == CouplingScheme::StronglyCoupled;
+  if (options.coupling.strong_gas && !strong)
+    throw InputError(field_.name() + " field: strong_gas needs the strongly_coupled scheme");
+  const bool gas_inside = strong && options.coupling.strong_gas && gas;
+  if (gas_inside && options.coupling.gas_every != 1)
+    throw InputError(field_.name() +
+                     " field: strong_gas advances the gas over every step (gas_every 1)");
+  const GapFieldTraits traits = field_.traits();
+  const Index n = beam_.size();
+  // The field's load at u; a mesh that cannot follow a Newton trial state is recoverable (IDA
+  // retries with a smaller step).
+  auto field_load = [&](std::span<const Real> u) {
+    try {
+      return field_.load(u, voltage);
+    } catch (const MeshError& e) {
+      throw RecoverableError(e.what());
+    }
+  };
+
+  GapScaledLaggedLoad structure =
+      traits.closed_fraction > 0
+          ? GapScaledLaggedLoad(beam_, field_.rest_gap(), traits.closed_fraction)
+          : GapScaledLaggedLoad(beam_, field_.rest_gap());
+  ReducedInertiaSystem system(structure, {});  // every component inertial
+  std::vector<Real> y(system.size(), 0.0);
+  BeamLoad load = field_load(std::span<const Real>(y.data(), n));
+  structure.set_reference(load.force, std::span<const Real>(y.data(), n));
+  if (scheme == CouplingScheme::Implicit)
+    structure.set_exact([&](std::span<const Real> u) { return field_load(u).force; });
+  Real gas_force = 0;
+  if (gas) {
+    ScopedCpuTimer t{times_.gas};
+    field_.reset_gas(*gas, 0.0);
+  }
+  std::vector<Real> yp = system.consistent_derivative(0.0, y);
+
+  StateTolerances tolerances = options.tolerances;
+  if (!tolerances.enabled() && traits.velocity_rate > 0)
+    tolerances = {options.ida.atol, traits.velocity_rate};
+  IdaOptions ida_options = options.ida;
+  if (tolerances.enabled())
+    ida_options.atols =
+        absolute_tolerances(reduced_inertia_state_kinds(system, n), tolerances, options.ida.atol);
+  IdaIntegrator ida(system, ida_options);
+  ida.initialize(0.0, y, yp);
+
+  // Roots: g0 = min_gap - contact_gap (touch-down), g1, g2 the turning-back rule's on the
+  // control's deflection and velocity (the same weights on the velocity unknowns).
+  const LinearFunctional velocity =
+      control_.mapped([&system](Index i) { return system.velocity_index(i); });
+  TurningBack turning(options.turning_retreat, traits.turning_after);
+  EarlyEnds ends = early_ends(options);
+  ida.set_roots(1 + TurningBack::kRoots,
+                [&](Real, std::span<const Real> yy, std::span<const Real>, std::span<Real> g) {
+                  g[0] = field_.min_gap(yy.subspan(0, n)) - options.contact_gap;
+                  turning.roots(control_(yy), velocity(yy), g.subspan(1));
+                });
+
+  std::vector<StepRecord> records{{0.0, 0.0, 0.0, field_.rest_gap(), load.force_y, 0.0}};
+  DynamicRun out;
+  Real t_gas = 0;  // the gas's time: it advances every gas_every accepted steps
+  int since_gas = 0;
+  std::vector<Real> held(n, 0.0);  // the gas load in the structure's residual
+  // The gas over [t_gas, t_end] with the beam at state's displacement and velocity.
+  auto advance_gas = [&](std::span<const Real> state, Real t_end) {
+    ScopedCpuTimer timer{times_.gas};
+    std::vector<Real> v(n);
+    for (Index i = 0; i < n; ++i) v[i] = state[system.velocity_index(i)];
+    BeamLoad f = field_.gas_load(*gas, state.subspan(0, n), v, t_gas, t_end - t_gas);
+    ++times_.gas_steps;
+    gas_force = f.force_y;
+    return std::move(f.force);
+  };
+  // One structural step; its CPU without the field's share (the implicit scheme's loads).
+  auto structure_step = [&]() {
+    const double cpu0 = process_cpu_seconds(), field0 = field_.seconds();
+    const IdaIntegrator::Status status = ida.step(options.end_time);
+    times_.structure += std::max(0.0, process_cpu_seconds() - cpu0 - (field_.seconds() - field0));
+    return status;
+  };
+  // Strong coupling per step (block Gauss-Seidel with Aitken relaxation): the step is redone
+  // from IDA's checkpoint with the interface load G_k, applied as G_k (g_k / g(u))^2 with g_k
+  // the gap of iterate k's end state (k = 0 is the staggered step: G_0 = F(u_n) at g_n), until
+  // the field's load F(u_k) at the step's end state (IDA's t_n, also after a root return)
+  // matches the load A_k applied there: |r_k| <= tol |F(u_k)|, r_k = F(u_k) - A_k; then
+  // G_{k+1} = A_k + omega_k r_k, omega_0 = 1 and Aitken's factor after. With strong_gas every
+  // iterate also redoes the gas's step from the gas's checkpoint with u_k and its velocity, and
+  // the interface load is the sum: F = F_e(u_k) + F_g(u_k), A_k = A_e,k + H_k (H_k the gas
+  // load held over iterate k, H_0 the last step's gas force), one Aitken factor on the summed
+  // residual, each part relaxed by it (G_e = A_e + omega r_e, H = H_k + omega r_g).
+  auto strong_step = [&]() {
+    ida.save_checkpoint();
+    if (gas_inside) {
+      ScopedCpuTimer t{times_.gas};
+      gas->save_checkpoint();
+    }
+    std::vector<Real> residual_prev;
+    Real omega = 1;
+    for (int k = 0;; ++k) {
+      const IdaIntegrator::Status status = structure_step();
+      const std::span<const Real> y_end = ida.internal_y();
+      const std::span<const Real> u_end = y_end.subspan(0, n);
+      const std::vector<Real> applied = structure.applied(u_end);
+      load = field_load(u_end);
+      // After a root return IDA's next call may end at the same t_n: the gas is there already.
+      const Real t_end = ida.internal_time();
+      const bool gas_steps = gas_inside && t_end > t_gas;
+      std::vector<Real> gas_load = held;
+      if (gas_steps) {
+        if (k > 0) {
+          ScopedCpuTimer t{times_.gas};
+          gas->restore_checkpoint();
+        }
+        gas_load = advance_gas(y_end, t_end);
+        if (k == 0) gas->hold_marking(true);  // the later iterates on iterate 0's marking
+      }
+      ++times_.coupling_iterations;
+      std::vector<Real> residual(n);
+      Real r2 = 0, f2 = 0;
+      for (Index i = 0; i < n; ++i) {
+        const Real total = load.force[i] + (gas_inside ? gas_load[i] : 0);
+        residual[i] = total - applied[i] - (gas_inside ? held[i] : 0);
+        r2 += residual[i] * residual[i];
+        f2 += total * total;
+      }
+      const bool converged = r2 <= options.coupling.tolerance * options.coupling.tolerance * f2;
+      if (converged || k + 1 >= options.coupling.max_iterations) {
+        times_.unconverged_steps += !converged;
+        times_.max_coupling_iterations = std::max(times_.max_coupling_iterations, k + 1);
+        if (f2 > 0)
+          times_.max_coupling_residual = std::max(times_.max_coupling_residual, std::sqrt(r2 / f2));
+        structure.set_reference(load.force, u_end);  // the next step's k = 0
+        if (gas_inside) gas->hold_marking(false);
+        if (gas_steps) {
+          held = std::move(gas_load);
+          structure.set_held(held);
+          t_gas = t_end;
+        }
+        return status;
+      }
+      if (k > 0) omega = std::clamp(aitken_factor(omega, residual, residual_prev), 0.01, 4.0);
+      std::vector<Real> next(n);
+      for (Index i = 0; i < n; ++i) next[i] = applied[i] + omega * (load.force[i] - applied[i]);
+      structure.set_reference(std::move(next), u_end);
+      if (gas_steps) {
+        for (Index i = 0; i < n; ++i) held[i] += omega * (gas_load[i] - held[i]);
+        structure.set_held(held);
+      }
+      residual_prev = std::move(residual);
+      ida.restore_checkpoint();
+    }
+  };
+
+  while (true) {
+    const IdaIntegrator::Status status = strong ? strong_step() : structure_step();
+    ++times_.structure_steps;
+    const Real t = ida.time();
+    const std::span<const Real> state = ida.y();
+    const std::span<const Real> u = state.subspan(0, n);
+    const Real x = control_(u);
+    out.extreme_control = std::min(out.extreme_control, x);
+    bool stop = status == IdaIntegrator::Status::Reached;
+    if (status == IdaIntegrator::Status::Root) {
+      const std::vector<int> found = ida.roots_found();
+      if (found[0] < 0) {
+        ++out.touch_downs;
+        out.pulled_in = true;
+        out.pull_in_time = t;
+        stop = true;
+      } else if (turning.at_root(t, x, found[1], found[2])) {
+        out.turning_time = turning.turning_time();
+        stop = stop || options.stop_at_turning;
+      }
+    }
+    // The coupled step's exchange: the field's load at the accepted state (strong_step left it
+    // there as the reference already), and the gas.
+    if (!strong && (!stop || !out.pulled_in)) {
+      load = field_load(u);
+      structure.set_reference(load.force, u);
+    }
+    if (gas && !gas_inside && t > t_gas && (++since_gas >= options.coupling.gas_every || stop)) {
+      since_gas = 0;
+      held = advance_gas(state, t);
+      structure.set_held(held);  // the lagged gas force
+    }
+    records.push_back({t, x, velocity(state), field_.min_gap(u), load.force_y, gas_force});
+    if (since_gas == 0 && !gas_inside) t_gas = t;
+    if (stop || ends.at_step(t, voltage, x, records.back().velocity, gas_force, load.force_y, out))
+      break;
+  }
+  out.final_time = ida.time();
+  out.final_state = {ida.time(), std::vector<Real>(ida.y().begin(), ida.y().end()),
+                     std::vector<Real>(ida.yp().begin(), ida.yp().end())};
+  out.stats = ida.stats();
+  out.history = history_of(records, voltage, options.output_interval);
+  return out;
+}
+
+}  // namespace rfmems

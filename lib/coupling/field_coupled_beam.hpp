@@ -1,0 +1,88 @@
+// A plane beam coupled to a field that gives no exact Jacobian blocks (gap_field.hpp: the
+// Laplace field in a gap mesh, the immersed-boundary field), and to the gas on its surface: its
+// equilibria and its one time loop, whichever field it is.
+//
+// Equilibria (one KLU factorisation of the linear beam's stiffness K for the whole solve):
+//   at a voltage      K u = f(u, V) by the plain fixed point (voltage_control_fixed_point.hpp);
+//   at a deflection   of the control, the Aitken-relaxed fixed point with V^2 = delta / l(z)
+//                     per iterate (displacement_control_fixed_point.hpp), traced through the
+//                     fold by trace_fold (quasi_static_pull_in.hpp).
+//
+// Time loop (run): M u'' + K u = f(u) + f_gas from rest under a step voltage V, IDA (BDF,
+// adaptive order and step) in one-step mode. Inside a step the field's load is the gap-scaled
+// lagged load (gap_scaled_lagged_load.hpp): F at the reference state times (g_ref / g)^2, so
+// that the Jacobian carries the electrostatic softening. The scheme (coupling_settings.hpp):
+//   staggered         F refreshed at every state IDA accepts (first order in the step);
+//   implicit          the field solved in every residual (the exact coupled residual, the
+//                     scaled lagged model only in the Jacobian);
+//   strongly_coupled  per step, Aitken-relaxed iterations on the interface load, the step
+//                     redone from IDA's checkpoint until |F(u_k) - A_k| <= tolerance |F(u_k)|
+//                     (Kuettler & Wall 2008): it converges to the implicit step. With
+//                     strong_gas the gas is inside every iterate too (from its own checkpoint).
+// The gas is advanced over every gas_every accepted steps (one gas step spanning them) and its
+// force held over the next structural steps (lagged), unless strong_gas.
+//
+// Events, as run_dynamic's (dynamic_pull_in.hpp): touch-down (the smallest gap reaching
+// contact_gap: the pull-in time, the run ends), turning back (turning_back.hpp), and after every
+// accepted step the settle and past-fold rules. The history is one record per accepted step,
+// or resampled at output_interval (cubic Hermite in the control's deflection and velocity).
+#pragma once
+#include <vector>
+
+#include "core/linear_functional.hpp"
+#include "coupling/dynamic_pull_in.hpp"
+#include "coupling/gap_field.hpp"
+#include "coupling/quasi_static_pull_in.hpp"
+#include "physics/elasticity/elasticity_operator.hpp"
+
+namespace rfmems {
+
+class ImmersedGasModel;
+
+// An equilibrium at a voltage.
+struct BeamEquilibrium {
+  std::vector<Real> u;
+  Real control = 0;  // the control's deflection [m]
+  Real force_y = 0;  // the field's total force along y at the last iterate [N/m]
+  int iterations = 0;
+};
+
+// What the loop did, summed over the runs since reset_times(): CPU seconds by physics (the
+// field's own in GapField::seconds), steps, and the strong coupling's iterations (one field
+// load each; the most in a step, the steps left unconverged at max_iterations and the largest
+// relative interface residual a step ended with).
+struct CoupledRunTimes {
+  double structure = 0, gas = 0;
+  long structure_steps = 0, gas_steps = 0;
+  long coupling_iterations = 0, unconverged_steps = 0;
+  int max_coupling_iterations = 0;
+  double max_coupling_residual = 0;
+  Json json() const;
+};
+
+class FieldCoupledBeam {
+ public:
+  // beam: the plane elasticity operator (with density for run); field: its load; control: the
+  // deflection reported and controlled (one unknown, or a point's u_y from its cell's
+  // reconstruction).
+  FieldCoupledBeam(ElasticityOperator& beam, GapField& field, LinearFunctional control);
+
+  BeamEquilibrium solve_static(Real voltage);
+  QuasiStaticPullIn trace_quasi_static(const QuasiStaticOptions& options);
+  // A step voltage V from rest with the run's events, IDA settings and scheme (see above);
+  // gas may be null.
+  DynamicRun run(Real voltage, const DynamicOptions& options, ImmersedGasModel* gas = nullptr);
+
+  GapField& field() { return field_; }
+  const LinearFunctional& control() const { return control_; }
+  const CoupledRunTimes& times() const { return times_; }
+  void reset_times() { times_ = {}; }
+
+ private:
+  ElasticityOperator& beam_;
+  GapField& field_;
+  LinearFunctional control_;
+  CoupledRunTimes times_;
+};
+
+}  // namespace rfmems
