@@ -28,7 +28,7 @@
 #include <vector>
 
 #include "bench_support.hpp"
-#include "coupling/immersed_switch.hpp"
+#include "ibm/immersed_boundary_field.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "parallel/communicator.hpp"
 
@@ -53,7 +53,8 @@ struct Run {
   std::vector<Real> potential;  // last load
 };
 
-Run run_loads(ImmersedSwitch& scene, const ElasticityOperator& beam, int steps, Real voltage) {
+Run run_loads(ImmersedBoundaryField& scene, const ElasticityOperator& beam, int steps,
+              Real voltage) {
   const Mesh& mesh = beam.mesh();
   std::vector<Real> u(beam.size(), 0.0);
   double cpu_first = 0;
@@ -107,12 +108,12 @@ int main(int argc, char** argv) {
   for (const std::string& c : cells) {
     int nx = 0, ny = 0;
     if (std::sscanf(c.c_str(), "%dx%d", &nx, &ny) != 2) return 2;
-    ImmersedSwitchGeometry g;
+    ImmersedBoundaryGeometry g;
     g.background_upper = Vec3(75 * um, 10 * um, 0);
     g.background_cells[0] = nx;
     g.background_cells[1] = ny;
     g.electrode_end = 45 * um;
-    ImmersedSwitch scene(beam, g, LinearFunctional::unknown(2 * 184 + 1));  // tip cell's u_y
+    ImmersedBoundaryField scene(beam, g, LinearFunctional::unknown(2 * 184 + 1));  // tip cell's u_y
     const Run klu = run_loads(scene, beam, steps, 100.0);
     Index fluid = 0;
     for (Real v : klu.potential) fluid += std::isfinite(v);

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "coupling/run_events.hpp"
 #include "coupling/step_response_fit.hpp"
 
 namespace rfmems {
@@ -65,16 +66,11 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
     if (!start) throw;
     ida.reinitialize(t0, y, yp);
   }
-  TurningBack turning(options.turning_retreat);
-  EarlyEnds ends = early_ends(options);
-  const int release_root = 1 + TurningBack::kRoots;
-  ida.set_roots(2 + TurningBack::kRoots,
+  RunEvents events(options);
+  ida.set_roots(RunEvents::kRoots,
                 [&](Real, std::span<const Real> yy, std::span<const Real> yyp, std::span<Real> g) {
-                  const Real gap = system.min_gap(yy);
-                  g[0] = gap - options.contact_gap;
-                  turning.roots(system.displacement(yy, control), system.velocity(yy, yyp, control),
-                                g.subspan(1, TurningBack::kRoots));
-                  g[release_root] = options.release_gap > 0 ? gap - options.release_gap : 1.0;
+                  events.roots(system.min_gap(yy), system.displacement(yy, control),
+                               system.velocity(yy, yyp, control), g);
                 });
 
   DynamicRun run;
@@ -92,47 +88,25 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
     // The settle and past-fold rules look at every accepted step (IDA's one-step mode: the
     // same steps).
     const Real t_out = std::min(next_output, stop_time);
-    const IdaIntegrator::Status status = ends.armed() ? ida.step(t_out) : ida.advance(t_out);
+    const IdaIntegrator::Status status =
+        events.step_rules_armed() ? ida.step(t_out) : ida.advance(t_out);
     const Real t = ida.time();
     const auto state = ida.y();
     const Real x = system.displacement(state, control);
     run.extreme_control = std::min(run.extreme_control, x);
     if (status == IdaIntegrator::Status::Stepped) {
       if (run.pulled_in) continue;
-      if (ends.at_step(t, voltage(t), x, system.velocity(state, ida.yp(), control),
-                       system.gas_force(state), system.electrostatic_force(t, state), run)) {
+      if (events.at_step(t, voltage(t), x, system.velocity(state, ida.yp(), control),
+                         system.gas_force(state), system.electrostatic_force(t, state), run)) {
         sample(t);
         break;
       }
       continue;
     }
     if (status == IdaIntegrator::Status::Root) {
-      const std::vector<int> found = ida.roots_found();
-      if (found[0] < 0) {
-        ++run.touch_downs;
-        if (!run.pulled_in) {
-          run.pulled_in = true;
-          run.pull_in_time = t;
-          if (options.stop_at_contact) {
-            sample(t);
-            break;
-          }
-          if (options.stop_after_contact >= 0)
-            stop_time = std::min(options.end_time, t + options.stop_after_contact);
-        }
-      }
-      if (found[release_root] > 0) {
+      if (events.at_root(t, x, ida.roots_found(), run, stop_time)) {
         sample(t);
-        run.released = true;
-        run.release_time = t;
         break;
-      }
-      if (turning.at_root(t, x, found[1], found[2]) && !run.pulled_in) {
-        run.turning_time = turning.turning_time();
-        if (options.stop_at_turning) {
-          sample(t);
-          break;
-        }
       }
       continue;  // resume towards the same output time
     }

@@ -1,5 +1,5 @@
 // Dynamic pull-in: the transient response of a switch to a voltage waveform, with IDA
-// (adaptive order and step) and two root functions:
+// (adaptive order and step) and the run's events (run_events.hpp):
 //
 //   contact:  min_gap(y) - contact_gap          falls through 0: touch-down, the pull-in time;
 //                                                the run ends, or (with the actuation's
@@ -145,7 +145,7 @@ struct FreeResponse {
 FreeResponse free_response(const std::vector<DynamicSample>& history);
 
 // A run's two step rules, checked after every accepted step by run_dynamic and by the
-// field-coupled runners (StepVoltageEvents) alike: settled at rest (no pull-in) and past the
+// field-coupled beam alike (run_events.hpp): settled at rest (no pull-in) and past the
 // unstable equilibrium (pulled in).
 struct EarlyEnds {
   SettledAtRest settle{0.0, 0.0};  // off

@@ -11,10 +11,10 @@
 #include "coupling/aitken_relaxation.hpp"
 #include "coupling/displacement_control_fixed_point.hpp"
 #include "coupling/gap_scaled_lagged_load.hpp"
-#include "coupling/immersed_gas.hpp"
+#include "coupling/run_events.hpp"
 #include "coupling/state_tolerances.hpp"
-#include "coupling/turning_back.hpp"
 #include "coupling/voltage_control_fixed_point.hpp"
+#include "ibm/immersed_gas.hpp"
 #include "solvers/ida_integrator.hpp"
 #include "solvers/klu_factorization.hpp"
 
@@ -148,6 +148,10 @@ DynamicRun FieldCoupledBeam::run(Real voltage, const DynamicOptions& options,
     throw InputError(field_.name() +
                      " field: it gives no exact Jacobian blocks; use staggered, implicit or "
                      "strongly_coupled");
+  if (!options.stop_at_contact)
+    throw InputError(field_.name() +
+                     " field: a run goes on past touch-down only with a contact penalty "
+                     "(parallel_plate)");
   const bool strong = scheme == CouplingScheme::StronglyCoupled;
   if (options.coupling.strong_gas && !strong)
     throw InputError(field_.name() + " field: strong_gas needs the strongly_coupled scheme");
@@ -194,16 +198,14 @@ DynamicRun FieldCoupledBeam::run(Real voltage, const DynamicOptions& options,
   IdaIntegrator ida(system, ida_options);
   ida.initialize(0.0, y, yp);
 
-  // Roots: g0 = min_gap - contact_gap (touch-down), g1, g2 the turning-back rule's on the
-  // control's deflection and velocity (the same weights on the velocity unknowns).
+  // The run's events (run_events.hpp) on the field's smallest gap and the control's deflection
+  // and velocity (the same weights on the velocity unknowns).
   const LinearFunctional velocity =
       control_.mapped([&system](Index i) { return system.velocity_index(i); });
-  TurningBack turning(options.turning_retreat, traits.turning_after);
-  EarlyEnds ends = early_ends(options);
-  ida.set_roots(1 + TurningBack::kRoots,
+  RunEvents events(options, traits.turning_after);
+  ida.set_roots(RunEvents::kRoots,
                 [&](Real, std::span<const Real> yy, std::span<const Real>, std::span<Real> g) {
-                  g[0] = field_.min_gap(yy.subspan(0, n)) - options.contact_gap;
-                  turning.roots(control_(yy), velocity(yy), g.subspan(1));
+                  events.roots(field_.min_gap(yy.subspan(0, n)), control_(yy), velocity(yy), g);
                 });
 
   std::vector<StepRecord> records{{0.0, 0.0, 0.0, field_.rest_gap(), load.force_y, 0.0}};
@@ -309,19 +311,10 @@ DynamicRun FieldCoupledBeam::run(Real voltage, const DynamicOptions& options,
     const std::span<const Real> u = state.subspan(0, n);
     const Real x = control_(u);
     out.extreme_control = std::min(out.extreme_control, x);
-    bool stop = status == IdaIntegrator::Status::Reached;
-    if (status == IdaIntegrator::Status::Root) {
-      const std::vector<int> found = ida.roots_found();
-      if (found[0] < 0) {
-        ++out.touch_downs;
-        out.pulled_in = true;
-        out.pull_in_time = t;
-        stop = true;
-      } else if (turning.at_root(t, x, found[1], found[2])) {
-        out.turning_time = turning.turning_time();
-        stop = stop || options.stop_at_turning;
-      }
-    }
+    Real stop_time = options.end_time;
+    const bool stop = status == IdaIntegrator::Status::Reached ||
+                      (status == IdaIntegrator::Status::Root &&
+                       events.at_root(t, x, ida.roots_found(), out, stop_time));
     // The coupled step's exchange: the field's load at the accepted state (strong_step left it
     // there as the reference already), and the gas.
     if (!strong && (!stop || !out.pulled_in)) {
@@ -335,7 +328,8 @@ DynamicRun FieldCoupledBeam::run(Real voltage, const DynamicOptions& options,
     }
     records.push_back({t, x, velocity(state), field_.min_gap(u), load.force_y, gas_force});
     if (since_gas == 0 && !gas_inside) t_gas = t;
-    if (stop || ends.at_step(t, voltage, x, records.back().velocity, gas_force, load.force_y, out))
+    if (stop ||
+        events.at_step(t, voltage, x, records.back().velocity, gas_force, load.force_y, out))
       break;
   }
   out.final_time = ida.time();

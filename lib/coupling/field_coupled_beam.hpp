@@ -1,6 +1,7 @@
-// A plane beam coupled to a field that gives no exact Jacobian blocks (gap_field.hpp: the
-// Laplace field in a gap mesh, the immersed-boundary field), and to the gas on its surface: its
-// equilibria and its one time loop, whichever field it is.
+// A plane beam coupled to a field that gives no exact Jacobian blocks
+// (physics/electrostatics/gap_field.hpp: the Laplace field in a gap mesh, the immersed-boundary
+// field), and to the gas on its surface: its equilibria and its one time loop, whichever field it
+// is.
 //
 // Equilibria (one KLU factorisation of the linear beam's stiffness K for the whole solve):
 //   at a voltage      K u = f(u, V) by the plain fixed point (voltage_control_fixed_point.hpp);
@@ -22,18 +23,18 @@
 // The gas is advanced over every gas_every accepted steps (one gas step spanning them) and its
 // force held over the next structural steps (lagged), unless strong_gas.
 //
-// Events, as run_dynamic's (dynamic_pull_in.hpp): touch-down (the smallest gap reaching
-// contact_gap: the pull-in time, the run ends), turning back (turning_back.hpp), and after every
-// accepted step the settle and past-fold rules. The history is one record per accepted step,
+// Events, run_dynamic's (run_events.hpp): touch-down (the smallest gap reaching contact_gap: the
+// pull-in time, the run ends), turning back, lift-off, and after every accepted step the settle
+// and past-fold rules. The history is one record per accepted step,
 // or resampled at output_interval (cubic Hermite in the control's deflection and velocity).
 #pragma once
 #include <vector>
 
 #include "core/linear_functional.hpp"
 #include "coupling/dynamic_pull_in.hpp"
-#include "coupling/gap_field.hpp"
 #include "coupling/quasi_static_pull_in.hpp"
 #include "physics/elasticity/elasticity_operator.hpp"
+#include "physics/electrostatics/gap_field.hpp"
 
 namespace rfmems {
 

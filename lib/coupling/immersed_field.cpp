@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "coupling/immersed_reynolds_film.hpp"
+#include "ibm/immersed_reynolds_film.hpp"
 #include "io/input_solve.hpp"
 #include "io/probes.hpp"
 #include "physics/electrostatics/parallel_plate_field.hpp"
@@ -25,7 +25,7 @@ ImmersedGasSettings read_immersed_gas(const CaseNode& root, GasModel model) {
   // Keys are read (and checked) even for none, so a case toggled by --set stays valid.
   const AmbientGas ambient = read_ambient_gas(gas, model != GasModel::None);
   s.film = ambient.film;
-  // esbgk: the kinetic gas on the background (immersed_esbgk_gas.hpp), mu(T) from (T0, mu0).
+  // esbgk: the kinetic gas on the background (ibm/immersed_esbgk_gas.hpp), mu(T) from (T0, mu0).
   ImmersedEsbgkSettings& e = s.kinetic;
   e.gas.R = 287.05;
   e.gas.mu_ref = ambient.film.viscosity;
@@ -100,7 +100,7 @@ std::unique_ptr<ImmersedField> read_immersed_field(const CaseNode& root, Elastic
               "the immersed field's gap is the beam's height above the background's bottom");
   const CaseNode im = act.child("immersed");
   const CaseNode bg = im.child("background");
-  ImmersedSwitchGeometry& g = f->geometry;
+  ImmersedBoundaryGeometry& g = f->geometry;
   g.background_lower = bg.get_vec3_quantity("lower", Dimension::Length);
   g.background_upper = bg.get_vec3_quantity("upper", Dimension::Length);
   bg.require(g.background_upper.x() > g.background_lower.x() &&
@@ -136,7 +136,7 @@ std::unique_ptr<ImmersedField> read_immersed_field(const CaseNode& root, Elastic
   // The reported deflection is u_y at the control point itself (the tip), from its cell's
   // reconstruction, not at the cell's centroid half a cell short of it.
   const auto [control_point, control_cell] = finder.find(act, "control", "the control point");
-  f->sw = std::make_unique<ImmersedSwitch>(
+  f->sw = std::make_unique<ImmersedBoundaryField>(
       *beam.op, g, beam.op->displacement_functional(control_cell, control_point, 1));
   if (im.get_bool("electrostatics_distributed", false))
     f->sw->distribute_electrostatics(Communicator::world());

@@ -1,6 +1,6 @@
 // The immersed-boundary field of a switch (actuation.electrostatics: immersed, switch_scene.hpp):
 // a plane beam on its own mesh moving through a fixed Cartesian background that carries the
-// potential and the gas (immersed_switch.hpp), as the case describes it:
+// potential and the gas (ibm/immersed_boundary_field.hpp), as the case describes it:
 //
 //   actuation:
 //     electrostatics: immersed
@@ -21,7 +21,7 @@
 //     model: reynolds                 # 1D film under the beam, open at the tip
 //     pressure: 1.36e4 Pa             # and temperature, viscosity, omega, mean_free_path,
 //                                     # rarefaction: physics/gas/ambient_gas.hpp
-//     # esbgk (immersed_esbgk_gas.hpp): the kinetic gas on the background; electrode,
+//     # esbgk (ibm/immersed_esbgk_gas.hpp): the kinetic gas on the background; electrode,
 //     # substrate and left diffuse at T, top and right pressure (p, T)
 //     collision: esbgk                # esbgk (default) | bgk
 //     velocities: 10                  # per direction (n^3 grid), extent velocity_extent
@@ -39,9 +39,9 @@
 #include <memory>
 #include <string>
 
-#include "coupling/immersed_esbgk_gas.hpp"
-#include "coupling/immersed_switch.hpp"
 #include "coupling/scene_combinations.hpp"
+#include "ibm/immersed_boundary_field.hpp"
+#include "ibm/immersed_esbgk_gas.hpp"
 #include "io/case_file.hpp"
 #include "materials/gas_properties.hpp"
 #include "physics/elasticity/elasticity_scene.hpp"
@@ -56,8 +56,8 @@ struct ImmersedGasSettings {
 };
 
 struct ImmersedField {
-  ImmersedSwitchGeometry geometry;
-  std::unique_ptr<ImmersedSwitch> sw;
+  ImmersedBoundaryGeometry geometry;
+  std::unique_ptr<ImmersedBoundaryField> sw;
   ImmersedGasSettings gas;
   // A fresh gas of the case around the beam at rest (each run starts the gas at rest); null
   // for none.

@@ -192,7 +192,7 @@ void check_immersed_field(const SwitchScene &scene, const PullInReport &report, 
         "Reynolds film followed to a gap below half the rest gap (large displacement: the 1D "
         "film takes h from the deformed beam, no edge correction at the tip)");
   if (scene.gas() == GasModel::Esbgk) {
-    const ImmersedSwitchGeometry &g = f.geometry;
+    const ImmersedBoundaryGeometry &g = f.geometry;
     const Real hx = (g.background_upper.x() - g.background_lower.x()) / g.background_cells[0];
     check_cell_size_against_mean_free_path(std::min(hx, cell), f.gas.film.mean_free_path,
                                            f.gas.film.mean_free_path,

@@ -51,9 +51,9 @@
 #include <vector>
 
 #include "coupling/immersed_field.hpp"
-#include "coupling/laplace_gap_field.hpp"
 #include "coupling/scene_combinations.hpp"
 #include "io/case_file.hpp"
+#include "physics/electrostatics/laplace_gap_field.hpp"
 #include "physics/electrostatics/parallel_plate_field.hpp"
 #include "physics/gas/reynolds_film.hpp"
 #include "physics/structure/structural_model.hpp"

@@ -37,7 +37,7 @@
 #include <cstdio>
 
 #include "../support/cantilever_switch_scene.hpp"
-#include "coupling/immersed_esbgk_gas.hpp"
+#include "ibm/immersed_esbgk_gas.hpp"
 #include "ibm/immersed_kinetic_gas.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "parallel/communicator.hpp"

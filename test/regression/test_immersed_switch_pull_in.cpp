@@ -13,7 +13,7 @@
 #include <memory>
 
 #include "../support/cantilever_switch_scene.hpp"
-#include "coupling/immersed_switch.hpp"
+#include "ibm/immersed_boundary_field.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/electrostatics/permittivity.hpp"
 
@@ -35,7 +35,7 @@ Real distributed_pull_in() {
 // dynamic/static ratio of a parallel-plate actuator, 0.92 lumped, 0.91 thesis); the coarse
 // beam is stiffer by a few per cent, so +-8 %. Measured: 124.5 V with [112, 132] V to 2.5 V (5
 // runs, 47-129 s at load 7-8); here [116, 128] V to 3 V, 4 runs.
-TEST(ImmersedSwitch, CoarseBisectionWithinTheClosedFormBracket) {
+TEST(ImmersedBoundaryField, CoarseBisectionWithinTheClosedFormBracket) {
   Cantilever c(46, 4, 101, 31);
   const DynamicOptions o = run_options(4e-6, 5e-5);
   const Real expected = 0.91 * distributed_pull_in();

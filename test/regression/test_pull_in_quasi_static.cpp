@@ -18,10 +18,10 @@
 
 #include "coupling/dynamic_pull_in.hpp"
 #include "coupling/field_coupled_beam.hpp"
-#include "coupling/laplace_gap_field.hpp"
 #include "coupling/quasi_static_pull_in.hpp"
 #include "io/case_file.hpp"
 #include "physics/elasticity/elasticity_scene.hpp"
+#include "physics/electrostatics/laplace_gap_field.hpp"
 #include "physics/electrostatics/parallel_plate_actuation.hpp"
 #include "physics/plate/plate_scene.hpp"
 

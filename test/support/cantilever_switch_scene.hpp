@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "coupling/field_coupled_beam.hpp"
-#include "coupling/immersed_switch.hpp"
+#include "ibm/immersed_boundary_field.hpp"
 #include "mesh/structured_mesh.hpp"
 
 namespace rfmems::test {
@@ -18,8 +18,8 @@ constexpr Real kGap = 1.5 * um, kLength = 45 * um, kThickness = 1.5 * um;
 struct Cantilever {
   std::unique_ptr<Mesh> mesh;
   std::unique_ptr<ElasticityOperator> op;
-  std::unique_ptr<ImmersedSwitch> scene;      // the field
-  std::unique_ptr<FieldCoupledBeam> coupled;  // the beam coupled to it
+  std::unique_ptr<ImmersedBoundaryField> scene;  // the field
+  std::unique_ptr<FieldCoupledBeam> coupled;     // the beam coupled to it
   Cantilever(int bx, int by, int gx, int gy, Real electrode_end = kLength) {
     BoxSpec spec;
     spec.lower = Vec3(0, kGap, 0);
@@ -31,14 +31,14 @@ struct Cantilever {
     std::vector<ElasticityBoundary> bcs(mesh->patches().size());
     bcs[mesh->find_patch("left")].kind = ElasticityBoundary::Kind::Fixed;
     op = std::make_unique<ElasticityOperator>(*mesh, steel, bcs);
-    ImmersedSwitchGeometry g;
+    ImmersedBoundaryGeometry g;
     g.background_upper = Vec3(75 * um, 10 * um, 0);
     g.background_cells[0] = gx;
     g.background_cells[1] = gy;
     g.electrode_begin = 0;
     g.electrode_end = electrode_end;
     // The control: u_y at the tip's bottom corner, from the tip cell of the bottom row.
-    scene = std::make_unique<ImmersedSwitch>(
+    scene = std::make_unique<ImmersedBoundaryField>(
         *op, g, op->displacement_functional(bx - 1, Vec3(kLength, kGap, 0), 1));
     coupled = std::make_unique<FieldCoupledBeam>(*op, *scene, scene->control());
   }

@@ -1,5 +1,5 @@
 // The ESBGK gas in the coupled immersed switch: the ImmersedGasModel adapter
-// (immersed_esbgk_gas.hpp) on a coarse scene (76 x 26 background, 45 x 3 beam, 6^3 velocities),
+// (ibm/immersed_esbgk_gas.hpp) on a coarse scene (76 x 26 background, 45 x 3 beam, 6^3 velocities),
 // against the gas alone (ImmersedKineticGas driven directly) and the gas at rest.
 #include <gtest/gtest.h>
 
@@ -7,8 +7,8 @@
 #include <memory>
 
 #include "../../support/cantilever_switch_scene.hpp"
-#include "coupling/immersed_esbgk_gas.hpp"
-#include "coupling/immersed_switch.hpp"
+#include "ibm/immersed_boundary_field.hpp"
+#include "ibm/immersed_esbgk_gas.hpp"
 #include "mesh/structured_mesh.hpp"
 
 namespace rfmems {

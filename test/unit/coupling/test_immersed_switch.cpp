@@ -13,8 +13,8 @@
 #include <memory>
 
 #include "../../support/cantilever_switch_scene.hpp"
-#include "coupling/immersed_reynolds_film.hpp"
-#include "coupling/immersed_switch.hpp"
+#include "ibm/immersed_boundary_field.hpp"
+#include "ibm/immersed_reynolds_film.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/electrostatics/permittivity.hpp"
 
@@ -31,7 +31,7 @@ using namespace rfmems::test;
 // the correction must come out between 0.5 and 2 times the estimate. With the electrode ending
 // under the tip (the case's extent) the fringe has no electrode to end on: the force stays
 // within one edge correction of the parallel plate.
-TEST(ImmersedSwitch, ForceAtRestIsParallelPlatePlusEdgeCorrection) {
+TEST(ImmersedBoundaryField, ForceAtRestIsParallelPlatePlusEdgeCorrection) {
   const Real v = 100;
   const Real plate = kVacuumPermittivity * v * v * kLength / (2 * kGap * kGap);
   const Real edge = kGap / (M_PI * kLength);
@@ -57,7 +57,7 @@ TEST(ImmersedSwitch, ForceAtRestIsParallelPlatePlusEdgeCorrection) {
 // 3 % of 2. The staggered scheme (IBM load refreshed after each IDA step, gap-scaled inside
 // it) against the implicit one (IBM load in every residual): measured 1e-6 apart (atol 3e-6 g),
 // held 1e-3.
-TEST(ImmersedSwitch, SmallStepSwingsToTwiceTheStaticDeflection) {
+TEST(ImmersedBoundaryField, SmallStepSwingsToTwiceTheStaticDeflection) {
   Cantilever c(46, 4, 101, 31);
   const BeamEquilibrium st = c.coupled->solve_static(30.0);
   ASSERT_LT(st.control, 0);
@@ -82,7 +82,7 @@ TEST(ImmersedSwitch, SmallStepSwingsToTwiceTheStaticDeflection) {
 // facing cells' centroids, half a cell inside, sit higher: at the 50 V static state on 46 x 4
 // by about (4/3)(hx/2)/L = 1.4 % of the tip deflection (w'(L) L / w(L) = 4/3 under a uniform
 // load).
-TEST(ImmersedSwitch, ContactGapIsTheMovedSurfacesLowestFacingVertex) {
+TEST(ImmersedBoundaryField, ContactGapIsTheMovedSurfacesLowestFacingVertex) {
   Cantilever c(46, 4, 101, 31);
   const BeamEquilibrium st = c.coupled->solve_static(50.0);
   ASSERT_LT(st.control, 0);
@@ -112,7 +112,7 @@ TEST(ImmersedSwitch, ContactGapIsTheMovedSurfacesLowestFacingVertex) {
 // tolerance 1e-8, IDA at atol 1e-6 g so that the step's own error is below the coupling's
 // differences) and be closer to it than the staggered scheme's at the same tolerances. The
 // cost, IBM evaluations per step, is recorded (staggered: 1, implicit: one per residual).
-TEST(ImmersedSwitch, StrongCouplingConvergesToTheImplicitStep) {
+TEST(ImmersedBoundaryField, StrongCouplingConvergesToTheImplicitStep) {
   Cantilever c(46, 4, 101, 31);
   DynamicOptions o = run_options(1.2e-6, 1e-6);
   auto run = [&](CouplingScheme scheme) {
@@ -150,7 +150,7 @@ TEST(ImmersedSwitch, StrongCouplingConvergesToTheImplicitStep) {
 // step spanning the k steps. The gas's intervals must tile [0, t_end] without gap or overlap
 // (the gas's own time is the structure's), there must be ceil(steps / k) of them, and each
 // carries the surface of its end state. A recording gas (constant force) checks it.
-TEST(ImmersedSwitch, GasEveryKStepsTilesTheRun) {
+TEST(ImmersedBoundaryField, GasEveryKStepsTilesTheRun) {
   struct RecordingGas : ImmersedGasModel {
     std::vector<std::pair<Real, Real>> intervals;
     std::string name() const override { return "recording"; }
@@ -193,7 +193,7 @@ TEST(ImmersedSwitch, GasEveryKStepsTilesTheRun) {
 // (measured 3.1e-4 against 1.7e-3). The references' own spread (1 against 0.5 ns: 3.6e-4,
 // the IB marking's, docs/immersed_switch.md, "The ESBGK gas in the coupled switch") bounds what can
 // be asserted. ~5 s CPU.
-TEST(ImmersedSwitch, StrongCouplingWithTheFilmRemovesTheLaggedFilmForceError) {
+TEST(ImmersedBoundaryField, StrongCouplingWithTheFilmRemovesTheLaggedFilmForceError) {
   Cantilever c(46, 4, 101, 31);
   GasProperties air;
   air.ambient_pressure = air.reference_pressure = 1.36e4;
@@ -250,7 +250,7 @@ TEST(ImmersedSwitch, StrongCouplingWithTheFilmRemovesTheLaggedFilmForceError) {
 // anchor x = 0, ambient at the tip x = L), force 4 mu_eff |w| L^3 / h^3 (opening). Second-order
 // FV on 90 cells: within 0.5 %; with Veijola's mu_eff = mu / (1 + 9.638 Kn^1.159). The film is
 // the plate's (physics/gas/reynolds_film.hpp) on a strip of one cell per segment.
-TEST(ImmersedSwitch, ReynoldsFilmReachesTheIncompressibleSqueezeForce) {
+TEST(ImmersedBoundaryField, ReynoldsFilmReachesTheIncompressibleSqueezeForce) {
   const int n = 90;
   std::vector<Vec3> vertices;
   for (int i = 0; i <= n; ++i) vertices.emplace_back(kLength * i / n, kGap, 0);

@@ -18,7 +18,7 @@ namespace {
 using namespace rfmems::test;
 
 // dF_y,c / du_y,d by central differences at rest, 125 V (the trajectory's load).
-Real load_slope(ImmersedSwitch& scene, std::size_t n, Index c, Index d, Real delta) {
+Real load_slope(ImmersedBoundaryField& scene, std::size_t n, Index c, Index d, Real delta) {
   std::vector<Real> u(n, 0.0);
   u[2 * d + 1] = delta;
   const Real up = scene.electrostatic_load(u, 125.0).force[2 * c + 1];

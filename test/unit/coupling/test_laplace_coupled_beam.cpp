@@ -1,4 +1,5 @@
-// The plane beam coupled to the Laplace field (field_coupled_beam.hpp, laplace_gap_field.hpp):
+// The plane beam coupled to the Laplace field (coupling/field_coupled_beam.hpp,
+// physics/electrostatics/laplace_gap_field.hpp):
 // the fixed-fixed beam of cases/switch_plane_laplace on a coarse mesh, against its own implicit
 // coupling, the static Laplace deflection and the thesis's dynamic/static pull-in ratio.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "coupling/immersed_reynolds_film.hpp"
+#include "ibm/immersed_reynolds_film.hpp"
 
 #include <fmt/format.h>
 

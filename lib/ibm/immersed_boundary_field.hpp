@@ -15,11 +15,11 @@
 //   transfer ForceTransfer::to_surface, then each segment's force to the structure cell that
 //           owns its face (total force and moment conserved to round-off)
 //
-// The coupled beam (field_coupled_beam.hpp) solves its equilibria and its runs with this load
-// (gap_field.hpp): the IBM load is solved at every field evaluation, so its equilibria are
-// fixed points to the tolerance the background resolves (its load jumps as slivers are cut),
-// the lagged load's trial gap stays above 2 % of g0, the velocities' tolerance is the
-// displacements' times 2 pi / first_bending_period(), and the turning root is armed after a
+// The coupled beam (coupling/field_coupled_beam.hpp) solves its equilibria and its runs with this
+// load (physics/electrostatics/gap_field.hpp): the IBM load is solved at every field evaluation, so
+// its equilibria are fixed points to the tolerance the background resolves (its load jumps as
+// slivers are cut), the lagged load's trial gap stays above 2 % of g0, the velocities' tolerance is
+// the displacements' times 2 pi / first_bending_period(), and the turning root is armed after a
 // quarter of that period. The gas (immersed_gas.hpp) lives on the background around the moved
 // surface, its force per segment transferred to the structure cells.
 #pragma once
@@ -28,17 +28,17 @@
 #include <string>
 #include <vector>
 
-#include "coupling/gap_field.hpp"
-#include "coupling/immersed_gas.hpp"
 #include "ibm/cell_marking.hpp"
 #include "ibm/ib_interpolation.hpp"
 #include "ibm/immersed_electrostatics.hpp"
+#include "ibm/immersed_gas.hpp"
 #include "ibm/immersed_surface.hpp"
 #include "physics/elasticity/elasticity_operator.hpp"
+#include "physics/electrostatics/gap_field.hpp"
 
 namespace rfmems {
 
-struct ImmersedSwitchGeometry {
+struct ImmersedBoundaryGeometry {
   Vec3 background_lower = Vec3::Zero();
   Vec3 background_upper = Vec3::Zero();
   int background_cells[2] = {150, 50};
@@ -50,7 +50,7 @@ struct ImmersedSwitchGeometry {
 
 // The background: background_cells Cartesian cells; patches electrode (bottom faces whose
 // centre lies in the electrode's extent), substrate (the rest of the bottom), left, right, top.
-Mesh make_switch_background(const ImmersedSwitchGeometry& geometry);
+Mesh make_switch_background(const ImmersedBoundaryGeometry& geometry);
 
 // CPU seconds per stage of the field's evaluations, summed since reset_times().
 struct ImmersedPhysicsTimes {
@@ -67,14 +67,14 @@ struct ImmersedLoad {
   Index ib_faces = 0, one_sided = 0, unreached = 0;
 };
 
-class ImmersedSwitch : public GapField {
+class ImmersedBoundaryField : public GapField {
  public:
   // beam: the plane elasticity operator of the structure mesh (its patch anchor_patch fixed);
   // control: the deflection reported and controlled, a functional of the beam's unknowns (the
   // tip's u_y from its cell's reconstruction: ElasticityOperator::displacement_functional).
-  ImmersedSwitch(ElasticityOperator& beam, const ImmersedSwitchGeometry& geometry,
-                 LinearFunctional control);
-  ~ImmersedSwitch();
+  ImmersedBoundaryField(ElasticityOperator& beam, const ImmersedBoundaryGeometry& geometry,
+                        LinearFunctional control);
+  ~ImmersedBoundaryField();
 
   const Mesh& background() const { return *background_; }
   const ImmersedSurface& rest_surface() const { return rest_surface_; }
@@ -128,7 +128,7 @@ class ImmersedSwitch : public GapField {
  private:
   struct Kernel;
   ElasticityOperator& beam_;
-  ImmersedSwitchGeometry geometry_;
+  ImmersedBoundaryGeometry geometry_;
   std::unique_ptr<Mesh> background_;
   std::unique_ptr<Kernel> kernel_;
   ImmersedSurface rest_surface_;

@@ -1,6 +1,6 @@
 // The gas slot of the immersed-boundary switch: what a gas model must offer the
-// field-coupled beam (field_coupled_beam.hpp), so that the ESBGK gas on the background mesh
-// (helper ibmgas, lib/ibm) plugs in beside the cheap models without touching the manager.
+// field-coupled beam (coupling/field_coupled_beam.hpp), so that the ESBGK gas on the background
+// mesh plugs in beside the cheap models without touching the coupling.
 //
 // Per coupled step the manager hands the gas the body's surface at the end of the step and
 // its segment velocities there, and asks for the gas force on each surface segment after

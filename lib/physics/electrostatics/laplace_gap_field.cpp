@@ -1,4 +1,4 @@
-#include "coupling/laplace_gap_field.hpp"
+#include "physics/electrostatics/laplace_gap_field.hpp"
 
 #include <fmt/format.h>
 

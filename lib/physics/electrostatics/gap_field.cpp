@@ -1,4 +1,4 @@
-#include "coupling/gap_field.hpp"
+#include "physics/electrostatics/gap_field.hpp"
 
 #include "core/error.hpp"
 

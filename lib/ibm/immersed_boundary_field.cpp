@@ -1,4 +1,4 @@
-#include "coupling/immersed_switch.hpp"
+#include "ibm/immersed_boundary_field.hpp"
 
 #include <fmt/format.h>
 
@@ -12,7 +12,7 @@
 
 namespace rfmems {
 
-Mesh make_switch_background(const ImmersedSwitchGeometry& g) {
+Mesh make_switch_background(const ImmersedBoundaryGeometry& g) {
   const int nx = g.background_cells[0], ny = g.background_cells[1];
   if (nx < 2 || ny < 2) throw InputError("immersed switch: the background needs >= 2 x 2 cells");
   const Vec3 lo = g.background_lower, hi = g.background_upper;
@@ -47,15 +47,16 @@ Mesh make_switch_background(const ImmersedSwitchGeometry& g) {
   return builder.build("immersed switch background");
 }
 
-struct ImmersedSwitch::Kernel {
+struct ImmersedBoundaryField::Kernel {
   CellMarker marker;
   ImmersedElectrostatics electrostatics;
   Kernel(const Mesh& bg, std::map<std::string, PotentialBoundary> bcs)
       : marker(bg), electrostatics(bg, std::move(bcs)) {}
 };
 
-ImmersedSwitch::ImmersedSwitch(ElasticityOperator& beam, const ImmersedSwitchGeometry& geometry,
-                               LinearFunctional control)
+ImmersedBoundaryField::ImmersedBoundaryField(ElasticityOperator& beam,
+                                             const ImmersedBoundaryGeometry& geometry,
+                                             LinearFunctional control)
     : beam_(beam),
       geometry_(geometry),
       background_(std::make_unique<Mesh>(make_switch_background(geometry))),
@@ -153,31 +154,31 @@ ImmersedSwitch::ImmersedSwitch(ElasticityOperator& beam, const ImmersedSwitchGeo
       std::clamp(static_cast<int>(std::floor(0.9 * thickness / h - 0.5)), 1, 3);
 }
 
-ImmersedSwitch::~ImmersedSwitch() = default;
+ImmersedBoundaryField::~ImmersedBoundaryField() = default;
 
-Real ImmersedSwitch::background_cell_height() const {
+Real ImmersedBoundaryField::background_cell_height() const {
   return (geometry_.background_upper.y() - geometry_.background_lower.y()) /
          geometry_.background_cells[1];
 }
 
-std::span<const Real> ImmersedSwitch::potential() const {
+std::span<const Real> ImmersedBoundaryField::potential() const {
   return kernel_->electrostatics.potential();
 }
 
-void ImmersedSwitch::set_electrostatics_lu(LuReuse reuse) {
+void ImmersedBoundaryField::set_electrostatics_lu(LuReuse reuse) {
   kernel_->electrostatics.set_lu_reuse(reuse);
 }
 
-void ImmersedSwitch::distribute_electrostatics(const Communicator& comm,
-                                               const DistributedLinearOptions& options) {
+void ImmersedBoundaryField::distribute_electrostatics(const Communicator& comm,
+                                                      const DistributedLinearOptions& options) {
   kernel_->electrostatics.distribute(comm, options);
 }
 
-bool ImmersedSwitch::electrostatics_distributed() const {
+bool ImmersedBoundaryField::electrostatics_distributed() const {
   return kernel_->electrostatics.distributed();
 }
 
-std::vector<Vec3> ImmersedSwitch::vertex_displacements(std::span<const Real> u) const {
+std::vector<Vec3> ImmersedBoundaryField::vertex_displacements(std::span<const Real> u) const {
   // Vertex k joins segments k-1 and k: the mean of their cells' linear reconstructions, so
   // that a segment moves with its own cell and both neighbours alike and the load stiffness
   // between neighbouring cells is nearly symmetric, as a conservative force's must be (a
@@ -198,7 +199,7 @@ std::vector<Vec3> ImmersedSwitch::vertex_displacements(std::span<const Real> u) 
   return out;
 }
 
-ImmersedSurface ImmersedSwitch::moved_surface(std::span<const Real> u) const {
+ImmersedSurface ImmersedBoundaryField::moved_surface(std::span<const Real> u) const {
   const std::vector<Vec3> moved = vertex_displacements(u);
   std::vector<Vec3> vertices = rest_surface_.vertices();
   for (std::size_t k = 0; k < vertices.size(); ++k) vertices[k] += moved[k];
@@ -207,7 +208,7 @@ ImmersedSurface ImmersedSwitch::moved_surface(std::span<const Real> u) const {
   return surface;
 }
 
-std::vector<Vec3> ImmersedSwitch::segment_velocities(std::span<const Real> v) const {
+std::vector<Vec3> ImmersedBoundaryField::segment_velocities(std::span<const Real> v) const {
   const std::vector<Vec3> vertex = vertex_displacements(v);
   const std::size_t n = vertex.size();
   std::vector<Vec3> out(n);
@@ -215,13 +216,13 @@ std::vector<Vec3> ImmersedSwitch::segment_velocities(std::span<const Real> v) co
   return out;
 }
 
-Real ImmersedSwitch::min_gap(std::span<const Real> u) const {
+Real ImmersedBoundaryField::min_gap(std::span<const Real> u) const {
   Real g = 1e300;
   for (const FacingVertex& v : facing_vertices_) g = std::min(g, v.rest_gap + v.u_y(u));
   return facing_vertices_.empty() ? gap0_ : g;
 }
 
-std::vector<Real> ImmersedSwitch::to_structure(std::span<const Vec3> segment_forces) const {
+std::vector<Real> ImmersedBoundaryField::to_structure(std::span<const Vec3> segment_forces) const {
   std::vector<Real> q(beam_.size(), 0.0);
   for (std::size_t k = 0; k < segment_forces.size(); ++k) {
     q[2 * segment_cell_[k]] += segment_forces[k].x();
@@ -230,7 +231,7 @@ std::vector<Real> ImmersedSwitch::to_structure(std::span<const Vec3> segment_for
   return q;
 }
 
-std::vector<Index> ImmersedSwitch::facing_segments() const {
+std::vector<Index> ImmersedBoundaryField::facing_segments() const {
   const Mesh& mesh = beam_.mesh();
   const int facing = mesh.find_patch(geometry_.facing_patch);
   std::vector<Index> out;
@@ -239,7 +240,7 @@ std::vector<Index> ImmersedSwitch::facing_segments() const {
   return out;
 }
 
-ImmersedLoad ImmersedSwitch::electrostatic_load(std::span<const Real> u, Real voltage) {
+ImmersedLoad ImmersedBoundaryField::electrostatic_load(std::span<const Real> u, Real voltage) {
   ++times_.load_evaluations;
   std::unique_ptr<ImmersedSurface> surface;
   {
@@ -278,12 +279,12 @@ ImmersedLoad ImmersedSwitch::electrostatic_load(std::span<const Real> u, Real vo
   return load;
 }
 
-BeamLoad ImmersedSwitch::load(std::span<const Real> u, Real voltage) {
+BeamLoad ImmersedBoundaryField::load(std::span<const Real> u, Real voltage) {
   ImmersedLoad l = electrostatic_load(u, voltage);
   return {std::move(l.force), l.total.y()};
 }
 
-GapFieldTraits ImmersedSwitch::traits() const {
+GapFieldTraits ImmersedBoundaryField::traits() const {
   GapFieldTraits t;
   // The equilibria by the plain fixed point, to what the background resolves: where the beam's
   // faces lie on grid lines the load jumps as slivers get cut (docs/immersed_switch.md).
@@ -295,7 +296,7 @@ GapFieldTraits ImmersedSwitch::traits() const {
   return t;
 }
 
-Json ImmersedSwitch::counters() const {
+Json ImmersedBoundaryField::counters() const {
   return {{"move_s", times_.move},
           {"marking_s", times_.marking},
           {"interpolation_s", times_.interpolation},
@@ -306,10 +307,12 @@ Json ImmersedSwitch::counters() const {
           {"electrostatic_krylov_iterations", times_.electrostatic_krylov_iterations}};
 }
 
-void ImmersedSwitch::reset_gas(ImmersedGasModel& gas, Real t0) { gas.reset(rest_surface_, t0); }
+void ImmersedBoundaryField::reset_gas(ImmersedGasModel& gas, Real t0) {
+  gas.reset(rest_surface_, t0);
+}
 
-BeamLoad ImmersedSwitch::gas_load(ImmersedGasModel& gas, std::span<const Real> u,
-                                  std::span<const Real> v, Real t, Real dt) {
+BeamLoad ImmersedBoundaryField::gas_load(ImmersedGasModel& gas, std::span<const Real> u,
+                                         std::span<const Real> v, Real t, Real dt) {
   const std::vector<Vec3> f = gas.advance(moved_surface(u), segment_velocities(v), t, dt);
   BeamLoad out{to_structure(f), 0.0};
   for (const Vec3& x : f) out.force_y += x.y();

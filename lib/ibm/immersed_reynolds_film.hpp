@@ -19,7 +19,7 @@
 #include <memory>
 #include <vector>
 
-#include "coupling/immersed_gas.hpp"
+#include "ibm/immersed_gas.hpp"
 #include "materials/gas_properties.hpp"
 
 namespace rfmems {

@@ -1,4 +1,4 @@
-#include "coupling/immersed_esbgk_gas.hpp"
+#include "ibm/immersed_esbgk_gas.hpp"
 
 #include <algorithm>
 #include <cmath>

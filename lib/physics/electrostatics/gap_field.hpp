@@ -1,12 +1,12 @@
 // A field that loads a plane beam across its gap and gives no exact Jacobian blocks: what the
-// field-coupled beam (field_coupled_beam.hpp) asks of it, whatever solves it. The Laplace field
-// in a gap mesh that follows the beam (laplace_gap_field.hpp) and the immersed-boundary field on
-// a fixed background (immersed_switch.hpp) are the two.
+// field-coupled beam (coupling/field_coupled_beam.hpp) asks of it, whatever solves it. The
+// Laplace field in a gap mesh that follows the beam (laplace_gap_field.hpp) and the
+// immersed-boundary field on a fixed background (ibm/immersed_boundary_field.hpp) are the two.
 //
 // A field answers with its force per beam unknown at a displacement u and voltage V (the load
 // the coupled beam applies, lagged or exact), the smallest gap at u (the contact root's), the
 // gap at rest, and what its resolution asks of the coupling (GapFieldTraits). A field whose
-// beam is a surface in the gas's mesh also carries the gas (immersed_gas.hpp) on that surface.
+// beam is a surface in the gas's mesh also carries the gas (ibm/immersed_gas.hpp) on that surface.
 #pragma once
 #include <span>
 #include <string>

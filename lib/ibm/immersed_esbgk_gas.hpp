@@ -13,7 +13,7 @@
 #include <memory>
 #include <string>
 
-#include "coupling/immersed_gas.hpp"
+#include "ibm/immersed_gas.hpp"
 #include "ibm/immersed_kinetic_gas.hpp"
 #include "mesh/mesh.hpp"
 

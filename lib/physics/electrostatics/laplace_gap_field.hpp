@@ -11,17 +11,17 @@
 //   3. the traction on each top face of the gap mesh, times its area, goes to the beam cell
 //      that owns the matching bottom face: q(u), the force per V^2 per beam unknown [N/m/V^2].
 //
-// The field-coupled beam (field_coupled_beam.hpp) solves its equilibria and its runs with it
-// (gap_field.hpp: load = V^2 q(u)).
+// The field-coupled beam (coupling/field_coupled_beam.hpp) solves its equilibria and its runs with
+// it (gap_field.hpp: load = V^2 q(u)).
 #pragma once
 #include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
-#include "coupling/gap_field.hpp"
 #include "mesh/mesh_motion.hpp"
 #include "physics/elasticity/elasticity_operator.hpp"
+#include "physics/electrostatics/gap_field.hpp"
 #include "physics/electrostatics/parallel_plate_actuation.hpp"
 
 namespace rfmems {
