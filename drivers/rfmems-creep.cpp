@@ -73,7 +73,7 @@ int run(const DriverOptions& options) {
       std::fputs(hold_voltage_text(hold).c_str(), stdout);
     return 0;
   }
-  const ValidityReport validity = creep_case_validity(run_case.root, creep);
+  const ValidityReport validity = creep_case_validity(creep);
   if (!options.quiet) print_validity_warnings(kProgram, validity);
 
   CreepRunSettings& settings = creep.settings;

@@ -96,7 +96,7 @@ int run(const DriverOptions& options) {
         {"exchanges", sent.exchanges},         {"reductions", sent.reductions},
         {"wait_cpu_s", sent.wait_cpu_seconds}, {"wait_wall_s", sent.wait_wall_seconds}};
   }
-  const ValidityReport validity = switch_scene_validity(root, scene, report);
+  const ValidityReport validity = switch_scene_validity(scene, report);
   if (!options.quiet && world.is_root()) print_validity_warnings("rfmems-pullin", validity);
   summary["validity"] = validity.to_json();
   summary["wall_time_s"] = run_case.elapsed();

@@ -236,9 +236,10 @@ SceneDescription describe_switch_scene(const SwitchScene &scene, Real thickness,
   return s;
 }
 
-ValidityReport switch_scene_validity(const CaseNode &root, const SwitchScene &scene,
-                                     const PullInReport &report) {
-  const Real thickness = root.child("model").get_quantity("thickness", Dimension::Length, 0.0);
+ValidityReport switch_scene_validity(const SwitchScene &scene, const PullInReport &report) {
+  // A plate's thickness; a plane beam's is its mesh's, not a key (0: not checked).
+  const auto *plate = dynamic_cast<const PlateScene *>(scene.structure.get());
+  const Real thickness = plate ? plate->section.thickness : 0.0;
   const auto analysis = report.has_dynamic || report.has_transient
                             ? SceneDescription::Analysis::Dynamic
                             : SceneDescription::Analysis::Static;
@@ -256,7 +257,7 @@ ValidityReport switch_scene_validity(const CaseNode &root, const SwitchScene &sc
   return r;
 }
 
-ValidityReport creep_case_validity(const CaseNode &root, const CreepCase &creep) {
+ValidityReport creep_case_validity(const CreepCase &creep) {
   SceneDescription s;
   s.analysis = SceneDescription::Analysis::Creep;
   Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
@@ -266,11 +267,11 @@ ValidityReport creep_case_validity(const CaseNode &root, const CreepCase &creep)
   }
   s.length = hi.x() - lo.x();
   s.width = hi.y() - lo.y();
-  s.thickness = root.child("model").get_quantity("thickness", Dimension::Length, 0.0);
+  s.thickness = creep.plate->section.thickness;
   s.plate_shear_creep = creep.shear_creep;
   if (creep.has_gap) {
     s.gap = creep.initial_gap;
-    s.fringing_factor = root.child("actuation").get_real("fringing", 0.0);
+    s.fringing_factor = creep.gap_law.fringing_factor;
   }
   return check_scene_validity(s);
 }

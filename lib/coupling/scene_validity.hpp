@@ -144,16 +144,14 @@ SceneDescription describe_switch_scene(const SwitchScene &scene, Real thickness,
                                        SceneDescription::Analysis analysis,
                                        const PullInReport *report);
 
-// The pull-in driver's one call: describe_switch_scene with the plate thickness
-// from the case (model.thickness) and the analysis the run did, then
-// check_scene_validity.
-ValidityReport switch_scene_validity(const CaseNode &root, const SwitchScene &scene,
-                                     const PullInReport &report);
+// The pull-in driver's one call: describe_switch_scene with the plate's thickness
+// and the analysis the run did, then check_scene_validity.
+ValidityReport switch_scene_validity(const SwitchScene &scene, const PullInReport &report);
 
 // The creep driver's one call: a creep run's plate (creep slenderness
 // criterion) and, with an actuation, its parallel-plate gap (the rest gap:
 // creep runs record no film).
-ValidityReport creep_case_validity(const CaseNode &root, const CreepCase &creep);
+ValidityReport creep_case_validity(const CreepCase &creep);
 
 // The gas driver's one call: the computed field's density and temperature range
 // (over every rank's owned cells; call on every rank), the reference length,
