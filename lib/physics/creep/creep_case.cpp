@@ -84,8 +84,6 @@ Real read_duration(const CaseNode& node, const std::string& key, Real default_va
 CreepCase read_creep_case(const CaseNode& root, const std::string& case_dir) {
   CreepCase c;
   const CaseNode model = root.child("model");
-  model.require(model.get_string("structure", "plate") == "plate", "structure",
-                "creep runs need a plate (model.structure: plate)");
   root.require(!root.has("gas"), "gas", "a creep run is quasi-static: no squeeze film");
   root.require(!root.has("analysis"), "analysis", "rfmems-creep runs a creep analysis; remove it");
 
@@ -112,7 +110,8 @@ CreepCase read_creep_case(const CaseNode& root, const std::string& case_dir) {
     }
   }
   c.plate = dynamic_cast<PlateScene*>(c.structure.get());
-  if (c.plate == nullptr) model.fail("structure", "creep runs need a plate");
+  if (c.plate == nullptr)
+    model.fail("structure", "creep runs need a plate (model.structure: plate)");
   if (root.has("probes")) c.probes = read_probes(root.child("probes"), *c.plate->mesh);
 
   const CaseNode creep = root.child("creep");

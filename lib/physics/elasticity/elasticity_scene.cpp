@@ -109,7 +109,8 @@ const std::map<std::string, BoundaryReader>& boundary_readers() {
   return readers;
 }
 
-LinearElastic read_material(const CaseNode& root, AnalysisType analysis, int dim) {
+LinearElastic read_material(const CaseNode& root, AnalysisType analysis, int dim,
+                            const std::string& structure_choice) {
   const CaseNode material = root.child("material");
   LinearElastic m;
   m.E = material.get_quantity("E", Dimension::Pressure, Range::positive());
@@ -127,7 +128,7 @@ LinearElastic read_material(const CaseNode& root, AnalysisType analysis, int dim
   };
   // structure plane (2D meshes) or solid3d (3D); the hypothesis defaults from it.
   const std::string structure =
-      model.get_choice("structure", {"plane", "solid3d"}, dim == 3 ? "solid3d" : "plane");
+      structure_choice.empty() ? (dim == 3 ? "solid3d" : "plane") : structure_choice;
   const std::string name = model.get_choice("hypothesis", {"plane_stress", "plane_strain", "3d"},
                                             structure == "solid3d" ? "3d" : "plane_stress");
   m.hypothesis = hypotheses.at(name);
@@ -177,11 +178,11 @@ SegregatedOptions read_segregated(const CaseNode& root) {
 }  // namespace
 
 ElasticityScene build_elasticity_scene(const CaseNode& root, const std::string& case_dir,
-                                       AnalysisType analysis) {
+                                       AnalysisType analysis, const std::string& structure) {
   ElasticityScene scene;
   scene.mesh = std::make_unique<Mesh>(mesh_from_case(root.child("mesh"), case_dir));
   const int dim = scene.mesh->dim();
-  scene.material = read_material(root, analysis, dim);
+  scene.material = read_material(root, analysis, dim, structure);
 
   const CaseNode model = root.child("model");
   scene.stress = model.get_choice("stress", {"coupled", "segregated"}, "coupled") == "coupled"

@@ -77,8 +77,10 @@ struct ElasticityScene : StructuralModel {
 };
 
 // Reads mesh, material, model, boundaries, body_force (and solver.segregated) from the case
-// root. case_dir locates relative mesh files. InputError on anything wrong.
+// root; structure: plane or solid3d as build_structure read model.structure (empty: the one
+// the mesh's dimension says). case_dir locates relative mesh files. InputError on anything
+// wrong.
 ElasticityScene build_elasticity_scene(const CaseNode& root, const std::string& case_dir,
-                                       AnalysisType analysis);
+                                       AnalysisType analysis, const std::string& structure = "");
 
 }  // namespace rfmems

@@ -130,7 +130,6 @@ PlateScene build_plate_scene(const CaseNode& root, const std::string& case_dir,
   const CaseNode model = root.child("model");
   model.require(scene.mesh->dim() == 2, "structure",
                 "a plate needs a 2D mesh of its mid-surface, but the mesh is 3D");
-  model.get_choice("structure", {"plate"}, "plate");
   scene.section = read_section(root, analysis);
   const std::map<std::string, int> degrees{{"linear", 1}, {"quadratic", 2}, {"cubic", 3}};
   const int degree =

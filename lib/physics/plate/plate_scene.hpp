@@ -63,8 +63,8 @@ struct PlateScene : StructuralModel {
 // cells (plate_scene.cpp).
 std::vector<GapElement> plate_gap_elements(const Mesh& mesh, const PlateOperator& op);
 
-// Reads the keys above from the case root (model.structure must be plate, or absent).
-// case_dir locates relative mesh files. InputError on anything wrong.
+// Reads the keys above from the case root (model.structure, which chose the plate, is
+// build_structure's). case_dir locates relative mesh files. InputError on anything wrong.
 PlateScene build_plate_scene(const CaseNode& root, const std::string& case_dir,
                              AnalysisType analysis);
 

@@ -8,12 +8,14 @@ namespace rfmems {
 
 std::unique_ptr<StructuralModel> build_structure(const CaseNode& root, const std::string& case_dir,
                                                  AnalysisType analysis) {
+  // The one reader of model.structure; absent, the continuum the mesh's dimension says.
   const CaseNode model = root.child("model");
-  // The continuum scene reads (and checks) plane/solid3d itself against the mesh.
-  const bool plate = model.has("structure") &&
-                     model.get_choice("structure", {"plane", "solid3d", "plate"}) == "plate";
-  if (plate) return std::make_unique<PlateScene>(build_plate_scene(root, case_dir, analysis));
-  return std::make_unique<ElasticityScene>(build_elasticity_scene(root, case_dir, analysis));
+  const std::string structure =
+      model.has("structure") ? model.get_choice("structure", {"plane", "solid3d", "plate"}) : "";
+  if (structure == "plate")
+    return std::make_unique<PlateScene>(build_plate_scene(root, case_dir, analysis));
+  return std::make_unique<ElasticityScene>(
+      build_elasticity_scene(root, case_dir, analysis, structure));
 }
 
 CaseSchema structure_case_keys() {

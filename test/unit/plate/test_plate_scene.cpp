@@ -32,9 +32,9 @@ const std::string kCantilever =
 
 PlateScene scene_of(const std::string& text) {
   const CaseFile cf = CaseFile::parse(text, "p.yaml");
-  PlateScene scene = build_plate_scene(cf.root(), "", AnalysisType::Static);
+  std::unique_ptr<StructuralModel> model = build_structure(cf.root(), "", AnalysisType::Static);
   cf.check_all_used();
-  return scene;
+  return std::move(dynamic_cast<PlateScene&>(*model));
 }
 
 std::vector<double> residual_at_rest(PlateScene& scene, double t) {
