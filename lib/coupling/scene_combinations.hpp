@@ -82,8 +82,8 @@ struct SceneChoice {
 
 // Reads the five slots (keys above) and checks them against the table, in the order structure,
 // field, gas, analysis, scheme: the first value that leaves the table is bad input naming its
-// key and the values allowed there with the slots before it. model.structure is read with its
-// default (plate) but left for the structure reader to check.
+// key and the values allowed there with the slots before it. model.structure (absent: plane, the
+// continuum the structure reader builds) is left for the structure reader to check.
 SceneChoice read_scene_choice(const CaseNode& root);
 
 // The keys read_scene_choice reads: the scene's models, analysis and scheme

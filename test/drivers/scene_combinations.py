@@ -127,7 +127,8 @@ for line in printed.splitlines()[2:]:
             schemes[a.strip()] = [n.strip() for n in names.split(",")]
     rows[tuple(cells[:3])] = schemes
 check(rows == TABLE, f"--scenes prints the table this test knows ({len(rows)} combinations of models)")
-check(printed in open(f"{SRC}/docs/running.md").read(), "docs/running.md shows the table --scenes prints")
+for page in ("README.md", "docs/running.md"):
+    check(printed in open(f"{SRC}/{page}").read(), f"{page} shows the table --scenes prints")
 
 # --- unsupported cells: exit 2, one line with the key and what is allowed --------------------
 bad = []
