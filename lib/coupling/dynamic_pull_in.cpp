@@ -83,10 +83,10 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
   };
   sample(t0);
   Real next_output = first_output;
-  Real stop_time = options.end_time;  // moves to touch-down + stop_after_contact
   while (true) {
     // The settle and past-fold rules look at every accepted step (IDA's one-step mode: the
     // same steps).
+    const Real stop_time = events.stop_time();
     const Real t_out = std::min(next_output, stop_time);
     const IdaIntegrator::Status status =
         events.step_rules_armed() ? ida.step(t_out) : ida.advance(t_out);
@@ -104,7 +104,7 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
       continue;
     }
     if (status == IdaIntegrator::Status::Root) {
-      if (events.at_root(t, x, ida.roots_found(), run, stop_time)) {
+      if (events.at_root(t, x, ida.roots_found(), run)) {
         sample(t);
         break;
       }

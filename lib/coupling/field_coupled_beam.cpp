@@ -311,10 +311,9 @@ DynamicRun FieldCoupledBeam::run(Real voltage, const DynamicOptions& options,
     const std::span<const Real> u = state.subspan(0, n);
     const Real x = control_(u);
     out.extreme_control = std::min(out.extreme_control, x);
-    Real stop_time = options.end_time;
-    const bool stop = status == IdaIntegrator::Status::Reached ||
-                      (status == IdaIntegrator::Status::Root &&
-                       events.at_root(t, x, ida.roots_found(), out, stop_time));
+    const bool stop =
+        status == IdaIntegrator::Status::Reached ||
+        (status == IdaIntegrator::Status::Root && events.at_root(t, x, ida.roots_found(), out));
     // The coupled step's exchange: the field's load at the accepted state (strong_step left it
     // there as the reference already), and the gas.
     if (!strong && (!stop || !out.pulled_in)) {

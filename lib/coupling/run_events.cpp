@@ -7,7 +7,8 @@ namespace rfmems {
 RunEvents::RunEvents(const DynamicOptions& options, Real turning_after)
     : options_(options),
       turning_(options.turning_retreat, turning_after),
-      ends_(early_ends(options)) {}
+      ends_(early_ends(options)),
+      stop_time_(options.end_time) {}
 
 void RunEvents::roots(Real min_gap, Real x, Real v, std::span<Real> g) const {
   g[0] = min_gap - options_.contact_gap;
@@ -15,8 +16,7 @@ void RunEvents::roots(Real min_gap, Real x, Real v, std::span<Real> g) const {
   g[kRoots - 1] = options_.release_gap > 0 ? min_gap - options_.release_gap : 1.0;
 }
 
-bool RunEvents::at_root(Real t, Real x, const std::vector<int>& found, DynamicRun& run,
-                        Real& stop_time) {
+bool RunEvents::at_root(Real t, Real x, const std::vector<int>& found, DynamicRun& run) {
   if (found[0] < 0) {
     ++run.touch_downs;
     if (!run.pulled_in) {
@@ -24,7 +24,7 @@ bool RunEvents::at_root(Real t, Real x, const std::vector<int>& found, DynamicRu
       run.pull_in_time = t;
       if (options_.stop_at_contact) return true;
       if (options_.stop_after_contact >= 0)
-        stop_time = std::min(options_.end_time, t + options_.stop_after_contact);
+        stop_time_ = std::min(options_.end_time, t + options_.stop_after_contact);
     }
   }
   if (found[kRoots - 1] > 0) {

@@ -28,9 +28,11 @@ class RunEvents {
 
   void roots(Real min_gap, Real x, Real v, std::span<Real> g) const;
   // After IDA stopped at a root at time t with the control at x: records a touch-down, a
-  // lift-off and the first turning in run; stop_time moves to touch-down + stop_after_contact.
-  // True: the run ends.
-  bool at_root(Real t, Real x, const std::vector<int>& found, DynamicRun& run, Real& stop_time);
+  // lift-off and the first turning in run; true: the run ends.
+  bool at_root(Real t, Real x, const std::vector<int>& found, DynamicRun& run);
+  // Where the run ends unless an event ends it first: end_time, or touch-down +
+  // stop_after_contact once it has touched down (stop_at_contact false).
+  Real stop_time() const { return stop_time_; }
   // The step rules are armed: the caller must stop after every accepted step (IDA's one-step
   // mode) and call at_step.
   bool step_rules_armed() const { return ends_.armed(); }
@@ -45,6 +47,7 @@ class RunEvents {
   const DynamicOptions& options_;
   TurningBack turning_;
   EarlyEnds ends_;
+  Real stop_time_;
 };
 
 }  // namespace rfmems

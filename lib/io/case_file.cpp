@@ -658,8 +658,7 @@ void CaseFile::check_all_used() const {
     throw InputError(fmt::format("{}: unknown key '{}'", state_->file, *key));
   const char* check = std::getenv("RFMEMS_CHECK_CASE_SCHEMA");
   if (state_->schema && check != nullptr && *check != '\0' && std::string(check) != "0") {
-    const std::vector<CaseKeyRead> reads(state_->reads.begin(), state_->reads.end());
-    const std::vector<std::string> wrong = case_schema_mismatches(*state_->schema, reads);
+    const std::vector<std::string> wrong = case_schema_mismatches(*state_->schema, reads());
     if (!wrong.empty())
       throw std::logic_error(
           fmt::format("the case schema differs from the readers ({} reads of "
