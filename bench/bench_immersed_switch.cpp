@@ -21,7 +21,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench_support.hpp"
-#include "coupling/field_coupled_beam.hpp"
+#include "coupling/field_coupled_structure.hpp"
 #include "coupling/pull_in_study.hpp"
 #include "coupling/switch_scene.hpp"
 #include "io/case_file.hpp"
@@ -68,12 +68,12 @@ int main(int argc, char** argv) {
     double cpu() const { return times.total() + loop.gas + loop.structure; }
   };
   std::vector<Result> results;
-  FieldCoupledBeam beam(*dynamic_cast<ElasticityScene&>(*scene.structure).op, *field.sw,
-                        field.sw->control());
+  FieldCoupledStructure beam(*dynamic_cast<ElasticityScene&>(*scene.structure).op, *field.sw,
+                             field.sw->control());
   auto go = [&](const std::string& name, DynamicOptions o) {
     field.sw->reset_times();
     beam.reset_times();
-    std::unique_ptr<ImmersedGasModel> g = field.make_gas();
+    std::unique_ptr<StructureGas> g = field.make_gas();
     const double w0 = bench::now();
     DynamicRun history = beam.run(voltage, o, g.get());
     results.push_back(

@@ -63,7 +63,7 @@
 
 #include "bench_support.hpp"
 #include "coupling/dynamic_pull_in.hpp"
-#include "coupling/field_coupled_beam.hpp"
+#include "coupling/field_coupled_structure.hpp"
 #include "coupling/pull_in_study.hpp"
 #include "coupling/quasi_static_pull_in.hpp"
 #include "coupling/switch_scene.hpp"
@@ -311,7 +311,7 @@ int main(int argc, char** argv) {
         plane_case, {cells(nx, ny), "actuation.laplace.gap_cells=" + std::to_string(gap_cells)});
     SwitchScene& s = sc->scene;
     auto* beam = dynamic_cast<ElasticityScene*>(s.structure.get());
-    FieldCoupledBeam coupled(*beam->op, *s.laplace, LinearFunctional::unknown(s.control));
+    FieldCoupledStructure coupled(*beam->op, *s.laplace, LinearFunctional::unknown(s.control));
     const QuasiStaticPullIn r = coupled.trace_quasi_static(sampling());
     Point p{std::to_string(nx) + "x" + std::to_string(ny) + "+gap" + std::to_string(gap_cells),
             double(nx * ny), r.pull_in_voltage, t.wall(), t.cpu()};
@@ -484,7 +484,7 @@ int main(int argc, char** argv) {
         plane_case, {cells(nx, ny), "actuation.laplace.gap_cells=" + std::to_string(gap_cells)});
     SwitchScene& s = sc->scene;
     auto* beam = dynamic_cast<ElasticityScene*>(s.structure.get());
-    FieldCoupledBeam coupled(*beam->op, *s.laplace, LinearFunctional::unknown(s.control));
+    FieldCoupledStructure coupled(*beam->op, *s.laplace, LinearFunctional::unknown(s.control));
     const QuasiStaticPullIn qs = coupled.trace_quasi_static(sampling());
     const double qs_wall = t.wall(), qs_cpu = t.cpu();
     const Json field0 = s.laplace->counters();

@@ -30,7 +30,6 @@
 #include <vector>
 
 #include "core/error.hpp"
-#include "coupling/scene_validity.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint.hpp"
 #include "io/creep_text.hpp"
@@ -43,6 +42,7 @@
 #include "physics/creep/creep_case.hpp"
 #include "physics/creep/creep_plate_model.hpp"
 #include "physics/creep/creep_results.hpp"
+#include "physics/creep/creep_validity.hpp"
 
 namespace {
 

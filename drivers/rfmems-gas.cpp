@@ -26,7 +26,6 @@
 #include <vector>
 
 #include "core/error.hpp"
-#include "coupling/scene_validity.hpp"
 #include "io/atomic_file.hpp"
 #include "io/case_file.hpp"
 #include "io/driver_main.hpp"
@@ -39,6 +38,7 @@
 #include "parallel/communicator.hpp"
 #include "physics/gas/kinetic/kinetic_case.hpp"
 #include "physics/gas/kinetic/kinetic_results.hpp"
+#include "physics/gas/kinetic/kinetic_validity.hpp"
 
 namespace {
 

@@ -23,7 +23,7 @@
 //       --set pull_in.mode=transient   # the ESBGK gas distributed over 2 ranks
 //   rfmems-pullin cases/switch_plate/case.yaml --set pull_in.mode=transient
 //       --set pull_in.transient.voltage=180V --set pull_in.transient.end_time=5us
-//       --set coupling.scheme=strongly_coupled --set coupling.macro_step=0.1us
+//       --set coupling.scheme=strongly_coupled
 //   rfmems-pullin --scenes                                      # what a scene can combine
 //
 // Output: out/<name>.h5 (+ .xdmf): the structure's fields (step 0), /pull_in/curve and
@@ -36,8 +36,8 @@
 
 #include "coupling/pull_in_study.hpp"
 #include "coupling/scene_combinations.hpp"
-#include "coupling/scene_validity.hpp"
 #include "coupling/switch_scene.hpp"
+#include "coupling/switch_validity.hpp"
 #include "io/atomic_file.hpp"
 #include "io/case_file.hpp"
 #include "io/driver_main.hpp"

@@ -97,6 +97,50 @@ def coupling_default_study_ab():
                              f"**{summary['ratio_b_over_a']:.3f}** (medians; {summary['date']}).\n")
 
 
+def coupling_schemes(study):
+    """bench_coupling_schemes.py's lines of one study: each run against the monolithic run at rtol
+    1e-6 (the deflection at 5 us, or the pull-in time), with its cost."""
+    def table():
+        lines = read_jsonl(FIGURES / "coupling_schemes.jsonl")
+        runs = [x for x in lines if x.get("bench") == "coupling_schemes" and x["study"] == study]
+        summary = next(x for x in lines if x.get("bench") == "coupling_schemes_summary")
+        key = "final_control" if study == "deflection" else "pull_in_time"
+        ref = next(x for x in runs if x["scheme"] == "monolithic" and x["rtol"] == 1e-6)
+        head = "w(5 us)" if study == "deflection" else "t_PI"
+        rows = [["scheme", "rtol", "gas every", f"{head} [um]" if study == "deflection" else f"{head} [us]",
+                 "error", "steps", "residual evals", "gas steps", "coupling iterations", "CPU [s]"]]
+        for x in runs:
+            c = x["counters"]
+            err = "(reference)" if x is ref else f"{abs(x[key] / ref[key] - 1):.1e}"
+            partitioned = x["scheme"] != "monolithic"
+            rows.append([x["scheme"].replace("_", " "), f"{x['rtol']:g}",
+                         str(x["gas_every"]) if partitioned else "-", f"{1e6 * x[key]:.6f}", err,
+                         str(x["steps"]), str(x["residual_evals"]),
+                         str(c.get("gas_steps", "-")) if partitioned else "-",
+                         str(c.get("coupling_iterations", "-")) if x["scheme"] == "strongly_coupled" else "-",
+                         f"{x['cpu_s']:.2f}"])
+        return markdown(rows) + f"\nCommand: `{summary['commands'][study]}` ({summary['date']}).\n"
+    return table
+
+
+def coupling_schemes_study():
+    """bench_coupling_schemes.py's default dynamic study of cases/switch_plate with each scheme."""
+    lines = read_jsonl(FIGURES / "coupling_schemes.jsonl")
+    runs = [x for x in lines if x.get("bench") == "coupling_schemes" and x["study"] == "study"]
+    summary = next(x for x in lines if x.get("bench") == "coupling_schemes_summary")
+    mono = next(x for x in runs if x["scheme"] == "monolithic")
+    rows = [["scheme", "V_qs [V]", "V_dyn [V]", "t_PI [us]", "t_PI at 0.1 x tolerances [us]",
+             "small signal: damping ratio", "frequency [kHz]", "bisection runs", "CPU [s]",
+             "CPU / monolithic"]]
+    for x in runs:
+        rows.append([x["scheme"].replace("_", " "), f"{x['v_qs']:.4f}",
+                     f"({x['not_pulling_in']:.4f}, {x['v_dyn']:.4f}]", f"{1e6 * x['pull_in_time']:.3f}",
+                     f"{1e6 * x['pull_in_time_check']:.3f}", f"{x['damping_ratio']:.5f}",
+                     f"{1e-3 * x['frequency']:.2f}", str(x["runs"]), f"{x['cpu_s']:.1f}",
+                     f"{x['cpu_s'] / mono['cpu_s']:.2f}"])
+    return markdown(rows) + f"\nCommand: `{summary['commands']['study']}` ({summary['date']}).\n"
+
+
 def comet_two_ranks():
     """bench_gas_scaling's strong-scaling summaries on the quiet machine (1 -> 2 ranks)."""
     files = [("gas_scaling_quiet_2026-12-02.jsonl", "paused"),
@@ -230,7 +274,9 @@ TABLES = {
     "immersed-esbgk-case-keys": immersed_esbgk_case_keys,
     "immersed-switch-figures": csv_table("immersed_switch_figures.csv"),
     "ibm-couette": csv_table("ibm_couette.csv"),
-    "coupling-schemes-transient": csv_table("coupling_schemes_transient.csv"),
+    "coupling-schemes-deflection": coupling_schemes("deflection"),
+    "coupling-schemes-touch-down": coupling_schemes("touch_down"),
+    "coupling-schemes-study": coupling_schemes_study,
 }
 
 

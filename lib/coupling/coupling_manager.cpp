@@ -5,9 +5,10 @@
 #include <algorithm>
 
 #include "core/error.hpp"
-#include "coupling/field_coupled_beam.hpp"
-#include "coupling/partitioned_switch.hpp"
+#include "coupling/field_coupled_structure.hpp"
 #include "physics/elasticity/elasticity_scene.hpp"
+#include "physics/electrostatics/parallel_plate_gap_field.hpp"
+#include "physics/gas/film_under_structure.hpp"
 
 namespace rfmems {
 
@@ -21,11 +22,18 @@ Real step_amplitude(const VoltageWaveform& waveform, Real amplitude, const Dynam
   return amplitude;
 }
 
-// The parallel-plate law: structure, force (and film) with exact Jacobian blocks.
+// The parallel-plate law: structure, force (and film) with exact Jacobian blocks in one
+// monolithic system; or the film split from the actuated structure (the partitioned schemes, in
+// the field-coupled structure's loop).
 class ParallelPlateManager : public CouplingManager {
  public:
   explicit ParallelPlateManager(SwitchScene& scene)
-      : scene_(scene), w_dof_(film_unknowns(scene)), system_(make_switch_system(scene)) {}
+      : scene_(scene),
+        system_(make_switch_system(scene)),
+        field_(*scene.actuation),
+        partitioned_(
+            {*scene.actuation, scene.structure->quasi_static_components(), film_unknowns(scene)},
+            field_, LinearFunctional::unknown(scene.control)) {}
 
   QuasiStaticPullIn quasi_static(const QuasiStaticOptions& options) override {
     return trace_pull_in(*scene_.actuation, scene_.control, options);
@@ -37,26 +45,30 @@ class ParallelPlateManager : public CouplingManager {
                  const DynamicState* start) override {
     if (options.coupling.scheme == CouplingScheme::Monolithic)
       return run_dynamic(*system_, scene_.control, waveform.at(amplitude), options, start);
-    if (!scene_.film || start)
-      throw InputError("a partitioned scheme splits the film from the plate, from rest");
-    PartitionedRun r =
-        run_partitioned(*scene_.actuation, scene_.structure->quasi_static_components(),
-                        *scene_.film, w_dof_, scene_.control, waveform.at(amplitude), options);
-    coupling_iterations_ += r.coupling_iterations;
-    macro_steps_ += r.macro_steps;
-    return std::move(r.run);
+    if (!scene_.film)
+      throw InputError("a partitioned scheme splits the film from the plate: the scene has none");
+    const Real v = step_amplitude(waveform, amplitude, start, "partitioned parallel_plate");
+    scene_.actuation->set_voltage_squared([v](Real) { return v * v; });
+    FilmUnderStructure film(*scene_.film, film_unknowns(scene_), scene_.actuation->size(),
+                            scene_.actuation->initial_gap());
+    DynamicRun r = partitioned_.run(v, options, &film);
+    max_knudsen_ = std::max(max_knudsen_, film.max_knudsen());
+    return r;
   }
   SwitchSystem* switch_system() override { return system_.get(); }
   Json counters() const override {
-    if (macro_steps_ == 0) return Json::object();
-    return {{"macro_steps", macro_steps_}, {"coupling_iterations", coupling_iterations_}};
+    if (partitioned_.times().structure_steps == 0) return Json::object();
+    Json j = partitioned_.times().json();
+    j["gas_max_knudsen"] = max_knudsen_;
+    return j;
   }
 
  private:
   SwitchScene& scene_;
-  std::vector<Index> w_dof_;
   std::unique_ptr<SwitchSystem> system_;
-  long coupling_iterations_ = 0, macro_steps_ = 0;
+  ParallelPlateGapField field_;
+  FieldCoupledStructure partitioned_;
+  Real max_knudsen_ = 0;
 };
 
 // A field that gives no exact Jacobian blocks (the Laplace field in the gap mesh that follows a
@@ -65,7 +77,7 @@ class ParallelPlateManager : public CouplingManager {
 class LaggedFieldManager : public CouplingManager {
  public:
   LaggedFieldManager(SwitchScene& scene, GapField& field, LinearFunctional control,
-                     std::function<std::unique_ptr<ImmersedGasModel>()> make_gas = {})
+                     std::function<std::unique_ptr<StructureGas>()> make_gas = {})
       : field_(field),
         beam_(*dynamic_cast<ElasticityScene&>(*scene.structure).op, field, std::move(control)),
         make_gas_(std::move(make_gas)) {}
@@ -76,14 +88,14 @@ class LaggedFieldManager : public CouplingManager {
     return r;
   }
   SwitchStatic solve_static(Real voltage) override {
-    BeamEquilibrium r = beam_.solve_static(voltage);
+    StructureEquilibrium r = beam_.solve_static(voltage);
     static_solves_ += r.iterations;
     return {std::move(r.u), r.control, r.iterations};
   }
   DynamicRun run(const VoltageWaveform& waveform, Real amplitude, const DynamicOptions& options,
                  const DynamicState* start) override {
     const Real v = step_amplitude(waveform, amplitude, start, field_.name().c_str());
-    std::unique_ptr<ImmersedGasModel> gas = make_gas_ ? make_gas_() : nullptr;  // at rest
+    std::unique_ptr<StructureGas> gas = make_gas_ ? make_gas_() : nullptr;  // at rest
     DynamicRun r = beam_.run(v, options, gas.get());
     if (gas) max_knudsen_ = std::max(max_knudsen_, gas->max_knudsen());
     return r;
@@ -98,8 +110,8 @@ class LaggedFieldManager : public CouplingManager {
 
  private:
   GapField& field_;
-  FieldCoupledBeam beam_;
-  std::function<std::unique_ptr<ImmersedGasModel>()> make_gas_;
+  FieldCoupledStructure beam_;
+  std::function<std::unique_ptr<StructureGas>()> make_gas_;
   long static_solves_ = 0;
   Real max_knudsen_ = 0;
 };

@@ -4,14 +4,15 @@
 //
 //   parallel_plate   monolithic: structure, parallel-plate force (and the Reynolds film) in one
 //                    IDA system with the exact coupled Jacobian (run_dynamic,
-//                    switch_system.hpp); staggered / strongly_coupled (with the film): film and
-//                    structure integrators exchanging per macro step (partitioned_switch.hpp);
-//                    equilibria by KINSOL under displacement control (quasi_static_pull_in.hpp);
+//                    switch_system.hpp); staggered / strongly_coupled (with the film): the film
+//                    split from the actuated structure in the field-coupled structure's loop
+//                    (below); equilibria by KINSOL under displacement control
+//                    (quasi_static_pull_in.hpp);
 //   laplace,         the plane beam under a field without exact blocks (the Laplace field in
 //   immersed         the moving gap mesh, the immersed-boundary field and its gas on the
-//                    background) in the field-coupled beam's one loop (field_coupled_beam.hpp):
-//                    staggered, implicit or strongly_coupled per step; equilibria by its fixed
-//                    points.
+//                    background) in the field-coupled structure's one loop
+//                    (field_coupled_structure.hpp): staggered, implicit or strongly_coupled per
+//                    step; equilibria by its fixed points.
 //
 // Every run has the same events (dynamic_pull_in.hpp: contact, turning back, settled at rest,
 // past the unstable equilibrium) and reports a DynamicRun.

@@ -5,14 +5,14 @@
 //     scheme: monolithic        # monolithic | staggered | implicit | strongly_coupled (the
 //                               # scene's allowed schemes and default: scene_combinations.hpp)
 //     tolerance: 1e-6           # strongly_coupled: relative change of the interface load
-//     max_iterations: 20        # strongly_coupled: iterations per step (macro step)
-//     macro_step: 0.1 us        # parallel_plate: with reynolds, staggered or strongly_coupled,
-//                               # the interval H at which film and plate exchange (required)
-//     gas_every: 1              # immersed: the gas advanced over every k-th accepted
-//                               # structural step (one gas step spanning k, force held)
+//     max_iterations: 20        # strongly_coupled: iterations per step
+//     gas_every: 1              # with a gas, partitioned: the gas advanced over every k-th
+//                               # accepted structural step (one gas step spanning k, its force
+//                               # held); 1 when the strong iteration holds the gas
 //     strong_gas: false         # immersed, strongly_coupled: the gas inside the iterations
 //                               # (redone per iterate; the fixed point on the electrostatic +
-//                               # gas load; gas_every 1)
+//                               # gas load). The parallel_plate field's strongly_coupled scheme
+//                               # always iterates on the gas (its field is exact)
 //
 // Every key is checked whatever the scheme, so that a case switched by --set stays valid; a key
 // of another field's schemes is bad input.
@@ -29,8 +29,7 @@ struct CouplingOptions {
   CouplingScheme scheme = CouplingScheme::Monolithic;
   Real tolerance = 1e-6;    // strongly_coupled: |F_k+1 - F_k| <= tolerance |F_k+1|
   int max_iterations = 20;  // strongly_coupled: per step
-  Real macro_step = 0;      // partitioned parallel_plate + reynolds: H [s]
-  int gas_every = 1;        // immersed
+  int gas_every = 1;        // with a gas
   bool strong_gas = false;  // immersed, strongly_coupled
 };
 

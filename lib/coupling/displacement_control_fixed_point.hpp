@@ -1,5 +1,5 @@
 // Displacement control of an electrostatically loaded structure by a relaxed fixed point (the
-// field-coupled beam's quasi-static trace, field_coupled_beam.hpp): for a
+// field-coupled structure's quasi-static trace, field_coupled_structure.hpp): for a
 // prescribed deflection delta = l(u) of the control functional l (one unknown, or a point value
 // such as a beam's tip), iterate
 //
@@ -15,7 +15,7 @@
 
 #include "core/linear_functional.hpp"
 #include "core/types.hpp"
-#include "coupling/aitken_relaxation.hpp"
+#include "solvers/aitken_relaxation.hpp"
 #include "solvers/klu_factorization.hpp"
 
 namespace rfmems {

@@ -44,6 +44,7 @@
 #include "coupling/state_tolerances.hpp"
 #include "coupling/switch_system.hpp"
 #include "coupling/turning_back.hpp"
+#include "physics/structure/free_response.hpp"
 #include "solvers/ida_integrator.hpp"
 
 namespace rfmems {
@@ -109,43 +110,12 @@ struct DynamicRun {
   std::vector<DynamicSample> history;
 };
 
-// The logarithmic decrement of a recorded history (a step below pull-in): from the extrema
-// e_k of the control deflection, the half-swings s_k = |e_{k+1} - e_k| decay as
-// exp(-delta/2) per half period for x_eq + a exp(-zeta omega t) cos(omega_d t), so the
-// logarithmic decrement delta = 2 ln(s_k / s_{k+1}) (averaged over the swings by a
-// least-squares fit of ln s_k) gives zeta = delta / sqrt(4 pi^2 + delta^2), and the spacing
-// of the extrema the damped frequency. Extrema are located by parabolas through the samples.
-// Valid while the extrema are the fundamental's (light damping); a weakly damped higher mode
-// on a heavily damped fundamental takes it over (free_response below).
-struct LogDecrement {
-  Real damping_ratio = 0;
-  Real frequency = 0;  // damped [Hz]
-  int swings = 0;      // half-swings used (0: fewer than 2, nothing measured)
-};
-LogDecrement log_decrement(const std::vector<DynamicSample>& history);
-
-// The fundamental's small-signal response in a history of a step from rest below pull-in:
-// the damped oscillator's step response fitted to the control's deflection
-// (step_response_fit.hpp; the log decrement's figures are one of its starting points). Where
-// the log decrement is valid - at least 4 half-swings whose spacing gives the fit's damped
-// frequency within 2 %, so its extrema are the fundamental's - its zeta and frequency are
-// reported instead: at light damping they are the less biased by higher modes (a higher mode
-// of 1-2 % of the static deflection biases the fit's zeta 2-3x more, test_step_response_fit),
-// as in docs/pull-in.md, "Work against error".
-struct FreeResponse {
-  bool fitted = false;              // false: too few samples or no motion, nothing measured
-  bool from_log_decrement = false;  // damping_ratio and frequency are the log decrement's
-  Real damping_ratio = 0;           // zeta
-  Real frequency = 0;               // damped [Hz] (0: overdamped, zeta >= 1)
-  Real natural_frequency = 0;       // undamped [Hz]
-  Real residual = 0;                // the fit's rms misfit / |x_s - x_0|
-  Real fit_damping_ratio = 0, fit_frequency = 0;  // the fit's zeta and damped frequency
-  LogDecrement log_decrement;
-};
+// The small-signal response of a run's history (physics/structure/free_response.hpp) in the
+// control's deflection.
 FreeResponse free_response(const std::vector<DynamicSample>& history);
 
 // A run's two step rules, checked after every accepted step by run_dynamic and by the
-// field-coupled beam alike (run_events.hpp): settled at rest (no pull-in) and past the
+// field-coupled structure alike (run_events.hpp): settled at rest (no pull-in) and past the
 // unstable equilibrium (pulled in).
 struct EarlyEnds {
   SettledAtRest settle{0.0, 0.0};  // off
@@ -204,7 +174,7 @@ DynamicPullIn find_dynamic_pull_in(SwitchSystem& system, Index control, Real low
                                    const VoltageWaveform& waveform = {});
 
 // The same bisection with any run: runner(amplitude) integrates from rest (e.g. a partitioned
-// scheme, coupling/partitioned_switch.hpp); end_time only for the message. to_contact: the
+// scheme, coupling/field_coupled_structure.hpp); end_time only for the message. to_contact: the
 // same run without the past-fold rule (empty: an upper end past the fold keeps no time).
 using PullInRunner = std::function<DynamicRun(Real amplitude)>;
 DynamicPullIn find_dynamic_pull_in(const PullInRunner& runner, Real low, Real high, Real tolerance,

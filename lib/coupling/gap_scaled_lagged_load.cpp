@@ -6,68 +6,75 @@
 
 namespace rfmems {
 
-GapScaledLaggedLoad::GapScaledLaggedLoad(ElasticityOperator& beam, Real gap0, Real closed_fraction)
-    : beam_(beam), gap0_(gap0), closed_fraction_(closed_fraction) {
-  const Index n = beam.size();
+GapScaledLaggedLoad::GapScaledLaggedLoad(SecondOrderOperator& structure,
+                                         std::vector<Index> gap_unknowns, Real gap0,
+                                         Real closed_fraction)
+    : structure_(structure),
+      gap0_(gap0),
+      closed_fraction_(closed_fraction),
+      gap_unknowns_(std::move(gap_unknowns)) {
+  const Index n = structure.size();
   force_.assign(n, 0.0);
   held_.assign(n, 0.0);
-  reference_gap_.assign(n / beam.dim(), gap0);
-  loaded_.assign(n / beam.dim(), 0);
-  const CsrPattern& p = beam.stiffness_pattern();
-  for (Index c = 0; c < n / beam.dim(); ++c)
-    diagonal_.push_back(p.find(beam.gap_unknown(c), beam.gap_unknown(c)));
+  reference_gap_.assign(gap_unknowns_.size(), gap0);
+  on_gap_.assign(n, 0);
+  const CsrPattern& p = structure.stiffness_pattern();
+  for (Index i : gap_unknowns_) {
+    diagonal_.push_back(p.find(i, i));
+    on_gap_[i] = 1;
+  }
 }
 
 void GapScaledLaggedLoad::set_reference(std::vector<Real> force, std::span<const Real> u_ref) {
   force_ = std::move(force);
-  for (std::size_t c = 0; c < reference_gap_.size(); ++c) {
-    reference_gap_[c] = gap0_ + u_ref[beam_.gap_unknown(c)];
-    loaded_[c] = 0;
-    for (int d = 0; d < beam_.dim(); ++d) loaded_[c] |= force_[beam_.unknown(c, d)] != 0;
-  }
+  for (std::size_t c = 0; c < gap_unknowns_.size(); ++c)
+    reference_gap_[c] = gap0_ + u_ref[gap_unknowns_[c]];
 }
 
 Real GapScaledLaggedLoad::scale(std::size_t c, std::span<const Real> u) const {
-  const Real g = gap0_ + u[beam_.gap_unknown(c)];
+  const Real g = gap0_ + u[gap_unknowns_[c]];
   if (!(g > closed_fraction_ * gap0_))
     throw RecoverableError(
-        fmt::format("gap-scaled lagged load: gap {:.3e} m of cell {} closed", g, c));
+        fmt::format("gap-scaled lagged load: gap {:.3e} m of facing cell {} closed", g, c));
   const Real s = reference_gap_[c] / g;
   return s * s;
 }
 
 std::vector<Real> GapScaledLaggedLoad::applied(std::span<const Real> u) const {
   std::vector<Real> f(force_.size(), 0.0);
-  for (std::size_t c = 0; c < reference_gap_.size(); ++c) {
-    if (!loaded_[c]) continue;
-    for (int d = 0; d + 1 < beam_.dim(); ++d) f[beam_.unknown(c, d)] = force_[beam_.unknown(c, d)];
-    f[beam_.gap_unknown(c)] = force_[beam_.gap_unknown(c)] * scale(c, u);
+  for (std::size_t i = 0; i < f.size(); ++i)
+    if (!on_gap_[i]) f[i] = force_[i];
+  for (std::size_t c = 0; c < gap_unknowns_.size(); ++c) {
+    const Index i = gap_unknowns_[c];
+    if (force_[i] != 0) f[i] = force_[i] * scale(c, u);
   }
   return f;
 }
 
 void GapScaledLaggedLoad::internal_residual(Real t, std::span<const Real> u, std::span<Real> r) {
-  beam_.internal_residual(t, u, r);
+  structure_.internal_residual(t, u, r);
   if (exact_) {
     const std::vector<Real> f = exact_(u);
     for (Index i = 0; i < size(); ++i) r[i] -= f[i] + held_[i];
     return;
   }
-  for (std::size_t c = 0; c < reference_gap_.size(); ++c) {
-    for (int d = 0; d < beam_.dim(); ++d) r[beam_.unknown(c, d)] -= held_[beam_.unknown(c, d)];
-    if (!loaded_[c]) continue;
-    for (int d = 0; d + 1 < beam_.dim(); ++d) r[beam_.unknown(c, d)] -= force_[beam_.unknown(c, d)];
-    r[beam_.gap_unknown(c)] -= force_[beam_.gap_unknown(c)] * scale(c, u);
+  for (Index i = 0; i < size(); ++i) {
+    r[i] -= held_[i];
+    if (!on_gap_[i]) r[i] -= force_[i];
+  }
+  for (std::size_t c = 0; c < gap_unknowns_.size(); ++c) {
+    const Index i = gap_unknowns_[c];
+    if (force_[i] != 0) r[i] -= force_[i] * scale(c, u);
   }
 }
 
 void GapScaledLaggedLoad::stiffness(Real t, std::span<const Real> u, std::span<Real> values) {
-  beam_.stiffness(t, u, values);
-  for (std::size_t c = 0; c < reference_gap_.size(); ++c) {
-    if (!loaded_[c] || force_[beam_.gap_unknown(c)] == 0) continue;
-    const Real g = gap0_ + u[beam_.gap_unknown(c)];
+  structure_.stiffness(t, u, values);
+  for (std::size_t c = 0; c < gap_unknowns_.size(); ++c) {
+    const Index i = gap_unknowns_[c];
+    if (force_[i] == 0) continue;
     // d/du of -F (g_ref/g)^2 = 2 F g_ref^2 / g^3.
-    values[diagonal_[c]] += 2 * force_[beam_.gap_unknown(c)] * scale(c, u) / g;
+    values[diagonal_[c]] += 2 * force_[i] * scale(c, u) / (gap0_ + u[i]);
   }
 }
 

@@ -1,29 +1,27 @@
-// A plane beam under an electrostatic load that is recomputed only once per time step (a
+// A structure under an electrostatic load that is recomputed only once per time step (a
 // field solve is too expensive for every residual call), for IDA:
 //
-//   M u'' + K u - f(u) - f_held = 0,   f_x,c = F_x,c,   f_y,c(u) = F_y,c (g_ref,c / g_c(u))^2,
-//   g_c = g0 + u_y,c,
+//   M u'' + R(u) - f(u) - f_held = 0,   f_i = F_i off the gap unknowns,
+//   f_c(u) = F_c (g_ref,c / g_c(u))^2 on gap unknown c,   g_c = g0 + u_c,
 //
 // F the field's force at the reference state u_ref (the state after the last accepted step)
 // with g_ref,c = g0 + u_y,c(u_ref): inside a step the load follows the dominant gap
 // dependence of the parallel-plate law, and the Jacobian carries the electrostatic spring
-// softening d(-f_y,c)/du_y,c = 2 F_y,c g_ref^2 / g^3 (F_y < 0: softening). The staggered
-// scheme refreshes F after every step IDA accepts; its error is first order in the step.
-// f_held is a load held fixed over the step (the immersed switch's lagged gas force; zero
-// unless set).
+// softening d(-f_c)/du_c = 2 F_c g_ref^2 / g^3 (F_c < 0: softening). The staggered scheme
+// refreshes F after every step IDA accepts; its error is first order in the step. f_held is a
+// load held fixed over the step (the lagged gas force; zero unless set).
 //
 // With set_exact(load), the residual uses the exact load at u instead (the field solved in
 // every residual call: the implicit, strongly coupled reference), and the scaled lagged model
 // stays in the Jacobian (an inexact Newton).
 //
-// It is the structure of the field-coupled beam's time loop (field_coupled_beam.hpp).
+// It is the structure of the field-coupled structure's time loop (field_coupled_structure.hpp).
 #pragma once
 #include <functional>
 #include <span>
 #include <vector>
 
 #include "core/system_operator.hpp"
-#include "physics/elasticity/elasticity_operator.hpp"
 
 namespace rfmems {
 
@@ -36,10 +34,11 @@ class GapScaledLaggedLoad : public SecondOrderOperator {
   // cross the root failed every time and IDA cut its step without end).
   static constexpr Real kClosedFraction = 1e-3;
 
-  // beam: an elasticity operator whose last displacement component crosses the gap
-  // (ElasticityOperator::gap_unknown; u_y of a plane beam); gap0: the gap at rest;
-  // closed_fraction: see kClosedFraction (the immersed switch keeps its 2 %).
-  GapScaledLaggedLoad(ElasticityOperator& beam, Real gap0, Real closed_fraction = kClosedFraction);
+  // structure: its operator; gap_unknowns: the unknown that crosses the gap in each facing cell
+  // (a plane beam's u_y, a plate's w); gap0: the gap at rest; closed_fraction: see
+  // kClosedFraction (the immersed switch keeps its 2 %).
+  GapScaledLaggedLoad(SecondOrderOperator& structure, std::vector<Index> gap_unknowns, Real gap0,
+                      Real closed_fraction = kClosedFraction);
 
   // The field's force per unknown at the reference state u_ref [N/m].
   void set_reference(std::vector<Real> force, std::span<const Real> u_ref);
@@ -49,25 +48,26 @@ class GapScaledLaggedLoad : public SecondOrderOperator {
   // The field load the residual applies at u (the scaled lagged model, without f_held).
   std::vector<Real> applied(std::span<const Real> u) const;
 
-  Index size() const override { return beam_.size(); }
+  Index size() const override { return structure_.size(); }
   void internal_residual(Real t, std::span<const Real> u, std::span<Real> r) override;
-  const CsrPattern& stiffness_pattern() const override { return beam_.stiffness_pattern(); }
+  const CsrPattern& stiffness_pattern() const override { return structure_.stiffness_pattern(); }
   void stiffness(Real t, std::span<const Real> u, std::span<Real> values) override;
-  std::vector<Real> mass_diagonal() const override { return beam_.mass_diagonal(); }
-  Real damping_time() const override { return beam_.damping_time(); }
+  std::vector<Real> mass_diagonal() const override { return structure_.mass_diagonal(); }
+  Real damping_time() const override { return structure_.damping_time(); }
   void add_damping_force(Real t, std::span<const Real> v, std::span<Real> r) override {
-    beam_.add_damping_force(t, v, r);
+    structure_.add_damping_force(t, v, r);
   }
 
  private:
-  // (g_ref / g)^2 of cell c; a gap below closed_fraction g0 is a failed trial state (IDA
+  // (g_ref / g)^2 of facing cell c; a gap below closed_fraction g0 is a failed trial state (IDA
   // retries).
   Real scale(std::size_t c, std::span<const Real> u) const;
-  ElasticityOperator& beam_;
+  SecondOrderOperator& structure_;
   Real gap0_, closed_fraction_;
+  std::vector<Index> gap_unknowns_;
   std::vector<Real> force_, held_, reference_gap_;
-  std::vector<Index> diagonal_;  // value index of (u_y,c, u_y,c) in the stiffness
-  std::vector<char> loaded_;     // cells with a nonzero reference force
+  std::vector<Index> diagonal_;  // value index of (u_c, u_c) in the stiffness
+  std::vector<char> on_gap_;     // per unknown: a gap unknown
   ExactLoad exact_;
 };
 

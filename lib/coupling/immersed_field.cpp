@@ -72,21 +72,21 @@ ImmersedGasSettings read_immersed_gas(const CaseNode& root, GasModel model) {
 
 }  // namespace
 
-std::unique_ptr<ImmersedGasModel> ImmersedField::make_gas() const {
+std::unique_ptr<StructureGas> ImmersedField::make_gas() const {
   switch (gas.model) {
     case GasModel::None:
       return nullptr;
     case GasModel::Esbgk:
-      return std::make_unique<ImmersedEsbgkGas>(sw->background(), gas.kinetic,
-                                                geometry.background_lower.y());
+      return sw->surface_gas(std::make_unique<ImmersedEsbgkGas>(sw->background(), gas.kinetic,
+                                                                geometry.background_lower.y()));
     case GasModel::Reynolds:
       break;
   }
   Real tip = -1e300;
   for (const Vec3& x : sw->rest_surface().vertices()) tip = std::max(tip, x.x());
-  return std::make_unique<ImmersedReynoldsFilm>(gas.film, sw->facing_segments(),
-                                                geometry.background_lower.y(),
-                                                geometry.background_lower.x(), tip);
+  return sw->surface_gas(std::make_unique<ImmersedReynoldsFilm>(
+      gas.film, sw->facing_segments(), geometry.background_lower.y(), geometry.background_lower.x(),
+      tip));
 }
 
 std::unique_ptr<ImmersedField> read_immersed_field(const CaseNode& root, ElasticityScene& beam,

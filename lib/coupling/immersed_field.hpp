@@ -59,9 +59,9 @@ struct ImmersedField {
   ImmersedBoundaryGeometry geometry;
   std::unique_ptr<ImmersedBoundaryField> sw;
   ImmersedGasSettings gas;
-  // A fresh gas of the case around the beam at rest (each run starts the gas at rest); null
+  // A fresh gas of the case around the beam's surface (each run starts the gas at rest); null
   // for none.
-  std::unique_ptr<ImmersedGasModel> make_gas() const;
+  std::unique_ptr<StructureGas> make_gas() const;
 };
 
 // actuation (electrode, facing_patch, control, immersed) and the gas section (its model, as

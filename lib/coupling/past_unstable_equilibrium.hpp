@@ -4,7 +4,7 @@
 // and would otherwise be counted "no pull-in" at end_time, making the bisection's answer a
 // figure of end_time (docs/pull-in.md, "Bisection end rules"). Shared by the dynamic runners as
 // the turning and settle rules are (run_dynamic in dynamic_pull_in.hpp, the field-coupled
-// beam, field_coupled_beam.hpp).
+// beam, field_coupled_structure.hpp).
 //
 // The quasi-static curve (quasi_static_pull_in.hpp) gives, for V < V_qs, two equilibria of the
 // control: the stable x_s(V) before the fold and the unstable x_u(V) beyond it. For one degree

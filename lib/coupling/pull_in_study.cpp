@@ -145,6 +145,9 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
     const std::string type = w.get_choice("type", {"step", "ramp", "pulse"});
     w.require(type == "step" || scene.field() == FieldModel::ParallelPlate, "type",
               "the " + field_name(scene.field()) + " field takes a step voltage only");
+    w.require(type == "step" || scene.choice.scheme == CouplingScheme::Monolithic, "type",
+              "a partitioned scheme takes a step voltage only (a ramp or pulse: coupling.scheme: "
+              "monolithic)");
     s.waveform.kind = type == "step"   ? VoltageWaveform::Kind::Step
                       : type == "ramp" ? VoltageWaveform::Kind::Ramp
                                        : VoltageWaveform::Kind::Pulse;
@@ -162,6 +165,8 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
     const CaseNode r = node.child("release");
     if (!scene.contact.enabled())
       node.fail("release", "a release needs the contact model (actuation.contact)");
+    node.require(scene.choice.scheme == CouplingScheme::Monolithic, "release",
+                 "the release runs the monolithic system (coupling.scheme: monolithic)");
     s.release = true;
     ReleaseOptions& ro = s.release_options;
     s.hold_voltage = r.get_quantity("hold_voltage", Dimension::Voltage, Range::non_negative());
@@ -415,11 +420,9 @@ Json coupling_json(const SwitchScene& scene, const CouplingOptions& c) {
     j["tolerance"] = c.tolerance;
     j["max_iterations"] = c.max_iterations;
   }
-  if (scene.film && c.scheme != CouplingScheme::Monolithic) j["macro_step"] = c.macro_step;
-  if (scene.immersed) {
+  if (scene.gas() != GasModel::None && c.scheme != CouplingScheme::Monolithic)
     j["gas_every"] = c.gas_every;
-    j["strong_gas"] = c.strong_gas;
-  }
+  if (scene.immersed) j["strong_gas"] = c.strong_gas;
   return j;
 }
 

@@ -64,8 +64,7 @@
 //     transient:                      # mode transient: one step voltage from rest to end_time
 //       voltage: 180 V                #   or touch-down, by the coupling scheme
 //       end_time: 5 us                #   (coupling_settings.hpp); no quasi-static curve
-//       output_interval: 0.1 us       # sampling (default end_time / 500; the partitioned
-//                                     # schemes sample at their macro steps)
+//       output_interval: 0.1 us       # sampling (default end_time / 500)
 //   solver:                           # every run (IDA)
 //     rtol: 1e-3                      # default 1e-3
 //     atol: 0.375 nm                  # displacements (default 1e-4 x the gap; per_kind: rtol x
@@ -157,8 +156,7 @@ struct PullInReport {
   bool has_dynamic_pull_out = false;
   DynamicPullOut dynamic_pull_out;
   bool has_transient = false;  // mode transient: only this run (no quasi-static curve)
-  DynamicRun transient;        // history: at output_interval (partitioned: at the macro
-                               // steps)
+  DynamicRun transient;        // history: at output_interval
   double transient_wall_s = 0, transient_cpu_s = 0;
   Real contact_gap = 0;  // of the timed runs (dynamic, transient)
   Json counters;         // the coupling manager's (coupling_manager.hpp)

@@ -65,9 +65,9 @@ std::vector<Real> follow_displacement(ParallelPlateActuation& actuation, Index c
                                       const QuasiStaticOptions& options = {});
 
 // The sampling and fold search on their own, for any equilibrium solver under displacement
-// control (the field-coupled beam's in field_coupled_beam.hpp): `solve(delta, from)` returns the
-// equilibrium at control deflection delta, starting from the solved sample `from` (delta 0:
-// the state at rest). Counts are summed into the result by the caller's solve.
+// control (the field-coupled structure's in field_coupled_structure.hpp): `solve(delta, from)`
+// returns the equilibrium at control deflection delta, starting from the solved sample `from`
+// (delta 0: the state at rest). Counts are summed into the result by the caller's solve.
 struct FoldSample {
   PullInPoint point;
   std::vector<Real> state;

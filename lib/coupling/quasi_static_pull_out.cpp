@@ -8,9 +8,9 @@
 
 #include "core/error.hpp"
 #include "core/structural_systems.hpp"
-#include "coupling/pseudo_transient_relaxation.hpp"
 #include "coupling/quasi_static_pull_in.hpp"
 #include "solvers/kinsol_solver.hpp"
+#include "solvers/pseudo_transient_relaxation.hpp"
 
 namespace rfmems {
 

@@ -32,16 +32,15 @@ std::vector<SceneRow> build_table() {
     for (A a : analyses) rows.push_back({m, a, steps_in_time(a) ? schemes : std::vector<C>{}});
   };
   // The parallel-plate law and the Reynolds film give exact Jacobian blocks: one IDA system.
-  // Partitioned, the film and the plate exchange per macro step (the single transient only).
+  // Partitioned, the film is split from the plate.
   add({S::Plate, F::ParallelPlate, G::None}, {A::QuasiStatic, A::Dynamic, A::Transient},
       {C::Monolithic});
-  add({S::Plate, F::ParallelPlate, G::Reynolds}, {A::QuasiStatic, A::Dynamic}, {C::Monolithic});
-  add({S::Plate, F::ParallelPlate, G::Reynolds}, {A::Transient},
+  add({S::Plate, F::ParallelPlate, G::Reynolds}, {A::QuasiStatic, A::Dynamic, A::Transient},
       {C::Monolithic, C::Staggered, C::StronglyCoupled});
   add({S::Plane, F::ParallelPlate, G::None}, {A::QuasiStatic, A::Dynamic, A::Transient},
       {C::Monolithic});
   // The Laplace field in the moving gap mesh and the immersed field give no exact blocks: the
-  // field-coupled beam's schemes (field_coupled_beam.hpp).
+  // field-coupled structure's schemes (field_coupled_structure.hpp).
   add({S::Plane, F::Laplace, G::None}, {A::Static, A::QuasiStatic, A::Dynamic, A::Transient},
       {C::Staggered, C::Implicit, C::StronglyCoupled});
   for (G gas : {G::None, G::Reynolds, G::Esbgk})
@@ -98,6 +97,9 @@ void reject_renamed_keys(const CaseNode& root) {
                  "the Laplace field's staggered or implicit stepping is coupling.scheme");
   }
   const CaseNode coupling = root.child_or_empty("coupling");
+  coupling.require(!coupling.has("macro_step"), "macro_step",
+                   "the gas exchanges with the structure at every accepted step; every k-th: "
+                   "coupling.gas_every");
   if (coupling.has("scheme") && coupling.get_string("scheme") == "strong")
     coupling.fail("scheme", "strong is spelt strongly_coupled");
 }

@@ -1,6 +1,6 @@
 // Whether a step response has turned back from the electrode (no pull-in for a step voltage
 // below dynamic pull-in), so that the run can end early: the rule every dynamic runner shares
-// (run_dynamic in dynamic_pull_in.hpp, the field-coupled beam's, field_coupled_beam.hpp).
+// (run_dynamic in dynamic_pull_in.hpp, the field-coupled structure's, field_coupled_structure.hpp).
 //
 // The control's velocity changing sign is not enough: on a squeeze-film-damped switch the
 // slow creep towards the fold carries the wiggles of weakly damped higher modes, each a zero

@@ -1,6 +1,6 @@
 // Static equilibrium K u = f(u) of an electrostatically loaded structure at a given voltage by
-// the plain fixed point u <- K^-1 f(u) from rest (the field-coupled beam,
-// field_coupled_beam.hpp): below pull-in it contracts, by about the
+// the plain fixed point u <- K^-1 f(u) from rest (the field-coupled structure,
+// field_coupled_structure.hpp): below pull-in it contracts, by about the
 // ratio of the electrostatic to the elastic stiffness. Converged when the control functional
 // (a deflection) changes by <= tolerance of itself. The counterpart at a given displacement is
 // displacement_control_fixed_point.hpp.

@@ -279,7 +279,7 @@ ImmersedLoad ImmersedBoundaryField::electrostatic_load(std::span<const Real> u, 
   return load;
 }
 
-BeamLoad ImmersedBoundaryField::load(std::span<const Real> u, Real voltage) {
+StructureLoad ImmersedBoundaryField::load(std::span<const Real> u, Real voltage) {
   ImmersedLoad l = electrostatic_load(u, voltage);
   return {std::move(l.force), l.total.y()};
 }
@@ -307,16 +307,37 @@ Json ImmersedBoundaryField::counters() const {
           {"electrostatic_krylov_iterations", times_.electrostatic_krylov_iterations}};
 }
 
-void ImmersedBoundaryField::reset_gas(ImmersedGasModel& gas, Real t0) {
-  gas.reset(rest_surface_, t0);
-}
+namespace {
 
-BeamLoad ImmersedBoundaryField::gas_load(ImmersedGasModel& gas, std::span<const Real> u,
-                                         std::span<const Real> v, Real t, Real dt) {
-  const std::vector<Vec3> f = gas.advance(moved_surface(u), segment_velocities(v), t, dt);
-  BeamLoad out{to_structure(f), 0.0};
-  for (const Vec3& x : f) out.force_y += x.y();
-  return out;
+class SurfaceGas : public StructureGas {
+ public:
+  SurfaceGas(const ImmersedBoundaryField& field, std::unique_ptr<ImmersedGasModel> gas)
+      : field_(field), gas_(std::move(gas)) {}
+  std::string name() const override { return gas_->name(); }
+  void reset(Real t0) override { gas_->reset(field_.rest_surface(), t0); }
+  StructureLoad advance(std::span<const Real> u, std::span<const Real> v, Real t,
+                        Real dt) override {
+    const std::vector<Vec3> f =
+        gas_->advance(field_.moved_surface(u), field_.segment_velocities(v), t, dt);
+    StructureLoad out{field_.to_structure(f), 0.0};
+    for (const Vec3& x : f) out.force_y += x.y();
+    return out;
+  }
+  void save_checkpoint() override { gas_->save_checkpoint(); }
+  void restore_checkpoint() override { gas_->restore_checkpoint(); }
+  void hold_marking(bool hold) override { gas_->hold_marking(hold); }
+  Real max_knudsen() const override { return gas_->max_knudsen(); }
+
+ private:
+  const ImmersedBoundaryField& field_;
+  std::unique_ptr<ImmersedGasModel> gas_;
+};
+
+}  // namespace
+
+std::unique_ptr<StructureGas> ImmersedBoundaryField::surface_gas(
+    std::unique_ptr<ImmersedGasModel> gas) const {
+  return std::make_unique<SurfaceGas>(*this, std::move(gas));
 }
 
 }  // namespace rfmems

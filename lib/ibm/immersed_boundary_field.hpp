@@ -15,13 +15,13 @@
 //   transfer ForceTransfer::to_surface, then each segment's force to the structure cell that
 //           owns its face (total force and moment conserved to round-off)
 //
-// The coupled beam (coupling/field_coupled_beam.hpp) solves its equilibria and its runs with this
-// load (physics/electrostatics/gap_field.hpp): the IBM load is solved at every field evaluation, so
-// its equilibria are fixed points to the tolerance the background resolves (its load jumps as
-// slivers are cut), the lagged load's trial gap stays above 2 % of g0, the velocities' tolerance is
-// the displacements' times 2 pi / first_bending_period(), and the turning root is armed after a
-// quarter of that period. The gas (immersed_gas.hpp) lives on the background around the moved
-// surface, its force per segment transferred to the structure cells.
+// The field-coupled structure (coupling/field_coupled_structure.hpp) solves its equilibria and its
+// runs with this load (physics/electrostatics/gap_field.hpp): the IBM load is solved at every field
+// evaluation, so its equilibria are fixed points to the tolerance the background resolves (its load
+// jumps as slivers are cut), the lagged load's trial gap stays above 2 % of g0, the velocities'
+// tolerance is the displacements' times 2 pi / first_bending_period(), and the turning root is
+// armed after a quarter of that period. The gas (immersed_gas.hpp) lives on the background around
+// the moved surface, its force per segment transferred to the structure cells.
 #pragma once
 #include <memory>
 #include <span>
@@ -35,6 +35,7 @@
 #include "ibm/immersed_surface.hpp"
 #include "physics/elasticity/elasticity_operator.hpp"
 #include "physics/electrostatics/gap_field.hpp"
+#include "physics/gas/structure_gas.hpp"
 
 namespace rfmems {
 
@@ -104,13 +105,14 @@ class ImmersedBoundaryField : public GapField {
 
   std::string name() const override { return "immersed"; }
   // The electrostatic load as the coupled beam applies it.
-  BeamLoad load(std::span<const Real> u, Real voltage) override;
+  StructureLoad load(std::span<const Real> u, Real voltage) override;
   GapFieldTraits traits() const override;
   double seconds() const override { return times_.total(); }
   Json counters() const override;
-  void reset_gas(ImmersedGasModel& gas, Real t0) override;
-  BeamLoad gas_load(ImmersedGasModel& gas, std::span<const Real> u, std::span<const Real> v, Real t,
-                    Real dt) override;
+  // The gas around the beam's surface as the coupling steps it (physics/gas/structure_gas.hpp):
+  // at rest around the rest surface, advanced with the surface moved to u at the segment
+  // velocities of v, its per-segment force transferred to the structure.
+  std::unique_ptr<StructureGas> surface_gas(std::unique_ptr<ImmersedGasModel> gas) const;
 
   const ImmersedPhysicsTimes& times() const { return times_; }
   void reset_times() { times_ = {}; }

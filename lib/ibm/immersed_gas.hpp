@@ -1,6 +1,7 @@
-// The gas slot of the immersed-boundary switch: what a gas model must offer the
-// field-coupled beam (coupling/field_coupled_beam.hpp), so that the ESBGK gas on the background
-// mesh plugs in beside the cheap models without touching the coupling.
+// The gas slot of the immersed-boundary switch: what a gas model on the beam's surface must
+// offer, so that the ESBGK gas on the background mesh plugs in beside the cheap models without
+// touching the coupling. ImmersedBoundaryField::surface_gas makes one the coupling's
+// StructureGas (physics/gas/structure_gas.hpp), moving the surface with the structure.
 //
 // Per coupled step the manager hands the gas the body's surface at the end of the step and
 // its segment velocities there, and asks for the gas force on each surface segment after

@@ -6,9 +6,8 @@
 
 #include "core/error.hpp"
 #include "mesh/mesh.hpp"
+#include "physics/gas/prescribed_gap_film.hpp"
 #include "physics/gas/reynolds_film.hpp"
-#include "physics/gas/reynolds_prescribed_motion.hpp"
-#include "solvers/ida_integrator.hpp"
 
 namespace rfmems {
 
@@ -68,60 +67,34 @@ void ImmersedReynoldsFilm::reset(const ImmersedSurface& surface, Real t0) {
   boundaries[strip_->find_patch("tip")].kind = FilmBoundary::Kind::Open;
   film_ = std::make_unique<ReynoldsFilm>(*strip_, gas_, boundaries);
 
-  state_ = {std::vector<Real>(n, gas_.ambient_pressure), std::vector<Real>(n, 0.0), gaps(surface),
-            0.0};
-  h0_ = h1_ = state_.h;
-  t0_ = t0;
-  t1_ = t0 + 1;
-  motion_ = std::make_unique<ReynoldsPrescribedMotion>(
-      *film_,
-      [this](Real t, std::span<Real> g, std::span<Real> g_rate) {
-        const Real span = t1_ - t0_, s = std::clamp((t - t0_) / span, 0.0, 1.0);
-        for (std::size_t c = 0; c < g.size(); ++c) {
-          g[c] = (1 - s) * h0_[c] + s * h1_[c];
-          g_rate[c] = (h1_[c] - h0_[c]) / span;
-        }
-      },
-      ReynoldsPrescribedMotion::Unknown::Pressure, t0);
-  IdaOptions options;
-  options.rtol = rtol_;
-  options.atol = rtol_ * gas_.ambient_pressure;
-  options.max_order = 2;
-  ida_ = std::make_unique<IdaIntegrator>(*motion_, options);
-  ida_->initialize(t0, state_.p, state_.p_rate);
-  has_saved_ = false;
+  stepped_ = std::make_unique<PrescribedGapFilm>(*film_, gaps(surface), t0, rtol_);
+}
+
+Real ImmersedReynoldsFilm::max_knudsen() const { return stepped_ ? stepped_->max_knudsen() : 0; }
+
+const std::vector<Real>& ImmersedReynoldsFilm::pressure() const {
+  if (!stepped_) throw InputError("Reynolds film: no pressure before reset");
+  return stepped_->pressure();
 }
 
 void ImmersedReynoldsFilm::save_checkpoint() {
-  saved_ = state_;
-  has_saved_ = true;
+  if (!stepped_) throw InputError("Reynolds film: checkpoint before reset");
+  stepped_->save_checkpoint();
 }
 
 void ImmersedReynoldsFilm::restore_checkpoint() {
-  if (!has_saved_) throw InputError("Reynolds film: restore without a saved checkpoint");
-  state_ = saved_;
+  if (!stepped_) throw InputError("Reynolds film: restore without a saved checkpoint");
+  stepped_->restore_checkpoint();
 }
 
 std::vector<Vec3> ImmersedReynoldsFilm::advance(const ImmersedSurface& surface,
                                                 std::span<const Vec3>, Real t, Real dt) {
-  if (!film_) throw InputError("Reynolds film: advance before reset");
-  h0_ = state_.h;
-  h1_ = gaps(surface);
-  t0_ = t;
-  t1_ = t + dt;
-  // The rate consistent with the new interval's gap rate (the storage term is diagonal).
-  state_.p_rate = motion_->consistent_rate(t, state_.p);
-  ida_->reinitialize(t, state_.p, state_.p_rate);
-  ida_->advance(t + dt);
-  state_.p.assign(ida_->y().begin(), ida_->y().end());
-  state_.p_rate.assign(ida_->yp().begin(), ida_->yp().end());
-  state_.h = h1_;
-  for (std::size_t i = 0; i < segments_.size(); ++i)
-    state_.max_knudsen = std::max(state_.max_knudsen, gas_.knudsen(state_.p[i], state_.h[i]));
+  if (!stepped_) throw InputError("Reynolds film: advance before reset");
+  const std::vector<Real>& p = stepped_->advance(gaps(surface), t, dt);
   std::vector<Vec3> force(surface.n_segments(), Vec3::Zero());
   for (std::size_t i = 0; i < segments_.size(); ++i) {
     const Index k = segments_[i];
-    force[k] = -(state_.p[i] - gas_.ambient_pressure) * strip_->cell_volume(static_cast<Index>(i)) *
+    force[k] = -(p[i] - gas_.ambient_pressure) * strip_->cell_volume(static_cast<Index>(i)) *
                surface.normal(k);
   }
   return force;

@@ -10,9 +10,8 @@
 // beam), h the segment midpoint's height above the substrate. Ends: zero flux at the anchor
 // (the wall), p = p_a at the open tip (on the end face, half a cell out).
 //
-// Each advance over [t, t + dt] integrates the film by IDA (BDF, exact Newton with KLU) under
-// the gap linear in time from the last advance's to the segments' heights at t + dt
-// (physics/gas/reynolds_prescribed_motion.hpp, the partitioned scheme's film adaptor). The
+// Each advance over [t, t + dt] steps the film under the gap linear in time from the last
+// advance's to the segments' heights at t + dt (physics/gas/prescribed_gap_film.hpp). The
 // film force on segment k is -(p_k - p_a) A_k n_k (the outward normal of the facing side points
 // at the substrate, so a compressed film pushes the beam up).
 #pragma once
@@ -26,8 +25,7 @@ namespace rfmems {
 
 class Mesh;
 class ReynoldsFilm;
-class ReynoldsPrescribedMotion;
-class IdaIntegrator;
+class PrescribedGapFilm;
 
 class ImmersedReynoldsFilm : public ImmersedGasModel {
  public:
@@ -43,13 +41,11 @@ class ImmersedReynoldsFilm : public ImmersedGasModel {
   void reset(const ImmersedSurface& surface, Real t0) override;
   std::vector<Vec3> advance(const ImmersedSurface& surface, std::span<const Vec3> segment_velocity,
                             Real t, Real dt) override;
-  Real max_knudsen() const override { return state_.max_knudsen; }
-  // The film's pressure, its rate and the gaps at the last advance's end (and the Knudsen
-  // maximum).
+  Real max_knudsen() const override;
   void save_checkpoint() override;
   void restore_checkpoint() override;
 
-  const std::vector<Real>& pressure() const { return state_.p; }
+  const std::vector<Real>& pressure() const;
 
  private:
   // The gap of each film cell with the beam at `surface`.
@@ -59,18 +55,7 @@ class ImmersedReynoldsFilm : public ImmersedGasModel {
   Real substrate_y_, wall_x_, tip_x_, rtol_;
   std::unique_ptr<Mesh> strip_;
   std::unique_ptr<ReynoldsFilm> film_;
-  std::unique_ptr<ReynoldsPrescribedMotion> motion_;
-  std::unique_ptr<IdaIntegrator> ida_;
-  // The gap linear in time over the current advance [t0, t1], from h0 to h1.
-  Real t0_ = 0, t1_ = 1;
-  std::vector<Real> h0_, h1_;
-  struct State {
-    std::vector<Real> p, p_rate, h;
-    Real max_knudsen = 0;
-  };
-  State state_;  // at the last advance's end
-  State saved_;
-  bool has_saved_ = false;
+  std::unique_ptr<PrescribedGapFilm> stepped_;
 };
 
 }  // namespace rfmems

@@ -77,9 +77,10 @@ std::string transient_line(const std::string& head, const Json& p) {
   out += fmt::format("; {} steps, {} residual evaluations", t["steps"].get<long>(),
                      t["residual_evals"].get<long>());
   const Json& c = p["counters"];
-  if (c.contains("macro_steps"))
-    out += fmt::format(", {} coupling passes over {} macro steps",
-                       c["coupling_iterations"].get<long>(), c["macro_steps"].get<long>());
+  if (c.contains("gas_steps") && c["gas_steps"].get<long>() > 0)
+    out += fmt::format(", {} gas steps", c["gas_steps"].get<long>());
+  if (c.contains("coupling_iterations") && c["coupling_iterations"].get<long>() > 0)
+    out += fmt::format(", {} coupling iterations", c["coupling_iterations"].get<long>());
   return out + "\n";
 }
 

@@ -145,8 +145,11 @@ expect_input_error bad_contact "contact_gap" "$CASE" --set pull_in.contact_gap=2
 expect_input_error outside "background" "$CASE" --set "actuation.immersed.background.upper=[40 um, 10 um]"
 expect_input_error strong_gas_value "strong_gas" "$CASE" --set coupling.strong_gas=maybe
 expect_input_error strong_gas_staggered "strong_gas" "$CASE" --set coupling.strong_gas=true
-expect_input_error strong_gas_every "strong_gas" "$CASE" --set coupling.scheme=strongly_coupled \
+expect_input_error strong_gas_every "gas_every' = 2: the strongly coupled iteration" "$CASE" \
+  --set "gas={model: reynolds, pressure: 1 atm}" --set coupling.scheme=strongly_coupled \
   --set coupling.strong_gas=true --set coupling.gas_every=2
+expect_input_error gas_every_without_gas "gas_every' = 2: only with a gas" "$CASE" \
+  --set coupling.gas_every=2
 expect_input_error bad_fixed_step "fixed_step" "$CASE" --set solver.fixed_step=-1ns
 expect_input_error typo "actuation.immersed.electrodes" "$CASE" \
   --set "actuation.immersed.electrodes={x: [0, 1]}"

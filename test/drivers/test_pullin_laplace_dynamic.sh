@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# rfmems-pullin, dynamic mode on a laplace case (coupling/field_coupled_beam.hpp): the
+# rfmems-pullin, dynamic mode on a laplace case (coupling/field_coupled_structure.hpp): the
 # coarse 25 x 2 plane beam of cases/switch_plane_laplace under the Laplace field recomputed per
 # IDA step exits 0, reports V_dyn with a ratio to the quasi-static V_PI near the thesis's 0.91,
 # says in the JSON and the result file's metadata that the dynamic study used the Laplace field

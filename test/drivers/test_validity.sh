@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The scene validity report end to end (coupling/scene_validity.hpp) through rfmems-pullin:
+# The scene validity report end to end (physics/validity/scene_validity.hpp) through rfmems-pullin:
 # the default switch_plate run states its film Knudsen range (lambda/g from the rest gap,
 # 67.15 nm / 3.75 um = 0.0179, to the contact gap, 67.15 nm / 75 nm = 0.895) and L/h = 100 in
 # the JSON summary's `validity`, with no warning; a film at 10 Pa (Kn 184 at rest, beyond

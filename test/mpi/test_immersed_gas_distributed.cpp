@@ -215,13 +215,19 @@ TEST_P(CoupledCoarseSwitch, GivesTheSerialTipDeflection) {
     o.coupling.scheme = CouplingScheme::StronglyCoupled;
     o.coupling.strong_gas = true;
   }
-  ImmersedEsbgkGas serial(c.scene->background(), air(Communicator::serial()), 0.0);
-  ImmersedEsbgkGas parallel(c.scene->background(), air(world), 0.0);
+  auto serial_gas =
+      std::make_unique<ImmersedEsbgkGas>(c.scene->background(), air(Communicator::serial()), 0.0);
+  auto parallel_gas = std::make_unique<ImmersedEsbgkGas>(c.scene->background(), air(world), 0.0);
+  const ImmersedEsbgkGas& serial = *serial_gas;
+  const ImmersedEsbgkGas& parallel = *parallel_gas;
+  const std::unique_ptr<StructureGas> serial_surface = c.scene->surface_gas(std::move(serial_gas));
+  const std::unique_ptr<StructureGas> parallel_surface =
+      c.scene->surface_gas(std::move(parallel_gas));
   c.reset_times();
-  const DynamicRun r1 = c.coupled->run(80.0, o, &serial);
+  const DynamicRun r1 = c.coupled->run(80.0, o, serial_surface.get());
   const CoupledRunTimes t1 = c.coupled->times();
   c.reset_times();
-  const DynamicRun rP = c.coupled->run(80.0, o, &parallel);
+  const DynamicRun rP = c.coupled->run(80.0, o, parallel_surface.get());
   const CoupledRunTimes tP = c.coupled->times();
   if (GetParam()) {
     EXPECT_EQ(tP.coupling_iterations, t1.coupling_iterations);

@@ -17,7 +17,7 @@
 #include <cstdio>
 
 #include "coupling/dynamic_pull_in.hpp"
-#include "coupling/field_coupled_beam.hpp"
+#include "coupling/field_coupled_structure.hpp"
 #include "coupling/quasi_static_pull_in.hpp"
 #include "io/case_file.hpp"
 #include "physics/elasticity/elasticity_scene.hpp"
@@ -86,7 +86,7 @@ double plane_pull_in(int nx, int ny, const ElectrodeExtent& electrode) {
   ElasticityScene beam = build_elasticity_scene(cf.root(), "", AnalysisType::Static);
   const Index control = 2 * nearest_cell(*beam.mesh, Vec3(200e-6, 0, 0)) + 1;
   LaplaceGapField field(*beam.op, "bottom", kGap, electrode);
-  FieldCoupledBeam coupled(*beam.op, field, LinearFunctional::unknown(control));
+  FieldCoupledStructure coupled(*beam.op, field, LinearFunctional::unknown(control));
   QuasiStaticOptions options;
   options.n_points = 20;
   options.max_fraction = 0.6;

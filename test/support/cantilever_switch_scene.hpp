@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-#include "coupling/field_coupled_beam.hpp"
+#include "coupling/field_coupled_structure.hpp"
 #include "ibm/immersed_boundary_field.hpp"
 #include "mesh/structured_mesh.hpp"
 
@@ -18,8 +18,8 @@ constexpr Real kGap = 1.5 * um, kLength = 45 * um, kThickness = 1.5 * um;
 struct Cantilever {
   std::unique_ptr<Mesh> mesh;
   std::unique_ptr<ElasticityOperator> op;
-  std::unique_ptr<ImmersedBoundaryField> scene;  // the field
-  std::unique_ptr<FieldCoupledBeam> coupled;     // the beam coupled to it
+  std::unique_ptr<ImmersedBoundaryField> scene;    // the field
+  std::unique_ptr<FieldCoupledStructure> coupled;  // the beam coupled to it
   Cantilever(int bx, int by, int gx, int gy, Real electrode_end = kLength) {
     BoxSpec spec;
     spec.lower = Vec3(0, kGap, 0);
@@ -40,7 +40,7 @@ struct Cantilever {
     // The control: u_y at the tip's bottom corner, from the tip cell of the bottom row.
     scene = std::make_unique<ImmersedBoundaryField>(
         *op, g, op->displacement_functional(bx - 1, Vec3(kLength, kGap, 0), 1));
-    coupled = std::make_unique<FieldCoupledBeam>(*op, *scene, scene->control());
+    coupled = std::make_unique<FieldCoupledStructure>(*op, *scene, scene->control());
   }
   void reset_times() {
     scene->reset_times();

@@ -11,12 +11,12 @@
 
 #include "core/structural_systems.hpp"
 #include "coupling/dynamic_release.hpp"
-#include "coupling/pseudo_transient_relaxation.hpp"
 #include "coupling/pull_in_study.hpp"
 #include "coupling/quasi_static_pull_in.hpp"
 #include "coupling/switch_scene.hpp"
 #include "coupling/switch_system.hpp"
 #include "io/case_file.hpp"
+#include "solvers/pseudo_transient_relaxation.hpp"
 
 namespace rfmems::test {
 

@@ -91,7 +91,7 @@ Json LaplaceGapField::counters() const {
   return {{"field_solves", solves_}, {"move_s", move_seconds_}, {"field_s", field_seconds_}};
 }
 
-BeamLoad LaplaceGapField::load(std::span<const Real> u, Real voltage) {
+StructureLoad LaplaceGapField::load(std::span<const Real> u, Real voltage) {
   const Mesh& beam_mesh = beam_.mesh();
   {
     ScopedCpuTimer timer{move_seconds_};
@@ -109,7 +109,7 @@ BeamLoad LaplaceGapField::load(std::span<const Real> u, Real voltage) {
   const SurfaceLoad load = field_->surface_load("top");
   // The field scales with V, the Maxwell traction with V^2: solved at V = 1.
   const Real v2 = voltage * voltage;
-  BeamLoad out{std::vector<Real>(beam_.size(), 0.0), 0.0};
+  StructureLoad out{std::vector<Real>(beam_.size(), 0.0), 0.0};
   Real force_y = 0;
   for (std::size_t i = 0; i < load.faces.size(); ++i) {
     const Vec3 force = load.traction[i] * gap_mesh_->face_area(load.faces[i]).norm();

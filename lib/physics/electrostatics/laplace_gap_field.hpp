@@ -11,8 +11,8 @@
 //   3. the traction on each top face of the gap mesh, times its area, goes to the beam cell
 //      that owns the matching bottom face: q(u), the force per V^2 per beam unknown [N/m/V^2].
 //
-// The field-coupled beam (coupling/field_coupled_beam.hpp) solves its equilibria and its runs with
-// it (gap_field.hpp: load = V^2 q(u)).
+// The field-coupled structure (coupling/field_coupled_structure.hpp) solves its equilibria and its
+// runs with it (gap_field.hpp: load = V^2 q(u)).
 #pragma once
 #include <memory>
 #include <span>
@@ -46,7 +46,7 @@ class LaplaceGapField : public GapField {
   std::string name() const override { return "laplace"; }
   // V^2 q(u), q the force per V^2 on every beam unknown (moves the gap mesh and solves at
   // V = 1), and its total along y.
-  BeamLoad load(std::span<const Real> u, Real voltage) override;
+  StructureLoad load(std::span<const Real> u, Real voltage) override;
   // The smallest gap over the bottom cells' centroid u_y (cheap, for root functions): the
   // parallel-plate law's gap measure.
   Real min_gap(std::span<const Real> u) const override;

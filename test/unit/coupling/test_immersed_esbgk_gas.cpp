@@ -183,19 +183,21 @@ TEST(ImmersedEsbgkGas, CoupledSwitchRunsAFewStepsWithTheGasForceOfTheGasAlone) {
   o.ida.atol = 1e-2 * kGap;
   o.ida.max_order = 2;
   o.coupling.scheme = CouplingScheme::Staggered;
-  ImmersedEsbgkGas gas(c.scene->background(), air(6, 1e-8), 0.0);
+  auto kinetic = std::make_unique<ImmersedEsbgkGas>(c.scene->background(), air(6, 1e-8), 0.0);
+  ImmersedEsbgkGas& gas = *kinetic;
+  const std::unique_ptr<StructureGas> on_surface = c.scene->surface_gas(std::move(kinetic));
   const Real scale = kP0 * perimeter(c.scene->rest_surface());
 
   // At 0 V the only load is the gas's ambient pressure (whose x part on the tip staircase
   // bends the beam by picometres, measured 3.8e-12 m); the gas force in y stays below 1e-7 of
   // p0 times the perimeter (measured <= 5e-8 N/m of 1.29 N/m; the electrostatic pull at 80 V
   // is ~1e-2 N/m).
-  const DynamicRun at_rest = c.coupled->run(0.0, o, &gas);
+  const DynamicRun at_rest = c.coupled->run(0.0, o, on_surface.get());
   ASSERT_GT(gas.stats().steps, 0);
   for (const DynamicSample& s : at_rest.history) EXPECT_LT(std::abs(s.gas_force), 1e-7 * scale);
   EXPECT_LT(std::abs(at_rest.extreme_control), 1e-5 * kGap);
 
-  const DynamicRun closing = c.coupled->run(80.0, o, &gas);
+  const DynamicRun closing = c.coupled->run(80.0, o, on_surface.get());
   ASSERT_GT(gas.stats().steps, 1);
   EXPECT_EQ(gas.stats().unconverged, 0);
   EXPECT_LT(closing.extreme_control, 0);

@@ -59,7 +59,7 @@ TEST(ImmersedBoundaryField, ForceAtRestIsParallelPlatePlusEdgeCorrection) {
 // held 1e-3.
 TEST(ImmersedBoundaryField, SmallStepSwingsToTwiceTheStaticDeflection) {
   Cantilever c(46, 4, 101, 31);
-  const BeamEquilibrium st = c.coupled->solve_static(30.0);
+  const StructureEquilibrium st = c.coupled->solve_static(30.0);
   ASSERT_LT(st.control, 0);
   DynamicOptions o = run_options(1.2e-6, 1e-5);
   const DynamicRun staggered = c.coupled->run(30.0, o, nullptr);
@@ -84,7 +84,7 @@ TEST(ImmersedBoundaryField, SmallStepSwingsToTwiceTheStaticDeflection) {
 // load).
 TEST(ImmersedBoundaryField, ContactGapIsTheMovedSurfacesLowestFacingVertex) {
   Cantilever c(46, 4, 101, 31);
-  const BeamEquilibrium st = c.coupled->solve_static(50.0);
+  const StructureEquilibrium st = c.coupled->solve_static(50.0);
   ASSERT_LT(st.control, 0);
   const Mesh& mesh = *c.mesh;
   const int bottom = mesh.find_patch("bottom");
@@ -151,14 +151,14 @@ TEST(ImmersedBoundaryField, StrongCouplingConvergesToTheImplicitStep) {
 // (the gas's own time is the structure's), there must be ceil(steps / k) of them, and each
 // carries the surface of its end state. A recording gas (constant force) checks it.
 TEST(ImmersedBoundaryField, GasEveryKStepsTilesTheRun) {
-  struct RecordingGas : ImmersedGasModel {
+  struct RecordingGas : StructureGas {
     std::vector<std::pair<Real, Real>> intervals;
     std::string name() const override { return "recording"; }
-    void reset(const ImmersedSurface&, Real) override { intervals.clear(); }
-    std::vector<Vec3> advance(const ImmersedSurface& surface, std::span<const Vec3>, Real t,
-                              Real dt) override {
+    void reset(Real) override { intervals.clear(); }
+    StructureLoad advance(std::span<const Real> u, std::span<const Real>, Real t,
+                          Real dt) override {
       intervals.emplace_back(t, dt);
-      return std::vector<Vec3>(surface.n_segments(), Vec3::Zero());
+      return {std::vector<Real>(u.size(), 0.0), 0.0};
     }
   };
   Cantilever c(46, 4, 101, 31);
@@ -206,13 +206,14 @@ TEST(ImmersedBoundaryField, StrongCouplingWithTheFilmRemovesTheLaggedFilmForceEr
   o.output_interval = 1e-8;
   o.coupling.tolerance = 1e-8;
   auto tip = [&](CouplingScheme scheme, bool strong_gas, Real dt) {
-    ImmersedReynoldsFilm film(air, c.scene->facing_segments(), 0.0, 0.0, tip_x);
+    std::unique_ptr<StructureGas> film = c.scene->surface_gas(
+        std::make_unique<ImmersedReynoldsFilm>(air, c.scene->facing_segments(), 0.0, 0.0, tip_x));
     o.coupling.scheme = scheme;
     o.coupling.strong_gas = strong_gas;
     o.ida.fixed_step = dt;
     o.ida.fixed_step_min = 1e-4 * dt;
     c.reset_times();
-    const DynamicRun r = c.coupled->run(125.0, o, &film);
+    const DynamicRun r = c.coupled->run(125.0, o, film.get());
     EXPECT_FALSE(r.pulled_in);
     EXPECT_NEAR(r.history.back().t, o.end_time, 1e-12 * o.end_time);
     const CoupledRunTimes& t = c.coupled->times();

@@ -70,9 +70,9 @@ TEST(ImmersedSwitchSlivers, FirstStaticIterateOnTheThesisBackground) {
   EXPECT_GT(std::abs(raw), 10 * std::abs(at_rest));
   EXPECT_NEAR(snapped / at_rest, 1.0, 0.3);
 
-  const BeamEquilibrium on_lines = c.coupled->solve_static(50.0);
+  const StructureEquilibrium on_lines = c.coupled->solve_static(50.0);
   Cantilever off(185, 11, 151, 51);
-  const BeamEquilibrium off_lines = off.coupled->solve_static(50.0);
+  const StructureEquilibrium off_lines = off.coupled->solve_static(50.0);
   std::printf("static 50 V: 150 x 50 tip %.4e m in %d iterates; 151 x 51 %.4e m in %d\n",
               on_lines.control, on_lines.iterations, off_lines.control, off_lines.iterations);
   EXPECT_LE(on_lines.iterations, 12);

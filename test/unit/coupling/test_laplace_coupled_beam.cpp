@@ -1,4 +1,4 @@
-// The plane beam coupled to the Laplace field (coupling/field_coupled_beam.hpp,
+// The plane beam coupled to the Laplace field (coupling/field_coupled_structure.hpp,
 // physics/electrostatics/laplace_gap_field.hpp):
 // the fixed-fixed beam of cases/switch_plane_laplace on a coarse mesh, against its own implicit
 // coupling, the static Laplace deflection and the thesis's dynamic/static pull-in ratio.
@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <memory>
 
-#include "coupling/field_coupled_beam.hpp"
+#include "coupling/field_coupled_structure.hpp"
 #include "coupling/switch_scene.hpp"
 #include "coupling/switch_system.hpp"
 #include "io/case_file.hpp"
@@ -22,7 +22,7 @@ struct Beam {
   CaseFile file;
   SwitchScene scene;
   ElasticityScene* elasticity = nullptr;
-  std::unique_ptr<FieldCoupledBeam> sw;
+  std::unique_ptr<FieldCoupledStructure> sw;
 };
 
 std::unique_ptr<Beam> make_beam(int nx, int ny, int gap_cells) {
@@ -35,8 +35,8 @@ std::unique_ptr<Beam> make_beam(int nx, int ny, int gap_cells) {
       nullptr});
   b->scene = build_switch_scene(b->file.root(), std::filesystem::path(path).parent_path().string());
   b->elasticity = dynamic_cast<ElasticityScene*>(b->scene.structure.get());
-  b->sw = std::make_unique<FieldCoupledBeam>(*b->elasticity->op, *b->scene.laplace,
-                                             LinearFunctional::unknown(b->scene.control));
+  b->sw = std::make_unique<FieldCoupledStructure>(*b->elasticity->op, *b->scene.laplace,
+                                                  LinearFunctional::unknown(b->scene.control));
   return b;
 }
 
@@ -122,7 +122,7 @@ TEST(LaplaceCoupledBeam, StaggeredMatchesImplicitAtSmallSteps) {
 // of the same scene from the free response must match it.
 TEST(LaplaceCoupledBeam, SmallStepSwingsToTwiceTheStaticDeflection) {
   auto b = make_beam(25, 2, 4);
-  const BeamEquilibrium st = b->sw->solve_static(100.0);
+  const StructureEquilibrium st = b->sw->solve_static(100.0);
   ASSERT_LT(st.control, 0);
   DynamicOptions o = options(b->scene.gap, 1e-5);
   o.stop_at_turning = false;

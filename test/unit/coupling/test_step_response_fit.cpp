@@ -1,6 +1,6 @@
 // The fundamental's damping ratio and frequency by the step-response fit
-// (coupling/step_response_fit.hpp, through free_response in coupling/dynamic_pull_in.hpp) on
-// sampled step responses from rest x = x_s (1 - phi(t; zeta, w)) with known zeta (light,
+// (physics/structure/step_response_fit.hpp, through free_response in coupling/dynamic_pull_in.hpp)
+// on sampled step responses from rest x = x_s (1 - phi(t; zeta, w)) with known zeta (light,
 // squeeze-film-like and overdamped), plus a weakly damped higher mode of 0.5 % of the
 // static deflection at 7 w (the damped plate's case, docs/pull-in.md, "Damped switches"), sampled
 // at 80 points per fundamental period over 6 periods, as the driver's 0.1 us output at 130 kHz.
@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "coupling/dynamic_pull_in.hpp"
-#include "coupling/step_response_fit.hpp"
+#include "physics/structure/step_response_fit.hpp"
 
 using namespace rfmems;
 

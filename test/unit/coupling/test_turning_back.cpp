@@ -12,8 +12,8 @@
 #include <cmath>
 #include <functional>
 
-#include "coupling/step_response_fit.hpp"
 #include "coupling/turning_back.hpp"
+#include "physics/structure/step_response_fit.hpp"
 
 using namespace rfmems;
 

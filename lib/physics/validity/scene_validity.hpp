@@ -1,8 +1,9 @@
 // The scene validity report: the ranges a run saw (Knudsen number, aspect ratios) and a
 // warning wherever the chosen models leave their range of validity. A pure function of a plain
 // description of the scene, so each criterion is unit tested without a solve
-// (test/unit/coupling/test_scene_validity.cpp); describe_switch_scene fills the description
-// from a switch scene and what its run computed.
+// (test/unit/validity/test_scene_validity.cpp). Each driver describes its scene:
+// coupling/switch_validity.hpp (a switch and what its run computed),
+// physics/creep/creep_validity.hpp, physics/gas/kinetic/kinetic_validity.hpp.
 //
 // Criteria (each warning names its criterion and the value seen):
 //  - Reynolds film, Kn = lambda(p)/g of the local gap over the gaps the run saw (rest gap down
@@ -55,12 +56,6 @@
 #include "materials/gas_properties.hpp"
 
 namespace rfmems {
-
-struct SwitchScene;
-struct PullInReport;
-struct CreepCase;
-struct KineticScene;
-class Communicator;
 
 struct SceneDescription {
   enum class Analysis { Static, Dynamic, Creep };
@@ -136,28 +131,6 @@ void check_cell_size_against_mean_free_path(Real cell_size, Real lambda_min, Rea
                                             const std::string &key, ValidityReport &r);
 
 ValidityReport check_scene_validity(const SceneDescription &scene);
-
-// The switch scene's description; `thickness` from the case (model.thickness);
-// report: what the pull-in run computed (its smallest gap, the fold), or null
-// before a run.
-SceneDescription describe_switch_scene(const SwitchScene &scene, Real thickness,
-                                       SceneDescription::Analysis analysis,
-                                       const PullInReport *report);
-
-// The pull-in driver's one call: describe_switch_scene with the plate's thickness
-// and the analysis the run did, then check_scene_validity.
-ValidityReport switch_scene_validity(const SwitchScene &scene, const PullInReport &report);
-
-// The creep driver's one call: a creep run's plate (creep slenderness
-// criterion) and, with an actuation, its parallel-plate gap (the rest gap:
-// creep runs record no film).
-ValidityReport creep_case_validity(const CreepCase &creep);
-
-// The gas driver's one call: the computed field's density and temperature range
-// (over every rank's owned cells; call on every rank), the reference length,
-// the velocity grid against the diffuse walls (update the operator's macros
-// from the final state first).
-ValidityReport kinetic_scene_validity(const KineticScene &scene, const Communicator &comm);
 
 // Warnings on stderr, "<program>: warning: <text>" one line each.
 void print_validity_warnings(const std::string &program, const ValidityReport &report);

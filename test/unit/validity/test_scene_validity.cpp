@@ -1,4 +1,4 @@
-// The scene validity report (coupling/scene_validity.hpp): scenes inside and
+// The scene validity report (physics/validity/scene_validity.hpp): scenes inside and
 // outside each criterion's range give exactly the expected warnings, and the
 // reported ranges are the criteria's values computed by hand (Kn = lambda_ref
 // p_ref / (p g), L/h, g/b, the kinetic Kn = mu / (rho R T) sqrt(pi R T / 2) /
@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "coupling/scene_validity.hpp"
+#include "physics/validity/scene_validity.hpp"
 
 namespace rfmems {
 namespace {

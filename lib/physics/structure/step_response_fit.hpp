@@ -9,7 +9,7 @@
 //              (zeta = 1: (1 + w t) exp(-w t); the two forms meet there continuously),
 //
 // in x_s, zeta and w to the whole history. Why a fit and not the extrema: the logarithmic
-// decrement (dynamic_pull_in.hpp, LogDecrement) needs several swings of the fundamental; on a
+// decrement (free_response.hpp, LogDecrement) needs several swings of the fundamental; on a
 // squeeze-film-damped switch (zeta ~ 0.5) there is one overshoot, and the extrema it finds
 // belong to a weakly damped higher mode riding on the settled fundamental (0.016 at 937 kHz
 // against 0.54, cases/switch_plate_damped, docs/pull-in.md, "Damped switches"). A higher

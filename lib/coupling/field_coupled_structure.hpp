@@ -1,16 +1,17 @@
-// A plane beam coupled to a field that gives no exact Jacobian blocks
-// (physics/electrostatics/gap_field.hpp: the Laplace field in a gap mesh, the immersed-boundary
-// field), and to the gas on its surface: its equilibria and its one time loop, whichever field it
-// is.
+// A structure coupled to a field across its gap (physics/electrostatics/gap_field.hpp) and to
+// the gas on its surface (physics/gas/structure_gas.hpp) in partitioned steps: its equilibria and
+// the one time loop of every scheme but the monolithic system, whichever structure, field and
+// gas.
 //
-// Equilibria (one KLU factorisation of the linear beam's stiffness K for the whole solve):
+// Equilibria (one KLU factorisation of the linear structure's stiffness K for the whole solve):
 //   at a voltage      K u = f(u, V) by the plain fixed point (voltage_control_fixed_point.hpp);
 //   at a deflection   of the control, the Aitken-relaxed fixed point with V^2 = delta / l(z)
 //                     per iterate (displacement_control_fixed_point.hpp), traced through the
 //                     fold by trace_fold (quasi_static_pull_in.hpp).
 //
-// Time loop (run): M u'' + K u = f(u) + f_gas from rest under a step voltage V, IDA (BDF,
-// adaptive order and step) in one-step mode. Inside a step the field's load is the gap-scaled
+// Time loop (run): M u'' + R(u) = f(u) + f_gas from rest under a step voltage V, IDA (BDF,
+// adaptive order and step) in one-step mode, the structure's quasi-static components without
+// inertia (core/reduced_inertia_system.hpp). Inside a step the field's load is the gap-scaled
 // lagged load (gap_scaled_lagged_load.hpp): F at the reference state times (g_ref / g)^2, so
 // that the Jacobian carries the electrostatic softening. The scheme (coupling_settings.hpp):
 //   staggered         F refreshed at every state IDA accepts (first order in the step);
@@ -20,8 +21,11 @@
 //                     redone from IDA's checkpoint until |F(u_k) - A_k| <= tolerance |F(u_k)|
 //                     (Kuettler & Wall 2008): it converges to the implicit step. With
 //                     strong_gas the gas is inside every iterate too (from its own checkpoint).
+// An exact field (the parallel-plate law, GapFieldTraits::exact) is inside the structure's
+// operator with its exact Jacobian: then the schemes partition the gas alone (strongly_coupled
+// iterates on the gas load).
 // The gas is advanced over every gas_every accepted steps (one gas step spanning them) and its
-// force held over the next structural steps (lagged), unless strong_gas.
+// force held over the next structural steps (lagged), unless it is inside the strong iteration.
 //
 // Events, run_dynamic's (run_events.hpp): touch-down (the smallest gap reaching contact_gap: the
 // pull-in time, the run ends), turning back, lift-off, and after every accepted step the settle
@@ -35,13 +39,21 @@
 #include "coupling/quasi_static_pull_in.hpp"
 #include "physics/elasticity/elasticity_operator.hpp"
 #include "physics/electrostatics/gap_field.hpp"
+#include "physics/gas/structure_gas.hpp"
 
 namespace rfmems {
 
-class ImmersedGasModel;
+// The structure as the coupling sees it: its operator (with the field inside when the field is
+// exact), the components whose inertia a run neglects (empty: none) and the unknown that
+// crosses the gap in each facing cell.
+struct CoupledStructure {
+  SecondOrderOperator& op;
+  std::vector<bool> quasi_static;
+  std::vector<Index> gap_unknowns;
+};
 
 // An equilibrium at a voltage.
-struct BeamEquilibrium {
+struct StructureEquilibrium {
   std::vector<Real> u;
   Real control = 0;  // the control's deflection [m]
   Real force_y = 0;  // the field's total force along y at the last iterate [N/m]
@@ -61,18 +73,19 @@ struct CoupledRunTimes {
   Json json() const;
 };
 
-class FieldCoupledBeam {
+class FieldCoupledStructure {
  public:
-  // beam: the plane elasticity operator (with density for run); field: its load; control: the
-  // deflection reported and controlled (one unknown, or a point's u_y from its cell's
-  // reconstruction).
-  FieldCoupledBeam(ElasticityOperator& beam, GapField& field, LinearFunctional control);
+  // field: the load across the gap; control: the deflection reported and controlled (one
+  // unknown, or a point's gap-axis displacement from its cell's reconstruction).
+  FieldCoupledStructure(CoupledStructure structure, GapField& field, LinearFunctional control);
+  // A plane beam (its elasticity operator, with density for run; every cell facing the gap).
+  FieldCoupledStructure(ElasticityOperator& beam, GapField& field, LinearFunctional control);
 
-  BeamEquilibrium solve_static(Real voltage);
+  StructureEquilibrium solve_static(Real voltage);
   QuasiStaticPullIn trace_quasi_static(const QuasiStaticOptions& options);
   // A step voltage V from rest with the run's events, IDA settings and scheme (see above);
   // gas may be null.
-  DynamicRun run(Real voltage, const DynamicOptions& options, ImmersedGasModel* gas = nullptr);
+  DynamicRun run(Real voltage, const DynamicOptions& options, StructureGas* gas = nullptr);
 
   GapField& field() { return field_; }
   const LinearFunctional& control() const { return control_; }
@@ -80,7 +93,7 @@ class FieldCoupledBeam {
   void reset_times() { times_ = {}; }
 
  private:
-  ElasticityOperator& beam_;
+  CoupledStructure structure_;
   GapField& field_;
   LinearFunctional control_;
   CoupledRunTimes times_;

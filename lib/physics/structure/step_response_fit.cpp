@@ -1,4 +1,4 @@
-#include "coupling/step_response_fit.hpp"
+#include "physics/structure/step_response_fit.hpp"
 
 #include <Eigen/Core>
 #include <cmath>

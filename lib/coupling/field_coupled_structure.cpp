@@ -1,4 +1,4 @@
-#include "coupling/field_coupled_beam.hpp"
+#include "coupling/field_coupled_structure.hpp"
 
 #include <fmt/format.h>
 
@@ -8,13 +8,12 @@
 #include "core/error.hpp"
 #include "core/process_cpu_clock.hpp"
 #include "core/reduced_inertia_system.hpp"
-#include "coupling/aitken_relaxation.hpp"
 #include "coupling/displacement_control_fixed_point.hpp"
 #include "coupling/gap_scaled_lagged_load.hpp"
 #include "coupling/run_events.hpp"
 #include "coupling/state_tolerances.hpp"
 #include "coupling/voltage_control_fixed_point.hpp"
-#include "ibm/immersed_gas.hpp"
+#include "solvers/aitken_relaxation.hpp"
 #include "solvers/ida_integrator.hpp"
 #include "solvers/klu_factorization.hpp"
 
@@ -62,11 +61,17 @@ std::vector<DynamicSample> history_of(const std::vector<StepRecord>& records, Re
   return history;
 }
 
-// The stiffness of the linear beam at rest, factorised.
-KluFactorization factorised_stiffness(ElasticityOperator& beam) {
-  std::vector<Real> values(beam.stiffness_pattern().nnz()), rest(beam.size(), 0.0);
-  beam.stiffness(0.0, rest, values);
-  return KluFactorization(beam.stiffness_pattern(), values);
+// The stiffness of the linear structure at rest, factorised.
+KluFactorization factorised_stiffness(SecondOrderOperator& op) {
+  std::vector<Real> values(op.stiffness_pattern().nnz()), rest(op.size(), 0.0);
+  op.stiffness(0.0, rest, values);
+  return KluFactorization(op.stiffness_pattern(), values);
+}
+
+std::vector<Index> cell_gap_unknowns(const ElasticityOperator& beam) {
+  std::vector<Index> out;
+  for (Index c = 0; c < beam.size() / beam.dim(); ++c) out.push_back(beam.gap_unknown(c));
+  return out;
 }
 
 }  // namespace
@@ -82,24 +87,28 @@ Json CoupledRunTimes::json() const {
           {"max_coupling_residual", max_coupling_residual}};
 }
 
-FieldCoupledBeam::FieldCoupledBeam(ElasticityOperator& beam, GapField& field,
-                                   LinearFunctional control)
-    : beam_(beam), field_(field), control_(std::move(control)) {
-  if (!control_.within(beam.size()))
+FieldCoupledStructure::FieldCoupledStructure(CoupledStructure structure, GapField& field,
+                                             LinearFunctional control)
+    : structure_(std::move(structure)), field_(field), control_(std::move(control)) {
+  if (!control_.within(structure_.op.size()))
     throw InputError(field.name() +
-                     " field: the control is not a functional of the beam's unknowns");
+                     " field: the control is not a functional of the structure's unknowns");
 }
 
-BeamEquilibrium FieldCoupledBeam::solve_static(Real voltage) {
+FieldCoupledStructure::FieldCoupledStructure(ElasticityOperator& beam, GapField& field,
+                                             LinearFunctional control)
+    : FieldCoupledStructure({beam, {}, cell_gap_unknowns(beam)}, field, std::move(control)) {}
+
+StructureEquilibrium FieldCoupledStructure::solve_static(Real voltage) {
   const GapFieldTraits traits = field_.traits();
-  KluFactorization stiffness = factorised_stiffness(beam_);
-  BeamEquilibrium out;
+  KluFactorization stiffness = factorised_stiffness(structure_.op);
+  StructureEquilibrium out;
   auto load = [&](std::span<const Real> u) {
-    BeamLoad l = field_.load(u, voltage);
+    StructureLoad l = field_.load(u, voltage);
     out.force_y = l.force_y;
     return std::move(l.force);
   };
-  VoltageControlResult r = relax_voltage_control(stiffness, load, beam_.size(), control_,
+  VoltageControlResult r = relax_voltage_control(stiffness, load, structure_.op.size(), control_,
                                                  traits.static_tolerance, traits.max_iterations);
   if (!r.converged)
     throw SolverError(
@@ -112,9 +121,9 @@ BeamEquilibrium FieldCoupledBeam::solve_static(Real voltage) {
   return out;
 }
 
-QuasiStaticPullIn FieldCoupledBeam::trace_quasi_static(const QuasiStaticOptions& options) {
+QuasiStaticPullIn FieldCoupledStructure::trace_quasi_static(const QuasiStaticOptions& options) {
   const GapFieldTraits traits = field_.traits();
-  KluFactorization stiffness = factorised_stiffness(beam_);
+  KluFactorization stiffness = factorised_stiffness(structure_.op);
   long solves = 0;
   auto solve = [&](Real delta, const FoldSample& from) {
     FoldSample s{{}, from.state};
@@ -135,56 +144,63 @@ QuasiStaticPullIn FieldCoupledBeam::trace_quasi_static(const QuasiStaticOptions&
     return s;
   };
   const Real gap = field_.rest_gap();
-  FoldSample rest{{0.0, 0.0, gap, true, 0}, std::vector<Real>(beam_.size(), 0.0)};
+  FoldSample rest{{0.0, 0.0, gap, true, 0}, std::vector<Real>(structure_.op.size(), 0.0)};
   QuasiStaticPullIn out = trace_fold(solve, rest, gap, options);
   out.solves = solves;
   return out;
 }
 
-DynamicRun FieldCoupledBeam::run(Real voltage, const DynamicOptions& options,
-                                 ImmersedGasModel* gas) {
+DynamicRun FieldCoupledStructure::run(Real voltage, const DynamicOptions& options,
+                                      StructureGas* gas) {
   const CouplingScheme scheme = options.coupling.scheme;
   if (scheme == CouplingScheme::Monolithic)
     throw InputError(field_.name() +
                      " field: it gives no exact Jacobian blocks; use staggered, implicit or "
                      "strongly_coupled");
-  if (!options.stop_at_contact)
-    throw InputError(field_.name() +
-                     " field: a run goes on past touch-down only with a contact penalty "
-                     "(parallel_plate)");
   const bool strong = scheme == CouplingScheme::StronglyCoupled;
   if (options.coupling.strong_gas && !strong)
     throw InputError(field_.name() + " field: strong_gas needs the strongly_coupled scheme");
-  const bool gas_inside = strong && options.coupling.strong_gas && gas;
+  const GapFieldTraits traits = field_.traits();
+  if (!options.stop_at_contact && !traits.exact)
+    throw InputError(field_.name() +
+                     " field: a run goes on past touch-down only with a contact penalty "
+                     "(the parallel_plate field's actuation.contact)");
+  if (traits.exact && (scheme == CouplingScheme::Implicit || !gas))
+    throw InputError(field_.name() +
+                     " field: its load is exact inside the structure; the partitioned schemes "
+                     "(staggered, strongly_coupled) split the gas from it");
+  // An exact field leaves the gas alone to iterate on.
+  const bool gas_inside = strong && gas && (options.coupling.strong_gas || traits.exact);
   if (gas_inside && options.coupling.gas_every != 1)
     throw InputError(field_.name() +
-                     " field: strong_gas advances the gas over every step (gas_every 1)");
-  const GapFieldTraits traits = field_.traits();
-  const Index n = beam_.size();
-  // The field's load at u; a mesh that cannot follow a Newton trial state is recoverable (IDA
-  // retries with a smaller step).
+                     " field: the strong iteration advances the gas over every step (gas_every 1)");
+  const Index n = structure_.op.size();
+  // The field's load at u that the coupling applies (none from an exact field, whose load is in
+  // the structure: reported only); a mesh that cannot follow a Newton trial state is
+  // recoverable (IDA retries with a smaller step).
   auto field_load = [&](std::span<const Real> u) {
     try {
-      return field_.load(u, voltage);
+      StructureLoad l = field_.load(u, voltage);
+      if (traits.exact) l.force.assign(n, 0.0);
+      return l;
     } catch (const MeshError& e) {
       throw RecoverableError(e.what());
     }
   };
 
-  GapScaledLaggedLoad structure =
-      traits.closed_fraction > 0
-          ? GapScaledLaggedLoad(beam_, field_.rest_gap(), traits.closed_fraction)
-          : GapScaledLaggedLoad(beam_, field_.rest_gap());
-  ReducedInertiaSystem system(structure, {});  // every component inertial
+  GapScaledLaggedLoad structure(
+      structure_.op, structure_.gap_unknowns, field_.rest_gap(),
+      traits.closed_fraction > 0 ? traits.closed_fraction : GapScaledLaggedLoad::kClosedFraction);
+  ReducedInertiaSystem system(structure, structure_.quasi_static);
   std::vector<Real> y(system.size(), 0.0);
-  BeamLoad load = field_load(std::span<const Real>(y.data(), n));
+  StructureLoad load = field_load(std::span<const Real>(y.data(), n));
   structure.set_reference(load.force, std::span<const Real>(y.data(), n));
   if (scheme == CouplingScheme::Implicit)
     structure.set_exact([&](std::span<const Real> u) { return field_load(u).force; });
   Real gas_force = 0;
   if (gas) {
     ScopedCpuTimer t{times_.gas};
-    field_.reset_gas(*gas, 0.0);
+    gas->reset(0.0);
   }
   std::vector<Real> yp = system.consistent_derivative(0.0, y);
 
@@ -216,9 +232,10 @@ DynamicRun FieldCoupledBeam::run(Real voltage, const DynamicOptions& options,
   // The gas over [t_gas, t_end] with the beam at state's displacement and velocity.
   auto advance_gas = [&](std::span<const Real> state, Real t_end) {
     ScopedCpuTimer timer{times_.gas};
-    std::vector<Real> v(n);
-    for (Index i = 0; i < n; ++i) v[i] = state[system.velocity_index(i)];
-    BeamLoad f = field_.gas_load(*gas, state.subspan(0, n), v, t_gas, t_end - t_gas);
+    std::vector<Real> v(n, 0.0);  // zero on the quasi-static components
+    for (Index i = 0; i < n; ++i)
+      if (system.velocity_index(i) >= 0) v[i] = state[system.velocity_index(i)];
+    StructureLoad f = gas->advance(state.subspan(0, n), v, t_gas, t_end - t_gas);
     ++times_.gas_steps;
     gas_force = f.force_y;
     return std::move(f.force);

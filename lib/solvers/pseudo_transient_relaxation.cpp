@@ -1,4 +1,4 @@
-#include "coupling/pseudo_transient_relaxation.hpp"
+#include "solvers/pseudo_transient_relaxation.hpp"
 
 #include <algorithm>
 #include <cmath>
