@@ -18,10 +18,10 @@ import argparse
 import datetime
 import json
 import os
-import resource
-import subprocess
 import sys
 import tempfile
+
+from bench_driver_ab import run_driver
 
 DEFLECTION = [("monolithic", "1e-6", 1), ("monolithic", "1e-5", 1), ("strongly_coupled", "1e-5", 1),
               ("staggered", "1e-5", 1), ("staggered", "1e-5", 2), ("staggered", "1e-5", 4),
@@ -29,20 +29,6 @@ DEFLECTION = [("monolithic", "1e-6", 1), ("monolithic", "1e-5", 1), ("strongly_c
 TOUCH_DOWN = [("monolithic", "1e-6", 1), ("monolithic", "1e-3", 1), ("strongly_coupled", "1e-3", 1),
               ("staggered", "1e-3", 1)]
 STUDY = [("monolithic", "1e-3", 1), ("strongly_coupled", "1e-3", 1), ("staggered", "1e-3", 1)]
-
-
-def child_cpu():
-    r = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return r.ru_utime + r.ru_stime
-
-
-def run(driver, case, sets, out):
-    cmd = [driver, case, "-o", out, "--json", "--quiet"]
-    for s in sets:
-        cmd += ["--set", s]
-    cpu0 = child_cpu()
-    p = subprocess.run(cmd, capture_output=True, text=True, check=True)
-    return json.loads(p.stdout)["pull_in"], child_cpu() - cpu0, cmd
 
 
 def main():
@@ -64,7 +50,7 @@ def main():
                 sets = common + [f"solver.rtol={rtol}", f"coupling.scheme={scheme}"]
                 if every != 1:
                     sets.append(f"coupling.gas_every={every}")
-                p, cpu, cmd = run(a.driver, a.case, sets, os.path.join(work, "run.h5"))
+                p, cpu, _, cmd = run_driver(a.driver, a.case, sets, os.path.join(work, "run.h5"))
                 shown = cmd[:2] + cmd[4:4 + 2 * (len(common) + 1)]
                 commands[study] = " ".join(f"'{c}'" if " " in c else c for c in shown) + (
                     " --set solver.rtol=RTOL --set coupling.scheme=SCHEME"

@@ -24,14 +24,19 @@ def child_cpu():
     return r.ru_utime + r.ru_stime
 
 
-def run(driver, case, sets, out):
+def run_driver(driver, case, sets, out):
+    """One run of rfmems-pullin: its --json summary's pull_in, the child's CPU and wall seconds,
+    and the command."""
     cmd = [driver, case, "-o", out, "--json", "--quiet"]
     for s in sets:
         cmd += ["--set", s]
     cpu0, wall0 = child_cpu(), time.time()
     p = subprocess.run(cmd, capture_output=True, text=True, check=True)
-    cpu, wall = child_cpu() - cpu0, time.time() - wall0
-    j = json.loads(p.stdout)["pull_in"]
+    return json.loads(p.stdout)["pull_in"], child_cpu() - cpu0, time.time() - wall0, cmd
+
+
+def run(driver, case, sets, out):
+    j, cpu, wall, _ = run_driver(driver, case, sets, out)
     q, d = j.get("quasi_static", {}), j.get("dynamic", {})
     return {"cpu_s": cpu, "wall_s": wall, "v_qs": q.get("pull_in_voltage"),
             "v_dyn": d.get("pull_in_voltage"), "t_pi": d.get("pull_in_time"),

@@ -58,10 +58,9 @@ using namespace rfmems;
 // result; the others write to a scratch file of their own that is never finished (deleted on
 // exit).
 bool runs_on_every_rank(const CaseNode& root) {
-  const CaseNode act = root.child_or_empty("actuation");
-  return act.get_string("electrostatics", "parallel_plate") == "immersed" &&
-         (root.child_or_empty("gas").get_string("model", "none") == "esbgk" ||
-          act.child_or_empty("immersed").get_bool("electrostatics_distributed", false));
+  const SceneModels models = read_scene_choice(root).models;
+  return models.field == FieldModel::Immersed &&
+         (models.gas == GasModel::Esbgk || immersed_electrostatics_distributed(root));
 }
 
 int run(const DriverOptions& options) {

@@ -138,10 +138,16 @@ std::unique_ptr<ImmersedField> read_immersed_field(const CaseNode& root, Elastic
   const auto [control_point, control_cell] = finder.find(act, "control", "the control point");
   f->sw = std::make_unique<ImmersedBoundaryField>(
       *beam.op, g, beam.op->displacement_functional(control_cell, control_point, 1));
-  if (im.get_bool("electrostatics_distributed", false))
+  if (immersed_electrostatics_distributed(root))
     f->sw->distribute_electrostatics(Communicator::world());
   f->gas = read_immersed_gas(root, gas);
   return f;
+}
+
+bool immersed_electrostatics_distributed(const CaseNode& root) {
+  return root.child_or_empty("actuation")
+      .child_or_empty("immersed")
+      .get_bool("electrostatics_distributed", false);
 }
 
 CaseSchema immersed_case_keys() {

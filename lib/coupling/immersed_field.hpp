@@ -69,6 +69,10 @@ struct ImmersedField {
 std::unique_ptr<ImmersedField> read_immersed_field(const CaseNode& root, ElasticityScene& beam,
                                                    GasModel gas);
 
+// actuation.immersed.electrostatics_distributed: under mpirun, the field solved over the ranks
+// (every rank runs the switch).
+bool immersed_electrostatics_distributed(const CaseNode& root);
+
 // The keys read_immersed_field reads besides the actuation's electrode and control
 // (io/case_schema.hpp).
 CaseSchema immersed_case_keys();

@@ -19,40 +19,20 @@
 #include <string>
 #include <vector>
 
-#include "core/error.hpp"
 #include "core/types.hpp"
 #include "ibm/immersed_surface.hpp"
+#include "physics/gas/stepped_gas.hpp"
 
 namespace rfmems {
 
-class ImmersedGasModel {
+class ImmersedGasModel : public SteppedGas {
  public:
-  virtual ~ImmersedGasModel() = default;
-  virtual std::string name() const = 0;
   // The gas at rest (ambient) around the body at `surface` at time t0.
   virtual void reset(const ImmersedSurface& surface, Real t0) = 0;
   // Advances the gas over [t, t + dt] with the body at `surface` (its state at t + dt) moving
   // at segment_velocity [m/s] per segment; returns the gas force per segment [N/m] at t + dt.
   virtual std::vector<Vec3> advance(const ImmersedSurface& surface,
                                     std::span<const Vec3> segment_velocity, Real t, Real dt) = 0;
-  // One checkpoint of the gas's state after the last advance (or reset): save, then restore
-  // any number of times to redo the next advance with a corrected body motion, as if the
-  // advances since the save had not been made (the strong coupling's iterate per step).
-  // Models without one throw; the coupling asks only with coupling.strong_gas.
-  virtual void save_checkpoint() { no_checkpoint(); }
-  virtual void restore_checkpoint() { no_checkpoint(); }
-  // A gas on a marked background keeps the cell marking of its last advance for the next
-  // advances while held (the strong iteration's iterates within a step, whose bodies differ
-  // by far less than a cell; a class change between iterates makes the force jump). Others
-  // ignore it.
-  virtual void hold_marking(bool /*hold*/) {}
-  // Largest Knudsen number and film pressure excursion seen so far (validity report).
-  virtual Real max_knudsen() const { return 0; }
-
- private:
-  [[noreturn]] void no_checkpoint() const {
-    throw InputError("gas model '" + name() + "' keeps no checkpoint (coupling.strong_gas)");
-  }
 };
 
 }  // namespace rfmems
