@@ -99,7 +99,15 @@ FieldCoupledStructure::FieldCoupledStructure(ElasticityOperator& beam, GapField&
                                              LinearFunctional control)
     : FieldCoupledStructure({beam, {}, cell_gap_unknowns(beam)}, field, std::move(control)) {}
 
+void FieldCoupledStructure::require_lagged_field() const {
+  if (field_.traits().exact)
+    throw InputError(field_.name() +
+                     " field: its equilibria are Newton solves of the exact system "
+                     "(quasi_static_pull_in.hpp), not fixed points");
+}
+
 StructureEquilibrium FieldCoupledStructure::solve_static(Real voltage) {
+  require_lagged_field();
   const GapFieldTraits traits = field_.traits();
   KluFactorization stiffness = factorised_stiffness(structure_.op);
   StructureEquilibrium out;
@@ -122,6 +130,7 @@ StructureEquilibrium FieldCoupledStructure::solve_static(Real voltage) {
 }
 
 QuasiStaticPullIn FieldCoupledStructure::trace_quasi_static(const QuasiStaticOptions& options) {
+  require_lagged_field();
   const GapFieldTraits traits = field_.traits();
   KluFactorization stiffness = factorised_stiffness(structure_.op);
   long solves = 0;
@@ -155,8 +164,8 @@ DynamicRun FieldCoupledStructure::run(Real voltage, const DynamicOptions& option
   const CouplingScheme scheme = options.coupling.scheme;
   if (scheme == CouplingScheme::Monolithic)
     throw InputError(field_.name() +
-                     " field: it gives no exact Jacobian blocks; use staggered, implicit or "
-                     "strongly_coupled");
+                     " field: this loop splits the models; use staggered, implicit or "
+                     "strongly_coupled (monolithic: one IDA system, switch_system.hpp)");
   const bool strong = scheme == CouplingScheme::StronglyCoupled;
   if (options.coupling.strong_gas && !strong)
     throw InputError(field_.name() + " field: strong_gas needs the strongly_coupled scheme");

@@ -93,6 +93,8 @@ class FieldCoupledStructure {
   void reset_times() { times_ = {}; }
 
  private:
+  // The fixed points need a field that gives its load (not an exact one inside the operator).
+  void require_lagged_field() const;
   CoupledStructure structure_;
   GapField& field_;
   LinearFunctional control_;
