@@ -70,8 +70,8 @@ int main(int argc, char** argv) {
     const double c = bench::cpu_now();
     const QuasiStaticPullIn in =
         trace_pull_in(*scene.actuation, scene.control, settings.quasi_static);
-    const TouchingPoint touching = find_touching_point(*scene.actuation, in.fold_state,
-                                                       scene.contact.gap, 1e-4 * scene.contact.gap);
+    const TouchingPoint touching = find_touching_point(
+        *scene.actuation, in.fold_state, scene.contact().gap, 1e-4 * scene.contact().gap);
     Json t = base;
     t["phase"] = "touching_point";
     t["cpu_s"] = bench::cpu_now() - c;

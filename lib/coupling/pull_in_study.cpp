@@ -76,10 +76,10 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
   read_solver(root, scene, base);
   base.coupling = read_coupling_options(root, scene.choice);
   // The touch-down gap of every run.
-  if (scene.contact.enabled()) {
+  if (scene.contact().enabled()) {
     node.require(!node.has("contact_gap"), "contact_gap",
                  "with actuation.contact the touch-down is at actuation.contact.gap");
-    base.contact_gap = scene.contact.gap;
+    base.contact_gap = scene.contact().gap;
   } else {
     base.contact_gap = node.get_quantity("contact_gap", Dimension::Length,
                                          std::max(0.02 * scene.gap, scene.resolvable_gap()),
@@ -163,7 +163,7 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
 
   if (node.has("release")) {
     const CaseNode r = node.child("release");
-    if (!scene.contact.enabled())
+    if (!scene.contact().enabled())
       node.fail("release", "a release needs the contact model (actuation.contact)");
     node.require(scene.choice.scheme == CouplingScheme::Monolithic, "release",
                  "the release runs the monolithic system (coupling.scheme: monolithic)");
@@ -176,7 +176,7 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
     ro.drop_time = r.get_quantity("time", Dimension::Time, -1.0, Range::positive());
     ro.window = r.get_quantity("window", Dimension::Time, 20e-6, Range::positive());
     ro.lift = r.get_quantity("lift", Dimension::Length, 0.05 * scene.gap,
-                             Range::open(0.0, scene.gap - scene.contact.gap));
+                             Range::open(0.0, scene.gap - scene.contact().gap));
     s.release_tolerance =
         r.get_quantity("tolerance", Dimension::Voltage, 0.5, Range::non_negative());
     if (r.has("bracket")) std::tie(s.release_bracket_low, s.release_bracket_high) = read_bracket(r);
@@ -338,8 +338,8 @@ void run_dynamic_study(SwitchScene& scene, CouplingManager& manager, const PullI
   report.waveform = names[static_cast<int>(waveform.kind)];
 
   DynamicOptions whole = settings.run;
-  whole.stop_at_turning = false;                     // the whole history to end_time
-  whole.stop_at_contact = !scene.contact.enabled();  // with contact: resting on the dielectric
+  whole.stop_at_turning = false;                       // the whole history to end_time
+  whole.stop_at_contact = !scene.contact().enabled();  // with contact: resting on the dielectric
   std::vector<Real> voltages = settings.voltages;
   if (settings.histories && voltages.empty())
     voltages = {0.97 * report.dynamic.voltage, 1.03 * report.dynamic.voltage};
@@ -474,7 +474,7 @@ Json pull_in_summary(const SwitchScene& scene, const PullInSettings& settings,
                          {"newton_iterations", qs.newton_iterations}};
   if (report.has_pull_out) {
     const QuasiStaticPullOut& po = report.pull_out;
-    j["contact"] = {{"gap", scene.contact.gap}, {"penetration", scene.contact.penetration}};
+    j["contact"] = {{"gap", scene.contact().gap}, {"penetration", scene.contact().penetration}};
     j["quasi_static"]["pull_out_voltage"] = po.pull_out_voltage;
     j["quasi_static"]["pull_out"] = {{"voltage", po.pull_out_voltage},
                                      {"released_voltage", po.released_voltage},

@@ -18,13 +18,14 @@
 // The coupling schemes of the time-stepping analyses (dynamic, transient):
 //   monolithic        one IDA system of every model with the exact coupled Jacobian (every model
 //                     gives exact blocks: the parallel-plate law and the Reynolds film);
-//   staggered         the field (and gas) refreshed once per accepted structural step, its load
-//                     lagged with the parallel-plate gap scaling inside the step (laplace,
-//                     immersed), or the film and the structure once each per macro step
-//                     (parallel_plate with reynolds);
+//   staggered         what gives no exact blocks refreshed once per accepted structural step:
+//                     the field's load lagged with the parallel-plate gap scaling inside the
+//                     step (laplace, immersed), the gas advanced and its force held over the
+//                     next step (every gas; the parallel-plate field stays exact in the
+//                     structure);
 //   implicit          the field solved inside every residual of the structure;
-//   strongly_coupled  Aitken-relaxed iterations per step (laplace, immersed) or macro step
-//                     (parallel_plate with reynolds) until the interface load converges.
+//   strongly_coupled  each step redone with Aitken-relaxed iterations on the interface load
+//                     (field, and gas where it is iterated) until it converges.
 // The first scheme a row lists is its default. The static analyses (static, quasi_static) solve
 // the coupled equilibrium to convergence and use no scheme: a scheme in the case is then not
 // used, so that a case switched between analyses by --set stays valid.

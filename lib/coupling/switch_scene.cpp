@@ -72,27 +72,19 @@ SwitchScene build_switch_scene(const CaseNode& root, const std::string& case_dir
     auto* beam = dynamic_cast<ElasticityScene*>(s.structure.get());
     s.immersed = read_immersed_field(root, *beam, s.gas());
     s.gap = s.immersed->sw->rest_gap();
-    s.facing_patch = s.immersed->geometry.facing_patch;
-    s.electrodes = {ElectrodeExtent{}};
-    s.electrodes.front().x_min = s.immersed->geometry.electrode_begin;
-    s.electrodes.front().x_max = s.immersed->geometry.electrode_end;
     return s;
   }
   ParallelPlateField field = read_parallel_plate_field(act, *s.structure);
   s.gap = field.gap;
-  s.electrodes = std::move(field.electrodes);
-  s.facing_patch = field.facing_patch;
-  s.control_point = field.control_point;
   s.control = field.control;
-  s.contact = field.contact;
   s.actuation = std::move(field.actuation);
   LaplaceGapOptions laplace;
   laplace.gap_cells = static_cast<int>(
       act.child_or_empty("laplace").get_int("gap_cells", 16, Range::closed(2, 10000)));
   if (s.field() == FieldModel::Laplace)
-    s.laplace =
-        std::make_unique<LaplaceGapField>(*dynamic_cast<ElasticityScene&>(*s.structure).op,
-                                          s.facing_patch, s.gap, s.electrodes.front(), laplace);
+    s.laplace = std::make_unique<LaplaceGapField>(*dynamic_cast<ElasticityScene&>(*s.structure).op,
+                                                  field.facing_patch, s.gap,
+                                                  field.electrodes.front(), laplace);
   s.film = read_gas(root, s);
   return s;
 }

@@ -63,18 +63,16 @@ namespace rfmems {
 struct SwitchScene {
   SceneChoice choice;
   std::unique_ptr<StructuralModel> structure;
-  Real gap = 0;                             // at rest
-  std::vector<ElectrodeExtent> electrodes;  // at least one (laplace, immersed: one)
-  std::string facing_patch;                 // plane structures
-  Vec3 control_point = Vec3::Zero();
-  Index control = -1;      // parallel_plate, laplace: the controlled unknown
-  ContactPenalty contact;  // actuation.contact (penetration 0: none)
-  std::unique_ptr<ParallelPlateActuation> actuation;  // parallel_plate
+  Real gap = 0;        // at rest
+  Index control = -1;  // parallel_plate, laplace: the controlled unknown
+  std::unique_ptr<ParallelPlateActuation> actuation;  // parallel_plate, laplace
   std::unique_ptr<ReynoldsFilm> film;                 // parallel_plate with gas: reynolds
   std::unique_ptr<LaplaceGapField> laplace;           // laplace
   std::unique_ptr<ImmersedField> immersed;            // immersed (with its gas)
 
   FieldModel field() const { return choice.models.field; }
+  // actuation.contact, the parallel-plate field's (penetration 0: none).
+  ContactPenalty contact() const { return actuation ? actuation->contact() : ContactPenalty{}; }
   GasModel gas() const { return choice.models.gas; }
   // The smallest gap the field resolves: the immersed boundary's layer fills 1.5 background
   // cells (the touch-down cannot be thinner); 0 for the others.
