@@ -2,8 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
-
 #include "core/error.hpp"
 #include "coupling/field_coupled_structure.hpp"
 #include "physics/elasticity/elasticity_scene.hpp"
@@ -30,10 +28,10 @@ class ParallelPlateManager : public CouplingManager {
   explicit ParallelPlateManager(SwitchScene& scene)
       : scene_(scene),
         system_(make_switch_system(scene)),
+        film_unknowns_(film_unknowns(scene)),
         field_(*scene.actuation),
-        partitioned_(
-            {*scene.actuation, scene.structure->quasi_static_components(), film_unknowns(scene)},
-            field_, LinearFunctional::unknown(scene.control)) {}
+        partitioned_({*scene.actuation, scene.structure->quasi_static_components(), film_unknowns_},
+                     field_, LinearFunctional::unknown(scene.control)) {}
 
   QuasiStaticPullIn quasi_static(const QuasiStaticOptions& options) override {
     return trace_pull_in(*scene_.actuation, scene_.control, options);
@@ -49,26 +47,24 @@ class ParallelPlateManager : public CouplingManager {
       throw InputError("a partitioned scheme splits the film from the plate: the scene has none");
     const Real v = step_amplitude(waveform, amplitude, start, "partitioned parallel_plate");
     scene_.actuation->set_voltage_squared([v](Real) { return v * v; });
-    FilmUnderStructure film(*scene_.film, film_unknowns(scene_), scene_.actuation->size(),
+    FilmUnderStructure film(*scene_.film, film_unknowns_, scene_.actuation->size(),
                             scene_.actuation->initial_gap());
-    DynamicRun r = partitioned_.run(v, options, &film);
-    max_knudsen_ = std::max(max_knudsen_, film.max_knudsen());
-    return r;
+    return partitioned_.run(v, options, &film);
   }
   SwitchSystem* switch_system() override { return system_.get(); }
   Json counters() const override {
     if (partitioned_.times().structure_steps == 0) return Json::object();
     Json j = partitioned_.times().json();
-    j["gas_max_knudsen"] = max_knudsen_;
+    j["gas_max_knudsen"] = partitioned_.times().gas_max_knudsen;
     return j;
   }
 
  private:
   SwitchScene& scene_;
   std::unique_ptr<SwitchSystem> system_;
+  std::vector<Index> film_unknowns_;  // the plate's unknown over each film cell
   ParallelPlateGapField field_;
   FieldCoupledStructure partitioned_;
-  Real max_knudsen_ = 0;
 };
 
 // A field that gives no exact Jacobian blocks (the Laplace field in the gap mesh that follows a
@@ -96,15 +92,13 @@ class LaggedFieldManager : public CouplingManager {
                  const DynamicState* start) override {
     const Real v = step_amplitude(waveform, amplitude, start, field_.name().c_str());
     std::unique_ptr<StructureGas> gas = make_gas_ ? make_gas_() : nullptr;  // at rest
-    DynamicRun r = beam_.run(v, options, gas.get());
-    if (gas) max_knudsen_ = std::max(max_knudsen_, gas->max_knudsen());
-    return r;
+    return beam_.run(v, options, gas.get());
   }
   Json counters() const override {
     Json j = field_.counters();
     j.update(beam_.times().json());
     j["static_field_solves"] = static_solves_;
-    if (make_gas_) j["gas_max_knudsen"] = max_knudsen_;
+    if (make_gas_) j["gas_max_knudsen"] = beam_.times().gas_max_knudsen;
     return j;
   }
 
@@ -113,7 +107,6 @@ class LaggedFieldManager : public CouplingManager {
   FieldCoupledStructure beam_;
   std::function<std::unique_ptr<StructureGas>()> make_gas_;
   long static_solves_ = 0;
-  Real max_knudsen_ = 0;
 };
 
 }  // namespace

@@ -357,6 +357,7 @@ DynamicRun FieldCoupledStructure::run(Real voltage, const DynamicOptions& option
         events.at_step(t, voltage, x, records.back().velocity, gas_force, load.force_y, out))
       break;
   }
+  if (gas) times_.gas_max_knudsen = std::max(times_.gas_max_knudsen, gas->max_knudsen());
   out.final_time = ida.time();
   out.final_state = {ida.time(), std::vector<Real>(ida.y().begin(), ida.y().end()),
                      std::vector<Real>(ida.yp().begin(), ida.yp().end())};

@@ -61,11 +61,12 @@ struct StructureEquilibrium {
 };
 
 // What the loop did, summed over the runs since reset_times(): CPU seconds by physics (the
-// field's own in GapField::seconds), steps, and the strong coupling's iterations (one field
+// field's own in GapField::seconds), steps, the strong coupling's iterations (one field
 // load each; the most in a step, the steps left unconverged at max_iterations and the largest
-// relative interface residual a step ended with).
+// relative interface residual a step ended with) and the largest Knudsen number the gas saw.
 struct CoupledRunTimes {
   double structure = 0, gas = 0;
+  Real gas_max_knudsen = 0;
   long structure_steps = 0, gas_steps = 0;
   long coupling_iterations = 0, unconverged_steps = 0;
   int max_coupling_iterations = 0;

@@ -72,25 +72,20 @@ void ImmersedReynoldsFilm::reset(const ImmersedSurface& surface, Real t0) {
 
 Real ImmersedReynoldsFilm::max_knudsen() const { return stepped_ ? stepped_->max_knudsen() : 0; }
 
-const std::vector<Real>& ImmersedReynoldsFilm::pressure() const {
-  if (!stepped_) throw InputError("Reynolds film: no pressure before reset");
-  return stepped_->pressure();
+PrescribedGapFilm& ImmersedReynoldsFilm::stepper() const {
+  if (!stepped_) throw InputError("Reynolds film: used before reset");
+  return *stepped_;
 }
 
-void ImmersedReynoldsFilm::save_checkpoint() {
-  if (!stepped_) throw InputError("Reynolds film: checkpoint before reset");
-  stepped_->save_checkpoint();
-}
+const std::vector<Real>& ImmersedReynoldsFilm::pressure() const { return stepper().pressure(); }
 
-void ImmersedReynoldsFilm::restore_checkpoint() {
-  if (!stepped_) throw InputError("Reynolds film: restore without a saved checkpoint");
-  stepped_->restore_checkpoint();
-}
+void ImmersedReynoldsFilm::save_checkpoint() { stepper().save_checkpoint(); }
+
+void ImmersedReynoldsFilm::restore_checkpoint() { stepper().restore_checkpoint(); }
 
 std::vector<Vec3> ImmersedReynoldsFilm::advance(const ImmersedSurface& surface,
                                                 std::span<const Vec3>, Real t, Real dt) {
-  if (!stepped_) throw InputError("Reynolds film: advance before reset");
-  const std::vector<Real>& p = stepped_->advance(gaps(surface), t, dt);
+  const std::vector<Real>& p = stepper().advance(gaps(surface), t, dt);
   std::vector<Vec3> force(surface.n_segments(), Vec3::Zero());
   for (std::size_t i = 0; i < segments_.size(); ++i) {
     const Index k = segments_[i];

@@ -48,6 +48,7 @@ class ImmersedReynoldsFilm : public ImmersedGasModel {
   const std::vector<Real>& pressure() const;
 
  private:
+  PrescribedGapFilm& stepper() const;  // InputError before reset
   // The gap of each film cell with the beam at `surface`.
   std::vector<Real> gaps(const ImmersedSurface& surface) const;
   GasProperties gas_;
