@@ -15,11 +15,8 @@ Usage: creep_lifetime_study.py [--driver build/drivers/rfmems-creep] [--case CAS
            [--set KEY=VALUE ...]
 """
 import argparse
-import csv
-import json
 import math
 import os
-import subprocess
 import sys
 
 import matplotlib
@@ -27,18 +24,16 @@ import matplotlib
 matplotlib.use("Agg")  # files only, no display needed
 import matplotlib.pyplot as plt  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from study_runs import run_driver, write_csv  # noqa: E402
+
 
 def run(args, voltage):
     out = f"{args.prefix}_V{voltage:g}.h5"
     cmd = [args.driver, args.case, "--json", "--quiet", "-o", out,
            "--set", f"actuation.voltage={voltage} V",
            "--set", f"creep.end_time={args.end_time_h} h"]
-    for s in args.set or []:
-        cmd += ["--set", s]
-    p = subprocess.run(cmd, capture_output=True, text=True)
-    if p.returncode != 0:
-        sys.exit(f"creep_lifetime_study.py: {' '.join(cmd)}: exit {p.returncode}: {p.stderr.strip()}")
-    return json.loads(p.stdout)
+    return run_driver(cmd, args.set, "creep_lifetime_study.py")
 
 
 def derating(rows, target):
@@ -76,10 +71,7 @@ def main():
         rows.append(r)
         print(f"{v:7.1f} {life if life is not None else float('nan'):11.5g} {s['end']:>16} "
               f"{gap0:10.4f} {r['final_gap_um']:12.4f} {s['steps']:6d} {s['wall_time_s']:8.2f}")
-    with open(args.prefix + ".csv", "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        w.writeheader()
-        w.writerows(rows)
+    write_csv(args.prefix + ".csv", rows)
 
     limit = derating(rows, args.target_h)
     fig, ax = plt.subplots(figsize=(6.5, 4.5))

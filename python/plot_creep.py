@@ -10,39 +10,37 @@ by case name and hold voltage.
 
 Usage: plot_creep.py RESULT.h5 [RESULT.h5 ...] [-o PREFIX]   (PREFIX: the first RESULT without .h5)
 """
-import argparse
 import json
 import os
 import sys
 
-import h5py
 import matplotlib
 
 matplotlib.use("Agg")  # files only, no display needed
 import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plotting import open_result, prefix_args, run_main, save  # noqa: E402
+
+
+def creep_history(f, path, script):
+    """Time [h], values and column names of /creep/history of the open rfmems-creep result f
+    (read from path), and its summary; without a history, script ends with a message."""
+    if "creep/history" not in f:
+        sys.exit(f"{script}: {path}: no /creep/history (not an rfmems-creep result?)")
+    h = f["creep/history"]
+    columns = [str(c) for c in h["values"].attrs["components"]]
+    summary = json.loads(f["metadata"].attrs["summary"])
+    return h["time"][()] / 3600.0, h["values"][()], columns, summary
 
 
 def read(path):
-    try:
-        f = h5py.File(path, "r")
-    except OSError as e:
-        raise OSError(f"{path}: {e}") from e
-    with f:
-        if "creep/history" not in f:
-            sys.exit(f"plot_creep.py: {path}: no /creep/history (not an rfmems-creep result?)")
-        h = f["creep/history"]
-        columns = [str(c) for c in h["values"].attrs["components"]]
-        summary = json.loads(f["metadata"].attrs["summary"])
-        return h["time"][()] / 3600.0, h["values"][()], columns, summary
+    with open_result(path) as f:
+        return creep_history(f, path, "plot_creep.py")
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("results", nargs="+", help="result files (.h5)")
-    parser.add_argument("-o", "--prefix", help="output prefix (default: first RESULT without .h5)")
-    args = parser.parse_args()
-    prefix = args.prefix or os.path.splitext(args.results[0])[0]
+    args, prefix = prefix_args(__doc__.splitlines()[0], several=True)
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(7, 7), sharex=True)
     has_gap = False
     for path in args.results:
@@ -71,15 +69,8 @@ def main():
     bottom.set_xlabel("time [h]")
     bottom.legend(fontsize=8)
     bottom.grid(alpha=0.3)
-    fig.tight_layout()
-    out = prefix + "_creep.png"
-    fig.savefig(out, dpi=120)
-    print(out)
+    print(save(fig, prefix + "_creep.png", dpi=120))
 
 
 if __name__ == "__main__":
-    try:
-        main()
-    except OSError as e:  # a missing or unreadable file: bad input, one line and exit 2
-        print(f"{sys.argv[0].rsplit('/', 1)[-1]}: {e}", file=sys.stderr)
-        sys.exit(2)
+    run_main(main)

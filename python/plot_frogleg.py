@@ -15,12 +15,9 @@ last gap relative to the first file's.
 
 Usage: plot_frogleg.py RESULT.h5 [RESULT.h5 ...] [-o PREFIX]  (PREFIX: first RESULT without .h5)
 """
-import argparse
-import json
 import os
 import sys
 
-import h5py
 import matplotlib
 
 matplotlib.use("Agg")  # files only, no display needed
@@ -29,28 +26,21 @@ import numpy as np  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plot_creep import creep_history  # noqa: E402
 from plot_solid import read_cells  # noqa: E402
+from plotting import open_result, prefix_args, run_main, save  # noqa: E402
 
 
 def read(path):
-    try:
-        f = h5py.File(path, "r")
-    except OSError as e:
-        raise OSError(f"{path}: {e}") from e
-    with f:
-        if "creep/history" not in f:
-            sys.exit(f"plot_frogleg.py: {path}: no /creep/history (not an rfmems-creep result?)")
-        s = json.loads(f["metadata"].attrs["summary"])
+    with open_result(path) as f:
+        t_h, values, columns, s = creep_history(f, path, "plot_frogleg.py")
         if "gap_m" not in s or not s["probes"]:
             sys.exit(f"plot_frogleg.py: {path}: needs a run with a gap and a probe")
-        h = f["creep/history"]
-        columns = [str(c) for c in h["values"].attrs["components"]]
-        values = h["values"][()]
         probe = columns[0]  # the case's first probe (the summary's keys are sorted)
         run = {
             "path": path,
             "summary": s,
-            "t_h": h["time"][()] / 3600.0,
+            "t_h": t_h,
             "probe": probe,
             "gap": s["gap_m"] + values[:, columns.index(probe)],
             "min_gap": values[:, columns.index("min_gap")],
@@ -85,10 +75,7 @@ def stress_map(run, prefix):
         ax.set_ylabel("y [um]")
         ax.set_title(f"{name}, top surface, t = 0 [MPa]")
         plt.colorbar(pc, ax=ax, shrink=0.8)
-    fig.tight_layout()
-    out = prefix + "_stress.png"
-    fig.savefig(out, dpi=130)
-    print(out)
+    print(save(fig, prefix + "_stress.png", dpi=130))
     for k, name in ((0, "sigma_xx"), (1, "sigma_yy")):
         c = int(np.argmax(np.abs(sigma[:, k])))
         x, y = run["centroids"][c][:2] * 1e6
@@ -99,11 +86,7 @@ def stress_map(run, prefix):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("results", nargs="+", help="result files (.h5)")
-    parser.add_argument("-o", "--prefix", help="output prefix (default: first RESULT without .h5)")
-    args = parser.parse_args()
-    prefix = args.prefix or os.path.splitext(args.results[0])[0]
+    args, prefix = prefix_args(__doc__.splitlines()[0], several=True)
     runs = [read(p) for p in args.results]
 
     fig, ax = plt.subplots(figsize=(7, 4.5))
@@ -116,10 +99,7 @@ def main():
     ax.set_ylabel("gap [um]")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7)
-    fig.tight_layout()
-    out = prefix + "_gap.png"
-    fig.savefig(out, dpi=130)
-    print(out)
+    print(save(fig, prefix + "_gap.png", dpi=130))
 
     first = runs[0]
     for run in runs:
@@ -134,8 +114,4 @@ def main():
 
 
 if __name__ == "__main__":
-    try:
-        main()
-    except OSError as e:  # a missing or unreadable file: bad input, one line and exit 2
-        print(f"{sys.argv[0].rsplit('/', 1)[-1]}: {e}", file=sys.stderr)
-        sys.exit(2)
+    run_main(main)

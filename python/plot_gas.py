@@ -12,7 +12,6 @@ cells from /mesh; /solver/residual/{iteration, values}.
 
 Usage: plot_gas.py RESULT.h5 [-o PREFIX]     (PREFIX defaults to RESULT without .h5)
 """
-import argparse
 import os
 import sys
 
@@ -26,6 +25,7 @@ from matplotlib.collections import PolyCollection  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from plot_solid import read_cells  # noqa: E402
+from plotting import prefix_args, run_main, save  # noqa: E402
 
 
 def draw_map(ax, polygons, nodes, values, title, cmap="viridis"):
@@ -42,11 +42,7 @@ def draw_map(ax, polygons, nodes, values, title, cmap="viridis"):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("result", help="result file (.h5)")
-    parser.add_argument("-o", "--prefix", help="output prefix (default: RESULT without .h5)")
-    args = parser.parse_args()
-    prefix = args.prefix or os.path.splitext(args.result)[0]
+    args, prefix = prefix_args(__doc__.splitlines()[0])
 
     with h5py.File(args.result, "r") as f:
         nodes = f["mesh/nodes"][()]
@@ -70,9 +66,7 @@ def main():
                           scale=None, width=0.002)
     draw_map(axes[1, 1], polygons, nodes, np.linalg.norm(q, axis=1), "|heat flux| [W/m²]",
              cmap="magma")
-    fig.tight_layout()
-    fig.savefig(prefix + "_fields.png", dpi=120)
-    plt.close(fig)
+    save(fig, prefix + "_fields.png", dpi=120)
 
     if np.allclose(centroids[:, 0], centroids[0, 0]):  # one column: profiles along y
         order = np.argsort(centroids[:, 1])
@@ -86,9 +80,7 @@ def main():
         ax1.legend()
         ax2.plot(T[order], y, "o-", ms=2)
         ax2.set_xlabel("temperature [K]")
-        fig.tight_layout()
-        fig.savefig(prefix + "_profile.png", dpi=120)
-        plt.close(fig)
+        save(fig, prefix + "_profile.png", dpi=120)
 
     if its is not None and len(its):
         fig, ax = plt.subplots(figsize=(6, 4))
@@ -96,16 +88,10 @@ def main():
         ax.set_xlabel("iteration")
         ax.set_ylabel("||r|| / ||r0||")
         ax.grid(True, which="both", alpha=0.3)
-        fig.tight_layout()
-        fig.savefig(prefix + "_residual.png", dpi=120)
-        plt.close(fig)
+        save(fig, prefix + "_residual.png", dpi=120)
     profile = os.path.exists(prefix + "_profile.png")
     print(f"wrote {prefix}_fields.png" + (", _profile.png" if profile else "") + ", _residual.png")
 
 
 if __name__ == "__main__":
-    try:
-        main()
-    except OSError as e:  # a missing or unreadable file: bad input, one line and exit 2
-        print(f"{sys.argv[0].rsplit('/', 1)[-1]}: {e}", file=sys.stderr)
-        sys.exit(2)
+    run_main(main)

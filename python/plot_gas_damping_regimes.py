@@ -19,6 +19,7 @@ import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import gas_damping_regimes_study as study  # noqa: E402
+from plotting import run_main  # noqa: E402
 
 
 def richardson(rows):
@@ -161,8 +162,4 @@ def main():
 
 
 if __name__ == "__main__":
-    try:
-        main()
-    except OSError as e:  # a missing or unreadable file: bad input, one line and exit 2
-        print(f"{sys.argv[0].rsplit('/', 1)[-1]}: {e}", file=sys.stderr)
-        sys.exit(2)
+    run_main(main)

@@ -18,6 +18,9 @@ import matplotlib
 matplotlib.use("Agg")  # files only, no display needed
 import matplotlib.pyplot as plt  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plotting import finish, run_main  # noqa: E402
+
 
 def history(path):
     with h5py.File(path, "r") as f:
@@ -39,30 +42,16 @@ def main():
     fig, ax = plt.subplots(figsize=(6.4, 4.0))
     for label, t, v in runs:
         ax.plot(t * 1e6, v[:, 0] * 1e6, label=label)
-    ax.set_xlabel("time [us]")
-    ax.set_ylabel("tip deflection [um]")
-    ax.grid(True, alpha=0.3)
-    ax.legend()
-    fig.tight_layout()
-    fig.savefig(args.prefix + "_tip.png", dpi=120)
+    finish(fig, ax, "time [us]", "tip deflection [um]", args.prefix + "_tip.png", dpi=120)
 
     fig, ax = plt.subplots(figsize=(6.4, 4.0))
     for label, t, v in runs:
         ax.plot(t * 1e6, v[:, 2], label=label + " electrostatic")
         if abs(v[:, 3]).max() > 0:
             ax.plot(t * 1e6, v[:, 3], "--", label=label + " gas")
-    ax.set_xlabel("time [us]")
-    ax.set_ylabel("force on the beam, y [N/m]")
-    ax.grid(True, alpha=0.3)
-    ax.legend()
-    fig.tight_layout()
-    fig.savefig(args.prefix + "_forces.png", dpi=120)
+    finish(fig, ax, "time [us]", "force on the beam, y [N/m]", args.prefix + "_forces.png", dpi=120)
     print("wrote", args.prefix + "_tip.png", args.prefix + "_forces.png")
 
 
 if __name__ == "__main__":
-    try:
-        main()
-    except OSError as e:  # a missing or unreadable file: bad input, one line and exit 2
-        print(f"{sys.argv[0].rsplit('/', 1)[-1]}: {e}", file=sys.stderr)
-        sys.exit(2)
+    run_main(main)

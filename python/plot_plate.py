@@ -10,11 +10,9 @@ Fields read: /fields/<step>/deflection (n_cells x 3, w in the z column) and
 
 Usage: plot_plate.py RESULT.h5 [-o PREFIX]     (PREFIX defaults to RESULT without .h5)
 """
-import argparse
 import os
 import sys
 
-import h5py
 import matplotlib
 
 matplotlib.use("Agg")  # files only, no display needed
@@ -24,6 +22,7 @@ from matplotlib.collections import PolyCollection  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from plot_solid import last_step_with, read_cells, si_scale  # noqa: E402
+from plotting import finish, open_result, prefix_args, run_main, save  # noqa: E402
 
 
 def cell_polygons(f):
@@ -45,16 +44,8 @@ def draw_map(ax, polygons, nodes, values, label, cmap="viridis"):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("result", help="result file (.h5)")
-    parser.add_argument("-o", "--prefix", help="output prefix (default: RESULT without .h5)")
-    args = parser.parse_args()
-    prefix = args.prefix or os.path.splitext(args.result)[0]
-    try:
-        f = h5py.File(args.result, "r")
-    except OSError as e:
-        raise OSError(f"{args.result}: {e}") from e
-    with f:
+    args, prefix = prefix_args(__doc__.splitlines()[0])
+    with open_result(args.result) as f:
         step = last_step_with(f, "deflection")
         if step is None:
             sys.exit(f"plot_plate.py: {args.result}: no deflection field (not a plate result?)")
@@ -66,10 +57,7 @@ def main():
         fig, ax = plt.subplots(figsize=(7, 5))
         draw_map(ax, polygons, nodes, w, ("w", "m"), cmap="coolwarm")
         ax.set_title(f"deflection at t = {time:.4g} s (min {w.min():.4g} m)")
-        fig.tight_layout()
-        fig.savefig(prefix + "_deflection.png", dpi=150)
-        plt.close(fig)
-        written = [prefix + "_deflection.png"]
+        written = [save(fig, prefix + "_deflection.png")]
 
         if "moment" in group:
             m = group["moment"][()].reshape(-1, 3)
@@ -77,10 +65,7 @@ def main():
             for k, name in enumerate(("M_xx", "M_yy", "M_xy")):
                 draw_map(axes[k], polygons, nodes, m[:, k], (name, "N"), cmap="RdBu_r")
                 axes[k].set_title(f"{name} [N m/m] at t = {time:.4g} s")
-            fig.tight_layout()
-            fig.savefig(prefix + "_moments.png", dpi=150)
-            plt.close(fig)
-            written.append(prefix + "_moments.png")
+            written.append(save(fig, prefix + "_moments.png"))
 
         if "probes" in f and len(f["fields/times"][()]) > 1:
             names = sorted(f["probes"].keys())
@@ -91,20 +76,9 @@ def main():
                 ts, tu = si_scale(t.max() if t.size else 1.0, "s")
                 ws, wu = si_scale(np.max(np.abs(v)) if np.any(v) else 1.0, "m")
                 ax.plot(t * ts, v * ws, label=name)
-            ax.set_xlabel(f"time [{tu}]")
-            ax.set_ylabel(f"w [{wu}]")
-            ax.grid(True, alpha=0.3)
-            ax.legend()
-            fig.tight_layout()
-            fig.savefig(prefix + "_probes.png", dpi=150)
-            plt.close(fig)
-            written.append(prefix + "_probes.png")
+            written.append(finish(fig, ax, f"time [{tu}]", f"w [{wu}]", prefix + "_probes.png"))
     print("wrote " + ", ".join(written))
 
 
 if __name__ == "__main__":
-    try:
-        main()
-    except OSError as e:  # a missing or unreadable file: bad input, one line and exit 2
-        print(f"{sys.argv[0].rsplit('/', 1)[-1]}: {e}", file=sys.stderr)
-        sys.exit(2)
+    run_main(main)

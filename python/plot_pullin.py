@@ -10,31 +10,26 @@
 
 Usage: plot_pullin.py RESULT.h5 [-o PREFIX]     (PREFIX defaults to RESULT without .h5)
 """
-import argparse
 import json
 import os
 import sys
 
-import h5py
 import matplotlib
 
 matplotlib.use("Agg")  # files only, no display needed
 import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plotting import finish, open_result, prefix_args, run_main  # noqa: E402
+
+# The y label of the voltage curve and of the dynamic histories.
+DEFLECTION = "control deflection towards the electrode [µm]"
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("result", help="result file (.h5)")
-    parser.add_argument("-o", "--prefix", help="output prefix (default: RESULT without .h5)")
-    args = parser.parse_args()
-    prefix = args.prefix or os.path.splitext(args.result)[0]
-    try:
-        f = h5py.File(args.result, "r")
-    except OSError as e:
-        raise OSError(f"{args.result}: {e}") from e
+    args, prefix = prefix_args(__doc__.splitlines()[0])
     written = []
-    with f:
+    with open_result(args.result) as f:
         if "pull_in/curve" not in f:
             sys.exit(f"plot_pullin.py: {args.result}: no /pull_in/curve (not an rfmems-pullin result?)")
         summary = json.loads(f["metadata"].attrs["summary"])["pull_in"]
@@ -58,14 +53,7 @@ def main():
         if "dynamic" in summary:
             ax.axvline(summary["dynamic"]["pull_in_voltage"], color="C3", lw=0.8,
                        label=f"dynamic V_PI = {summary['dynamic']['pull_in_voltage']:.2f} V")
-        ax.set_xlabel("voltage [V]")
-        ax.set_ylabel("control deflection towards the electrode [µm]")
-        ax.grid(True, alpha=0.3)
-        ax.legend()
-        fig.tight_layout()
-        fig.savefig(prefix + "_curve.png", dpi=150)
-        plt.close(fig)
-        written.append(prefix + "_curve.png")
+        written.append(finish(fig, ax, "voltage [V]", DEFLECTION, prefix + "_curve.png"))
 
         if "dynamic" in f:
             runs = sorted((k for k in f["dynamic"].keys() if k[0] == "V" and k[1:].isdigit()),
@@ -80,21 +68,9 @@ def main():
                 ax.plot(t, -v[:, 0] * 1e6, label=label)
                 ax2.plot(t, -v[:, 2] * 1e6, color=f"C{k}", label=f"electrostatic, {label}")
                 ax2.plot(t, v[:, 3] * 1e6, "--", color=f"C{k}", label=f"gas, {label}")
-            ax.set_xlabel("time [µs]")
-            ax.set_ylabel("control deflection towards the electrode [µm]")
-            ax.grid(True, alpha=0.3)
-            ax.legend()
-            fig.tight_layout()
-            fig.savefig(prefix + "_dynamic.png", dpi=150)
-            ax2.set_xlabel("time [µs]")
-            ax2.set_ylabel("force [µN]: electrostatic pull, gas push")
-            ax2.grid(True, alpha=0.3)
-            ax2.legend(fontsize="small")
-            fig2.tight_layout()
-            fig2.savefig(prefix + "_forces.png", dpi=150)
-            plt.close(fig)
-            plt.close(fig2)
-            written += [prefix + "_dynamic.png", prefix + "_forces.png"]
+            written += [finish(fig, ax, "time [µs]", DEFLECTION, prefix + "_dynamic.png"),
+                        finish(fig2, ax2, "time [µs]", "force [µN]: electrostatic pull, gas push",
+                               prefix + "_forces.png", fontsize="small")]
 
         if "dynamic/release" in f:
             rel = summary["dynamic"]["release"]
@@ -110,9 +86,6 @@ def main():
             if rel["released"]:
                 ax.axvline((rel["drop_time"] + rel["release_time"]) * 1e6, color="C2", lw=0.8,
                            ls="--", label="release")
-            ax.set_xlabel("time [µs]")
-            ax.set_ylabel("smallest gap [µm]")
-            ax.grid(True, alpha=0.3)
             axv = ax.twinx()
             axv.plot(t, v[:, 5], color="C7", lw=0.8)
             axv.set_ylabel("voltage [V] (grey)")
@@ -120,17 +93,10 @@ def main():
             if "pull_out_voltage" in rel:
                 title += f"; dynamic pull-out {rel['pull_out_voltage']:.2f} V"
             ax.set_title(title, fontsize="medium")
-            ax.legend(fontsize="small", loc="center right")
-            fig.tight_layout()
-            fig.savefig(prefix + "_release.png", dpi=150)
-            plt.close(fig)
-            written.append(prefix + "_release.png")
+            written.append(finish(fig, ax, "time [µs]", "smallest gap [µm]",
+                                  prefix + "_release.png", fontsize="small", loc="center right"))
     print("wrote " + ", ".join(written))
 
 
 if __name__ == "__main__":
-    try:
-        main()
-    except OSError as e:  # a missing or unreadable file: bad input, one line and exit 2
-        print(f"{sys.argv[0].rsplit('/', 1)[-1]}: {e}", file=sys.stderr)
-        sys.exit(2)
+    run_main(main)

@@ -14,21 +14,14 @@ Usage: plot_pullin_work_error.py RESULTS.jsonl -o FIGURE.png [--methods M ...]
 """
 import argparse
 import json
-import sys
 
 import matplotlib
 
 matplotlib.use("Agg")  # files only, no display needed
 import matplotlib.pyplot as plt  # noqa: E402
 
-STYLE = {
-    "ida_o2": ("IDA adaptive, order <= 2, scalar atol", "o"),
-    "ida_o5": ("IDA adaptive, order <= 5, scalar atol", "*"),
-    "be": ("backward Euler, fixed dt", "s"),
-    "bdf2": ("BDF2, fixed dt (IDA fixed-step mode)", "^"),
-    "be_cut": ("backward Euler, fixed dt, cuts at touch-down", "D"),
-    "bdf2_cut": ("BDF2, fixed dt, cuts at touch-down", "v"),
-}
+from plotting import run_main  # noqa: E402
+from work_error import STYLE  # noqa: E402
 
 
 def style(method):
@@ -88,8 +81,4 @@ def main():
 
 
 if __name__ == "__main__":
-    try:
-        main()
-    except OSError as e:  # a missing or unreadable file: bad input, one line and exit 2
-        print(f"{sys.argv[0].rsplit('/', 1)[-1]}: {e}", file=sys.stderr)
-        sys.exit(2)
+    run_main(main)

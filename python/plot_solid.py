@@ -17,13 +17,15 @@ import argparse
 import os
 import sys
 
-import h5py
 import matplotlib
 
 matplotlib.use("Agg")  # files only, no display needed
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plotting import open_result, run_main, save  # noqa: E402
 
 # XDMF cell type id -> node count (polygons carry theirs after the id).
 XDMF_NODES = {4: 3, 5: 4, 6: 4, 7: 5, 8: 6, 9: 8}
@@ -88,9 +90,7 @@ def plot_probes(f, out):
         if shown:
             ax.legend(loc="best", fontsize="small")
     axes[-1, 0].set_xlabel(f"time [{t_unit}]")
-    fig.tight_layout()
-    fig.savefig(out, dpi=150)
-    plt.close(fig)
+    save(fig, out)
 
 
 def last_step_with(f, field):
@@ -164,9 +164,7 @@ def plot_deformed(f, out):
     t_text = "" if np.isnan(time) else f"t = {time:.4g} s, "
     ax.set_title(f"deformed shape ({t_text}displacement x {magnify:.3g})", loc="left")
     fig.colorbar(mappable, ax=ax, label=f"{colour_label} [{c_unit}]", shrink=0.8)
-    fig.tight_layout()
-    fig.savefig(out, dpi=150)
-    plt.close(fig)
+    save(fig, out)
     return True
 
 
@@ -180,11 +178,7 @@ def main():
     if os.path.dirname(prefix):
         os.makedirs(os.path.dirname(prefix), exist_ok=True)
 
-    try:
-        f = h5py.File(args.result, "r")
-    except OSError as e:
-        raise OSError(f"{args.result}: {e}") from e
-    with f:
+    with open_result(args.result) as f:
         wrote = []
         if "probes" in f and len(f["probes"]) > 0:
             plot_probes(f, prefix + "_probes.png")
@@ -198,8 +192,4 @@ def main():
 
 
 if __name__ == "__main__":
-    try:
-        main()
-    except OSError as e:  # a missing or unreadable file: bad input, one line and exit 2
-        print(f"{sys.argv[0].rsplit('/', 1)[-1]}: {e}", file=sys.stderr)
-        sys.exit(2)
+    run_main(main)

@@ -18,17 +18,18 @@ Usage: squeeze_film_study.py sweep|velocity-order [--driver build/drivers/rfmems
 (a list or number starting with "-" needs the "=" form)
 """
 import argparse
-import csv
 import json
 import math
 import os
-import subprocess
 import sys
 
 import matplotlib
 
 matplotlib.use("Agg")  # files only, no display needed
 import matplotlib.pyplot as plt  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from study_runs import run_driver, write_csv  # noqa: E402
 
 # Thesis Table 5.6 (100 x 100 mesh, 10^3 velocities): whole-beam damping force [N/m] by beam
 # velocity [m/s] (Table 5.5, 50 x 50, lost most of its rows in the extraction; its +-2.44 m/s
@@ -45,25 +46,13 @@ def run(args, velocity, points):
            "--set", f"mesh.parameters.refine={args.refine}",
            "--set", f"velocity_grid.points=[{points}, {points}, {points}]",
            "--set", f"boundaries.beam.velocity=[0 m/s, {velocity} m/s]"]
-    for s in args.set or []:
-        cmd += ["--set", s]
-    p = subprocess.run(cmd, capture_output=True, text=True)
-    if p.returncode != 0:
-        sys.exit(f"squeeze_film_study.py: {' '.join(cmd)}: exit {p.returncode}: {p.stderr.strip()}")
-    d = json.loads(p.stdout)
+    d = run_driver(cmd, args.set, "squeeze_film_study.py")
     row = {"velocity": velocity, "points": points, "refine": args.refine,
            "cells": d["mesh"]["cells"],
            "force_whole_beam": 2 * d["walls"]["beam"]["force"][1],  # the half domain's, doubled
            "iterations": d["solver"]["iterations"], "seconds": d["solver"]["seconds"]}
     print(json.dumps(row), flush=True)
     return row
-
-
-def write_csv(path, rows):
-    with open(path, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        w.writeheader()
-        w.writerows(rows)
 
 
 def sweep(args):
