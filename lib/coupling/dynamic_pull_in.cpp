@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "coupling/run_events.hpp"
+#include "coupling/time_loop.hpp"
 
 namespace rfmems {
 
@@ -65,61 +65,22 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
     if (!start) throw;
     ida.reinitialize(t0, y, yp);
   }
-  RunEvents events(options);
-  ida.set_roots(RunEvents::kRoots,
-                [&](Real, std::span<const Real> yy, std::span<const Real> yyp, std::span<Real> g) {
-                  events.roots(system.min_gap(yy), system.displacement(yy, control),
-                               system.velocity(yy, yyp, control), g);
-                });
-
-  DynamicRun run;
-  auto sample = [&](Real t) {
-    const auto state = ida.y();
-    const Real v = voltage(t);
-    run.history.push_back({t, system.displacement(state, control), system.min_gap(state),
-                           system.electrostatic_force(t, state), system.gas_force(state),
-                           system.contact_force(t, state), v});
+  // One system: nothing to exchange between steps.
+  TimeLoopScheme scheme;
+  scheme.watch = [&](std::span<const Real> yy, std::span<const Real> yyp) {
+    return RunWatch{system.min_gap(yy), system.displacement(yy, control),
+                    system.velocity(yy, yyp, control)};
   };
-  sample(t0);
-  Real next_output = first_output;
-  while (true) {
-    // The settle and past-fold rules look at every accepted step (IDA's one-step mode: the
-    // same steps).
-    const Real stop_time = events.stop_time();
-    const Real t_out = std::min(next_output, stop_time);
-    const IdaIntegrator::Status status =
-        events.step_rules_armed() ? ida.step(t_out) : ida.advance(t_out);
-    const Real t = ida.time();
-    const auto state = ida.y();
-    const Real x = system.displacement(state, control);
-    run.extreme_control = std::min(run.extreme_control, x);
-    if (status == IdaIntegrator::Status::Stepped) {
-      if (run.pulled_in) continue;
-      if (events.at_step(t, voltage(t), x, system.velocity(state, ida.yp(), control),
-                         system.gas_force(state), system.electrostatic_force(t, state), run)) {
-        sample(t);
-        break;
-      }
-      continue;
-    }
-    if (status == IdaIntegrator::Status::Root) {
-      if (events.at_root(t, x, ida.roots_found(), run)) {
-        sample(t);
-        break;
-      }
-      continue;  // resume towards the same output time
-    }
-    if (options.output_interval > 0 || t >= stop_time * (1 - 1e-12)) sample(t);
-    if (t >= stop_time * (1 - 1e-12)) break;
-    next_output = std::min(
-        options.end_time,
-        t + (options.output_interval > 0 ? options.output_interval : options.end_time - t0));
-  }
-  run.final_time = ida.time();
-  run.final_state = {ida.time(), std::vector<Real>(ida.y().begin(), ida.y().end()),
-                     std::vector<Real>(ida.yp().begin(), ida.yp().end())};
-  run.stats = ida.stats();
-  return run;
+  scheme.sample = [&](Real t, std::span<const Real> state) {
+    return DynamicSample{t,
+                         system.displacement(state, control),
+                         system.min_gap(state),
+                         system.electrostatic_force(t, state),
+                         system.gas_force(state),
+                         system.contact_force(t, state),
+                         voltage(t)};
+  };
+  return run_time_loop(ida, options, scheme);
 }
 
 FreeResponse free_response(const std::vector<DynamicSample>& history) {

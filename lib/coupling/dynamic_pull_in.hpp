@@ -114,8 +114,8 @@ struct DynamicRun {
 // control's deflection.
 FreeResponse free_response(const std::vector<DynamicSample>& history);
 
-// A run's two step rules, checked after every accepted step by run_dynamic and by the
-// field-coupled structure alike (run_events.hpp): settled at rest (no pull-in) and past the
+// A run's two step rules, checked after every accepted step by the time loop (time_loop.hpp,
+// run_events.hpp): settled at rest (no pull-in) and past the
 // unstable equilibrium (pulled in).
 struct EarlyEnds {
   SettledAtRest settle{0.0, 0.0};  // off
@@ -134,8 +134,9 @@ EarlyEnds early_ends(bool stop_at_turning, Real settle_tolerance, const FoldBran
                      bool stop_past_fold, Real past_fold_margin);
 EarlyEnds early_ends(const DynamicOptions& options);
 
-// `voltage(t)` [V] is installed into the system's actuation; control indexes the structure.
-// From rest at t = 0, or from `start`.
+// The monolithic scheme: the switch system in one IDA system, stepped by the time loop
+// (time_loop.hpp). `voltage(t)` [V] is installed into the system's actuation; control indexes
+// the structure. From rest at t = 0, or from `start`.
 DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(Real)> voltage,
                        const DynamicOptions& options, const DynamicState* start = nullptr);
 

@@ -10,8 +10,8 @@
 #include "core/reduced_inertia_system.hpp"
 #include "coupling/displacement_control_fixed_point.hpp"
 #include "coupling/gap_scaled_lagged_load.hpp"
-#include "coupling/run_events.hpp"
 #include "coupling/state_tolerances.hpp"
+#include "coupling/time_loop.hpp"
 #include "coupling/voltage_control_fixed_point.hpp"
 #include "solvers/aitken_relaxation.hpp"
 #include "solvers/ida_integrator.hpp"
@@ -20,46 +20,6 @@
 namespace rfmems {
 
 namespace {
-
-// The state after an accepted step (or at rest).
-struct StepRecord {
-  Real t, control, velocity, min_gap, electrostatic_force, gas_force;
-};
-
-// The history at voltage from the records: every record (output_interval <= 0), or samples at
-// output_interval before the final time, cubic Hermite in the control's deflection and velocity
-// and linear in the other columns; the last record closes it either way.
-std::vector<DynamicSample> history_of(const std::vector<StepRecord>& records, Real voltage,
-                                      Real output_interval) {
-  std::vector<DynamicSample> history;
-  auto sample = [&](const StepRecord& r) {
-    DynamicSample s{r.t, r.control, r.min_gap, r.electrostatic_force, r.gas_force};
-    s.voltage = voltage;
-    return s;
-  };
-  if (output_interval <= 0) {
-    for (const StepRecord& r : records) history.push_back(sample(r));
-    return history;
-  }
-  const Real final_time = records.back().t;
-  std::size_t j = 0;
-  for (Real t = 0; t < final_time; t += output_interval) {
-    while (j + 2 < records.size() && records[j + 1].t < t) ++j;
-    const StepRecord& a = records[j];
-    const StepRecord& b = records[std::min(j + 1, records.size() - 1)];
-    const Real h = b.t - a.t;
-    const Real s = h > 0 ? std::clamp((t - a.t) / h, 0.0, 1.0) : 0.0;
-    const Real h00 = 2 * s * s * s - 3 * s * s + 1, h10 = s * s * s - 2 * s * s + s;
-    const Real h01 = -2 * s * s * s + 3 * s * s, h11 = s * s * s - s * s;
-    history.push_back(
-        sample({t, h00 * a.control + h10 * h * a.velocity + h01 * b.control + h11 * h * b.velocity,
-                0, (1 - s) * a.min_gap + s * b.min_gap,
-                (1 - s) * a.electrostatic_force + s * b.electrostatic_force,
-                (1 - s) * a.gas_force + s * b.gas_force}));
-  }
-  history.push_back(sample(records.back()));
-  return history;
-}
 
 // The stiffness of the linear structure at rest, factorised.
 KluFactorization factorised_stiffness(SecondOrderOperator& op) {
@@ -223,18 +183,10 @@ DynamicRun FieldCoupledStructure::run(Real voltage, const DynamicOptions& option
   IdaIntegrator ida(system, ida_options);
   ida.initialize(0.0, y, yp);
 
-  // The run's events (run_events.hpp) on the field's smallest gap and the control's deflection
-  // and velocity (the same weights on the velocity unknowns).
+  // The events (run_events.hpp) on the field's smallest gap and the control's deflection and
+  // velocity (the same weights on the velocity unknowns).
   const LinearFunctional velocity =
       control_.mapped([&system](Index i) { return system.velocity_index(i); });
-  RunEvents events(options, traits.turning_after);
-  ida.set_roots(RunEvents::kRoots,
-                [&](Real, std::span<const Real> yy, std::span<const Real>, std::span<Real> g) {
-                  events.roots(field_.min_gap(yy.subspan(0, n)), control_(yy), velocity(yy), g);
-                });
-
-  std::vector<StepRecord> records{{0.0, 0.0, 0.0, field_.rest_gap(), load.force_y, 0.0}};
-  DynamicRun out;
   Real t_gas = 0;  // the gas's time: it advances every gas_every accepted steps
   int since_gas = 0;
   std::vector<Real> held(n, 0.0);  // the gas load in the structure's residual
@@ -250,9 +202,9 @@ DynamicRun FieldCoupledStructure::run(Real voltage, const DynamicOptions& option
     return std::move(f.force);
   };
   // One structural step; its CPU without the field's share (the implicit scheme's loads).
-  auto structure_step = [&]() {
+  auto structure_step = [&](Real t_stop) {
     const double cpu0 = process_cpu_seconds(), field0 = field_.seconds();
-    const IdaIntegrator::Status status = ida.step(options.end_time);
+    const IdaIntegrator::Status status = ida.step(t_stop);
     times_.structure += std::max(0.0, process_cpu_seconds() - cpu0 - (field_.seconds() - field0));
     return status;
   };
@@ -266,7 +218,7 @@ DynamicRun FieldCoupledStructure::run(Real voltage, const DynamicOptions& option
   // the interface load is the sum: F = F_e(u_k) + F_g(u_k), A_k = A_e,k + H_k (H_k the gas
   // load held over iterate k, H_0 the last step's gas force), one Aitken factor on the summed
   // residual, each part relaxed by it (G_e = A_e + omega r_e, H = H_k + omega r_g).
-  auto strong_step = [&]() {
+  auto strong_step = [&](Real t_stop) {
     ida.save_checkpoint();
     if (gas_inside) {
       ScopedCpuTimer t{times_.gas};
@@ -275,7 +227,7 @@ DynamicRun FieldCoupledStructure::run(Real voltage, const DynamicOptions& option
     std::vector<Real> residual_prev;
     Real omega = 1;
     for (int k = 0;; ++k) {
-      const IdaIntegrator::Status status = structure_step();
+      const IdaIntegrator::Status status = structure_step(t_stop);
       const std::span<const Real> y_end = ida.internal_y();
       const std::span<const Real> u_end = y_end.subspan(0, n);
       const std::vector<Real> applied = structure.applied(u_end);
@@ -329,40 +281,52 @@ DynamicRun FieldCoupledStructure::run(Real voltage, const DynamicOptions& option
     }
   };
 
-  while (true) {
-    const IdaIntegrator::Status status = strong ? strong_step() : structure_step();
+  TimeLoopScheme steps;
+  steps.turning_after = traits.turning_after;
+  steps.watch = [&](std::span<const Real> yy, std::span<const Real>) {
+    return RunWatch{field_.min_gap(yy.subspan(0, n)), control_(yy), velocity(yy)};
+  };
+  steps.step = [&](Real t_stop) {
     ++times_.structure_steps;
-    const Real t = ida.time();
+    return strong ? strong_step(t_stop) : structure_step(t_stop);
+  };
+  // The coupled step's exchange at the accepted state: the field's load (strong_step left it
+  // there as the reference already; none needed where the run ends pulled in), and the gas.
+  // The forces exchanged at the last two points, for the samples between them.
+  struct Exchanged {
+    Real t, field, gas;
+  } before{0.0, load.force_y, 0.0}, now = before;
+  steps.exchange = [&](Real t, bool last, const DynamicRun& run) {
     const std::span<const Real> state = ida.y();
     const std::span<const Real> u = state.subspan(0, n);
-    const Real x = control_(u);
-    out.extreme_control = std::min(out.extreme_control, x);
-    const bool stop =
-        status == IdaIntegrator::Status::Reached ||
-        (status == IdaIntegrator::Status::Root && events.at_root(t, x, ida.roots_found(), out));
-    // The coupled step's exchange: the field's load at the accepted state (strong_step left it
-    // there as the reference already), and the gas.
-    if (!strong && (!stop || !out.pulled_in)) {
+    if (!strong && (!last || !run.pulled_in)) {
       load = field_load(u);
       structure.set_reference(load.force, u);
     }
-    if (gas && !gas_inside && t > t_gas && (++since_gas >= options.coupling.gas_every || stop)) {
+    if (gas && !gas_inside && t > t_gas && (++since_gas >= options.coupling.gas_every || last)) {
       since_gas = 0;
       held = advance_gas(state, t);
       structure.set_held(held);  // the lagged gas force
     }
-    records.push_back({t, x, velocity(state), field_.min_gap(u), load.force_y, gas_force});
     if (since_gas == 0 && !gas_inside) t_gas = t;
-    if (stop ||
-        events.at_step(t, voltage, x, records.back().velocity, gas_force, load.force_y, out))
-      break;
-  }
+    before = now;
+    now = {t, load.force_y, gas_force};
+  };
+  // The forces linear in time between the last two exchanges.
+  steps.sample = [&](Real t, std::span<const Real> y) {
+    const std::span<const Real> u = y.subspan(0, n);
+    const Real s =
+        now.t > before.t ? std::clamp((t - before.t) / (now.t - before.t), 0.0, 1.0) : 1.0;
+    return DynamicSample{t,
+                         control_(u),
+                         field_.min_gap(u),
+                         before.field + s * (now.field - before.field),
+                         before.gas + s * (now.gas - before.gas),
+                         0,
+                         voltage};
+  };
+  DynamicRun out = run_time_loop(ida, options, steps);
   if (gas) times_.gas_max_knudsen = std::max(times_.gas_max_knudsen, gas->max_knudsen());
-  out.final_time = ida.time();
-  out.final_state = {ida.time(), std::vector<Real>(ida.y().begin(), ida.y().end()),
-                     std::vector<Real>(ida.yp().begin(), ida.yp().end())};
-  out.stats = ida.stats();
-  out.history = history_of(records, voltage, options.output_interval);
   return out;
 }
 

@@ -27,10 +27,9 @@
 // The gas is advanced over every gas_every accepted steps (one gas step spanning them) and its
 // force held over the next structural steps (lagged), unless it is inside the strong iteration.
 //
-// Events, run_dynamic's (run_events.hpp): touch-down (the smallest gap reaching contact_gap: the
-// pull-in time, the run ends), turning back, lift-off, and after every accepted step the settle
-// and past-fold rules. The history is one record per accepted step,
-// or resampled at output_interval (cubic Hermite in the control's deflection and velocity).
+// The steps run in every switch run's time loop (time_loop.hpp): the events of run_events.hpp
+// (touch-down: the pull-in time, the run ends; turning back; lift-off; the settle and past-fold
+// rules after every accepted step) and a history sample at every output time.
 #pragma once
 #include <vector>
 

@@ -1,5 +1,4 @@
-// The events of every switch run, one definition for the monolithic system (run_dynamic,
-// dynamic_pull_in.hpp) and the field-coupled structure (field_coupled_structure.hpp): IDA's root
+// The events of every switch run, watched by its one time loop (time_loop.hpp): IDA's root
 // functions on the smallest gap and the control's deflection x and velocity v,
 //
 //   g0 = min_gap - contact_gap   falls through 0: touch-down (the pull-in time); the run ends,

@@ -18,6 +18,10 @@
 static_assert(SUNDIALS_VERSION_MAJOR == 6 && SUNDIALS_VERSION_MINOR == 4,
               "IdaIntegrator's checkpoint reads ida_impl.h of SUNDIALS 6.4: check its IDAMem");
 
+// IDA's normal mode interpolates y and y' at an output time with this function (ida.c); the
+// library exports it without declaring it in a header.
+extern "C" int IDAGetSolution(void* ida_mem, realtype t, N_Vector yret, N_Vector ypret);
+
 namespace rfmems {
 
 IdaOptions with_tolerances_scaled(IdaOptions ida, Real factor) {
@@ -283,6 +287,15 @@ IdaIntegrator::Status IdaIntegrator::step(Real t_stop) {
                                   IDAGetReturnFlagName(flag), last_message()));
   if (flag == IDA_ROOT_RETURN) return Status::Root;
   return flag == IDA_TSTOP_RETURN ? Status::Reached : Status::Stepped;
+}
+
+void IdaIntegrator::state_at(Real t, std::vector<Real>& y, std::vector<Real>& yp) const {
+  auto yv = sundials::make_serial_vector(op_.size(), ctx_.get());
+  auto ypv = sundials::make_serial_vector(op_.size(), ctx_.get());
+  check(IDAGetSolution(mem_, t, yv.get(), ypv.get()), "IDAGetSolution");
+  const std::span<const Real> a = sundials::as_span(yv.get()), b = sundials::as_span(ypv.get());
+  y.assign(a.begin(), a.end());
+  yp.assign(b.begin(), b.end());
 }
 
 std::span<const Real> IdaIntegrator::y() const { return sundials::as_span(y_.get()); }

@@ -116,6 +116,9 @@ class IdaIntegrator {
   // schemes that refresh a lagged load after every step IDA accepts. Reached means t_stop.
   Status step(Real t_stop);
   Real time() const { return t_; }
+  // The state at t within the last step taken (IDAGetSolution: IDA's interpolating polynomial,
+  // what its normal mode returns at an output time).
+  void state_at(Real t, std::vector<Real>& y, std::vector<Real>& yp) const;
   std::span<const Real> y() const;
   std::span<const Real> yp() const;
   // Which roots fired at the last Root return (+1 rising, -1 falling, 0 none).

@@ -183,6 +183,7 @@ TEST(ImmersedEsbgkGas, CoupledSwitchRunsAFewStepsWithTheGasForceOfTheGasAlone) {
   o.ida.atol = 1e-2 * kGap;
   o.ida.max_order = 2;
   o.coupling.scheme = CouplingScheme::Staggered;
+  o.output_interval = o.end_time / 40;  // the samples the gas force is checked at
   auto kinetic = std::make_unique<ImmersedEsbgkGas>(c.scene->background(), air(6, 1e-8), 0.0);
   ImmersedEsbgkGas& gas = *kinetic;
   const std::unique_ptr<StructureGas> on_surface = c.scene->surface_gas(std::move(kinetic));
