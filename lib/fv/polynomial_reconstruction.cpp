@@ -253,4 +253,18 @@ void PolynomialReconstruction::weights_at(Index c, const Vec3& x, std::vector<Re
   }
 }
 
+void PolynomialReconstruction::append_value_weights(
+    Index c, const Vec3& x, Real factor, std::vector<std::pair<Index, Real>>& weights) const {
+  thread_local std::vector<Real> value;
+  thread_local std::vector<Vec3> gradient;
+  weights_at(c, x, value, gradient);
+  const std::span<const StencilPoint> stencil = points(c);
+  Real sum = 0;
+  for (std::size_t j = 0; j < stencil.size(); ++j) {
+    sum += value[j];
+    weights.push_back({stencil[j].cell, factor * value[j]});
+  }
+  weights.push_back({c, factor * (1 - sum)});
+}
+
 }  // namespace rfmems

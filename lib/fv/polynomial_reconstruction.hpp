@@ -20,6 +20,7 @@
 #include <Eigen/Dense>
 #include <functional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "mesh/mesh.hpp"
@@ -51,6 +52,11 @@ class PolynomialReconstruction {
   //               grad p_c(x) = sum_j gradient[j] (phi_j - phi_c).
   void weights_at(Index c, const Vec3& x, std::vector<Real>& value,
                   std::vector<Vec3>& gradient) const;
+  // factor p_c(x) as weights on cell values, appended to weights as (cell, weight): each
+  // stencil point's value[j] factor and the cell's own (1 - sum_j value[j]) factor. For a
+  // reconstruction whose stencils are cells only (BoundaryPoint::None).
+  void append_value_weights(Index c, const Vec3& x, Real factor,
+                            std::vector<std::pair<Index, Real>>& weights) const;
 
  private:
   const Mesh& mesh_;

@@ -79,8 +79,6 @@ void ContinuumCreepSystem::build_plastic_source(int degree) {
     rec = std::make_unique<PolynomialReconstruction>(
         mesh, [](Index) { return BoundaryPoint::None; }, degree);
   std::map<std::pair<Index, Index>, Eigen::Matrix<Real, 3, 6>> blocks;
-  std::vector<Real> value;
-  std::vector<Vec3> gradient;
   std::vector<std::pair<Index, Real>> weights;
   // sigma_p at x from cell's reconstruction: sigma_p,cell + sum_j v_j (sigma_p,j - sigma_p,cell).
   auto add_weights = [&](Index cell, const Vec3& x, Real factor) {
@@ -88,14 +86,7 @@ void ContinuumCreepSystem::build_plastic_source(int degree) {
       weights.push_back({cell, factor});
       return;
     }
-    rec->weights_at(cell, x, value, gradient);
-    auto points = rec->points(cell);
-    Real sum = 0;
-    for (std::size_t j = 0; j < points.size(); ++j) {
-      sum += value[j];
-      weights.push_back({points[j].cell, factor * value[j]});
-    }
-    weights.push_back({cell, factor * (1 - sum)});
+    rec->append_value_weights(cell, x, factor, weights);
   };
   for (Index f = 0; f < mesh.n_faces(); ++f) {
     const Index p = mesh.face_owner(f), n = mesh.face_neighbour(f);

@@ -69,19 +69,10 @@ PlateCreepSystem::~PlateCreepSystem() = default;
 void PlateCreepSystem::build_plastic_source() {
   const Mesh& mesh = plate_.mesh();
   std::map<std::pair<Index, Index>, Mat23> blocks;
-  std::vector<Real> value;
-  std::vector<Vec3> gradient;
   std::vector<std::pair<Index, Real>> weights;
   // M_p at x from cell's reconstruction: M_p,cell + sum_j v_j (M_p,j - M_p,cell).
   auto add_weights = [&](Index cell, const Vec3& x, Real factor) {
-    moment_rec_->weights_at(cell, x, value, gradient);
-    auto points = moment_rec_->points(cell);
-    Real sum = 0;
-    for (std::size_t j = 0; j < points.size(); ++j) {
-      sum += value[j];
-      weights.push_back({points[j].cell, factor * value[j]});
-    }
-    weights.push_back({cell, factor * (1 - sum)});
+    moment_rec_->append_value_weights(cell, x, factor, weights);
   };
   std::map<std::pair<Index, Index>, Eigen::Matrix<Real, 3, 2>> shear_blocks;
   for (Index f = 0; f < mesh.n_faces(); ++f) {

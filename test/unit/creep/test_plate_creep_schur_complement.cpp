@@ -11,44 +11,14 @@
 #include <memory>
 #include <random>
 
-#include "mesh/structured_mesh.hpp"
+#include "../../support/distorted_plate.hpp"
 #include "physics/creep/plate_creep_system.hpp"
 #include "physics/plate/plate_scene.hpp"
 
 using namespace rfmems;
-using Kind = PlateBoundary::Kind;
+using namespace rfmems::test;
 
 namespace {
-
-Mesh distorted_mesh(int nx, int ny, unsigned seed) {
-  auto rng = std::make_shared<std::mt19937>(seed);
-  BoxSpec spec;
-  spec.upper = Vec3(2.0, 1.2, 0);
-  spec.n[0] = nx;
-  spec.n[1] = ny;
-  spec.grading[0] = 1.6;
-  return make_structured_mesh(spec, [rng](const Vec3& x) {
-    std::uniform_real_distribution<double> jitter(-0.03, 0.03);
-    Vec3 y = x;
-    y.x() += 0.12 * std::sin(2.0 * x.y()) + jitter(*rng);
-    y.y() += 0.08 * std::sin(3.0 * x.x()) + jitter(*rng);
-    return y;
-  });
-}
-
-std::vector<PlateBoundary> mixed_boundaries(const Mesh& mesh) {
-  std::vector<PlateBoundary> bcs(mesh.patches().size());
-  for (std::size_t p = 0; p < bcs.size(); ++p) {
-    const std::string& name = mesh.patches()[p].name;
-    bcs[p].kind = name == "left"     ? Kind::Clamped
-                  : name == "right"  ? Kind::SimplySupportedHard
-                  : name == "bottom" ? Kind::Free
-                                     : Kind::Load;
-    if (bcs[p].kind == Kind::Load)
-      bcs[p].value = [](const Vec3& x, Real) { return Vec3(-50.0 * x.x(), 3.0, -2.0); };
-  }
-  return bcs;
-}
 
 struct SolveErrors {
   Real plate, points;  // max |z - J^-1 r| / max |J^-1 r| per block (scales differ by 1e3+)
