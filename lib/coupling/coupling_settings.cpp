@@ -1,5 +1,7 @@
 #include "coupling/coupling_settings.hpp"
 
+#include "io/case_schema_yaml.hpp"
+
 namespace rfmems {
 
 CouplingOptions read_coupling_options(const CaseNode& root, const SceneChoice& choice) {
@@ -29,18 +31,7 @@ CouplingOptions read_coupling_options(const CaseNode& root, const SceneChoice& c
 }
 
 CaseSchema coupling_case_keys() {
-  return {{"coupling",
-           "the coupling scheme's settings",
-           {
-               {"tolerance", "number", "1e-06", "in (0, 1)",
-                "iterated schemes: the relative change at which a step's iteration stops"},
-               {"max_iterations", "integer", "20", "in [1, 100000]",
-                "iterated schemes: the cap per step"},
-               {"gas_every", "integer", "1", "in [1, 1000]",
-                "with a gas, partitioned: advance it every this many structural steps"},
-               {"strong_gas", "bool", "false", "",
-                "immersed field, strongly_coupled: the gas inside the step's iterations"},
-           }}};
+  return embedded_case_schema("coupling/coupling_settings.keys.yaml");
 }
 
 }  // namespace rfmems

@@ -35,7 +35,8 @@ struct CouplingOptions {
 
 CouplingOptions read_coupling_options(const CaseNode& root, const SceneChoice& choice);
 
-// The keys read_coupling_options reads besides the scheme (io/case_schema.hpp).
+// The keys read_coupling_options reads besides the scheme (coupling_settings.keys.yaml;
+// io/case_schema.hpp).
 CaseSchema coupling_case_keys();
 
 }  // namespace rfmems

@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "ibm/immersed_reynolds_film.hpp"
+#include "io/case_schema_yaml.hpp"
 #include "io/input_solve.hpp"
 #include "io/probes.hpp"
 #include "physics/electrostatics/parallel_plate_field.hpp"
@@ -151,45 +152,7 @@ bool immersed_electrostatics_distributed(const CaseNode& root) {
 }
 
 CaseSchema immersed_case_keys() {
-  CaseKeyGroup kinetic{
-      "gas",
-      "the immersed field's kinetic gas (gas.model: esbgk)",
-      {
-          {"collision", "choice", "esbgk", "esbgk, bgk", "the collision model"},
-          {"velocities", "integer", "10", "in [4, 40]", "velocity points per direction"},
-          {"velocity_extent", "number", "3.5", "in [2, 8]",
-           "the velocity grid's half-width in sqrt(2 R T0)"},
-          {"step_tolerance", "number", "1e-05", "in [1e-14, 0.1]",
-           "sweeps stepper: the residual at which a gas step stops"},
-          {"smoother", "choice", "point", "point, downwind, both",
-           "sweeps stepper: the sweep's coupling"},
-          {"predictor", "bool", "true", "", "sweeps stepper: extrapolate the start of each step"},
-          {"max_step_sweeps", "integer", "2000", "in [1, 100000]",
-           "sweeps stepper: the cap per step"},
-          {"stepper", "choice", "sweeps", "sweeps, ida",
-           "a gas step by sweeps, or by IDA with the arrowhead preconditioner "
-           "(one rank)"},
-          {"ida_rtol", "number", "1e-06", "in [1e-12, 0.01]",
-           "ida stepper: the relative tolerance"},
-      }};
-  const CaseKeyGroup transport = transport_scheme_case_keys("gas");
-  kinetic.keys.insert(kinetic.keys.end(), transport.keys.begin(), transport.keys.end());
-  return {{"actuation.immersed",
-           "the immersed-boundary field: the background grid around a plane beam",
-           {
-               {"background", "section", kRequiredKey, "", "the background grid"},
-               {"background.lower", "vector of length", kRequiredKey, "",
-                "its lower corner (the electrode's plane is its bottom)"},
-               {"background.upper", "vector of length", kRequiredKey, "", "its upper corner"},
-               {"background.cells", "list of numbers", kRequiredKey, "",
-                "[nx, ny], integers in [4, 4000]"},
-               {"anchor_patch", "text", "left", "", "the beam's patch that is anchored"},
-               {"anchor_extension", "length", "0 m", ">= 0",
-                "the anchor as a solid block reaching this far beyond the patch"},
-               {"electrostatics_distributed", "bool", "false", "",
-                "under mpirun: distribute the background's electrostatics"},
-           }},
-          kinetic};
+  return embedded_case_schema("coupling/immersed_field.keys.yaml");
 }
 
 }  // namespace rfmems

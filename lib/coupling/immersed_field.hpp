@@ -74,7 +74,7 @@ std::unique_ptr<ImmersedField> read_immersed_field(const CaseNode& root, Elastic
 bool immersed_electrostatics_distributed(const CaseNode& root);
 
 // The keys read_immersed_field reads besides the actuation's electrode and control
-// (io/case_schema.hpp).
+// (immersed_field.keys.yaml; io/case_schema.hpp).
 CaseSchema immersed_case_keys();
 
 }  // namespace rfmems

@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "coupling/pull_in_results.hpp"
+#include "io/case_schema_yaml.hpp"
 
 namespace rfmems {
 
@@ -536,97 +537,6 @@ Json pull_in_summary(const SwitchScene& scene, const PullInSettings& settings,
   return j;
 }
 
-CaseSchema pull_in_case_keys() {
-  const std::string bracket = "[low, high], 0 <= low < high (default: about the quasi-static fold)";
-  return {
-      {"pull_in",
-       "the pull-in study; every mode's block is checked, the active one's required keys given",
-       {
-           {"contact_gap", "length", "(max(0.02 x gap, the immersed grid's resolution))",
-            "(in [0, gap))", "the gap at which a run has touched down (without actuation.contact)"},
-           {"static", "section", "(required for mode static)", "", "one static solve"},
-           {"static.voltage", "voltage", "(required for mode static)", "> 0", "its voltage"},
-           {"quasi_static", "section", "(none)", "", "the quasi-static curve and its fold"},
-           {"quasi_static.points", "integer", "40", "in [4, 100000]", "points on the curve"},
-           {"quasi_static.max_fraction", "number", "0.9", "in (0, 1]",
-            "the deflection, as a fraction of the gap, where the curve stops"},
-           {"quasi_static.voltage_tolerance", "voltage", "0.01 V", "> 0",
-            "the fold's voltage is found to this"},
-           {"transient", "section", "(required for mode transient)", "", "one transient"},
-           {"transient.voltage", "voltage", "(required for mode transient)", "> 0",
-            "the step voltage"},
-           {"transient.end_time", "time", "(required for mode transient)", "> 0",
-            "the end of the run"},
-           {"transient.output_interval", "time", "(end_time / 500)", "> 0",
-            "the time between outputs"},
-           {"dynamic", "section", "(required for mode dynamic)", "",
-            "the dynamic pull-in voltage by bisection over step (or waveform) runs"},
-           {"dynamic.end_time", "time", "(required for mode dynamic)", "> 0",
-            "the end of each run"},
-           {"dynamic.output_interval", "time", "(end_time / 500)", "> 0",
-            "the time between outputs"},
-           {"dynamic.bracket", "list of voltage", "(about the quasi-static fold)", "", bracket},
-           {"dynamic.tolerance", "voltage", "(a fraction of the quasi-static pull-in voltage)",
-            "> 0", "the bisection stops when its bracket is this narrow"},
-           {"dynamic.stop_at_turning", "bool", "true", "",
-            "a run that turns back has not pulled in and stops"},
-           {"dynamic.turning_retreat", "number", "0.02", "in (0, 1)",
-            "turned back: the control retreated by this fraction of its excursion"},
-           {"dynamic.settle_tolerance", "number", "0.01", "in [0, 1)",
-            "a run at rest at a stable equilibrium within this fraction has not pulled in "
-            "(0: off)"},
-           {"dynamic.past_fold_margin", "number", "0.05", "in [0, 1]",
-            "a run this fraction of the fold's deflection beyond the unstable equilibrium, "
-            "closing, has pulled in"},
-           {"dynamic.voltages", "list of voltage", "(none)", "",
-            "voltages whose full histories are also run and written"},
-           {"dynamic.small_signal", "number", "0.3", "in [0, 0.9]",
-            "the small-signal run's voltage as a fraction of the pull-in voltage (0: none)"},
-           {"dynamic.time_check", "number", "(0.1; 0 with the kinetic gas)", "in [0, 1)",
-            "rerun at this fraction of the tolerances to check the pull-in time (0: off)"},
-           {"dynamic.waveform", "section", "(a step)", "", "the voltage's waveform"},
-           {"dynamic.waveform.type", "choice", kRequiredKey, "step, ramp, pulse",
-            "a step, a ramp to the voltage, or a pulse (parallel_plate field)"},
-           {"dynamic.waveform.rise_time", "time", "(required for ramp; else 0 s)", ">= 0",
-            "the ramp's rise time"},
-           {"dynamic.waveform.release_time", "time", "(required for pulse)", "> 0",
-            "pulse: when the voltage drops"},
-           {"dynamic.waveform.hold", "number", "0", "in [0, 1]",
-            "pulse: the held voltage after the drop, as a fraction"},
-           {"release", "section", "(none)", "",
-            "the release (pull-out) voltage after touch-down (needs actuation.contact)"},
-           {"release.hold_voltage", "voltage", kRequiredKey, ">= 0",
-            "the voltage the switch is held down at"},
-           {"release.voltage", "voltage", "0 V", "> 0",
-            "the pull-in voltage of the release runs (0: the study's)"},
-           {"release.delay", "time", "2e-06 s", ">= 0",
-            "the time down before the voltage drops (or give time)"},
-           {"release.time", "time", "(none: after delay)", "> 0",
-            "the time at which the voltage drops"},
-           {"release.window", "time", "2e-05 s", "> 0", "the time a release run has to lift"},
-           {"release.lift", "length", "(0.05 x gap)", "(in (0, gap - contact.gap))",
-            "the rise above contact that counts as released"},
-           {"release.tolerance", "voltage", "0.5 V", ">= 0",
-            "the release bisection stops when its bracket is this narrow"},
-           {"release.bracket", "list of voltage", "(0 and the hold voltage)", "", bracket},
-       }},
-      {"solver",
-       "IDA's settings of every pull-in run",
-       {
-           {"rtol", "number", "0.001", "in (0, 1)", "relative tolerance"},
-           {"error_weights", "choice", "scalar", "scalar, per_kind",
-            "one atol on every unknown, or per kind of unknown (velocities by "
-            "velocity_frequency)"},
-           {"atol", "length", "(1e-4 x gap; rtol x gap with per_kind)", "> 0",
-            "absolute tolerance on displacements"},
-           {"max_order", "integer", "2", "in [1, 5]", "IDA's highest BDF order"},
-           {"jacobian_refresh", "number", "0", "in [0, 1]",
-            "refresh the Jacobian when c_j has moved by this fraction (0: IDA's 0.25)"},
-           {"fixed_step", "time", "0 s", ">= 0", "fixed steps instead of adaptive (0: adaptive)"},
-           {"velocity_frequency", "frequency", "(required with per_kind)", "> 0",
-            "per_kind: velocities are weighted by 2 pi times this"},
-       }},
-  };
-}
+CaseSchema pull_in_case_keys() { return embedded_case_schema("coupling/pull_in_study.keys.yaml"); }
 
 }  // namespace rfmems

@@ -175,7 +175,8 @@ PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& setting
 Json pull_in_summary(const SwitchScene& scene, const PullInSettings& settings,
                      const PullInReport& report);
 
-// The keys read_pull_in_settings reads: the study and IDA's settings (io/case_schema.hpp).
+// The keys read_pull_in_settings reads: the study and IDA's settings (pull_in_study.keys.yaml;
+// io/case_schema.hpp).
 CaseSchema pull_in_case_keys();
 
 }  // namespace rfmems

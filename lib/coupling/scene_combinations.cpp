@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "io/case_schema_yaml.hpp"
+
 namespace rfmems {
 
 namespace {
@@ -205,23 +207,7 @@ SceneChoice read_scene_choice(const CaseNode& root) {
 }
 
 CaseSchema scene_choice_case_keys() {
-  const std::string fields = join(kFields, ", "), gases = join(kGases, ", "),
-                    analyses = join(kAnalyses, ", "), schemes = join(kSchemes, ", ");
-  return {{"",
-           "the switch's scene: which models, which analysis, which coupling "
-           "(rfmems-pullin --scenes lists what combines)",
-           {
-               {"actuation.electrostatics", "choice", "parallel_plate", fields,
-                "the electrostatic field: the parallel-plate law, the Laplace equation in the "
-                "gap, or the immersed-boundary field around a plane beam"},
-               {"gas.model", "choice", "none", gases,
-                "the gas: none, the Reynolds squeeze film, or the kinetic (ESBGK) gas"},
-               {"pull_in.mode", "choice", kRequiredKey, analyses,
-                "the analysis: one static solve, the quasi-static curve and its fold, the "
-                "dynamic pull-in voltage, or one transient"},
-               {"coupling.scheme", "choice", "(the first the scene allows)", schemes,
-                "how the fields and the structure are advanced together in time"},
-           }}};
+  return embedded_case_schema("coupling/scene_combinations.keys.yaml");
 }
 
 }  // namespace rfmems

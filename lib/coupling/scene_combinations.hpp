@@ -88,7 +88,7 @@ struct SceneChoice {
 SceneChoice read_scene_choice(const CaseNode& root);
 
 // The keys read_scene_choice reads: the scene's models, analysis and scheme
-// (io/case_schema.hpp).
+// (scene_combinations.keys.yaml; io/case_schema.hpp).
 CaseSchema scene_choice_case_keys();
 
 }  // namespace rfmems

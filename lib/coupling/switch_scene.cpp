@@ -5,6 +5,7 @@
 #include "coupling/coupling_settings.hpp"
 #include "coupling/immersed_field.hpp"
 #include "coupling/scene_combinations.hpp"
+#include "io/case_schema_yaml.hpp"
 #include "physics/elasticity/elasticity_scene.hpp"
 #include "physics/electrostatics/parallel_plate_field.hpp"
 #include "physics/gas/ambient_gas.hpp"
@@ -90,21 +91,10 @@ SwitchScene build_switch_scene(const CaseNode& root, const std::string& case_dir
 }
 
 CaseSchema switch_case_keys() {
-  const CaseSchema own = {
-      {"",
-       "the switch's Laplace field and squeeze film",
-       {
-           {"actuation.laplace", "section", "(none)", "", "the Laplace field's grid"},
-           {"actuation.laplace.gap_cells", "integer", "16", "in [2, 10000]",
-            "cells across the gap"},
-           {"gas.boundaries", "section", "(by the structure's boundaries)", "",
-            "the film's edge conditions, by patch name"},
-           {"gas.boundaries.<patch>", "choice", "(open at free and load edges; wall elsewhere)",
-            "open, wall", "open (ambient pressure) or wall (no flow)"},
-       }},
-  };
   return join_schemas({scene_choice_case_keys(), structure_case_keys(), parallel_plate_case_keys(),
-                       ambient_gas_case_keys(), own, immersed_case_keys(), coupling_case_keys()});
+                       ambient_gas_case_keys(),
+                       embedded_case_schema("coupling/switch_scene.keys.yaml"),
+                       immersed_case_keys(), coupling_case_keys()});
 }
 
 }  // namespace rfmems

@@ -84,7 +84,7 @@ struct SwitchScene {
 SwitchScene build_switch_scene(const CaseNode& root, const std::string& case_dir);
 
 // The keys build_switch_scene reads, its structure's, field's and gas's included
-// (io/case_schema.hpp).
+// (switch_scene.keys.yaml; io/case_schema.hpp).
 CaseSchema switch_case_keys();
 
 }  // namespace rfmems

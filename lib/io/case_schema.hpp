@@ -1,9 +1,13 @@
 // The case keys a reader accepts, declared beside the reader that reads them.
 //
-// Each reader declares its keys as a CaseKeyGroup: the section they sit under and, for each
-// key, its type, default, allowed values and one line of meaning. A driver's schema is the list
-// of groups its readers use; `<driver> --help-case` prints it (format_case_schema) and
-// docs/case-reference.md is generated from those prints.
+// Each reader declares its keys as data, in a YAML file beside its source:
+// lib/<dir>/<reader>.keys.yaml for lib/<dir>/<reader>.cpp (the format and how the files are
+// compiled into the library: io/case_schema_yaml.hpp). The file holds the reader's groups
+// (CaseKeyGroup): the section the keys sit under and, for each key, its type, default, allowed
+// values and one line of meaning. The reader's *_case_keys() returns them, joined with the
+// groups of the readers it calls. A driver's schema is the list of groups its readers use;
+// `<driver> --help-case` prints it (format_case_schema) and docs/case-reference.md is generated
+// from those prints.
 //
 // The declarations cannot drift from the readers unnoticed: CaseNode records every read a
 // reader makes (the type, default and range it passes to the getter), and with the environment

@@ -14,6 +14,7 @@
 #include <new>
 
 #include "core/error.hpp"
+#include "io/case_schema_yaml.hpp"
 #include "io/run_limits.hpp"
 #include "io/units.hpp"
 #include "parallel/communicator.hpp"
@@ -53,13 +54,8 @@ void check_writable(const DriverOptions& options, const std::string& output) {
   ::unlink(probe.c_str());
 }
 
-// The keys DriverCase reads for every driver.
-CaseSchema run_case_keys() {
-  return {{"",
-           "the run",
-           {{"name", "text", "(the case file's directory name)", "",
-             "the case's name: results go to out/<name>.h5 (a plain file name)"}}}};
-}
+// The keys DriverCase reads for every driver (driver_main.keys.yaml).
+CaseSchema run_case_keys() { return embedded_case_schema("io/driver_main.keys.yaml"); }
 
 }  // namespace
 

@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "io/case_schema_yaml.hpp"
 #include "io/interrupt_cleanup.hpp"
 #include "io/run_limits.hpp"
 #include "mesh/gmsh_reader.hpp"
@@ -212,29 +213,6 @@ Mesh mesh_from_case(const CaseNode& mesh_node, const std::string& case_dir) {
   return gmsh_mesh(mesh_node, case_dir);
 }
 
-CaseSchema mesh_case_keys() {
-  return {{"mesh",
-           "the mesh: structured quadrilaterals or hexahedra, or a Gmsh file",
-           {
-               {"type", "choice", kRequiredKey, "rectangle, box, gmsh",
-                "rectangle (2D quadrilaterals), box (3D hexahedra) or gmsh (a .geo or .msh file)"},
-               {"size", "list of length", "(required for rectangle and box)", "",
-                "the lengths along x, y (and z); patches left, right, bottom, top (back, front)"},
-               {"lower", "list of length", "(0 on every axis)", "", "the lower corner"},
-               {"cells", "list of numbers", "(required for rectangle and box)", "",
-                "cells per axis, integers in [1, 1000000]"},
-               {"grading", "list of numbers", "(1 on every axis)", "",
-                "per axis, the last cell's size over the first's (> 0)"},
-               {"file", "text", "(required for gmsh)", "",
-                "a .geo (meshed by gmsh at run time) or .msh 4.1 file, relative to the case "
-                "file; its physical groups name the patches"},
-               {"dim", "integer", "(2 for a .geo; a .msh's highest element dimension)", "in [2, 3]",
-                "the mesh dimension"},
-               {"parameters", "section", "(none)", "",
-                "numbers passed to gmsh for a .geo (-setnumber)"},
-               {"parameters.<name>", "number", kRequiredKey, "",
-                "a parameter the .geo declares (DefineConstant or an assignment)"},
-           }}};
-}
+CaseSchema mesh_case_keys() { return embedded_case_schema("io/mesh_from_case.keys.yaml"); }
 
 }  // namespace rfmems

@@ -30,7 +30,7 @@ namespace rfmems {
 // case_dir: the directory of the case file (relative mesh files are looked up there).
 Mesh mesh_from_case(const CaseNode& mesh_node, const std::string& case_dir);
 
-// The keys mesh_from_case reads (io/case_schema.hpp).
+// The keys mesh_from_case reads (mesh_from_case.keys.yaml; io/case_schema.hpp).
 CaseSchema mesh_case_keys();
 
 }  // namespace rfmems

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "io/case_schema_yaml.hpp"
 #include "io/point_locator.hpp"
 
 namespace rfmems {
@@ -83,17 +84,6 @@ std::vector<std::vector<double>> ProbeHistory::series(std::size_t p) const {
   return rows;
 }
 
-CaseSchema probes_case_keys() {
-  return {{"",
-           "probes: points whose displacement the results record in time",
-           {
-               {"probes", "section", "(none)", "", "a list of probes"},
-               {"probes[].name", "text", kRequiredKey, "",
-                "the probe's name in the results (unique, no '/')"},
-               {"probes[].at", "vector of length", kRequiredKey, "",
-                "the point (one coordinate per mesh dimension); the cell containing it is "
-                "recorded"},
-           }}};
-}
+CaseSchema probes_case_keys() { return embedded_case_schema("io/probes.keys.yaml"); }
 
 }  // namespace rfmems

@@ -69,7 +69,7 @@ class ProbeHistory {
   std::vector<std::vector<Vec3>> values_;
 };
 
-// The keys read_probes reads (io/case_schema.hpp).
+// The keys read_probes reads (probes.keys.yaml; io/case_schema.hpp).
 CaseSchema probes_case_keys();
 
 }  // namespace rfmems

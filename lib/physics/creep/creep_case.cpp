@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "io/case_schema_yaml.hpp"
 #include "io/units.hpp"
 #include "physics/electrostatics/parallel_plate_field.hpp"
 #include "physics/structure/structure_from_case.hpp"
@@ -138,52 +139,9 @@ CreepCase read_creep_case(const CaseNode& root, const std::string& case_dir) {
 }
 
 CaseSchema creep_case_keys() {
-  const std::string duration = "a time: seconds or \"<x> s|ms|h|d\"";
-  const CaseSchema own = {
-      {"actuation",
-       "the hold voltage of a creep run (parallel-plate law)",
-       {
-           {"electrostatics", "choice", "parallel_plate", "parallel_plate",
-            "creep runs hold with the parallel-plate law"},
-           {"voltage", "voltage", "0 V", ">= 0", "the hold voltage (0: pressure loads only)"},
-       }},
-      {"creep",
-       "the creep law and its integration in time",
-       {
-           {"law", "section", kRequiredKey, "",
-            "the law eps_dot = A (sigma_eff / sigma_y)^m, sigma_y = sigma_y0 (1 + B eps)^n"},
-           {"law.A", "frequency", kRequiredKey, ">= 0", "the rate constant A"},
-           {"law.B", "number", kRequiredKey, ">= 0", "the hardening constant B"},
-           {"law.m", "number", kRequiredKey, "in [1, 20]",
-            "the stress exponent m (1 Coble, 2 grain-boundary sliding, > 3 dislocation)"},
-           {"law.n", "number", kRequiredKey, "in [0, 20]", "the hardening exponent n"},
-           {"law.sigma_y0", "pressure", kRequiredKey, "> 0", "the initial yield stress"},
-           {"thickness_points", "integer", "21", "in [3, 401]",
-            "Simpson points through the thickness (odd)"},
-           {"shear_creep", "bool", "false", "", "the transverse shear creeps too"},
-           {"integration", "choice", "implicit", "implicit, explicit",
-            "IDA (implicit) or forward Euler with a fixed step (explicit)"},
-           {"dt", "time", "(required for explicit)", ">= 0", "explicit: the step; " + duration},
-           {"rtol", "number", "1e-06", "in [1e-12, 0.1]", "implicit: IDA's relative tolerance"},
-           {"atol", "number", "1e-12", "in [1e-20, 1]",
-            "implicit: IDA's absolute tolerance (strains and metres)"},
-           {"end_time", "time", kRequiredKey, ">= 0", "the end of the run; " + duration},
-           {"outputs", "integer", "50", "in [1, 100000]",
-            "outputs at end_time k / outputs, also the integrator's restart points"},
-           {"checkpoint", "section", "(off)", "", "checkpoints (command-line flags override)"},
-           {"checkpoint.every_steps", "integer", "0", ">= 0", "every this many steps (0: off)"},
-           {"checkpoint.every_seconds", "number", "0", ">= 0",
-            "every this many wall-clock seconds (0: off)"},
-           {"lifetime", "section", "(none)", "", "end-of-life events (needs actuation.gap)"},
-           {"lifetime.gap_threshold", "length", "(none)", ">= 0",
-            "stop when the smallest gap reaches it (0: touch-down)"},
-           {"lifetime.collapse", "bool", "(true with a hold voltage)", "",
-            "stop at the creep-induced pull-in"},
-           {"lifetime.collapse_fraction", "number", "0.001", "in (0, 1)",
-            "the collapse event's margin"},
-       }},
-  };
-  return join_schemas({structure_case_keys(), parallel_plate_case_keys(), own, probes_case_keys()});
+  return join_schemas({structure_case_keys(), parallel_plate_case_keys(),
+                       embedded_case_schema("physics/creep/creep_case.keys.yaml"),
+                       probes_case_keys()});
 }
 
 }  // namespace rfmems

@@ -67,7 +67,7 @@ Real read_duration(const CaseNode& node, const std::string& key);
 Real read_duration(const CaseNode& node, const std::string& key, Real default_value);
 
 // The keys read_creep_case reads, the plate's, actuation's and probes' included
-// (io/case_schema.hpp).
+// (creep_case.keys.yaml; io/case_schema.hpp).
 CaseSchema creep_case_keys();
 
 }  // namespace rfmems

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "io/case_schema_yaml.hpp"
 #include "io/probes.hpp"
 
 namespace rfmems {
@@ -105,39 +106,7 @@ ParallelPlateField read_parallel_plate_field(const CaseNode& act, StructuralMode
 }
 
 CaseSchema parallel_plate_case_keys() {
-  return {
-      {"actuation",
-       "the electrode under the structure and the parallel-plate law across the gap",
-       {
-           {"gap", "length", "(required for parallel_plate and laplace)", "> 0",
-            "the gap at rest between the structure's facing patch and the electrode"},
-           {"electrode", "section", "(the whole structure)", "", "one electrode"},
-           {"electrode.x", "list of length", "(the whole structure)", "",
-            "its extent [begin, end] along x"},
-           {"electrode.y", "list of length", "(the whole structure)", "",
-            "plate: its extent [begin, end] along y"},
-           {"electrodes", "section", "(none)", "",
-            "several electrodes (instead of electrode), not overlapping"},
-           {"electrodes[].x", "list of length", "(the whole structure)", "",
-            "an electrode's extent along x"},
-           {"electrodes[].y", "list of length", "(the whole structure)", "",
-            "plate: an electrode's extent along y"},
-           {"facing_patch", "text", "bottom", "", "plane beam: the patch that faces the electrode"},
-           {"control", "vector of length", kRequiredKey, "",
-            "the point whose gap the pull-in study follows"},
-           {"dielectric", "section", "(none)", "", "a dielectric layer on the electrode"},
-           {"dielectric.thickness", "length", kRequiredKey, ">= 0", "its thickness"},
-           {"dielectric.permittivity", "number", kRequiredKey, "in [1, 10000]",
-            "its relative permittivity"},
-           {"fringing", "number", "0", "in [0, 10]",
-            "plate: the fringing-field factor of the force (0: none)"},
-           {"contact", "section", "(none)", "",
-            "contact with the dielectric: a penalty wall and touch-down"},
-           {"contact.gap", "length", "(0.02 x gap)", "(in (0, gap))",
-            "the gap at which contact begins"},
-           {"contact.penetration", "length", "(0.1 x contact.gap)", "(in (0, 0.2 x contact.gap])",
-            "the penetration at which the wall carries the force"},
-       }}};
+  return embedded_case_schema("physics/electrostatics/parallel_plate_field.keys.yaml");
 }
 
 }  // namespace rfmems

@@ -31,7 +31,7 @@ ParallelPlateField read_parallel_plate_field(const CaseNode& actuation, Structur
 // `electrodes` (a list of non-overlapping ones); y extents only for a plate.
 std::vector<ElectrodeExtent> read_electrodes(const CaseNode& actuation, bool plate);
 
-// The keys read_parallel_plate_field reads (io/case_schema.hpp).
+// The keys read_parallel_plate_field reads (parallel_plate_field.keys.yaml; io/case_schema.hpp).
 CaseSchema parallel_plate_case_keys();
 
 }  // namespace rfmems

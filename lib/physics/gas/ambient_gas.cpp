@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "io/case_schema_yaml.hpp"
+
 namespace rfmems {
 
 AmbientGas read_ambient_gas(const CaseNode& gas, bool pressure_required) {
@@ -29,21 +31,7 @@ AmbientGas read_ambient_gas(const CaseNode& gas, bool pressure_required) {
 }
 
 CaseSchema ambient_gas_case_keys() {
-  return {
-      {"gas",
-       "the gas around the switch, for every gas model",
-       {
-           {"pressure", "pressure", "(required unless model: none)", "> 0",
-            "the ambient pressure p0"},
-           {"temperature", "temperature", "300 K", "> 0", "the ambient and wall temperature T0"},
-           {"viscosity", "viscosity", "1.85e-05 Pa s", "> 0", "the viscosity at T0 (air)"},
-           {"omega", "number", "0.74", "in [0.5, 1]",
-            "the viscosity's temperature exponent, mu(T) = mu (T / T0)^omega"},
-           {"mean_free_path", "length", "(mu / p0 sqrt(pi R T0 / 2), R = 287 J/(kg K))", "> 0",
-            "the mean free path at p0 and T0"},
-           {"rarefaction", "choice", "veijola", "veijola, none",
-            "the Reynolds film's rarefaction flow factor"},
-       }}};
+  return embedded_case_schema("physics/gas/ambient_gas.keys.yaml");
 }
 
 }  // namespace rfmems

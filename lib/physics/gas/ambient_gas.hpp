@@ -27,7 +27,7 @@ struct AmbientGas {
 // checked, either way, so that a case toggled by --set gas.model=... stays valid.
 AmbientGas read_ambient_gas(const CaseNode& gas, bool pressure_required);
 
-// The keys read_ambient_gas reads (io/case_schema.hpp).
+// The keys read_ambient_gas reads (ambient_gas.keys.yaml; io/case_schema.hpp).
 CaseSchema ambient_gas_case_keys();
 
 }  // namespace rfmems

@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "core/reduced_inertia_system.hpp"
 #include "core/structural_systems.hpp"
+#include "io/case_schema_yaml.hpp"
 #include "physics/structure/output_schedule.hpp"
 #include "solvers/static_solve.hpp"
 
@@ -158,34 +159,7 @@ AnalysisStats run_analysis(StructuralModel& model, const AnalysisSettings& setti
 }
 
 CaseSchema structural_analysis_case_keys() {
-  return {
-      {"analysis",
-       "what rfmems-solid computes",
-       {
-           {"type", "choice", kRequiredKey, "static, transient",
-            "static equilibrium (KINSOL or the segregated iteration) or elastodynamics (IDA)"},
-           {"end_time", "time", "(required for transient)", "> 0", "the end of the transient"},
-           {"output_interval", "time", "(required for transient)", "> 0",
-            "the time between outputs (at most end_time, at most a million outputs)"},
-       }},
-      {"solver",
-       "rfmems-solid's solvers",
-       {
-           {"distributed", "bool", "false", "",
-            "under mpirun: distribute the continuum (or a static plate) over the ranks"},
-           {"tolerance", "number", "1e-06", "in (0, 1)",
-            "static: the relative residual at which the iteration stops"},
-           {"max_iterations", "integer", "(50 with Newton; 100000 segregated)",
-            "in [1, 1000000000]", "static: the iteration cap"},
-           {"rtol", "number", "1e-06", "in (0, 1)", "transient: IDA's relative tolerance"},
-           {"atol", "length", "(rtol x 1e-4 x the mesh's largest extent)", "> 0",
-            "transient: IDA's absolute tolerance on displacements"},
-           {"max_order", "integer", "2", "in [1, 5]",
-            "transient: IDA's highest BDF order (above 2 BDF is not A-stable)"},
-           {"fixed_step", "time", "0 s", ">= 0",
-            "transient: a fixed step instead of IDA's adaptive one (0: adaptive)"},
-       }},
-  };
+  return embedded_case_schema("physics/structure/structural_analysis.keys.yaml");
 }
 
 }  // namespace rfmems

@@ -97,7 +97,7 @@ struct AnalysisStats {
 AnalysisStats run_analysis(StructuralModel& model, const AnalysisSettings& settings,
                            AnalysisObserver& observer, ProgressReporter& progress);
 
-// The keys read_analysis_settings reads (io/case_schema.hpp).
+// The keys read_analysis_settings reads (structural_analysis.keys.yaml; io/case_schema.hpp).
 CaseSchema structural_analysis_case_keys();
 
 }  // namespace rfmems

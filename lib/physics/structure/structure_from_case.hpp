@@ -19,7 +19,8 @@ namespace rfmems {
 std::unique_ptr<StructuralModel> build_structure(const CaseNode& root, const std::string& case_dir,
                                                  AnalysisType analysis);
 
-// The keys build_structure reads for either model, the mesh's included (io/case_schema.hpp).
+// The keys build_structure reads for either model, the mesh's included
+// (structure_from_case.keys.yaml; io/case_schema.hpp).
 CaseSchema structure_case_keys();
 
 }  // namespace rfmems

@@ -1,5 +1,7 @@
 #include "physics/gas/comet/comet_kinetic_solver.hpp"
 
+#include "io/case_schema_yaml.hpp"
+
 namespace rfmems {
 
 CometOptions read_comet_options(const CaseNode& solver) {
@@ -49,29 +51,7 @@ KineticSolveResult solve_comet(KineticOperator& op, std::span<Real> f, CometOpti
 }
 
 CaseSchema comet_case_keys() {
-  return {{"solver",
-           "COMET's settings (solver.type: comet)",
-           {
-               {"coupling", "choice", "conserved", "conserved, velocity",
-                "what the cell's implicit update couples: the conserved moments or the velocity"},
-               {"multigrid", "bool", "true", "", "agglomeration multigrid on the cell systems"},
-               {"cycle", "choice", "auto", "auto, V, W, F",
-                "the multigrid cycle (auto: F below f_cycle_below_knudsen, V above)"},
-               {"f_cycle_below_knudsen", "number", "0.02", ">= 0",
-                "auto cycle: the Knudsen number below which F-cycles are used"},
-               {"coarse_symmetric", "bool", "true", "", "symmetric sweeps on coarse levels"},
-               {"pre_sweeps", "integer", "1", "in [0, 100]", "sweeps before coarse correction"},
-               {"post_sweeps", "integer", "1", "in [0, 100]",
-                "sweeps after coarse correction (pre + post >= 1)"},
-               {"coarsest_sweeps", "integer", "4", "in [1, 1000]", "sweeps on the coarsest level"},
-               {"symmetric", "bool", "true", "", "symmetric (forward and backward) sweeps"},
-               {"min_coarse_cells", "integer", "8", "in [1, 1000000000]",
-                "agglomeration stops at this many cells"},
-               {"sequential_above_knudsen", "number", "0.2", ">= 0",
-                "above this Knudsen number the sequential solver runs instead"},
-               {"cell_newton_iterations", "integer", "1", "in [1, 100]",
-                "Newton iterations of each cell's nonlinear update"},
-           }}};
+  return embedded_case_schema("physics/gas/comet/comet_kinetic_solver.keys.yaml");
 }
 
 }  // namespace rfmems

@@ -39,7 +39,7 @@ KineticSolveResult solve_comet(KineticOperator& op, std::span<Real> f, CometOpti
                                Real tolerance, int max_iterations,
                                const std::function<bool(int, Real)>& monitor);
 
-// The keys read_comet_options reads (io/case_schema.hpp).
+// The keys read_comet_options reads (comet_kinetic_solver.keys.yaml; io/case_schema.hpp).
 CaseSchema comet_case_keys();
 
 }  // namespace rfmems

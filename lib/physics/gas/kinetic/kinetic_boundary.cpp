@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "io/case_file.hpp"
+#include "io/case_schema_yaml.hpp"
 #include "physics/gas/kinetic/equilibrium.hpp"
 
 namespace rfmems {
@@ -166,23 +167,7 @@ void fill_boundary_face(const KineticBoundary& bc, const Vec3& area, std::span<c
 }
 
 CaseSchema kinetic_boundary_case_keys() {
-  return {{"boundaries",
-           "the gas's condition on every patch of the mesh, by patch name",
-           {
-               {"<patch>", "section", kRequiredKey, "", "the condition on this patch"},
-               {"<patch>.type", "choice", kRequiredKey,
-                "diffuse_wall, specular_wall, pressure, symmetry",
-                "a diffuse (Maxwell) wall, a specular wall, a pressure inlet/outlet or a "
-                "symmetry plane"},
-               {"<patch>.T", "temperature", "(required for diffuse_wall and pressure)", "> 0",
-                "the wall's or the reservoir's temperature"},
-               {"<patch>.velocity", "vector of velocity", "([0, 0, 0])", "",
-                "diffuse_wall: the wall's velocity"},
-               {"<patch>.accommodation", "number", "1", "in [0, 1]",
-                "diffuse_wall: the accommodation coefficient (1: fully diffuse)"},
-               {"<patch>.p", "pressure", "(required for pressure)", "> 0",
-                "pressure: the reservoir's pressure"},
-           }}};
+  return embedded_case_schema("physics/gas/kinetic/kinetic_boundary.keys.yaml");
 }
 
 }  // namespace rfmems

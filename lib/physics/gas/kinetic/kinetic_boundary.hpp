@@ -84,7 +84,8 @@ void fill_boundary_face(const KineticBoundary& bc, const Vec3& area, std::span<c
                         const VelocityGrid& grid, std::span<const Index> reflection,
                         std::span<const Real> maxwellian, std::span<Real> f_face);
 
-// The keys kinetic_boundaries_from_case reads under `boundaries` (io/case_schema.hpp).
+// The keys kinetic_boundaries_from_case reads under `boundaries` (kinetic_boundary.keys.yaml;
+// io/case_schema.hpp).
 CaseSchema kinetic_boundary_case_keys();
 
 }  // namespace rfmems

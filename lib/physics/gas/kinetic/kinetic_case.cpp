@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "io/case_schema_yaml.hpp"
 #include "io/mesh_from_case.hpp"
 #include "physics/gas/comet/comet_kinetic_solver.hpp"
 #include "physics/gas/kinetic/kinetic_boundary.hpp"
@@ -160,73 +161,10 @@ const std::map<std::string, KineticSolverFunction>& kinetic_solvers() {
   return solvers;
 }
 
-CaseKeyGroup transport_scheme_case_keys(const std::string& section) {
-  return {section,
-          "the kinetic transport scheme",
-          {
-              {"transport", "choice", "first_order", "first_order, second_order",
-               "upwind transport of first order, or second order with limited reconstruction"},
-              {"limiter", "choice", "venkatakrishnan", "venkatakrishnan, barth_jespersen, none",
-               "second order: the slope limiter"},
-              {"limiter_k", "number", "1", "> 0", "Venkatakrishnan's K"},
-              {"boundary_reconstruction", "bool", "true", "",
-               "second order: reconstructed values at boundary faces"},
-          }};
-}
-
 CaseSchema kinetic_case_keys() {
-  CaseKeyGroup solver{"solver",
-                      "the steady kinetic solve",
-                      {
-                          {"type", "choice", "sequential", "sequential, comet",
-                           "source iteration (sequential sweeps) or COMET"},
-                          {"tolerance", "number", "1e-06", "in (0, 1)",
-                           "the residual, relative to the first, at which the solve stops"},
-                          {"max_iterations", "integer", "200000", "in [1, 1000000000]",
-                           "the iteration cap (a solve forecast to miss it stops early)"},
-                      }};
-  const CaseKeyGroup transport = transport_scheme_case_keys("solver");
-  solver.keys.insert(solver.keys.end(), transport.keys.begin(), transport.keys.end());
-  const CaseSchema own = {
-      {"gas",
-       "the kinetic gas (defaults: argon)",
-       {
-           {"collision", "choice", "esbgk", "bgk, esbgk", "the collision model"},
-           {"R", "number", "208.13", "> 0", "the specific gas constant [J/(kg K)]"},
-           {"mu_ref", "viscosity", "2.117e-05 Pa s", "> 0", "the viscosity at T_ref"},
-           {"T_ref", "temperature", "273.15 K", "> 0", "the reference temperature"},
-           {"omega", "number", "0.81", "in [0, 2]",
-            "the viscosity's temperature exponent, mu = mu_ref (T / T_ref)^omega"},
-           {"prandtl", "number", "0.6666666666666666", "in [0.6666666656666667, 10]",
-            "ESBGK: the Prandtl number"},
-       }},
-      {"initial",
-       "the initial state: a uniform Maxwellian",
-       {
-           {"T", "temperature", kRequiredKey, "> 0", "the temperature"},
-           {"density", "density", "(required unless knudsen)", "> 0", "the density"},
-           {"knudsen", "number", "(required unless density)", "> 0",
-            "the Knudsen number lambda / reference_length, lambda = mu / p sqrt(pi R T / 2)"},
-           {"reference_length", "length", "(the mesh's largest extent)", "> 0",
-            "the length of the Knudsen number"},
-           {"velocity", "vector of velocity", "([0, 0, 0])", "", "the bulk velocity"},
-       }},
-      {"velocity_grid",
-       "the discrete velocities: a uniform grid",
-       {
-           {"points", "list of numbers", kRequiredKey, "", "[N1, N2, N3], integers in [2, 200]"},
-           {"extent", "number", "3.5", "> 0",
-            "the half-width in units of sqrt(2 R T) of the initial state"},
-       }},
-      solver,
-      {"output",
-       "what the results report",
-       {
-           {"forces", "list of texts", "(every wall patch)", "",
-            "the patches whose force and heat flow are reported"},
-       }},
-  };
-  return join_schemas({mesh_case_keys(), own, kinetic_boundary_case_keys(), comet_case_keys()});
+  return join_schemas({mesh_case_keys(),
+                       embedded_case_schema("physics/gas/kinetic/kinetic_case.keys.yaml"),
+                       kinetic_boundary_case_keys(), comet_case_keys()});
 }
 
 }  // namespace rfmems

@@ -94,10 +94,8 @@ using KineticSolverFunction = std::function<KineticSolveResult(
 // The solvers by name ("sequential"; COMET registers "comet").
 const std::map<std::string, KineticSolverFunction>& kinetic_solvers();
 
-// The keys of read_transport_scheme under `section` (io/case_schema.hpp).
-CaseKeyGroup transport_scheme_case_keys(const std::string& section);
-
-// The keys build_kinetic_scene reads, the mesh's, boundaries' and solvers' included.
+// The keys build_kinetic_scene reads, the mesh's, boundaries' and solvers' included
+// (kinetic_case.keys.yaml; io/case_schema.hpp).
 CaseSchema kinetic_case_keys();
 
 }  // namespace rfmems
