@@ -71,6 +71,9 @@ DynamicRun run_dynamic(SwitchSystem& system, Index control, std::function<Real(R
     return RunWatch{system.min_gap(yy), system.displacement(yy, control),
                     system.velocity(yy, yyp, control)};
   };
+  scheme.forces = [&](Real t, std::span<const Real> state) {
+    return RunForces{voltage(t), system.electrostatic_force(t, state), system.gas_force(state)};
+  };
   scheme.sample = [&](Real t, std::span<const Real> state) {
     return DynamicSample{t,
                          system.displacement(state, control),

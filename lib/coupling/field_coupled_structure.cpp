@@ -312,6 +312,9 @@ DynamicRun FieldCoupledStructure::run(Real voltage, const DynamicOptions& option
     before = now;
     now = {t, load.force_y, gas_force};
   };
+  steps.forces = [&](Real, std::span<const Real>) {
+    return RunForces{voltage, now.field, now.gas};
+  };
   // The forces linear in time between the last two exchanges.
   steps.sample = [&](Real t, std::span<const Real> y) {
     const std::span<const Real> u = y.subspan(0, n);

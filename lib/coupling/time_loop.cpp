@@ -46,12 +46,12 @@ DynamicRun run_time_loop(IdaIntegrator& ida, const DynamicOptions& options,
                  events.at_root(t, w.control, ida.roots_found(), run));
     if (scheme.exchange) scheme.exchange(t, last, run);
     sample_passed(t);
-    const DynamicSample s = scheme.sample(t, ida.y());
-    if (!last)
-      last = events.at_step(t, s.voltage, w.control, w.velocity, s.gas_force, s.electrostatic_force,
-                            run);
+    if (!last && events.step_rules_armed()) {
+      const RunForces f = scheme.forces(t, ida.y());
+      last = events.at_step(t, f.voltage, w.control, w.velocity, f.gas, f.electrostatic, run);
+    }
     const bool at_output = options.output_interval > 0 && next_output <= t;
-    if (last || at_output) run.history.push_back(s);
+    if (last || at_output) run.history.push_back(scheme.sample(t, ida.y()));
     if (last) break;
     if (at_output) next_output = std::min(options.end_time, next_output + interval);
   }

@@ -29,10 +29,17 @@ struct RunWatch {
   Real min_gap = 0, control = 0, velocity = 0;
 };
 
+// What the step rules weigh at a state: the voltage and the electrostatic and gas forces.
+struct RunForces {
+  Real voltage = 0, electrostatic = 0, gas = 0;
+};
+
 // A scheme's part in the loop.
 struct TimeLoopScheme {
   // The events' inputs at a state (IDA's root functions and every accepted point).
   std::function<RunWatch(std::span<const Real> y, std::span<const Real> yp)> watch;
+  // The step rules' inputs at IDA's current state, time t (after the exchange).
+  std::function<RunForces(Real t, std::span<const Real> y)> forces;
   // The history sample at state y, time t within the last step (after its exchange).
   std::function<DynamicSample(Real t, std::span<const Real> y)> sample;
   // One coupled step towards t_stop, never beyond it; empty: one IDA step.
