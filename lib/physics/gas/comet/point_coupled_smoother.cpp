@@ -71,17 +71,20 @@ void PointCoupledSmoother::solve_cell(Index c, std::span<Real> f, std::span<cons
   }
 }
 
+PointCoupledSmoother::CellTerms PointCoupledSmoother::cell_terms(Index c, std::span<Real> f) {
+  const Index n = op_.n_ordinates();
+  op_.incoming_flux(c, f, in_);
+  return {f.subspan(c * n, n), op_.equilibrium(c), &outgoing_[c * n],
+          op_.graph().cell_volume[c] * op_.collision_frequency(c),
+          time_coefficient_ * op_.graph().cell_volume[c]};
+}
+
 template <int M>
 void PointCoupledSmoother::newton_step(Index c, std::span<Real> f, std::span<const Real> source,
                                        ArrowheadSystem<M>& a) {
   const VelocityGrid& grid = op_.grid();
   const Index n = op_.n_ordinates();
-  const std::span<Real> fc = f.subspan(c * n, n);
-  const std::span<const Real> feq = op_.equilibrium(c);
-  const Real* out = &outgoing_[c * n];
-  const Real vnu = op_.graph().cell_volume[c] * op_.collision_frequency(c);
-  const Real bv = time_coefficient_ * op_.graph().cell_volume[c];
-  op_.incoming_flux(c, f, in_);
+  const auto [fc, feq, out, vnu, bv] = cell_terms(c, f);
 
   // Residual (right-hand side -R) and the diagonal.
   for (Index k = 0; k < n; ++k) {
@@ -113,12 +116,7 @@ void PointCoupledSmoother::conserved_tensor_step(Index c, std::span<Real> f,
   using Mat5 = Eigen::Matrix<Real, 5, 5>;
   const EquilibriumTensorKernel& kernel = conserved_derivative_.kernel();
   const Index n = op_.n_ordinates();
-  const std::span<Real> fc = f.subspan(c * n, n);
-  const std::span<const Real> feq = op_.equilibrium(c);
-  const Real* out = &outgoing_[c * n];
-  const Real vnu = op_.graph().cell_volume[c] * op_.collision_frequency(c);
-  const Real bv = time_coefficient_ * op_.graph().cell_volume[c];
-  op_.incoming_flux(c, f, in_);
+  const auto [fc, feq, out, vnu, bv] = cell_terms(c, f);
 
   // G and J of f_eq: stored by the equilibrium's Newton when they are those of its
   // coefficients (then f_eq holds exactly their values), else summed here.

@@ -84,6 +84,15 @@ class PointCoupledSmoother {
   // blocks never formed (see the .cpp), P = 5 (BGK) or 10 (ESBGK) equilibrium coefficients.
   template <int P>
   void conserved_tensor_step(Index c, std::span<Real> f, std::span<const Real> source);
+  // Cell c's terms of r_c: its distribution, its equilibrium, the outgoing coefficients a_k,
+  // V nu and the time term's b V; the incoming flux in_k is left in in_.
+  struct CellTerms {
+    std::span<Real> fc;
+    std::span<const Real> feq;
+    const Real* out;
+    Real vnu, bv;
+  };
+  CellTerms cell_terms(Index c, std::span<Real> f);
   // Applies step_ to cell c's f, damped to keep every ordinate positive.
   void apply_step(std::span<Real> fc);
 

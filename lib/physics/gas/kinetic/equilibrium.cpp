@@ -365,6 +365,24 @@ bool tensor_newton(VecM<M>& a, const VecM<M>& m, TensorKernelCache& T, const Vel
   return norm < 1e-11;
 }
 
+// Newton from the continuous Maxwellian did not reach the discrete moments either.
+[[noreturn]] void not_converged(const EquilibriumTarget& target, const EquilibriumSolveInfo& info) {
+  throw SolverError(
+      "discrete equilibrium: Newton did not converge (rho = " + std::to_string(target.rho) +
+      ", |G|/rho = " + std::to_string(info.residual) + ")");
+}
+
+// The converged coefficients a, and the Jacobian J of the moments in them where it is current
+// (null: none kept).
+template <int M>
+void store_coefficients(EquilibriumCoefficients& coefficients, const VecM<M>& a, const MatM<M>* J) {
+  coefficients.size = M;
+  coefficients.a.fill(0);
+  for (int i = 0; i < M; ++i) coefficients.a[i] = a[i];
+  coefficients.has_jacobian = J != nullptr;
+  if (J) Eigen::Map<MatM<M>>(coefficients.jacobian.data()) = *J;
+}
+
 // The tensor-grid solve: warm start from the coefficients with their stored moments and
 // Jacobian (while those are still of a), else the continuous start. f_eq (if not empty): the
 // values of the new coefficients, written only if they changed.
@@ -391,15 +409,9 @@ EquilibriumSolveInfo solve_tensor(const EquilibriumTarget& target, const Velocit
   if (!warm) {
     a = continuous_start<M>(target, s);
     if (!tensor_newton<M>(a, m, T, grid, info, J, Ma, false, values_current))
-      throw SolverError(
-          "discrete equilibrium: Newton did not converge (rho = " + std::to_string(target.rho) +
-          ", |G|/rho = " + std::to_string(info.residual) + ")");
+      not_converged(target, info);
   }
-  coefficients.size = M;
-  coefficients.a.fill(0);
-  for (int i = 0; i < M; ++i) coefficients.a[i] = a[i];
-  coefficients.has_jacobian = true;
-  Eigen::Map<MatM<M>>(coefficients.jacobian.data()) = J;
+  store_coefficients<M>(coefficients, a, &J);
   coefficients.moments.fill(0);
   for (int i = 0; i < M; ++i) coefficients.moments[i] = Ma[i];
   coefficients.moments_at = coefficients.a;
@@ -428,16 +440,9 @@ EquilibriumSolveInfo solve(const EquilibriumTarget& target, const VelocityGrid& 
   if (!warm) {
     a = continuous_start<M>(target, s);
     have_jacobian = false;
-    if (!newton<M>(a, m, grid, info, J, have_jacobian))
-      throw SolverError(
-          "discrete equilibrium: Newton did not converge (rho = " + std::to_string(target.rho) +
-          ", |G|/rho = " + std::to_string(info.residual) + ")");
+    if (!newton<M>(a, m, grid, info, J, have_jacobian)) not_converged(target, info);
   }
-  coefficients.size = M;
-  coefficients.a.fill(0);
-  for (int i = 0; i < M; ++i) coefficients.a[i] = a[i];
-  coefficients.has_jacobian = have_jacobian;
-  if (have_jacobian) Eigen::Map<MatM<M>>(coefficients.jacobian.data()) = J;
+  store_coefficients<M>(coefficients, a, have_jacobian ? &J : nullptr);
   coefficients.has_moments = false;
   return info;
 }
