@@ -183,10 +183,6 @@ DynamicRun FieldCoupledStructure::run(Real voltage, const DynamicOptions& option
   IdaIntegrator ida(system, ida_options);
   ida.initialize(0.0, y, yp);
 
-  // The events (run_events.hpp) on the field's smallest gap and the control's deflection and
-  // velocity (the same weights on the velocity unknowns).
-  const LinearFunctional velocity =
-      control_.mapped([&system](Index i) { return system.velocity_index(i); });
   Real t_gas = 0;  // the gas's time: it advances every gas_every accepted steps
   int since_gas = 0;
   std::vector<Real> held(n, 0.0);  // the gas load in the structure's residual
@@ -281,6 +277,10 @@ DynamicRun FieldCoupledStructure::run(Real voltage, const DynamicOptions& option
     }
   };
 
+  // The events (run_events.hpp) on the field's smallest gap and the control's deflection and
+  // velocity (the same weights on the velocity unknowns).
+  const LinearFunctional velocity =
+      control_.mapped([&system](Index i) { return system.velocity_index(i); });
   TimeLoopScheme steps;
   steps.turning_after = traits.turning_after;
   steps.watch = [&](std::span<const Real> yy, std::span<const Real>) {

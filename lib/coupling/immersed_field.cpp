@@ -152,7 +152,9 @@ bool immersed_electrostatics_distributed(const CaseNode& root) {
 }
 
 CaseSchema immersed_case_keys() {
-  return embedded_case_schema("coupling/immersed_field.keys.yaml");
+  CaseSchema own = embedded_case_schema("coupling/immersed_field.keys.yaml");
+  add_transport_scheme_keys(own, "gas");
+  return own;
 }
 
 }  // namespace rfmems

@@ -1,6 +1,8 @@
 #include "physics/gas/kinetic/kinetic_case.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "core/error.hpp"
 #include "io/case_schema_yaml.hpp"
@@ -161,10 +163,20 @@ const std::map<std::string, KineticSolverFunction>& kinetic_solvers() {
   return solvers;
 }
 
+void add_transport_scheme_keys(CaseSchema& schema, const std::string& section) {
+  const auto group = std::find_if(schema.begin(), schema.end(),
+                                  [&](const CaseKeyGroup& g) { return g.section == section; });
+  if (group == schema.end())
+    throw std::logic_error("transport scheme keys: no group '" + section + "' to add them to");
+  const CaseSchema transport =
+      embedded_case_schema("physics/gas/kinetic/transport_scheme.keys.yaml");
+  group->keys.insert(group->keys.end(), transport.at(0).keys.begin(), transport.at(0).keys.end());
+}
+
 CaseSchema kinetic_case_keys() {
-  return join_schemas({mesh_case_keys(),
-                       embedded_case_schema("physics/gas/kinetic/kinetic_case.keys.yaml"),
-                       kinetic_boundary_case_keys(), comet_case_keys()});
+  CaseSchema own = embedded_case_schema("physics/gas/kinetic/kinetic_case.keys.yaml");
+  add_transport_scheme_keys(own, "solver");
+  return join_schemas({mesh_case_keys(), own, kinetic_boundary_case_keys(), comet_case_keys()});
 }
 
 }  // namespace rfmems

@@ -41,6 +41,7 @@
 
 #include "fv/face_graph.hpp"
 #include "io/case_file.hpp"
+#include "io/case_schema.hpp"
 #include "mesh/mesh.hpp"
 #include "parallel/distributed_mesh.hpp"
 #include "physics/gas/kinetic/kinetic_operator.hpp"
@@ -84,6 +85,9 @@ KineticSolverSettings read_kinetic_solver_settings(const CaseNode& solver);
 // The transport keys of a node (transport, limiter, limiter_k, boundary_reconstruction; above):
 // the body-fitted gas's `solver:` and the immersed switch's `gas:` block.
 TransportScheme read_transport_scheme(const CaseNode& node);
+// Appends the keys read_transport_scheme reads (transport_scheme.keys.yaml) to the group of
+// `section` in schema, the group of the node a reader gives it.
+void add_transport_scheme_keys(CaseSchema& schema, const std::string& section);
 
 // A steady solver: iterates f (the initial state on entry); monitor(iteration, ratio) may stop
 // it by returning false.
