@@ -27,8 +27,13 @@ struct QuasiStaticOptions {
   int n_points = 40;              // samples of delta over (0, max_fraction g0]
   Real max_fraction = 0.9;        // deepest prescribed deflection, as a fraction of the gap
   Real voltage_tolerance = 1e-3;  // [V] on the fold voltage
-  Real newton_tolerance = 1e-10;  // KINSOL: ||F||_inf <= this x k_ref g0
-  int max_newton_iterations = 30;
+  // KINSOL: ||F||_inf <= this x the largest electrostatic force on a structure unknown (the
+  // load the structure balances). 0: tied to the voltage tolerance, 0.2 voltage_tolerance / V
+  // (within [1e-12, 1e-4]), so that each point's voltage is good to a tenth of it.
+  Real newton_tolerance = 0;
+  // Per solve; the Jacobian is refreshed every 10 iterations (modified Newton).
+  int max_newton_iterations = 100;
+  KluOrdering ordering = KluOrdering::BySize;  // of the bordered Jacobian's factorisation
 };
 
 struct PullInPoint {

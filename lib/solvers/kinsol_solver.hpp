@@ -1,10 +1,22 @@
 // Static (steady) solves of a SystemOperator, F(t, y, 0) = 0, with SUNDIALS KINSOL: Newton's
-// method with an exact Jacobian (rebuilt every iteration), KLU, and optional line search.
+// method with an exact Jacobian (rebuilt every iteration, or kept while Newton converges), KLU
+// refactorising on the pattern's one symbolic analysis (solvers/klu_linear_solver.hpp), and
+// optional line search.
+//
+// The stopping test is scaled to the problem: ||F||_inf <= relative_tolerance x the residual
+// scale (||F(y0)||_inf, or residual_scale), but never below the residual's round-off floor
+// c eps max_i (|J| |y|)_i: the size of the terms that cancel in F, times the unit round-off
+// (Higham, Accuracy and Stability of Numerical Algorithms, sec. 7.2: the componentwise
+// backward error of an LU solve). Without the floor a linear problem whose terms cancel by a
+// factor (a/h)^2 (a thin plate's shear against its load) cannot meet a relative reduction of
+// 1e-6 and Newton iterates on round-off; with it, it stops after its one exact step.
 #pragma once
 #include <exception>
+#include <memory>
 
 #include "core/system_operator.hpp"
 #include "solvers/callback_guard.hpp"
+#include "solvers/klu_linear_solver.hpp"
 #include "solvers/sundials_handles.hpp"
 
 namespace rfmems {
@@ -20,10 +32,21 @@ struct KinsolOptions {
   // > 0: the tolerance is relative to this residual scale instead of ||F(y0)||_inf (for
   // continuation, where a good predictor makes F(y0) tiny and a reduction of it meaningless).
   Real residual_scale = 0;
+  // > 0: per-component residual scales instead (the rows of F differ in units or size).
+  std::vector<Real> residual_scales;
+  // Keep the Jacobian (and its factors) across iterations and across solve() calls while
+  // Newton converges: KINSOL re-evaluates it after 10 iterations, when the line search or the
+  // step test fails with a stale one (modified Newton; for continuation, where successive
+  // states are close).
+  bool keep_jacobian = false;
+  KluOrdering ordering = KluOrdering::BySize;
 };
 
 struct NonlinearStats {
   long newton_iters = 0, residual_evals = 0, jacobian_evals = 0, linear_iters = 0;
+  // KLU: factorisations with fresh pivoting and refactorisations keeping the pivots, over the
+  // solver's life (cumulative); entries of L + U.
+  long fresh_factorizations = 0, refactorizations = 0, factor_entries = 0;
   Real initial_residual = 0, final_residual = 0;
 };
 
@@ -34,10 +57,17 @@ class KinsolSolver {
   KinsolSolver(const KinsolSolver&) = delete;
   KinsolSolver& operator=(const KinsolSolver&) = delete;
 
+  // The options, which a caller may change between solves (tolerance, residual scales).
+  KinsolOptions& options() { return options_; }
+
   // Solves F(t, y, 0) = 0 starting from y (overwritten with the solution).
   NonlinearStats solve(Real t, std::span<Real> y);
 
  private:
+  // KINSol with this iteration cap and function-norm tolerance; returns its flag.
+  int run_kinsol(long max_iterations, Real tolerance, bool setup_first);
+  // c eps max_i (|J| |y|)_i with the Jacobian of the last setup, scaled like F.
+  Real round_off_floor(std::span<const Real> y) const;
   static int residual_trampoline(N_Vector y, N_Vector f, void* self);
   static int jacobian_trampoline(N_Vector y, N_Vector f, SUNMatrix J, void* self, N_Vector,
                                  N_Vector);
@@ -48,6 +78,8 @@ class KinsolSolver {
   sundials::Vector y_, scale_u_, scale_f_, zero_;
   sundials::Matrix jac_;
   sundials::LinearSolver solver_;
+  std::shared_ptr<sundials::KluCounts> counts_ = std::make_shared<sundials::KluCounts>();
+  bool solved_once_ = false;
   void* mem_ = nullptr;
   Real t_ = 0;
   long residual_calls_ = 0;

@@ -4,6 +4,7 @@
 #include <metis.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "core/error.hpp"
@@ -19,12 +20,37 @@ struct KluFactorization::Impl {
   klu_l_symbolic* symbolic = nullptr;
   klu_l_numeric* numeric = nullptr;
   SuiteSparse_long n = 0;
+  KluSystem system = KluSystem::Uniform;
+  Real fresh_rcond = 0;  // klu_rcond at the last factorisation with fresh pivoting
+  long fresh = 0, refactors = 0;
+
+  std::vector<Real> row_scale;  // equilibration of A's rows (empty: none)
+
+  // The values, each row of A divided by its largest entry when equilibrating.
+  void load(std::span<const Real> v) {
+    values.assign(v.begin(), v.end());
+    if (system != KluSystem::MixedUnits) return;
+    row_scale.assign(n, 1.0);
+    for (SuiteSparse_long i = 0; i < n; ++i) {
+      Real largest = 0;
+      for (SuiteSparse_long p = ptr[i]; p < ptr[i + 1]; ++p)
+        largest = std::max(largest, std::abs(values[p]));
+      if (largest > 0) row_scale[i] = 1.0 / largest;
+      for (SuiteSparse_long p = ptr[i]; p < ptr[i + 1]; ++p) values[p] *= row_scale[i];
+    }
+  }
+
+  // klu_rcond of the current numeric factorisation (0 if KLU cannot tell).
+  Real rcond() { return klu_l_rcond(symbolic, numeric, &common) ? common.rcond : 0.0; }
 };
 
 namespace {
 
 // KLU's user ordering (klu_common.user_order): METIS_NodeND on the graph of A + A^T of the
-// compressed-column matrix (Ap, Ai); returns 1 on success, as KLU expects.
+// compressed-column matrix (Ap, Ai); returns 1 on success, as KLU expects. Dense nodes (degree
+// above 10 sqrt(n), AMD's rule: the voltage of a bordered system, coupled to every unknown)
+// are left out of the graph and ordered last: a hub joined to every node leaves METIS no small
+// separator.
 SuiteSparse_long nested_dissection(SuiteSparse_long n, SuiteSparse_long* Ap, SuiteSparse_long* Ai,
                                    SuiteSparse_long* Perm, klu_l_common*) {
   std::vector<std::vector<idx_t>> adjacent(n);
@@ -34,34 +60,49 @@ SuiteSparse_long nested_dissection(SuiteSparse_long n, SuiteSparse_long* Ap, Sui
         adjacent[Ai[k]].push_back(static_cast<idx_t>(c));
         adjacent[c].push_back(static_cast<idx_t>(Ai[k]));
       }
-  std::vector<idx_t> xadj{0}, adjncy;
-  for (auto& a : adjacent) {
-    std::sort(a.begin(), a.end());
-    a.erase(std::unique(a.begin(), a.end()), a.end());
-    adjncy.insert(adjncy.end(), a.begin(), a.end());
-    xadj.push_back(static_cast<idx_t>(adjncy.size()));
-    a = {};
+  const double dense = std::max(16.0, 10.0 * std::sqrt(static_cast<double>(n)));
+  std::vector<idx_t> local(n, -1), dense_nodes, sparse_nodes;
+  for (SuiteSparse_long i = 0; i < n; ++i) {
+    std::sort(adjacent[i].begin(), adjacent[i].end());
+    adjacent[i].erase(std::unique(adjacent[i].begin(), adjacent[i].end()), adjacent[i].end());
+    if (static_cast<double>(adjacent[i].size()) > dense) {
+      dense_nodes.push_back(static_cast<idx_t>(i));
+    } else {
+      local[i] = static_cast<idx_t>(sparse_nodes.size());
+      sparse_nodes.push_back(static_cast<idx_t>(i));
+    }
   }
-  idx_t nodes = static_cast<idx_t>(n);
-  std::vector<idx_t> perm(n), inverse(n);
-  if (METIS_NodeND(&nodes, xadj.data(), adjncy.data(), nullptr, nullptr, perm.data(),
-                   inverse.data()) != METIS_OK)
+  std::vector<idx_t> xadj{0}, adjncy;
+  for (const idx_t i : sparse_nodes) {
+    for (const idx_t j : adjacent[i])
+      if (local[j] >= 0) adjncy.push_back(local[j]);
+    xadj.push_back(static_cast<idx_t>(adjncy.size()));
+    adjacent[i] = {};
+  }
+  idx_t nodes = static_cast<idx_t>(sparse_nodes.size());
+  std::vector<idx_t> perm(nodes), inverse(nodes);
+  if (nodes > 0 && METIS_NodeND(&nodes, xadj.data(), adjncy.data(), nullptr, nullptr, perm.data(),
+                                inverse.data()) != METIS_OK)
     return 0;
-  std::copy(perm.begin(), perm.end(), Perm);
+  for (std::size_t k = 0; k < perm.size(); ++k) Perm[k] = sparse_nodes[perm[k]];
+  std::copy(dense_nodes.begin(), dense_nodes.end(), Perm + perm.size());
   return 1;
 }
 
 }  // namespace
 
 KluFactorization::KluFactorization(const CsrPattern& pattern, std::span<const Real> values,
-                                   KluOrdering ordering)
+                                   KluOrdering ordering, KluSystem system)
     : impl_(new Impl) {
   Impl& k = *impl_;
   k.n = pattern.n_rows();
   k.ptr.assign(pattern.row_ptr.begin(), pattern.row_ptr.end());
   k.idx.assign(pattern.col_idx.begin(), pattern.col_idx.end());
-  k.values.assign(values.begin(), values.end());
+  k.system = system;
+  k.load(values);
   klu_l_defaults(&k.common);
+  if (ordering == KluOrdering::BySize)
+    ordering = k.n < 1000 ? KluOrdering::Amd : KluOrdering::NestedDissection;
   k.common.ordering = ordering == KluOrdering::Colamd ? 1 : 0;
   if (ordering == KluOrdering::NestedDissection) {
     k.common.ordering = 3;  // user ordering
@@ -75,6 +116,8 @@ KluFactorization::KluFactorization(const CsrPattern& pattern, std::span<const Re
     delete impl_;
     throw SolverError("KLU factorisation failed (singular matrix?)");
   }
+  k.fresh = 1;
+  k.fresh_rcond = k.rcond();
 }
 
 KluFactorization::~KluFactorization() {
@@ -87,19 +130,35 @@ void KluFactorization::refactor(std::span<const Real> values) {
   Impl& k = *impl_;
   if (static_cast<std::size_t>(values.size()) != k.values.size())
     throw SolverError("KLU refactor: value count differs from the pattern");
-  k.values.assign(values.begin(), values.end());
-  // The threshold: KLU's cheap estimate min|U_ii| / max|U_ii| (klu_rcond).
-  constexpr Real kPoorPivots = 1e-12;
-  bool ok = klu_l_refactor(k.ptr.data(), k.idx.data(), k.values.data(), k.symbolic, k.numeric,
-                           &k.common) &&
-            klu_l_rcond(k.symbolic, k.numeric, &k.common) && k.common.rcond > kPoorPivots;
-  if (ok) return;
+  k.load(values);
+  constexpr Real kAbsoluteFloor = 1e-12, kRelativeDecay = 1e-3;
+  bool ok =
+      klu_l_refactor(k.ptr.data(), k.idx.data(), k.values.data(), k.symbolic, k.numeric, &k.common);
+  if (ok) {
+    const Real rcond = k.rcond();
+    ok = k.system == KluSystem::Uniform ? rcond > kAbsoluteFloor
+                                        : rcond >= kRelativeDecay * k.fresh_rcond;
+  }
+  if (ok) {
+    ++k.refactors;
+    return;
+  }
   klu_l_free_numeric(&k.numeric, &k.common);
   k.numeric = klu_l_factor(k.ptr.data(), k.idx.data(), k.values.data(), k.symbolic, &k.common);
   if (!k.numeric) throw SolverError("KLU refactorisation failed (singular matrix?)");
+  ++k.fresh;
+  k.fresh_rcond = k.rcond();
+}
+
+long KluFactorization::fresh_factorizations() const { return impl_->fresh; }
+long KluFactorization::refactorizations() const { return impl_->refactors; }
+long KluFactorization::factor_entries() const {
+  const klu_l_numeric* f = impl_->numeric;
+  return f ? f->lnz + f->unz - impl_->n + f->nzoff : 0;  // the diagonal is in both
 }
 
 void KluFactorization::solve(std::span<Real> b) {
+  for (std::size_t i = 0; i < impl_->row_scale.size(); ++i) b[i] *= impl_->row_scale[i];
   klu_l_tsolve(impl_->symbolic, impl_->numeric, impl_->n, 1, b.data(), &impl_->common);
 }
 
