@@ -96,6 +96,8 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
   s.quasi_static.max_fraction = qs.get_real("max_fraction", 0.9, Range{0.0, 1.0, true, false});
   s.quasi_static.voltage_tolerance =
       qs.get_quantity("voltage_tolerance", Dimension::Voltage, 0.01, Range::positive());
+  s.quasi_static.newton_tolerance =
+      qs.get_real("newton_tolerance", 0.0, Range{0.0, 1e-2, false, true});
 
   const CaseNode tr = block(Analysis::Transient);
   const bool transient = s.analysis == Analysis::Transient;
