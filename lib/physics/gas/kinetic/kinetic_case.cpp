@@ -101,6 +101,8 @@ KineticScene build_kinetic_scene(const CaseNode& root, const std::string& case_d
 
   std::vector<KineticBoundary> bcs =
       kinetic_boundaries_from_case(root.child("boundaries"), *scene.graph);
+  for (std::size_t p = 0; p < bcs.size(); ++p)
+    scene.conditions[scene.graph->patch_names[p]] = bcs[p];
   const CaseNode solver = root.child_or_empty("solver");
   scene.solver = read_kinetic_solver_settings(solver);
 

@@ -70,6 +70,8 @@ struct KineticScene {
   Real knudsen = 0;  // of the initial state over reference_length
   KineticSolverSettings solver;
   std::vector<std::string> force_patches;  // by name: a rank's part may lack a patch
+  // Every patch's condition by name, the whole mesh's (a rank's operator holds its part's).
+  std::map<std::string, KineticBoundary> conditions;
 
   // Owned cells' values (block per cell) in global cell order on the root (serial: as is).
   std::vector<Real> gather(std::span<const Real> values, int block) const;

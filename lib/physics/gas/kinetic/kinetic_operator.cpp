@@ -323,6 +323,19 @@ Real KineticOperator::wall_heat_flow(int patch, std::span<const Real> f) const {
   return comm_.sum(q);
 }
 
+KineticOperator::PatchArea KineticOperator::patch_area(int patch) const {
+  const FaceGraph& g = *graph_;
+  Real sums[4] = {0, 0, 0, 0};  // area, vector
+  for (Index fc = g.n_interior_faces; fc < g.n_faces(); ++fc) {
+    if (g.face_patch[fc] != patch || !owned_face(fc)) continue;
+    const Vec3& S = g.face_area[fc];
+    sums[0] += S.norm();
+    for (int d = 0; d < 3; ++d) sums[1 + d] += S[d];
+  }
+  comm_.sum_in_place(std::span<Real>(sums, 4));
+  return {sums[0], Vec3(sums[1], sums[2], sums[3])};
+}
+
 Real KineticOperator::boundary_mass_flow(int patch, std::span<const Real> f) const {
   const FaceGraph& g = *graph_;
   const Index N = n_ordinates();

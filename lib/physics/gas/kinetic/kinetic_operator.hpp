@@ -167,6 +167,13 @@ class KineticOperator {
   // Heat flux from the gas into the patch (W; per unit depth in 2D):
   // sum_f sum_k w_k |c_k|^2 / 2 (c_k . S_f) f_face,k (moving walls: includes the work).
   Real wall_heat_flow(int patch, std::span<const Real> f) const;
+  // The patch's area (m^2; m per unit depth in 2D), sum_f |S_f|, and its area vector
+  // sum_f S_f (outward from the gas; |vector| = area on a flat patch).
+  struct PatchArea {
+    Real area = 0;
+    Vec3 vector = Vec3::Zero();
+  };
+  PatchArea patch_area(int patch) const;
   // Net mass flow out through the patch (kg/s; per unit depth in 2D).
   Real boundary_mass_flow(int patch, std::span<const Real> f) const;
   // Total mass sum_c V_c rho_c over owned cells (of every rank).
