@@ -27,7 +27,13 @@ asymptotes 1 / (delta + 2 sigma_P) with BGK's viscous slip coefficient sigma_P =
 (Loyalka, Petrellis & Storvick 1975) and (5/4) / (delta + 2 d_1) with BGK's temperature jump
 coefficient d_1 = 1.30272 (Sone's): 0.083109 and 0.099167 (second-order slip terms aside).
 
-Usage: linearised_bgk_reference.py [couette|heat] [deltas, default 0.1,1,10] [N, default 1600]
+Plane Poiseuille flow driven by a body force a along x (the linear equivalent of a pressure
+gradient xi = (H / p0) dp/dx = -2 a H / v0^2): h = 2 (a H / v0^2) c_x Z(y, c_y),
+    c_y dZ/dy = delta (u + 1 / delta - Z),  u = int Z g dc_y,  walls at rest send Z = 0;
+    G = -(2 / (xi H v0)) int u_x dy = int u dy over the gap   (continuum delta / 6 + sigma_P).
+
+Usage: linearised_bgk_reference.py [couette|heat|poiseuille] [deltas, default 0.1,1,10]
+                                   [N, default 1600]
 """
 import sys
 
@@ -114,11 +120,25 @@ def heat(delta, n):
     return abs(np.mean(flux(phi_up, psi_up) - flux(phi_down, psi_down)))
 
 
+def poiseuille(delta, n):
+    c, w = half_range(128)
+    k = characteristic(delta, 1.0 / n, c)
+
+    def profiles(u):
+        s = np.repeat(u[:, None] + 1 / delta, c.size, axis=1)
+        up = sweep(s, k, np.zeros(c.size))  # walls at rest re-emit Z = 0
+        down = sweep(s[::-1], k, np.zeros(c.size))[::-1]
+        return up, down
+
+    u = fixed_point(lambda u: sum(z @ w for z in profiles(u)), n + 1)
+    return np.sum((u[1:] + u[:-1]) / 2) / n
+
+
 def main():
     problem = sys.argv[1] if len(sys.argv) > 1 else "couette"
     deltas = [float(d) for d in (sys.argv[2] if len(sys.argv) > 2 else "0.1,1,10").split(",")]
     n = int(sys.argv[3]) if len(sys.argv) > 3 else 1600
-    solve = couette if problem == "couette" else heat
+    solve = {"couette": couette, "heat": heat, "poiseuille": poiseuille}[problem]
     for delta in deltas:
         coarse, fine = solve(delta, n // 2), solve(delta, n)
         print(f"{problem} delta = {delta:g}: {fine + (fine - coarse) / 3:.7f} "

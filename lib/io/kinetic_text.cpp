@@ -41,6 +41,15 @@ std::string kinetic_text(const Json& s) {
           wall["heat_flux"].get<double>(), wall["normalised_heat_flux"].get<double>(),
           ref["temperature_difference"].get<double>());
   }
+  if (s.contains("flow_rate")) {
+    const Json& q = s["flow_rate"];
+    text += fmt::format(
+        "  flow rate through {}: {:.6e} kg/s{}, G = -(2 / (xi H v0)) int u dy = {:.6g} "
+        "(xi = (H / p0) dp/dx = {:.6g} for the body force {:.6g} m/s^2)\n",
+        q["patch"].get<std::string>(), q["mass_flow"].get<double>(), plane ? "/m" : "",
+        q["normalised_flow_rate"].get<double>(), ref["pressure_gradient"].get<double>(),
+        ref["body_force"].get<double>());
+  }
   return text;
 }
 

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# rfmems-gas's normalised wall answers against the linearised BGK model between diffuse
-# parallel plates, read straight from the JSON summary (physics/gas/kinetic/kinetic_reference.hpp):
+# rfmems-gas's normalised answers against the linearised BGK model between diffuse parallel
+# plates, read straight from the JSON summary (physics/gas/kinetic/kinetic_reference.hpp):
 #   plane Couette flow, P = -p_xy v0 / (p0 U), and plane heat transfer, q* = q / (p0 v0 dT/T0),
-#   at delta = p0 H / (mu0 v0) = 0.1, 1, 10, within 0.2 %.
+#   at delta = p0 H / (mu0 v0) = 0.1, 1, 10, within 0.2 %; plane Poiseuille flow (periodic
+#   sides, body force), G, below.
 # Reference values (7 digits): python/linearised_bgk_reference.py, a discrete-ordinates
 # solution of the linearised BGK equation (half-range Gauss quadrature in c_y, exact
 # characteristics, Richardson-extrapolated in y), which meets the free-molecular limit
@@ -92,6 +93,58 @@ heat 0.1 10 [12,64,12] sequential 0.5276072
 heat 1 40 [12,64,12] sequential 0.3615623
 heat 10 50 [12,32,12] comet 0.0991778
 TABLE
+
+# Plane Poiseuille flow: cases/gas_poiseuille (BGK, a channel one cell long between periodic
+# sides, driven by a body force a = 100 m/s^2 along x, i.e. xi = (H / p0) dp/dx = -2 a H / v0^2
+# = -1.76e-3: the linear regime), the normalised flow rate G = -(2 / (xi H v0)) int u dy
+# from the JSON against the same discrete-ordinates reference (continuum delta / 6 + sigma_P).
+# delta = 1 and 10 within 0.2 %. delta = 0.1 does not reach 0.2 % on a uniform velocity
+# grid: near the free-molecular limit G is carried by molecules nearly parallel to the
+# walls, and the error is second order in dc_y (-6.3 %, -1.45 %, -0.46 % with 64, 128, 200
+# points across, the most the grid takes; docs/kinetic.md): asserted at its measured 0.5 %.
+while read -r delta cells points tolerance reference; do
+  kn=$($PY -c "import math; print(math.sqrt(math.pi) / (2 * $delta))")
+  if "$DRIVER" "$SRC/cases/gas_poiseuille/case.yaml" --set "initial.knudsen=$kn" \
+       --set "mesh.cells=[1, $cells]" --set "velocity_grid.points=$points" \
+       -o "$WORK/poiseuille.h5" --json --quiet >"$WORK/poiseuille.json" 2>"$WORK/err" &&
+     $PY - "$WORK/poiseuille.json" "$delta" "$tolerance" "$reference" <<'PY'
+import json, math, sys
+d = json.load(open(sys.argv[1]))
+delta, tolerance, reference = float(sys.argv[2]), float(sys.argv[3]), float(sys.argv[4])
+assert d["solver"]["converged"], d["solver"]
+r, q = d["reference"], d["flow_rate"]
+assert abs(r["rarefaction_parameter"] / delta - 1) < 1e-9, r
+xi = -2 * 100 * 1.0 / r["thermal_speed"] ** 2  # -2 a H / v0^2
+assert abs(r["pressure_gradient"] / xi - 1) < 1e-12 and r["body_force"] == 100, r
+# G from the raw mass flow per unit depth through the 1 m high outflow side: int u dy = m / rho0.
+G = -2 / (xi * 1.0 * r["thermal_speed"]) * q["mass_flow"] / r["density"]
+assert q["patch"] == "right" and abs(G / q["normalised_flow_rate"] - 1) < 1e-12, (G, q)
+# Momentum: the walls hold the body force rho0 a H per unit depth (closed domain: mass pinned).
+fx = d["walls"]["bottom"]["force"][0] + d["walls"]["top"]["force"][0]
+assert abs(fx / (r["density"] * 100 * 1.0) - 1) < 1e-3, fx
+error = G / reference - 1
+print(f"Poiseuille delta = {delta:g}: G = {G:.6f} against {reference:.6f} ({100 * error:+.3f} %), "
+      f"{d['mesh']['cells']} cells x {d['velocity_grid']['ordinates']} velocities, "
+      f"{d['solver']['iterations']} sweeps, {d['solver']['seconds']:.2f} s")
+assert abs(error) < tolerance, error
+PY
+  then
+    pass "Poiseuille at delta = $delta: G within $tolerance of the linearised BGK reference"
+  else
+    fail "Poiseuille at delta = $delta: $(cat "$WORK/err")"
+  fi
+done <<'TABLE'
+0.1 10 [8,200,8] 0.005 2.0327143
+1 40 [8,64,8] 0.002 1.5386784
+10 50 [8,32,8] 0.002 2.7686424
+TABLE
+
+# Periodic patches: a partner that does not name the patch back, and another solver than the
+# sequential one, are input errors.
+expect_input_error periodic_partner "boundaries.left.partner.*must be periodic with partner .left." \
+  "$SRC/cases/gas_poiseuille/case.yaml" --set "boundaries.right={type: periodic, partner: top}"
+expect_input_error periodic_comet "solver.type.*sequential solver" \
+  "$SRC/cases/gas_poiseuille/case.yaml" --set solver.type=comet
 
 # The reference state against its definitions, from the case's own numbers (argon,
 # R = 208.13 J/(kg K), mu = 2.117e-5 Pa s at 273.15 K), and P from the raw wall force: the

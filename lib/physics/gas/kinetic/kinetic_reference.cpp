@@ -44,7 +44,15 @@ KineticReference kinetic_reference(const KineticScene& scene) {
         r.wall_speed = std::max(r.wall_speed, (a.velocity - b.velocity).norm());
   }
   if (t_hi > t_lo) r.temperature_difference = t_hi - t_lo;
+  r.body_force = scene.body_force.norm();
+  r.pressure_gradient = -r.density * r.body_force * r.reference_length / r.pressure;
   return r;
+}
+
+Real normalised_flow_rate(const KineticReference& reference, Real mass_flow, Real area) {
+  const Real H = reference.reference_length;
+  const Real integral = mass_flow / reference.density * H / area;  // int u dy
+  return -2 / (reference.pressure_gradient * H * reference.thermal_speed) * integral;
 }
 
 WallAnswer wall_answer(const KineticScene& scene, const KineticReference& reference,

@@ -23,6 +23,13 @@
 //       colder wall; a moving wall's includes the work of its shear)
 //   normalised_heat_flux q* = q / (p0 v0 dT / T0)   (defined when dT > 0; free-molecular limit
 //       1 / sqrt(pi), continuum 5 / (4 Pr delta), Pr = 1 for BGK)
+// A channel driven by a body force a (kinetic_operator.hpp) between periodic patches:
+//   pressure_gradient xi = (H / p0) dp/dx of the equivalent pressure-driven flow,
+//       dp/dx = -rho0 |a|:  xi = -rho0 |a| H / p0 = -2 |a| H / v0^2
+//   normalised_flow_rate G = -(2 / (xi H v0)) int u dy over the gap, int u dy = (m / rho0) (H / A)
+//       from the mass flow m through the periodic patch the force drives the gas out of, of
+//       area A (H per unit depth in 2D): the linear regime's (continuum delta / 6; grows as
+//       log(1 / delta) towards the free-molecular limit).
 #pragma once
 #include <optional>
 #include <string>
@@ -44,7 +51,13 @@ struct KineticReference {
   Real knudsen = 0;                 // sqrt(pi) / (2 delta)
   Real wall_speed = 0;              // U [m/s] (0: no wall moves relative to another)
   Real temperature_difference = 0;  // dT [K] (0: every diffuse wall at one temperature)
+  Real body_force = 0;              // |a| [m/s^2]
+  Real pressure_gradient = 0;       // xi (0: no body force)
 };
+
+// G from the mass flow m (kg/s, per unit depth in 2D) through the outflow periodic patch of
+// area A.
+Real normalised_flow_rate(const KineticReference& reference, Real mass_flow, Real area);
 
 // One sentence defining Kn, for the printed and JSON reports.
 inline constexpr const char* kKnudsenDefinition =

@@ -85,6 +85,10 @@ Json kinetic_summary(const KineticScene& scene, const KineticSolveResult& result
   if (ref.wall_speed > 0) reference["wall_speed"] = ref.wall_speed;
   if (ref.temperature_difference > 0)
     reference["temperature_difference"] = ref.temperature_difference;
+  if (ref.body_force > 0) {
+    reference["body_force"] = ref.body_force;
+    reference["pressure_gradient"] = ref.pressure_gradient;
+  }
   summary["reference"] = reference;
   summary["solver"] = {{"type", scene.solver.type},
                        {"method", result.method},
@@ -118,6 +122,17 @@ Json kinetic_summary(const KineticScene& scene, const KineticSolveResult& result
   for (const Patch& patch : scene.mesh->patches())
     boundaries[patch.name] = {{"mass_flow", op.boundary_mass_flow(g.find_patch(patch.name), f)}};
   summary["boundaries"] = boundaries;
+  // A body-force-driven channel: G through the periodic patch the force drives the gas out of.
+  for (const auto& [name, bc] : scene.conditions) {
+    if (bc.kind != KineticBoundaryKind::Periodic || !(ref.body_force > 0)) continue;
+    const int p = g.find_patch(name);
+    const KineticOperator::PatchArea A = op.patch_area(p);
+    if (!(A.vector.dot(scene.body_force) > 0)) continue;
+    const Real m = op.boundary_mass_flow(p, f);
+    summary["flow_rate"] = {{"patch", name},
+                            {"mass_flow", m},
+                            {"normalised_flow_rate", normalised_flow_rate(ref, m, A.area)}};
+  }
   summary["total_mass"] = op.total_mass(f);
   return summary;
 }
