@@ -2,13 +2,16 @@
 // (lib/physics/gas/kinetic): reads a case file (mesh, gas, initial state, velocity grid,
 // boundaries, solver; physics/gas/kinetic/kinetic_case.hpp), iterates to the steady state with
 // the solver named in `solver.type` (sequential or comet), writes the cell fields
-// and the residual history to HDF5 + XDMF, and reports iterations, residuals and the forces and
-// heat flows on the walls.
+// and the residual history to HDF5 + XDMF, and reports the solver that ran (and COMET's hand-over
+// to the sequential one), iterations, residuals, the reference state (p0, T0, rho0, mu0, v0, H,
+// delta, Kn), the forces and heat flows on the walls with their normalised shear P and heat flux
+// q*, and a body-force-driven channel's flow rate G (physics/gas/kinetic/kinetic_reference.hpp).
 //
 // Sample runs:
 //   rfmems-gas cases/gas_couette/case.yaml                  # -> out/gas_couette.h5, .xdmf
 //   rfmems-gas cases/gas_heat_transfer/case.yaml --json --quiet
 //   rfmems-gas cases/gas_cavity/case.yaml --set initial.knudsen=1 -o out/cavity_kn1.h5
+//   rfmems-gas cases/gas_poiseuille/case.yaml             # periodic channel, body force: G
 //   mpirun -np 2 rfmems-gas cases/gas_heat_transfer/case.yaml --set solver.type=comet
 //       # METIS parts, one ghost layer; COMET's coarse levels agglomerated per part
 //

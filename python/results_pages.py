@@ -274,6 +274,7 @@ TABLES = {
     "immersed-esbgk-case-keys": immersed_esbgk_case_keys,
     "immersed-switch-figures": csv_table("immersed_switch_figures.csv"),
     "ibm-couette": csv_table("ibm_couette.csv"),
+    "kinetic-linearised-bgk": csv_table("kinetic_linearised_bgk.csv"),
     "coupling-schemes-deflection": coupling_schemes("deflection"),
     "coupling-schemes-touch-down": coupling_schemes("touch_down"),
     "coupling-schemes-study": coupling_schemes_study,

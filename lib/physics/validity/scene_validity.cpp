@@ -99,10 +99,21 @@ void check_kinetic(const SceneDescription::Kinetic &k, ValidityReport &r) {
   auto knudsen = [&](Real rho, Real T, Real mu) {
     return mean_free_path(rho, T, mu, k.gas_constant) / k.length;
   };
-  if (k.cell_size > 0)
+  if (k.cell_size > 0) {
+    const Real lambda_min = knudsen(k.density_max, k.temperature_min, k.viscosity_min) * k.length;
     check_cell_size_against_mean_free_path(
-        k.cell_size, knudsen(k.density_max, k.temperature_min, k.viscosity_min) * k.length,
+        k.cell_size, lambda_min,
         knudsen(k.density_min, k.temperature_max, k.viscosity_max) * k.length, k.cell_size_key, r);
+    const Real wall_error = k.cell_size / (2 * lambda_min);
+    if (k.first_order && wall_error > C::kMaxWallFluxError &&
+        wall_error <= C::kMaxUpwindViscosityRatio)
+      r.warnings.push_back(fmt::format(
+          "kinetic gas: first-order transport: the wall shear and heat flux may be off by up to "
+          "h / (2 lambda) = {:.2g} % (upwinding's numerical viscosity against the physical; "
+          "above {:g} %); set solver.transport: second_order or refine {}",
+          100 * wall_error, 100 * C::kMaxWallFluxError,
+          k.cell_size_key.empty() ? "the mesh" : k.cell_size_key));
+  }
   r.ranges.push_back({"kinetic_knudsen", knudsen(k.density_max, k.temperature_min, k.viscosity_min),
                       knudsen(k.density_min, k.temperature_max, k.viscosity_max)});
   const Real needed = k.wall_speed + C::kVelocityGridThermalSpeeds *

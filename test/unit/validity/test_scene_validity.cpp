@@ -189,9 +189,9 @@ TEST(SceneValidity, KineticKnudsenRangeAndVelocityGridCover) {
 
 // The cell size against the mean free path: argon at Kn = 0.1 over 1 m (lambda = 0.1 m) is
 // inside on 80 cells (h / (2 lambda) = 0.0625) and on 10 (0.5); 4 cells (1.25) warn once, with
-// the key; the immersed switch's air at 1.36e4 Pa, 300 K (lambda = 0.463 um) on the 150 x 50
-// background (h = 0.2 um, the cells' smaller side: 0.22) is inside, at 1e5 Pa (lambda = 63 nm:
-// 1.59) it warns.
+// the key; first-order transport warns of its wall-flux error above 1 %; the immersed switch's air
+// at 1.36e4 Pa, 300 K (lambda = 0.463 um) on the 150 x 50 background (h = 0.2 um, the cells'
+// smaller side: 0.22) is inside, at 1e5 Pa (lambda = 63 nm: 1.59) it warns.
 TEST(SceneValidity, KineticCellSizeAgainstTheMeanFreePath) {
   SceneDescription s;
   s.kinetic.present = true;
@@ -207,15 +207,23 @@ TEST(SceneValidity, KineticCellSizeAgainstTheMeanFreePath) {
   k.velocity_extent = 3.5 * std::sqrt(2 * rt);
   k.wall_temperature = k.temperature_min;
   k.cell_size_key = "mesh.cells";
-  for (int cells : {80, 10, 4}) {
-    k.cell_size = 1.0 / cells;
-    const ValidityReport r = check_scene_validity(s);
-    const Real ratio = 1.0 / cells / (2 * 0.1);
-    EXPECT_NEAR(r.find("kinetic_upwind_viscosity_ratio")->max, ratio, 1e-12);
-    EXPECT_EQ(r.warnings.size(), cells == 4 ? 1u : 0u) << cells;
-    EXPECT_EQ(count_containing(r, "numerical viscosity"), cells == 4 ? 1 : 0);
-    EXPECT_EQ(count_containing(r, "refine mesh.cells"), cells == 4 ? 1 : 0);
-  }
+  // Second order: only the profile warning (mu_num / mu > 1). First order: below it the
+  // wall-flux warning wherever h / (2 lambda) > 1 % (here 6.25 % and 50 %; 400 cells:
+  // 1.25 %; 1000 cells: 0.5 %, none).
+  for (const bool first_order : {false, true})
+    for (int cells : {1000, 400, 80, 10, 4}) {
+      k.first_order = first_order;
+      k.cell_size = 1.0 / cells;
+      const ValidityReport r = check_scene_validity(s);
+      const Real ratio = 1.0 / cells / (2 * 0.1);
+      EXPECT_NEAR(r.find("kinetic_upwind_viscosity_ratio")->max, ratio, 1e-12);
+      const bool wall_warning = first_order && cells != 4 && cells != 1000;
+      EXPECT_EQ(r.warnings.size(), cells == 4 || wall_warning ? 1u : 0u) << cells;
+      EXPECT_EQ(count_containing(r, "mu_num / mu"), cells == 4 ? 1 : 0);
+      EXPECT_EQ(count_containing(r, "wall shear and heat flux"), wall_warning ? 1 : 0) << cells;
+      EXPECT_EQ(count_containing(r, "solver.transport: second_order"), wall_warning ? 1 : 0);
+      EXPECT_EQ(count_containing(r, "refine mesh.cells"), cells == 4 || wall_warning ? 1 : 0);
+    }
   k.cell_size = 0;  // not given: no range, no warning
   EXPECT_EQ(check_scene_validity(s).find("kinetic_upwind_viscosity_ratio"), nullptr);
 

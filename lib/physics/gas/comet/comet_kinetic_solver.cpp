@@ -1,5 +1,9 @@
 #include "physics/gas/comet/comet_kinetic_solver.hpp"
 
+#include <fmt/format.h>
+
+#include <string>
+
 #include "io/case_schema_yaml.hpp"
 
 namespace rfmems {
@@ -39,6 +43,12 @@ KineticSolveResult solve_comet(KineticOperator& op, std::span<Real> f, CometOpti
   CometSolver solver(op, options);
   const CometResult r = solver.solve(f);
   KineticSolveResult out;
+  out.method = r.method;
+  if (out.method != std::string("comet"))
+    out.handover = fmt::format(
+        "COMET handed the solve to the sequential solver: domain Kn = {:.4g} >= "
+        "solver.sequential_above_knudsen = {:.4g}, where a sweep is cheaper than a cycle",
+        r.knudsen, options.sequential_above_knudsen);
   out.converged = r.converged;
   out.iterations = r.cycles;
   out.initial_residual = r.initial_residual;

@@ -1,6 +1,7 @@
 // COMET as one of the kinetic steady solvers the rfmems-gas driver picks by name
 // (physics/gas/kinetic/kinetic_case.hpp: `solver: {type: comet, ...}`): its case keys and the
-// call with the registry's signature, reporting a KineticSolveResult (iterations = V-cycles).
+// call with the registry's signature, reporting a KineticSolveResult (iterations = cycles;
+// after a hand-over to the sequential solver, sweeps, with method and handover saying so).
 //
 //   solver:
 //     type: comet

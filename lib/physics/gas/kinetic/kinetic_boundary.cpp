@@ -21,6 +21,8 @@ const char* kinetic_boundary_kind_name(KineticBoundaryKind kind) {
       return "pressure";
     case KineticBoundaryKind::Symmetry:
       return "symmetry";
+    case KineticBoundaryKind::Periodic:
+      return "periodic";
     case KineticBoundaryKind::External:
       return "external";
   }
@@ -52,6 +54,13 @@ KineticBoundary KineticBoundary::pressure_outlet(Real p, Real T) {
   return b;
 }
 
+KineticBoundary KineticBoundary::periodic(const std::string& partner) {
+  KineticBoundary b;
+  b.kind = KineticBoundaryKind::Periodic;
+  b.partner = partner;
+  return b;
+}
+
 KineticBoundary KineticBoundary::external() {
   KineticBoundary b;
   b.kind = KineticBoundaryKind::External;
@@ -75,8 +84,8 @@ std::vector<KineticBoundary> kinetic_boundaries_from_case(const CaseNode& bounda
       boundaries.fail(name, "no such patch (patches: " + known + ")");
     }
     const CaseNode node = boundaries.child(name);
-    const std::string type =
-        node.get_choice("type", {"diffuse_wall", "specular_wall", "pressure", "symmetry"});
+    const std::string type = node.get_choice(
+        "type", {"diffuse_wall", "specular_wall", "pressure", "symmetry", "periodic"});
     KineticBoundary& b = out[p];
     if (type == "diffuse_wall") {
       b = KineticBoundary::diffuse_wall(
@@ -88,6 +97,11 @@ std::vector<KineticBoundary> kinetic_boundaries_from_case(const CaseNode& bounda
       b = KineticBoundary::specular_wall();
     } else if (type == "symmetry") {
       b = KineticBoundary::symmetry();
+    } else if (type == "periodic") {
+      const std::string partner = node.get_string("partner");
+      if (graph.find_patch(partner) < 0 || partner == name)
+        node.fail("partner", "'" + partner + "' is not another patch of the mesh");
+      b = KineticBoundary::periodic(partner);
     } else {
       b = KineticBoundary::pressure_outlet(
           node.get_quantity("p", Dimension::Pressure, Range::positive()),
@@ -97,6 +111,14 @@ std::vector<KineticBoundary> kinetic_boundaries_from_case(const CaseNode& bounda
   }
   for (std::size_t p = 0; p < seen.size(); ++p)
     if (!seen[p]) boundaries.fail(graph.patch_names[p], "missing boundary condition for patch");
+  for (std::size_t p = 0; p < out.size(); ++p) {
+    if (out[p].kind != KineticBoundaryKind::Periodic) continue;
+    const KineticBoundary& q = out[graph.find_patch(out[p].partner)];
+    if (q.kind != KineticBoundaryKind::Periodic || q.partner != graph.patch_names[p])
+      boundaries.child(graph.patch_names[p])
+          .fail("partner", "'" + out[p].partner + "' must be periodic with partner '" +
+                               graph.patch_names[p] + "'");
+  }
   return out;
 }
 
@@ -125,6 +147,8 @@ void fill_boundary_face(const KineticBoundary& bc, const Vec3& area, std::span<c
   switch (bc.kind) {
     case KineticBoundaryKind::External:
       throw std::logic_error("fill_boundary_face: an external condition has no local rule");
+    case KineticBoundaryKind::Periodic:
+      throw std::logic_error("fill_boundary_face: a periodic face takes its partner's values");
     case KineticBoundaryKind::SpecularWall:
     case KineticBoundaryKind::Symmetry:
       for (Index k = 0; k < n; ++k)

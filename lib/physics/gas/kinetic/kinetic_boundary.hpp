@@ -16,6 +16,13 @@
 //       p + C p u_n / sqrt(2 R T), C ~ 2 at every Kn (the condensation jump; measured 2.05-2.09
 //       for ESBGK, test_kinetic_pressure_boundary.cpp), so near the continuum it is all but
 //       closed to normal flow (docs/gas_damping.md "Why ESBGK sat 10.5 % above ...").
+//   periodic {partner}: f_in = the values leaving through the partner patch's matching face
+//       (the face translated by the offset between the two patches): the partner's owner cell
+//       value, or its reconstruction there with second order. The two patches name each other
+//       and match face by face; the operator fills these faces (fill_boundary_face cannot:
+//       it sees only the owner). A channel one cell long between two periodic patches is
+//       the fully developed flow of an infinitely long one (plane Poiseuille flow driven by
+//       a body force, kinetic_operator.hpp).
 //   external: face values supplied from outside (external_face_values.hpp; the immersed
 //       boundary's IB faces); not available from case files, fill_boundary_face rejects it.
 // The Maxwellians are the DISCRETE equilibria of the gas's collision model (equilibrium.hpp:
@@ -39,7 +46,14 @@ namespace rfmems {
 
 class CaseNode;
 
-enum class KineticBoundaryKind { DiffuseWall, SpecularWall, Pressure, Symmetry, External };
+enum class KineticBoundaryKind {
+  DiffuseWall,
+  SpecularWall,
+  Pressure,
+  Symmetry,
+  Periodic,
+  External
+};
 
 const char* kinetic_boundary_kind_name(KineticBoundaryKind kind);
 
@@ -49,12 +63,14 @@ struct KineticBoundary {
   Vec3 velocity = Vec3::Zero();  // m/s (diffuse wall)
   Real accommodation = 1;        // sigma in [0, 1] (diffuse wall)
   Real pressure = 0;             // Pa (pressure boundary)
+  std::string partner;           // the partner patch's name (periodic)
 
   static KineticBoundary diffuse_wall(Real T, const Vec3& velocity = Vec3::Zero(),
                                       Real accommodation = 1);
   static KineticBoundary specular_wall();
   static KineticBoundary symmetry();
   static KineticBoundary pressure_outlet(Real p, Real T);
+  static KineticBoundary periodic(const std::string& partner);
   // Face values from an ExternalFaceValues source set on the operator.
   static KineticBoundary external();
 
@@ -68,7 +84,9 @@ struct KineticBoundary {
 //     left:   {type: specular_wall}
 //     right:  {type: pressure, p: 0.5 Pa, T: 273.15 K}
 //     bottom: {type: symmetry}
-// Every patch must be listed and every listed name must be a patch (InputError otherwise).
+//     inlet:  {type: periodic, partner: outlet}   # and outlet: {type: periodic, partner: inlet}
+// Every patch must be listed and every listed name must be a patch (InputError otherwise); a
+// periodic patch's partner must be another periodic patch that names it back.
 std::vector<KineticBoundary> kinetic_boundaries_from_case(const CaseNode& boundaries,
                                                           const FaceGraph& graph);
 

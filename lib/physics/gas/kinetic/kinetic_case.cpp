@@ -101,8 +101,26 @@ KineticScene build_kinetic_scene(const CaseNode& root, const std::string& case_d
 
   std::vector<KineticBoundary> bcs =
       kinetic_boundaries_from_case(root.child("boundaries"), *scene.graph);
+  for (std::size_t p = 0; p < bcs.size(); ++p)
+    scene.conditions[scene.graph->patch_names[p]] = bcs[p];
   const CaseNode solver = root.child_or_empty("solver");
   scene.solver = read_kinetic_solver_settings(solver);
+
+  // Periodic patches and a body force: the sequential solver on one rank (COMET's coarse
+  // levels and the distributed parts carry neither).
+  const CaseNode force = root.child_or_empty("body_force");
+  if (force.has("acceleration")) {
+    const std::vector<Real> a = force.get_reals("acceleration");
+    if (a.size() != 3) force.fail("acceleration", "expected 3 numbers [a_x, a_y, a_z] in m/s^2");
+    scene.body_force = Vec3(a[0], a[1], a[2]);
+  }
+  const bool periodic = std::any_of(bcs.begin(), bcs.end(), [](const KineticBoundary& b) {
+    return b.kind == KineticBoundaryKind::Periodic;
+  });
+  if ((periodic || scene.body_force.squaredNorm() > 0) && scene.solver.type != "sequential")
+    solver.fail("type", "periodic boundaries and body_force need the sequential solver");
+  if (periodic && !comm.is_serial())
+    throw InputError("periodic boundaries run on one rank (run without mpirun)");
 
   const CaseNode output = root.child_or_empty("output");
   if (output.has("forces")) {
@@ -133,6 +151,7 @@ KineticScene build_kinetic_scene(const CaseNode& root, const std::string& case_d
   scene.op = std::make_unique<KineticOperator>(*scene.graph, std::move(grid), gas, std::move(bcs));
   if (scene.distributed) scene.op->set_parallel(comm, &scene.distributed->exchange);
   scene.op->set_transport(scene.solver.transport);
+  scene.op->set_body_force(scene.body_force);
   return scene;
 }
 

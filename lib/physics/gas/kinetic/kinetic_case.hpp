@@ -18,7 +18,10 @@
 //   velocity_grid:
 //     points: [10, 10, 10]
 //     extent: 3.5                        # half-width in units of sqrt(2 R T_initial)
-//   boundaries: {...}                    # kinetic_boundary.hpp, every patch
+//   boundaries: {...}                    # kinetic_boundary.hpp, every patch (periodic
+//                                        # pairs: sequential solver, one rank)
+//   body_force:
+//     acceleration: [100, 0, 0]          # m/s^2 (kinetic_operator.hpp; sequential solver)
 //   solver:
 //     type: sequential                   # sequential | comet (registry below)
 //     tolerance: 1e-6                    # on ||r||_2 / ||r_0||_2
@@ -69,7 +72,10 @@ struct KineticScene {
   Real reference_length = 0;
   Real knudsen = 0;  // of the initial state over reference_length
   KineticSolverSettings solver;
+  Vec3 body_force = Vec3::Zero();          // acceleration, m/s^2
   std::vector<std::string> force_patches;  // by name: a rank's part may lack a patch
+  // Every patch's condition by name, the whole mesh's (a rank's operator holds its part's).
+  std::map<std::string, KineticBoundary> conditions;
 
   // Owned cells' values (block per cell) in global cell order on the root (serial: as is).
   std::vector<Real> gather(std::span<const Real> values, int block) const;

@@ -31,6 +31,7 @@ KineticOperator::KineticOperator(const FaceGraph& graph, VelocityGrid grid, Kine
   reflection_offset_.assign(nb, -1);
   for (const KineticBoundary& bc : boundaries_)
     patch_maxwellian_.push_back(rfmems::boundary_maxwellian(bc, grid_, gas_));
+  pair_periodic_faces();
   for (Index f = graph.n_interior_faces; f < graph.n_faces(); ++f) {
     const KineticBoundary& bc = boundaries_[graph.face_patch[f]];
     if (!bc.needs_reflection()) continue;
@@ -39,6 +40,56 @@ KineticOperator::KineticOperator(const FaceGraph& graph, VelocityGrid grid, Kine
     const std::vector<Index> map = grid_.reflection_map(n);
     reflections_.insert(reflections_.end(), map.begin(), map.end());
   }
+}
+
+void KineticOperator::pair_periodic_faces() {
+  const FaceGraph& g = *graph_;
+  const Index n0 = g.n_interior_faces;
+  periodic_partner_.assign(g.n_faces() - n0, -1);
+  // The mean face centroid of each patch, and a length scale for matching positions.
+  const std::size_t np = g.patch_names.size();
+  std::vector<Vec3> centroid(np, Vec3::Zero());
+  std::vector<int> count(np, 0);
+  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+  for (Index f = n0; f < g.n_faces(); ++f) {
+    centroid[g.face_patch[f]] += g.face_centroid[f];
+    ++count[g.face_patch[f]];
+    lo = lo.cwiseMin(g.face_centroid[f]);
+    hi = hi.cwiseMax(g.face_centroid[f]);
+  }
+  const Real tolerance = 1e-9 * (hi - lo).norm();
+  for (Index f = n0; f < g.n_faces(); ++f) {
+    const KineticBoundary& bc = boundaries_[g.face_patch[f]];
+    if (bc.kind != KineticBoundaryKind::Periodic) continue;
+    const int p = g.face_patch[f], q = g.find_patch(bc.partner);
+    if (q < 0 || count[q] != count[p])
+      throw InputError("periodic patch '" + g.patch_names[p] + "': partner '" + bc.partner +
+                       "' is missing or has another number of faces");
+    const Vec3 shift = centroid[q] / count[q] - centroid[p] / count[p];
+    for (Index h = n0; h < g.n_faces(); ++h)
+      if (g.face_patch[h] == q &&
+          (g.face_centroid[h] - g.face_centroid[f] - shift).norm() <= tolerance &&
+          (g.face_area[h] + g.face_area[f]).norm() <= 1e-9 * g.face_area[f].norm()) {
+        periodic_partner_[f - n0] = h;
+        break;
+      }
+    if (periodic_partner_[f - n0] < 0)
+      throw InputError("periodic patch '" + g.patch_names[p] +
+                       "': a face has no matching face on '" + bc.partner +
+                       "' (the patches must be translates of each other)");
+  }
+}
+
+Vec3 KineticOperator::body_force_gradient(Index c) const {
+  return target_[c].covariance.ldlt().solve(body_force_);
+}
+
+void KineticOperator::body_force_source(Index c, std::span<Real> s) const {
+  const Index N = n_ordinates();
+  const Vec3 a = body_force_gradient(c);
+  const Vec3& u = macro_[c].u;
+  const Real* feq = f_eq_.data() + c * N;
+  for (Index k = 0; k < N; ++k) s[k] = a.dot(grid_.c[k] - u) * feq[k];
 }
 
 void KineticOperator::initialize(std::span<Real> f,
@@ -100,10 +151,17 @@ std::span<const Real> KineticOperator::owner_values(Index face, std::span<const 
   return scratch;
 }
 
-void KineticOperator::condition_values(Index face, std::span<const Real> owner,
-                                       std::span<Real> out) const {
+void KineticOperator::condition_values(Index face, std::span<const Real> owner, std::span<Real> out,
+                                       std::span<const Real> partner) const {
   const FaceGraph& g = *graph_;
   const int p = g.face_patch[face];
+  if (boundaries_[p].kind == KineticBoundaryKind::Periodic) {
+    // Outgoing: the owner's; incoming: those leaving through the partner face.
+    const Vec3& S = g.face_area[face];
+    for (Index k = 0; k < n_ordinates(); ++k)
+      out[k] = grid_.c[k].dot(S) >= 0 ? owner[k] : partner[k];
+    return;
+  }
   if (boundaries_[p].kind == KineticBoundaryKind::External) {
     if (!external_) throw std::logic_error("kinetic operator: external patch without a source");
     external_->fill(face, owner, out);
@@ -115,7 +173,11 @@ void KineticOperator::condition_values(Index face, std::span<const Real> owner,
 
 void KineticOperator::face_values(Index face, std::span<const Real> f, std::span<Real> out) const {
   std::vector<Real> scratch(second_order() ? n_ordinates() : 0);
-  condition_values(face, owner_values(face, f, scratch), out);
+  const Index partner = periodic_partner(face);
+  std::vector<Real> partner_scratch(partner >= 0 && second_order() ? n_ordinates() : 0);
+  condition_values(
+      face, owner_values(face, f, scratch), out,
+      partner >= 0 ? owner_values(partner, f, partner_scratch) : std::span<const Real>{});
 }
 
 void KineticOperator::set_transport(const TransportScheme& scheme) {
@@ -196,9 +258,13 @@ void KineticOperator::update_boundary_values(std::span<const Real> f) {
     if (v.data() != slot.data()) std::copy(v.begin(), v.end(), slot.begin());
   }
   if (external_) external_->update(f, owner_values_);
+  auto at = [&](Index face) {
+    return std::span<const Real>(owner_values_.data() + (face - n0) * N, N);
+  };
   for (Index face = n0; face < graph_->n_faces(); ++face)
-    condition_values(face, std::span<const Real>(owner_values_.data() + (face - n0) * N, N),
-                     boundary_values(face));
+    condition_values(
+        face, at(face), boundary_values(face),
+        periodic_partner(face) >= 0 ? at(periodic_partner(face)) : std::span<const Real>{});
 }
 
 std::span<const Real> KineticOperator::boundary_values(Index face) const {
@@ -255,6 +321,10 @@ void KineticOperator::residual_frozen(std::span<const Real> f, std::span<Real> r
     const Real* feq = f_eq_.data() + c * N;
     Real* rc = r.data() + c * N;
     for (Index k = 0; k < N; ++k) rc[k] = out[k] * fc[k] + in[k] - vnu * (feq[k] - fc[k]);
+    if (has_body_force()) {
+      body_force_source(c, in);
+      for (Index k = 0; k < N; ++k) rc[k] -= graph_->cell_volume[c] * in[k];
+    }
   }
 }
 
@@ -321,6 +391,19 @@ Real KineticOperator::wall_heat_flow(int patch, std::span<const Real> f) const {
       q += grid_.w[k] * 0.5 * grid_.c[k].squaredNorm() * grid_.c[k].dot(S) * face[k];
   }
   return comm_.sum(q);
+}
+
+KineticOperator::PatchArea KineticOperator::patch_area(int patch) const {
+  const FaceGraph& g = *graph_;
+  Real sums[4] = {0, 0, 0, 0};  // area, vector
+  for (Index fc = g.n_interior_faces; fc < g.n_faces(); ++fc) {
+    if (g.face_patch[fc] != patch || !owned_face(fc)) continue;
+    const Vec3& S = g.face_area[fc];
+    sums[0] += S.norm();
+    for (int d = 0; d < 3; ++d) sums[1 + d] += S[d];
+  }
+  comm_.sum_in_place(std::span<Real>(sums, 4));
+  return {sums[0], Vec3(sums[1], sums[2], sums[3])};
 }
 
 Real KineticOperator::boundary_mass_flow(int patch, std::span<const Real> f) const {

@@ -37,6 +37,19 @@
 // limits as the serial run does.
 // First order (the default): no correction, the operator is the first-order one above.
 //
+// Periodic patches (kinetic_boundary.hpp): each face is paired at construction with the face
+// of the partner patch at its position translated by the offset between the two patches'
+// centroids; its incoming values are the partner owner's values at the partner face.
+//
+// Body force (set_body_force; acceleration a, m/s^2): the term a . grad_c f of the kinetic
+// equation, with f replaced by the cell's equilibrium f_eq (Gaussian of covariance Lambda,
+// R T I for BGK): a . grad_c f_eq = -(Lambda^-1 a) . (c - u) f_eq, so the residual gains
+//   - V_c s_ck,  s_ck = (Lambda_c^-1 a) . (c_k - u_c) f_eq,ck,
+// which adds no mass and the momentum rho a exactly (the discrete equilibrium has the exact
+// moments rho, u, Lambda). In the linear regime it is the pressure gradient
+// dp/dx = -rho a of Poiseuille flow (Sharipov & Seleznev 1998): a periodic channel with a
+// body force is the fully developed flow of a long one.
+//
 // Residual scaling shared by every kinetic solver: ||r||_2 over all owned (cell, ordinate)
 // pairs, reported as ||r||_2 / ||r_0||_2 with r_0 the residual of the initial state;
 // "converged" means that ratio <= 1e-6.
@@ -150,6 +163,21 @@ class KineticOperator {
   // The discrete Maxwellian of patch p's condition (boundary_maxwellian; empty if none).
   std::span<const Real> boundary_maxwellian(int patch) const { return patch_maxwellian_[patch]; }
 
+  // --- body force ---
+  void set_body_force(const Vec3& acceleration) { body_force_ = acceleration; }
+  const Vec3& body_force() const { return body_force_; }
+  bool has_body_force() const { return body_force_.squaredNorm() > 0; }
+  // s_ck above for every ordinate of owned cell c (the cached macros and equilibrium).
+  void body_force_source(Index c, std::span<Real> s) const;
+  // Lambda_c^-1 a of cell c (s_ck = that . (c_k - u_c) f_eq,ck).
+  Vec3 body_force_gradient(Index c) const;
+
+  // --- periodic faces ---
+  // The partner face of a periodic boundary face, -1 for any other face.
+  Index periodic_partner(Index face) const {
+    return graph_->is_boundary(face) ? periodic_partner_[face - graph_->n_interior_faces] : -1;
+  }
+
   // --- residual ---
   // r (length size(); ghost rows 0) of the steady equation at f: refreshes the boundary
   // values and the collision cache from f first.
@@ -167,6 +195,13 @@ class KineticOperator {
   // Heat flux from the gas into the patch (W; per unit depth in 2D):
   // sum_f sum_k w_k |c_k|^2 / 2 (c_k . S_f) f_face,k (moving walls: includes the work).
   Real wall_heat_flow(int patch, std::span<const Real> f) const;
+  // The patch's area (m^2; m per unit depth in 2D), sum_f |S_f|, and its area vector
+  // sum_f S_f (outward from the gas; |vector| = area on a flat patch).
+  struct PatchArea {
+    Real area = 0;
+    Vec3 vector = Vec3::Zero();
+  };
+  PatchArea patch_area(int patch) const;
   // Net mass flow out through the patch (kg/s; per unit depth in 2D).
   Real boundary_mass_flow(int patch, std::span<const Real> f) const;
   // Total mass sum_c V_c rho_c over owned cells (of every rank).
@@ -186,8 +221,13 @@ class KineticOperator {
   // the span returned is scratch or the cell of f).
   std::span<const Real> owner_values(Index face, std::span<const Real> f,
                                      std::span<Real> scratch) const;
-  // The condition of boundary face `face` given the owner's values there.
-  void condition_values(Index face, std::span<const Real> owner, std::span<Real> out) const;
+  // The condition of boundary face `face` given the owner's values there (and, for a
+  // periodic face, the partner face owner's values at the partner face).
+  void condition_values(Index face, std::span<const Real> owner, std::span<Real> out,
+                        std::span<const Real> partner = {}) const;
+  // Pairs every face of the periodic patches with its partner face (InputError if one has
+  // none).
+  void pair_periodic_faces();
 
   // Does boundary face `face` belong to an owned cell (counted by this rank)?
   bool owned_face(Index face) const { return graph_->face_owner[face] < n_owned_cells(); }
@@ -212,6 +252,8 @@ class KineticOperator {
   std::vector<Index> reflection_offset_;  // per boundary face, -1 if none
   std::vector<Index> reflections_;
   std::vector<std::vector<Real>> patch_maxwellian_;  // boundary_maxwellian per patch
+  std::vector<Index> periodic_partner_;              // per boundary face, -1 if none
+  Vec3 body_force_ = Vec3::Zero();
 
   TransportScheme transport_;
   std::unique_ptr<LinearReconstruction> reconstruction_;  // second order only

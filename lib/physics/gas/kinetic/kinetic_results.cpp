@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "parallel/communication_counters.hpp"
+#include "physics/gas/kinetic/kinetic_reference.hpp"
 
 namespace rfmems {
 
@@ -71,7 +72,27 @@ Json kinetic_summary(const KineticScene& scene, const KineticSolveResult& result
                         {"temperature", scene.initial.T},
                         {"knudsen", scene.knudsen},
                         {"reference_length", scene.reference_length}};
+  const KineticReference ref = kinetic_reference(scene);
+  Json reference = {{"pressure", ref.pressure},
+                    {"temperature", ref.temperature},
+                    {"density", ref.density},
+                    {"viscosity", ref.viscosity},
+                    {"thermal_speed", ref.thermal_speed},
+                    {"reference_length", ref.reference_length},
+                    {"rarefaction_parameter", ref.rarefaction_parameter},
+                    {"knudsen", ref.knudsen},
+                    {"knudsen_definition", kKnudsenDefinition}};
+  if (ref.wall_speed > 0) reference["wall_speed"] = ref.wall_speed;
+  if (ref.temperature_difference > 0)
+    reference["temperature_difference"] = ref.temperature_difference;
+  if (ref.body_force > 0) {
+    reference["body_force"] = ref.body_force;
+    reference["pressure_gradient"] = ref.pressure_gradient;
+  }
+  summary["reference"] = reference;
   summary["solver"] = {{"type", scene.solver.type},
+                       {"method", result.method},
+                       {"iteration", result.method == "comet" ? "cycle" : "sweep"},
                        {"converged", result.converged},
                        {"iterations", result.iterations},
                        {"tolerance", scene.solver.tolerance},
@@ -79,17 +100,39 @@ Json kinetic_summary(const KineticScene& scene, const KineticSolveResult& result
                        {"residual_final", result.final_residual},
                        {"residual_ratio", result.residual_ratio},
                        {"seconds", result.seconds}};
+  if (!result.handover.empty()) summary["solver"]["handover"] = result.handover;
   Json walls = Json::object();
   for (const std::string& name : scene.force_patches) {
     const int p = g.find_patch(name);  // -1 on a rank without it: contributes nothing
     const Vec3 F = op.wall_force(p, f);
-    walls[name] = {{"force", {F.x(), F.y(), F.z()}}, {"heat_flow", op.wall_heat_flow(p, f)}};
+    const Real Q = op.wall_heat_flow(p, f);
+    const KineticOperator::PatchArea A = op.patch_area(p);
+    const WallAnswer answer = wall_answer(scene, ref, name, F, Q, A.area, A.vector);
+    Json wall = {{"force", {F.x(), F.y(), F.z()}},
+                 {"heat_flow", Q},
+                 {"area", answer.area},
+                 {"heat_flux", answer.heat_flux}};
+    if (answer.shear_stress) wall["shear_stress"] = *answer.shear_stress;
+    if (answer.normalised_shear) wall["normalised_shear"] = *answer.normalised_shear;
+    if (answer.normalised_heat_flux) wall["normalised_heat_flux"] = *answer.normalised_heat_flux;
+    walls[name] = wall;
   }
   summary["walls"] = walls;
   Json boundaries = Json::object();
   for (const Patch& patch : scene.mesh->patches())
     boundaries[patch.name] = {{"mass_flow", op.boundary_mass_flow(g.find_patch(patch.name), f)}};
   summary["boundaries"] = boundaries;
+  // A body-force-driven channel: G through the periodic patch the force drives the gas out of.
+  for (const auto& [name, bc] : scene.conditions) {
+    if (bc.kind != KineticBoundaryKind::Periodic || !(ref.body_force > 0)) continue;
+    const int p = g.find_patch(name);
+    const KineticOperator::PatchArea A = op.patch_area(p);
+    if (!(A.vector.dot(scene.body_force) > 0)) continue;
+    const Real m = op.boundary_mass_flow(p, f);
+    summary["flow_rate"] = {{"patch", name},
+                            {"mass_flow", m},
+                            {"normalised_flow_rate", normalised_flow_rate(ref, m, A.area)}};
+  }
   summary["total_mass"] = op.total_mass(f);
   return summary;
 }

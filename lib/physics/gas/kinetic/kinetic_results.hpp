@@ -3,10 +3,14 @@
 //     density (kg/m^3), velocity (m/s), temperature (K), pressure (Pa), heat_flux (W/m^2),
 //     stress (viscous, Pa, Voigt xx yy zz yz xz xy), and /solver/residual, the ratio
 //     ||r|| / ||r_0|| after each iteration;
-//   - the summary: collision model, mesh and partition, velocity grid, initial state, solver
-//     (type, converged, iterations, residuals, seconds), per force patch the force (N, or N/m
-//     in 2D) and heat flow (W, W/m) of the gas on it, per patch the net mass outflow (a steady
-//     state passes as much in as out) and the total mass.
+//   - the summary: collision model, mesh and partition, velocity grid, initial state, the
+//     reference state (p0, T0, rho0, mu0, v0, H, delta, Kn, U, dT; kinetic_reference.hpp),
+//     solver (type requested, method that ran and what its iterations are, the hand-over when
+//     COMET gave the solve to the sequential solver, converged, iterations, residuals,
+//     seconds), per force patch the force (N, or N/m in 2D) and heat flow (W, W/m) of the gas
+//     on it, its area, heat flux and shear stress and their normalised values P and q*
+//     (kinetic_reference.hpp), per patch the net mass outflow (a steady state passes as much
+//     in as out) and the total mass.
 // Every rank calls both (the gathers and reductions are collective); only the root writes.
 #pragma once
 #include <span>

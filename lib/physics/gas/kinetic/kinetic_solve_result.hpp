@@ -10,8 +10,13 @@
 namespace rfmems {
 
 struct KineticSolveResult {
+  // The solver that ran: "sequential" (iterations are sweeps) or "comet" (iterations are
+  // V/W/F-cycles). COMET hands a domain above its sequential_above_knudsen to the sequential
+  // solver (comet_solver.hpp): then method is "sequential" and handover says why.
+  std::string method = "sequential";
+  std::string handover;  // empty unless the requested solver handed the solve over
   bool converged = false;
-  int iterations = 0;         // outer iterations (sequential: sweeps; COMET: cycles)
+  int iterations = 0;         // outer iterations of `method` (sweeps or cycles)
   Real initial_residual = 0;  // ||r_0||_2
   Real final_residual = 0;    // ||r||_2 at exit
   Real residual_ratio = 0;    // final / initial

@@ -43,6 +43,7 @@ ValidityReport kinetic_scene_validity(const KineticScene &scene, const Communica
   }
   k.cell_size = comm.max(h);
   k.cell_size_key = "mesh.cells";
+  k.first_order = scene.solver.transport.order == TransportOrder::FirstOrder;
   k.wall_temperature = scene.initial.T;  // the grid's thermal speed is the initial state's
   for (const KineticBoundary &b : op.boundaries())
     if (b.kind == KineticBoundaryKind::DiffuseWall || b.kind == KineticBoundaryKind::Pressure) {

@@ -28,6 +28,14 @@ void downwind_sweep(const KineticOperator& op, const std::vector<DownwindGroup>&
         numerator[j] = vnu * feq[k] + (bv != 0 ? bv * h[c * N + k] : 0.0);
         denominator[j] = vnu + bv;
       }
+      if (op.has_body_force()) {  // + V s_ck (kinetic_operator.hpp), lagged with f_eq
+        const Vec3 a = op.body_force_gradient(c);
+        const Vec3& u = op.macro(c).u;
+        for (std::size_t j = 0; j < m; ++j) {
+          const Index k = group.ordinates[j];
+          numerator[j] += g.cell_volume[c] * a.dot(grid.c[k] - u) * feq[k];
+        }
+      }
       for (Index i = g.cell_face_offsets[c]; i < g.cell_face_offsets[c + 1]; ++i) {
         const Index face = g.cell_faces[i];
         const bool owner = g.face_owner[face] == c;
@@ -36,13 +44,24 @@ void downwind_sweep(const KineticOperator& op, const std::vector<DownwindGroup>&
             g.is_boundary(face)
                 ? op.boundary_values(face).data()
                 : f.data() + (owner ? g.face_neighbour[face] : g.face_owner[face]) * N;
+        // A periodic face whose partner face is the cell's own (a channel one cell long):
+        // the inflow is the cell's own outflow, taken implicitly (else the lag converges
+        // slowly for ordinates nearly along the channel), with the lagged difference of the
+        // cached face value from the cell value on the right (second order: nonzero).
+        const Index partner = op.periodic_partner(face);
+        const bool self = partner >= 0 && g.face_owner[partner] == c;
+        const Real* old = f.data() + c * N;
         for (std::size_t j = 0; j < m; ++j) {
           const Index k = group.ordinates[j];
           const Real d = grid.c[k].dot(S);
-          if (d > 0)
+          if (d > 0) {
             denominator[j] += d;
-          else
+          } else if (self) {
+            denominator[j] += d;
+            numerator[j] -= d * (upwind[k] - old[k]);
+          } else {
             numerator[j] -= d * upwind[k];
+          }
         }
       }
       // Second-order transport: the lagged correction D = F_2 - F_1 on the right-hand side.

@@ -41,8 +41,11 @@ struct SequentialOptions {
 // One sweep over every group, with the collision term lagged (the sequential iteration), and
 // optionally the implicit time term b V (f - h) of a backward-difference step (b = alpha / dt,
 // h the history part; b = 0: the steady equation):
-//   f_ck = (b V h_ck + V nu f_eq,ck - sum (c.S)^- f_up - D_ck) / (b V + sum (c.S)^+ + V nu),
-// D_ck the operator's lagged second-order correction (0 with first-order transport),
+//   f_ck = (b V h_ck + V nu f_eq,ck + V s_ck - sum (c.S)^- f_up - D_ck)
+//          / (b V + sum (c.S)^+ + V nu),
+// D_ck the operator's lagged second-order correction (0 with first-order transport), s_ck
+// its body-force source (0 without one; lagged with f_eq); f_up of a periodic face whose
+// partner is the cell's own is f_ck itself, implicitly,
 // cells in downwind order so upwind neighbours already hold this sweep's values; ghost cells
 // are skipped (they come from their owners).
 void downwind_sweep(const KineticOperator& op, const std::vector<DownwindGroup>& groups,
