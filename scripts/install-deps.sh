@@ -9,6 +9,7 @@ packages=(
   libsundials-dev                       # SUNDIALS 6.4: IDA, KINSOL, SUNLinSol_KLU, SPGMR
   libsuitesparse-dev                    # KLU
   libeigen3-dev                         # dense small blocks, least-squares gradients
+  libspectra-dev                        # Arnoldi eigensolver (modal analysis), header-only
   libmetis-dev                          # mesh partitioning
   libopenmpi-dev openmpi-bin            # MPI
   libhdf5-dev hdf5-tools                # results; h5dump for inspection
