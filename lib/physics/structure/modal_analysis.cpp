@@ -20,7 +20,7 @@ constexpr Real kComplexThreshold = 1e-8;
 
 // The eigenvector scaled so that its largest component with inertia is +1 (its real part).
 std::vector<Real> normalised_shape(const std::vector<std::complex<Real>>& x,
-                                   const std::vector<Real>& mass) {
+                                   std::span<const Real> mass) {
   Index largest = -1;
   for (Index i = 0; i < static_cast<Index>(x.size()); ++i)
     if (mass[i] != 0 && (largest < 0 || std::abs(x[i]) > std::abs(x[largest]))) largest = i;
@@ -52,25 +52,33 @@ StructuralModes structural_modes(StructuralModel& model, Index modes, Real shift
                                  const KinsolOptions& static_options) {
   SecondOrderOperator& op = model.structure();
   const Index n = op.size();
-  StructuralModes result;
-  ModalStats& stats = result.stats;
-
   // The static state: rest if nothing loads the structure at t_s.
   const Real t = model.ramp_end_time();
-  stats.state_time = t;
   std::vector<Real> y(n, 0.0), r(n);
   op.internal_residual(t, y, r);
-  stats.at_rest = std::all_of(r.begin(), r.end(), [](Real v) { return v == 0; });
-  if (!stats.at_rest) {
+  const bool at_rest = std::all_of(r.begin(), r.end(), [](Real v) { return v == 0; });
+  NonlinearStats newton;
+  if (!at_rest) {
     StaticSolution state = solve_static(op, t, static_options);
     y = std::move(state.y);
-    stats.newton = state.stats;
+    newton = state.stats;
   }
 
+  StructuralModes result = linearised_modes(op, modal_mass(model), t, y, modes, shift_frequency);
+  result.stats.state_time = t;
+  result.stats.at_rest = at_rest;
+  result.stats.newton = newton;
+  return result;
+}
+
+StructuralModes linearised_modes(SecondOrderOperator& op, std::span<const Real> mass, Real t,
+                                 std::span<const Real> y, Index modes, Real shift_frequency) {
+  StructuralModes result;
+  ModalStats& stats = result.stats;
+  stats.state_time = t;
   const CsrPattern& pattern = op.stiffness_pattern();
   std::vector<Real> stiffness(pattern.nnz(), 0.0);
   op.stiffness(t, y, stiffness);
-  const std::vector<Real> mass = modal_mass(model);
 
   ShiftInvertOptions options;
   options.n_modes = modes;

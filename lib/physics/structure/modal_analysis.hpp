@@ -28,6 +28,7 @@
 // complex pair, its real part at that phase.
 #pragma once
 #include <complex>
+#include <span>
 #include <vector>
 
 #include "physics/structure/structural_model.hpp"
@@ -64,6 +65,14 @@ struct StructuralModes {
 // solve or the eigensolve fails, or fewer modes converge than asked.
 StructuralModes structural_modes(StructuralModel& model, Index modes, Real shift_frequency,
                                  const KinsolOptions& static_options = {});
+
+// The same about a given state (t, y) of any second-order operator with the lumped mass `mass`
+// (zeros for massless components): a structure under an electrostatic bias
+// (physics/electrostatics/parallel_plate_actuation.hpp) linearised about its biased
+// equilibrium, whose stiffness includes the electrostatic softening. The stats' state fields
+// (at_rest, newton) are left at their defaults.
+StructuralModes linearised_modes(SecondOrderOperator& op, std::span<const Real> mass, Real t,
+                                 std::span<const Real> y, Index modes, Real shift_frequency = 0);
 
 // The mass matrix the modes use: the model's lumped mass, zero on its quasi-static components.
 std::vector<Real> modal_mass(StructuralModel& model);
