@@ -7,15 +7,17 @@
 // eigenvector code inlines it; the headers are not ours to change.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wuse-after-free"
-#include <Spectra/GenEigsRealShiftSolver.h>
+#include <Spectra/GenEigsSolver.h>
 #pragma GCC diagnostic pop
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <random>
 
 #include "core/error.hpp"
 #include "solvers/klu_factorization.hpp"
+#include "solvers/umfpack_factorization.hpp"
 
 namespace rfmems {
 
@@ -27,20 +29,20 @@ Real seconds_since(Clock::time_point start) {
   return std::chrono::duration<Real>(Clock::now() - start).count();
 }
 
-// Spectra's shift-solve operation for the pencil (K, M): y = (K - sigma M)^-1 M x, with the
-// factorisation made in set_shift (the solver's constructor calls it once).
+// The shift-invert operation for the pencil (K, M), scaled: y = c (K - sigma M)^-1 M x, with the
+// factorisation made once (factorize). c = 1 until set_scale.
 class PencilShiftSolve {
  public:
   using Scalar = Real;
 
   PencilShiftSolve(const CsrPattern& pattern, std::span<const Real> stiffness,
-                   std::span<const Real> mass)
-      : pattern_(pattern), stiffness_(stiffness), mass_(mass) {}
+                   std::span<const Real> mass, bool umfpack)
+      : pattern_(pattern), stiffness_(stiffness), mass_(mass), umfpack_(umfpack) {}
 
   Eigen::Index rows() const { return pattern_.n_rows(); }
   Eigen::Index cols() const { return pattern_.n_rows(); }
 
-  void set_shift(Real sigma) {
+  void factorize(Real sigma) {
     const Clock::time_point start = Clock::now();
     std::vector<Real> shifted(stiffness_.begin(), stiffness_.end());
     for (Index i = 0; i < pattern_.n_rows(); ++i) {
@@ -50,7 +52,10 @@ class PencilShiftSolve {
       shifted[k] -= sigma * mass_[i];
     }
     try {
-      lu_ = std::make_unique<KluFactorization>(pattern_, shifted);
+      if (umfpack_)
+        umfpack_lu_ = std::make_unique<UmfpackFactorization>(pattern_, shifted);
+      else
+        klu_ = std::make_unique<KluFactorization>(pattern_, shifted);
     } catch (const SolverError&) {
       throw SolverError(fmt::format(
           "modal solve: K - sigma M is singular at sigma = {:g} (a shift on an eigenvalue, or a "
@@ -62,11 +67,17 @@ class PencilShiftSolve {
 
   void perform_op(const Real* x, Real* y) const {
     const Index n = pattern_.n_rows();
-    for (Index i = 0; i < n; ++i) y[i] = mass_[i] * x[i];
-    lu_->solve(std::span<Real>(y, static_cast<std::size_t>(n)));
+    for (Index i = 0; i < n; ++i) y[i] = scale_ * mass_[i] * x[i];
+    const std::span<Real> b(y, static_cast<std::size_t>(n));
+    if (umfpack_)
+      umfpack_lu_->solve(b);
+    else
+      klu_->solve(b);
     ++applications_;
   }
 
+  void set_scale(Real c) { scale_ = c; }
+  Real scale() const { return scale_; }
   Real factor_seconds() const { return factor_seconds_; }
   Index applications() const { return applications_; }
 
@@ -74,7 +85,11 @@ class PencilShiftSolve {
   const CsrPattern& pattern_;
   std::span<const Real> stiffness_;
   std::span<const Real> mass_;
-  std::unique_ptr<KluFactorization> lu_;  // solve() is not const; perform_op must be
+  bool umfpack_;
+  // solve() is not const; perform_op must be.
+  std::unique_ptr<KluFactorization> klu_;
+  std::unique_ptr<UmfpackFactorization> umfpack_lu_;
+  Real scale_ = 1;
   Real factor_seconds_ = 0;
   mutable Index applications_ = 0;
 };
@@ -115,16 +130,29 @@ ShiftInvertSolution solve_shift_invert(const CsrPattern& pattern, std::span<cons
   const Index ncv = std::min(n, options.subspace > 0 ? std::max(options.subspace, nev + 2)
                                                      : std::max(2 * nev + 1, Index{20}));
 
-  PencilShiftSolve op(pattern, stiffness, mass_diagonal);
-  Spectra::GenEigsRealShiftSolver<PencilShiftSolve> eigs(op, nev, ncv, options.shift);
+  const bool umfpack = options.umfpack_from > 0 && n >= options.umfpack_from;
+  PencilShiftSolve op(pattern, stiffness, mass_diagonal, umfpack);
+  op.factorize(options.shift);
 
   const Clock::time_point start = Clock::now();
-  // The start vector T b (b a fixed spread of values): in the range of T, so free of the
-  // directions of M's null space (see the header).
-  Eigen::VectorXd b(n), start_vector(n);
-  for (Index i = 0; i < n; ++i) b[i] = 1.0 + 0.5 * std::sin(1.7 * static_cast<Real>(i) + 0.3);
+  // The start vector T b, b pseudo-random with a fixed seed (every mode present in it, the
+  // run reproducible): in the range of T, so free of the directions of M's null space (see
+  // the header).
+  Eigen::VectorXd b(n), start_vector(n), next(n);
+  std::mt19937_64 random(20261204);
+  std::uniform_real_distribution<Real> uniform(-0.5, 0.5);
+  for (Index i = 0; i < n; ++i) b[i] = uniform(random);
   op.perform_op(b.data(), start_vector.data());
-  if (start_vector.norm() == 0) start_vector = b;
+  if (start_vector.norm() == 0) throw SolverError("modal solve: the mass matrix is zero");
+  // Spectra's convergence test is relative to max(|nu|, eps^(2/3)): with nu = 1/(lambda -
+  // sigma) ~ 1e-12 (a MEMS structure's lambda = omega^2 ~ 1e12) it would accept any Ritz value.
+  // So T is scaled by c ~ |lambda - sigma| of the nearest eigenvalues (one power step's
+  // estimate), which puts the wanted c nu near 1; lambda = sigma + c / (c nu) below.
+  op.perform_op(start_vector.data(), next.data());
+  if (next.norm() > 0) op.set_scale(start_vector.norm() / next.norm());
+  start_vector /= start_vector.norm();
+
+  Spectra::GenEigsSolver<PencilShiftSolve> eigs(op, nev, ncv);
   eigs.init(start_vector.data());
   eigs.compute(Spectra::SortRule::LargestMagn, options.max_restarts, options.tolerance,
                Spectra::SortRule::LargestMagn);
@@ -132,7 +160,9 @@ ShiftInvertSolution solve_shift_invert(const CsrPattern& pattern, std::span<cons
     throw SolverError("modal solve: Spectra reported a numerical issue");
 
   ShiftInvertSolution solution;
-  const Eigen::VectorXcd values = eigs.eigenvalues();
+  // The eigenvalues of c T are c / (lambda - sigma).
+  const Eigen::VectorXcd values =
+      (op.scale() / eigs.eigenvalues().array() + options.shift).matrix();
   const Eigen::MatrixXcd vectors = eigs.eigenvectors();
   solution.stats.solve_seconds = seconds_since(start);
   for (Index k = 0; k < values.size(); ++k) {
@@ -153,6 +183,7 @@ ShiftInvertSolution solve_shift_invert(const CsrPattern& pattern, std::span<cons
   s.restarts = eigs.num_iterations();
   s.operator_applications = op.applications();
   s.subspace = ncv;
+  s.factorization = umfpack ? "umfpack" : "klu";
   s.factor_seconds = op.factor_seconds();
   return solution;
 }

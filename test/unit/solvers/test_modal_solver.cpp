@@ -3,6 +3,7 @@
 // complement), with a non-symmetric K, a singular M, a shift inside the spectrum, a complex
 // pair, and a singular K - sigma M; and the modal exponent of the structural analysis
 // (physics/structure/modal_analysis.hpp) against the roots of s^2 + beta lambda s + lambda.
+// Both factorisations (KLU, UMFPACK) of K - sigma M are exercised.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -40,15 +41,16 @@ Pencil from_dense(const Eigen::MatrixXd& K, std::vector<Real> mass) {
 }
 
 // A chain of n massive unknowns, each coupled to a massless one (as a plate's w to its
-// rotations), with a non-symmetric coupling; masses varying along the chain.
-Pencil chain(Index n) {
+// rotations), with a non-symmetric coupling (1 +- skew along the chain: non-normal, its
+// eigenvalues' condition growing as ((1 + skew) / (1 - skew))^(n/2)); masses varying along it.
+Pencil chain(Index n, Real skew = 0.1) {
   Eigen::MatrixXd K = Eigen::MatrixXd::Zero(2 * n, 2 * n);
   std::vector<Real> mass(2 * n, 0.0);
   for (Index i = 0; i < n; ++i) {
     const Index a = 2 * i, b = 2 * i + 1;  // a massive, b massless
     K(a, a) = 2.5;
-    if (i > 0) K(a, a - 2) = -1.1;
-    if (i + 1 < n) K(a, a + 2) = -0.9;
+    if (i > 0) K(a, a - 2) = -(1 + skew);
+    if (i + 1 < n) K(a, a + 2) = -(1 - skew);
     K(a, b) = 0.3;
     K(b, a) = -0.2;
     K(b, b) = 1.0 + 0.01 * static_cast<Real>(i);
@@ -95,30 +97,52 @@ std::vector<std::complex<Real>> nearest(std::vector<std::complex<Real>> values, 
 
 TEST(ModalSolver, NonSymmetricPencilWithSingularMassMatchesDenseReference) {
   const Pencil p = chain(40);
-  for (const Real sigma : {0.0, 1.3}) {
-    ShiftInvertOptions options;
-    options.n_modes = 5;
-    options.shift = sigma;
-    const ShiftInvertSolution s = solve_shift_invert(p.pattern, p.values, p.mass, options);
-    ASSERT_EQ(s.stats.converged, 5);
-    EXPECT_GT(s.stats.operator_applications, 5);
-    const auto expected = nearest(reference_eigenvalues(p), sigma, 5);
-    for (std::size_t k = 0; k < 5; ++k) {
-      EXPECT_NEAR(std::abs(s.pairs[k].value - expected[k]), 0.0, 1e-9 * std::abs(expected[k]))
-          << "sigma " << sigma << ", pair " << k;
-      EXPECT_LT(s.pairs[k].residual, 1e-9);
-      // The residual recomputed here, in full, including the massless rows.
-      const auto& x = s.pairs[k].vector;
-      Eigen::VectorXcd xv(x.size());
-      for (std::size_t i = 0; i < x.size(); ++i) xv[i] = x[i];
-      Eigen::VectorXcd mx(x.size());
-      for (std::size_t i = 0; i < x.size(); ++i) mx[i] = p.mass[i] * x[i];
-      const Eigen::VectorXcd r = p.dense.cast<std::complex<Real>>() * xv - s.pairs[k].value * mx;
-      EXPECT_LT(r.norm(), 1e-9 * (p.dense.norm() * xv.norm())) << "pair " << k;
-      EXPECT_NEAR(xv.norm(), 1.0, 1e-12);
+  for (const Real sigma : {0.0, 1.3})
+    for (const Index umfpack_from : {Index{0}, Index{1}}) {  // KLU, then UMFPACK
+      ShiftInvertOptions options;
+      options.n_modes = 5;
+      options.shift = sigma;
+      options.umfpack_from = umfpack_from;
+      const ShiftInvertSolution s = solve_shift_invert(p.pattern, p.values, p.mass, options);
+      ASSERT_EQ(s.stats.converged, 5);
+      EXPECT_EQ(s.stats.factorization, umfpack_from > 0 ? "umfpack" : "klu");
+      EXPECT_GT(s.stats.operator_applications, 5);
+      const auto expected = nearest(reference_eigenvalues(p), sigma, 5);
+      for (std::size_t k = 0; k < 5; ++k) {
+        EXPECT_NEAR(std::abs(s.pairs[k].value - expected[k]), 0.0, 1e-9 * std::abs(expected[k]))
+            << "sigma " << sigma << ", pair " << k;
+        EXPECT_LT(s.pairs[k].residual, 1e-9);
+        // The residual recomputed here, in full, including the massless rows.
+        const auto& x = s.pairs[k].vector;
+        Eigen::VectorXcd xv(x.size());
+        for (std::size_t i = 0; i < x.size(); ++i) xv[i] = x[i];
+        Eigen::VectorXcd mx(x.size());
+        for (std::size_t i = 0; i < x.size(); ++i) mx[i] = p.mass[i] * x[i];
+        const Eigen::VectorXcd r = p.dense.cast<std::complex<Real>>() * xv - s.pairs[k].value * mx;
+        EXPECT_LT(r.norm(), 1e-9 * (p.dense.norm() * xv.norm())) << "pair " << k;
+        EXPECT_NEAR(xv.norm(), 1.0, 1e-12);
+      }
     }
-  }
   EXPECT_EQ(max_shift_invert_modes(p.mass), 38);
+}
+
+TEST(ModalSolver, StiffPencilOfAMemsStructureConverges) {
+  // lambda ~ omega^2 ~ 1e12 (a MEMS plate): the Ritz values of the unscaled (K - sigma M)^-1 M
+  // are ~1e-12, below Spectra's absolute floor eps^(2/3), and every Ritz pair would pass its
+  // convergence test at once; the scaled operator must still give accurate pairs.
+  Pencil p = chain(150, 0.01);
+  for (Real& v : p.values) v *= 1e12;
+  p.dense *= 1e12;
+  ShiftInvertOptions options;
+  options.n_modes = 10;
+  const ShiftInvertSolution s = solve_shift_invert(p.pattern, p.values, p.mass, options);
+  ASSERT_EQ(s.stats.converged, 10);
+  const auto expected = nearest(reference_eigenvalues(p), 0.0, 10);
+  for (std::size_t k = 0; k < 10; ++k) {
+    EXPECT_NEAR(std::abs(s.pairs[k].value - expected[k]), 0.0, 1e-9 * std::abs(expected[k]))
+        << "pair " << k;
+    EXPECT_LT(s.pairs[k].residual, 1e-9) << "pair " << k;
+  }
 }
 
 TEST(ModalSolver, ComplexPairIsReturnedWithItsConjugate) {
