@@ -39,6 +39,9 @@ def main():
             rows = [json.loads(line) for line in f if line.strip()]
     except OSError as e:
         raise OSError(f"{args.result}: {e}") from e
+    except (UnicodeDecodeError, json.JSONDecodeError) as e:
+        print(f"plot_modal_bias.py: {args.result}: not JSON lines ({e})", file=sys.stderr)
+        sys.exit(2)
     bias = [r for r in rows if r.get("section") == "bias"]
     if not bias:
         print(f"plot_modal_bias.py: {args.result}: no 'bias' lines (not bench_modal output?)",
