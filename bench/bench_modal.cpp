@@ -12,7 +12,7 @@
 //              the thesis's 122 kHz at --rtol, the centre deflection recorded every --samples per
 //              period, and its first frequency from the step-response fit
 //              (physics/structure/step_response_fit.hpp; the library's route) and from the
-//              mid-level crossings (python/probe_frequency.py's estimate), each against the modal
+//              spacing of its extrema (free_response.hpp, log_decrement), each against the modal
 //              first frequency of the same mesh, with the transient's wall and CPU time;
 //   bias       the first frequency of the 160-cell switch (plate + parallel-plate actuation, no
 //              film) against DC bias: the stable branch of its quasi-static pull-in curve
@@ -37,6 +37,7 @@
 #include "coupling/switch_scene.hpp"
 #include "io/case_file.hpp"
 #include "io/progress.hpp"
+#include "physics/structure/free_response.hpp"
 #include "physics/structure/modal_analysis.hpp"
 #include "physics/structure/step_response_fit.hpp"
 #include "physics/structure/structural_analysis.hpp"
@@ -110,18 +111,6 @@ struct CellHistory : AnalysisObserver {
   }
 };
 
-// Upward crossings of the mid-level, linearly interpolated (python/probe_frequency.py).
-double crossing_frequency(const std::vector<Real>& t, const std::vector<Real>& x) {
-  const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
-  const double level = 0.5 * (*lo + *hi);
-  std::vector<double> crossings;
-  for (std::size_t i = 0; i + 1 < x.size(); ++i)
-    if (x[i] - level < 0 && x[i + 1] - level >= 0)
-      crossings.push_back(t[i] - (x[i] - level) * (t[i + 1] - t[i]) / (x[i + 1] - x[i]));
-  if (crossings.size() < 2) return 0;
-  return static_cast<double>(crossings.size() - 1) / (crossings.back() - crossings.front());
-}
-
 json transient_run(const std::string& cases, double periods, int samples, double rtol) {
   const std::vector<std::string> sets = {"pressure={value: -1 Pa}"};
   // The modal route on this mesh (its own clock).
@@ -156,7 +145,7 @@ json transient_run(const std::string& cases, double periods, int samples, double
   const double fit_wall = bench::now();
   const StepResponseFit fit = fit_step_response(history.t, history.w);
   const double fit_s = bench::now() - fit_wall;
-  const double f_crossings = crossing_frequency(history.t, history.w);
+  const LogDecrement decrement = log_decrement(history.t, history.w);
   json j = {{"section", "transient"},
             {"case", "switch_plate"},
             {"cells", mesh.n_cells()},
@@ -175,9 +164,10 @@ json transient_run(const std::string& cases, double periods, int samples, double
             {"fit_frequency_hz", fit.natural_frequency},
             {"fit_damping_ratio", fit.damping_ratio},
             {"fit_residual", fit.residual},
-            {"crossing_frequency_hz", f_crossings},
+            {"extrema_frequency_hz", decrement.frequency},
+            {"extrema_swings", decrement.swings},
             {"fit_over_modal", fit.natural_frequency / f_modal - 1},
-            {"crossings_over_modal", f_crossings / f_modal - 1}};
+            {"extrema_over_modal", decrement.frequency / f_modal - 1}};
   bench::add_integrator_stats(j, stats.transient);
   return j;
 }

@@ -277,7 +277,7 @@ def modal_cost():
     targets = {160: 0.5, 40000: 30.0}
     rows = [["plate", "unknowns", "K nonzeros", "modes", "wall [s]", "CPU [s]", "factorisation",
              "factor [s]", "Arnoldi [s]", "solves", "f1 [Hz]", f"f{runs[0]['modes']} [Hz]",
-             "target (wall)", "met"]]
+             "target", "met (CPU; wall)"]]
     for x in runs:
         target = targets.get(x["cells"])
         rows.append([f"{x['cells']} cells", str(x["unknowns"]), str(x["stiffness_nonzeros"]),
@@ -286,7 +286,8 @@ def modal_cost():
                      f"{x['iterate_s']:.3g}", str(x["operator_applications"]),
                      f"{x['frequencies_hz'][0]:.5e}", f"{x['frequencies_hz'][-1]:.5e}",
                      f"< {target:g} s" if target else "-",
-                     ("yes" if x["wall_s"] < target else "no") if target else "-"])
+                     (("yes" if x["cpu_s"] < target else "no") + "; " +
+                      ("yes" if x["wall_s"] < target else "no")) if target else "-"])
     return markdown(rows) + modal_run_line(header)
 
 
@@ -301,9 +302,9 @@ def modal_vs_transient():
              f"{100 * x['fit_over_modal']:+.3f} %", f"{x['transient_wall_s'] + x['fit_wall_s']:.3g}",
              f"{x['transient_cpu_s']:.3g} (+ fit)",
              f"{x['steps']} IDA steps, {x['samples']} samples"],
-            ["transient + mid-level crossings", f"{x['crossing_frequency_hz']:.6e}",
-             f"{100 * x['crossings_over_modal']:+.3f} %", f"{x['transient_wall_s']:.3g}",
-             f"{x['transient_cpu_s']:.3g}", "the same run"]]
+            ["transient + spacing of the extrema", f"{x['extrema_frequency_hz']:.6e}",
+             f"{100 * x['extrema_over_modal']:+.3f} %", f"{x['transient_wall_s']:.3g}",
+             f"{x['transient_cpu_s']:.3g}", f"the same run, {x['extrema_swings']} half-swings"]]
     ratio = x["transient_wall_s"] / x["modal_wall_s"]
     return markdown(rows) + (
         f"\nTransient over modal, wall: **{ratio:.0f}x** ({x['periods']:g} periods at rtol "

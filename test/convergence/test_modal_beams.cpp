@@ -31,6 +31,7 @@
 #include <numbers>
 #include <string>
 
+#include "../support/convergence_order.hpp"
 #include "io/case_file.hpp"
 #include "materials/plate_section.hpp"
 #include "physics/structure/modal_analysis.hpp"
@@ -69,7 +70,10 @@ std::string plate_strip(double L, double h, int nx, const std::string& ends) {
          "  bottom: {type: free}\n  top: {type: free}\n";
 }
 
-double order(double e_coarse, double e_fine) { return std::log2(e_coarse / e_fine); }
+// The observed order between two meshes, the second twice as fine.
+double order(double e_coarse, double e_fine) {
+  return test_support::fitted_order({2.0, 1.0}, {e_coarse, e_fine});
+}
 
 // (20 / nx)^2: the second-order error scale of an nx-cell span, 1 on the coarsest mesh.
 double error_scale(int nx) { return std::pow(20.0 / nx, 2); }
