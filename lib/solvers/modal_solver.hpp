@@ -10,13 +10,13 @@
 // of largest |nu| are the lambda nearest sigma. T is scaled by c ~ |lambda - sigma| of the
 // nearest eigenvalues so that the wanted c nu are O(1): Spectra's convergence test floors at an
 // absolute eps^(2/3), which an unscaled nu ~ 1e-12 (lambda = omega^2 of a MEMS structure) would
-// pass at once. T is applied with one factorisation of
-// K - sigma M, made once: KLU (solvers/klu_factorization.hpp) for small systems, UMFPACK
-// (solvers/umfpack_factorization.hpp) for large ones, whose LU fill KLU's left-looking
-// factorisation handles slowly (docs/modal.md, "Cost"). A singular M (components without
-// inertia) is allowed: its null space gives nu = 0 (lambda infinite), never among the largest;
-// the Arnoldi start vector is T applied to a fixed vector, so that every Krylov vector, and so
-// every eigenvector, satisfies the massless rows of K x = lambda M x.
+// pass at once. T is applied with one factorisation of K - sigma M, made once: KLU
+// (solvers/klu_factorization.hpp) for small systems, UMFPACK (solvers/umfpack_factorization.hpp)
+// for large ones, whose LU fill KLU's left-looking factorisation handles slowly (docs/modal.md,
+// "Cost"). A singular M (components without inertia) is allowed: its null space gives nu = 0
+// (lambda infinite), never among the largest; the Arnoldi start vector is T applied to a
+// pseudo-random vector of fixed seed (every mode present, the run reproducible), so that every
+// Krylov vector, and so every eigenvector, satisfies the massless rows of K x = lambda M x.
 //
 // Why the general (non-symmetric) solver: a cell-centred FV stiffness is not symmetric, and its
 // eigenvalues may come in complex pairs; each is returned as it is, with its complex eigenvector.

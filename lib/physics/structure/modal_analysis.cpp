@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <numeric>
 
 #include "core/error.hpp"
 #include "solvers/static_solve.hpp"
@@ -100,12 +101,13 @@ StructuralModes linearised_modes(SecondOrderOperator& op, std::span<const Real> 
     const std::complex<Real> s = modal_exponent(pair.value, beta);
     mode.angular_frequency = std::abs(s.imag());
     mode.frequency = mode.angular_frequency / (2 * std::numbers::pi);
-    mode.damping_ratio = std::abs(s) > 0 ? -s.real() / std::abs(s) : 0;
+    // + 0.0: an undamped mode's -0 (s = +0 + i omega) reads 0.
+    mode.damping_ratio = (std::abs(s) > 0 ? -s.real() / std::abs(s) : 0) + 0.0;
     mode.complex = std::abs(pair.value.imag()) > kComplexThreshold * std::abs(pair.value);
     mode.residual = pair.residual;
     found.push_back(mode);
   }
-  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::iota(order.begin(), order.end(), std::size_t{0});
   // By frequency; a conjugate pair (equal frequencies) with its decaying member first.
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     if (found[a].frequency != found[b].frequency) return found[a].frequency < found[b].frequency;
