@@ -1,13 +1,15 @@
 // rfmems-solid: linear elastodynamics and elastostatics of a structure: a plane or 3D
 // continuum (FV elasticity operator) or a Mindlin-Reissner plate (FV plate operator), as the
 // case's model.structure says. Reads a case file, builds the model, runs a static (KINSOL or
-// segregated) or transient (IDA) analysis, writes an HDF5 + XDMF result.
+// segregated), transient (IDA) or modal (shift-invert Arnoldi: frequencies and mode shapes)
+// analysis, writes an HDF5 + XDMF result.
 //
 // Sample runs:
 //   rfmems-solid cases/cantilever_vibration/case.yaml          # -> out/cantilever_vibration.h5
 //   rfmems-solid cases/cantilever_static/case.yaml --json --quiet
 //   rfmems-solid cases/cantilever_static/case.yaml --set mesh.cells=[320,32] -o out/fine.h5
 //   rfmems-solid cases/clamped_plate/case.yaml                 # plate: deflection, moments
+//   rfmems-solid cases/plate_vibration/case.yaml --set analysis.type=modal   # 6 lowest modes
 //
 // Under mpirun the structure is solved on rank 0 while the other ranks wait, unless the case
 // says solver.distributed: true: then the continuum (or a static plate) is distributed over the
@@ -18,6 +20,8 @@
 //
 // Exit codes: 0 success; 2 bad input (case file, option, mesh file): one line
 // "rfmems-solid: <message>" on stderr and no result file; 1 any other failure.
+#include <fmt/format.h>
+
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -83,7 +87,7 @@ int run(const DriverOptions& options) {
     run_distributed_analysis(*model, settings, world, none, silent);
     return 0;
   }
-  ProgressReporter progress(options.quiet || type == AnalysisType::Static, settings.end_time);
+  ProgressReporter progress(options.quiet || type != AnalysisType::Transient, settings.end_time);
   const AnalysisStats stats =
       distributed ? run_distributed_analysis(*model, settings, world, *results, progress)
                   : run_analysis(*model, settings, *results, progress);
@@ -94,10 +98,19 @@ int run(const DriverOptions& options) {
   if (options.json) {
     std::cout << json_text(summary) << std::flush;
   } else if (!options.quiet) {
+    for (const StructuralMode& m : stats.modal.modes)
+      std::printf("mode %lld: f = %.6e Hz%s\n", static_cast<long long>(m.number), m.frequency,
+                  m.complex ? fmt::format(" (complex eigenvalue: lambda = {:.6e} {:+.6e} i, "
+                                          "damping ratio {:.3e})",
+                                          m.eigenvalue.real(), m.eigenvalue.imag(), m.damping_ratio)
+                                  .c_str()
+                            : "");
     const auto components = model->probe_components();
     const bool plate = model->kind() == "plate";
     const int shown = plate || model->structure_mesh().dim() == 3 ? 3 : 2;
-    for (const auto& [probe, value] : summary["probes"].items()) {
+    // A modal run's probes sample the shapes (in the result file), not a state: not printed.
+    const Json shown_probes = type == AnalysisType::Modal ? Json::object() : summary["probes"];
+    for (const auto& [probe, value] : shown_probes.items()) {
       std::printf("probe %s:", probe.c_str());
       for (int k = 0; k < shown; ++k)
         std::printf("%s %s = %.6e%s", k ? "," : "", components[k].c_str(),
@@ -115,7 +128,7 @@ int run(const DriverOptions& options) {
 int main(int argc, char** argv) {
   return driver_main(
       "rfmems-solid",
-      "rfmems-solid: static and transient linear elasticity of a continuum or a "
+      "rfmems-solid: static, transient and modal linear elasticity of a continuum or a "
       "plate (FV)",
       join_schemas({structure_case_keys(), structural_analysis_case_keys(), probes_case_keys()}),
       argc, argv, run, RankUse::AllRanks);

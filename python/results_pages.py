@@ -8,8 +8,8 @@ A page marks each generated table:
     <!-- end table -->
 
 and NAME is one of TABLES below: a function of the data files under docs/data/ (CSV with
-'#' comment lines giving the command and the date) and docs/figures/ (the benchmarks' JSON
-lines). Nothing in a marked table is typed by hand.
+'#' comment lines giving the command and the date, or a benchmark's JSON lines with a header
+line holding them) and docs/figures/ (the benchmarks' JSON lines). Nothing in a marked table is typed by hand.
 
   python3 python/results_pages.py            # rewrite every marked table in place
   python3 python/results_pages.py --check    # exit 1 naming each page and table that differ
@@ -259,6 +259,73 @@ def immersed_esbgk_case_keys():
     return markdown(rows)
 
 
+def modal_records(section):
+    """bench_modal's lines of one section (docs/data/modal_bench.jsonl), and its header."""
+    lines = read_jsonl(DATA / "modal_bench.jsonl")
+    header = next(x for x in lines if x["section"] == "header")
+    return [x for x in lines if x["section"] == section], header
+
+
+def modal_run_line(header):
+    return (f"\nCommand: `{header['command']}`, {header['date']} (1-minute load average "
+            f"{header['load_average_1min']:g} on 2 cores at the start).\n")
+
+
+def modal_cost():
+    """The lowest modes of the switch plate on 160 and 40,000 cells: time and work."""
+    runs, header = modal_records("modes")
+    targets = {160: 0.5, 40000: 30.0}
+    rows = [["plate", "unknowns", "K nonzeros", "modes", "wall [s]", "CPU [s]", "factorisation",
+             "factor [s]", "Arnoldi [s]", "solves", "f1 [Hz]", f"f{runs[0]['modes']} [Hz]",
+             "target", "met (CPU; wall)"]]
+    for x in runs:
+        target = targets.get(x["cells"])
+        rows.append([f"{x['cells']} cells", str(x["unknowns"]), str(x["stiffness_nonzeros"]),
+                     str(x["modes"]), f"{x['wall_s']:.3g}", f"{x['cpu_s']:.3g}",
+                     x["factorization"].upper(), f"{x['factor_s']:.3g}",
+                     f"{x['iterate_s']:.3g}", str(x["operator_applications"]),
+                     f"{x['frequencies_hz'][0]:.5e}", f"{x['frequencies_hz'][-1]:.5e}",
+                     f"< {target:g} s" if target else "-",
+                     (("yes" if x["cpu_s"] < target else "no") + "; " +
+                      ("yes" if x["wall_s"] < target else "no")) if target else "-"])
+    return markdown(rows) + modal_run_line(header)
+
+
+def modal_vs_transient():
+    """The first frequency of the 160-cell plate by the modal route and by transient-and-fit."""
+    (x,), header = modal_records("transient")
+    f = x["modal_frequency_hz"]
+    rows = [["route", "f1 [Hz]", "against modal", "wall [s]", "CPU [s]", "work"],
+            ["modal (shift-invert, 1 mode)", f"{f:.6e}", "-", f"{x['modal_wall_s']:.3g}",
+             f"{x['modal_cpu_s']:.3g}", "1 factorisation, a few solves"],
+            ["transient + step-response fit", f"{x['fit_frequency_hz']:.6e}",
+             f"{100 * x['fit_over_modal']:+.3f} %", f"{x['transient_wall_s'] + x['fit_wall_s']:.3g}",
+             f"{x['transient_cpu_s']:.3g} (+ fit)",
+             f"{x['steps']} IDA steps, {x['samples']} samples"],
+            ["transient + spacing of the extrema", f"{x['extrema_frequency_hz']:.6e}",
+             f"{100 * x['extrema_over_modal']:+.3f} %", f"{x['transient_wall_s']:.3g}",
+             f"{x['transient_cpu_s']:.3g}", f"the same run, {x['extrema_swings']} half-swings"]]
+    ratio = x["transient_wall_s"] / x["modal_wall_s"]
+    return markdown(rows) + (
+        f"\nTransient over modal, wall: **{ratio:.0f}x** ({x['periods']:g} periods at rtol "
+        f"{x['rtol']:g}, {x['samples_per_period']} samples per period).\n" + modal_run_line(header))
+
+
+def modal_bias():
+    """The first frequency of the 160-cell switch against DC bias, and the 1-DOF forms."""
+    runs, header = modal_records("bias")
+    rows = [["V [V]", "V / V_PI", "control deflection [um]", "f1 [Hz]", "f / f0",
+             "1-DOF f / f0", "difference"]]
+    for x in runs:
+        rows.append([f"{x['voltage']:.2f}", f"{x['voltage'] / x['pull_in_voltage']:.3f}",
+                     f"{1e6 * x['control_displacement']:.4f}", f"{x['frequency_hz']:.5e}",
+                     f"{x['frequency_ratio']:.4f}", f"{x['lumped_ratio_of_voltage']:.4f}",
+                     f"{x['frequency_ratio'] - x['lumped_ratio_of_voltage']:+.4f}"])
+    return markdown(rows) + (
+        f"\nQuasi-static pull-in voltage of this plate: {runs[0]['pull_in_voltage']:.3f} V.\n"
+        + modal_run_line(header))
+
+
 TABLES = {
     "verification-checks": csv_table("verification_checks.csv"),
     "performance-ratios": csv_table("performance_ratios.csv"),
@@ -278,6 +345,9 @@ TABLES = {
     "coupling-schemes-deflection": coupling_schemes("deflection"),
     "coupling-schemes-touch-down": coupling_schemes("touch_down"),
     "coupling-schemes-study": coupling_schemes_study,
+    "modal-cost": modal_cost,
+    "modal-vs-transient": modal_vs_transient,
+    "modal-bias": modal_bias,
 }
 
 

@@ -7,8 +7,9 @@ packages=(
   build-essential cmake pkg-config git
   clang-format                          # the C++ style check in the tests
   libsundials-dev                       # SUNDIALS 6.4: IDA, KINSOL, SUNLinSol_KLU, SPGMR
-  libsuitesparse-dev                    # KLU
+  libsuitesparse-dev                    # KLU; UMFPACK (modal analysis of large structures)
   libeigen3-dev                         # dense small blocks, least-squares gradients
+  libspectra-dev                        # Arnoldi eigensolver (modal analysis), header-only
   libmetis-dev                          # mesh partitioning
   libopenmpi-dev openmpi-bin            # MPI
   libhdf5-dev hdf5-tools                # results; h5dump for inspection

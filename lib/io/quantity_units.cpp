@@ -33,6 +33,7 @@ std::optional<std::string> units_of(const std::string& name) {
       // time series and their abscissae
       {"time", "s"},
       {"iteration", "1"},
+      {"mode", "1"},  // a mode's number (modal analyses)
       {"ratio", "1"},
       {"voltage", "V"},
       {"control", "m"},

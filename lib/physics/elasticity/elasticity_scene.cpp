@@ -116,7 +116,7 @@ LinearElastic read_material(const CaseNode& root, AnalysisType analysis, int dim
   m.E = material.get_quantity("E", Dimension::Pressure, Range::positive());
   m.nu = material.get_real("nu", Range::open(-1.0, 0.5));
   // Only inertia needs the density; a static case may leave it out.
-  m.rho = analysis == AnalysisType::Transient
+  m.rho = analysis != AnalysisType::Static
               ? material.get_quantity("density", Dimension::Density, Range::positive())
               : material.get_quantity("density", Dimension::Density, 0.0, Range::positive());
 

@@ -88,7 +88,7 @@ PlateSection read_section(const CaseNode& root, AnalysisType analysis) {
   PlateSection s;
   s.E = material.get_quantity("E", Dimension::Pressure, Range::positive());
   s.nu = material.get_real("nu", Range::open(-1.0, 0.5));
-  s.rho = analysis == AnalysisType::Transient
+  s.rho = analysis != AnalysisType::Static
               ? material.get_quantity("density", Dimension::Density, Range::positive())
               : material.get_quantity("density", Dimension::Density, 0.0, Range::positive());
   s.thickness = model.get_quantity("thickness", Dimension::Length, Range::positive());

@@ -110,20 +110,51 @@ AnalysisStats run_transient(StructuralModel& model, const AnalysisSettings& sett
   return stats;
 }
 
+AnalysisStats run_modal(StructuralModel& model, const AnalysisSettings& settings,
+                        AnalysisObserver& observer) {
+  AnalysisStats stats;
+  stats.type = AnalysisType::Modal;
+  KinsolOptions options;
+  options.relative_tolerance = settings.tolerance;
+  options.max_iterations = static_cast<int>(settings.max_iterations);
+  const StructuralModes modes =
+      structural_modes(model, settings.modes, settings.shift_frequency, options);
+  for (std::size_t k = 0; k < modes.shapes.size(); ++k)
+    observer.output(static_cast<int>(k), static_cast<Real>(k + 1), modes.shapes[k], {});
+  stats.modal = modes.stats;
+  stats.newton = modes.stats.newton;
+  stats.n_outputs = static_cast<int>(modes.shapes.size());
+  stats.final_time = modes.stats.state_time;
+  return stats;
+}
+
 }  // namespace
 
 AnalysisType read_analysis_type(const CaseNode& root) {
-  const std::string type = root.child("analysis").get_choice("type", {"static", "transient"});
+  const std::string type =
+      root.child("analysis").get_choice("type", {"static", "transient", "modal"});
+  if (type == "modal") return AnalysisType::Modal;
   return type == "static" ? AnalysisType::Static : AnalysisType::Transient;
 }
 
-AnalysisSettings read_analysis_settings(const CaseNode& root, const StructuralModel& model) {
+AnalysisSettings read_analysis_settings(const CaseNode& root, StructuralModel& model) {
   AnalysisSettings s;
   s.type = read_analysis_type(root);
   const CaseNode analysis = root.child("analysis");
   const CaseNode solver = root.child_or_empty("solver");
   s.distributed = solver.get_bool("distributed", false);
-  if (s.type == AnalysisType::Static) {
+  if (s.type == AnalysisType::Modal) {
+    // The most modes the eigensolver can return: the unknowns with inertia less 2.
+    const std::vector<Real> mass = modal_mass(model);
+    const Index most = max_shift_invert_modes(mass);
+    s.modes = analysis.get_int("modes", 6,
+                               Range::closed(1, static_cast<double>(std::max<Index>(most, 1))));
+    analysis.require(most >= 1, "modes",
+                     "the structure has too few unknowns with inertia for a modal analysis");
+    s.shift_frequency =
+        analysis.get_quantity("shift", Dimension::Frequency, 0.0, Range::non_negative());
+  }
+  if (s.type == AnalysisType::Static || s.type == AnalysisType::Modal) {
     const bool newton = model.static_method() == "newton";
     s.tolerance = solver.get_real("tolerance", 1e-6, Range::open(0.0, 1.0));
     s.max_iterations =
@@ -149,13 +180,28 @@ AnalysisSettings read_analysis_settings(const CaseNode& root, const StructuralMo
 }
 
 std::string to_string(AnalysisType type) {
-  return type == AnalysisType::Static ? "static" : "transient";
+  switch (type) {
+    case AnalysisType::Static:
+      return "static";
+    case AnalysisType::Transient:
+      return "transient";
+    case AnalysisType::Modal:
+      return "modal";
+  }
+  return "";
 }
 
 AnalysisStats run_analysis(StructuralModel& model, const AnalysisSettings& settings,
                            AnalysisObserver& observer, ProgressReporter& progress) {
-  return settings.type == AnalysisType::Static ? run_static(model, settings, observer)
-                                               : run_transient(model, settings, observer, progress);
+  switch (settings.type) {
+    case AnalysisType::Static:
+      return run_static(model, settings, observer);
+    case AnalysisType::Modal:
+      return run_modal(model, settings, observer);
+    case AnalysisType::Transient:
+      break;
+  }
+  return run_transient(model, settings, observer, progress);
 }
 
 CaseSchema structural_analysis_case_keys() {

@@ -1,11 +1,14 @@
-// Static and transient analyses of a StructuralModel (continuum or plate), and their case-file
-// settings.
+// Static, transient and modal analyses of a StructuralModel (continuum or plate), and their
+// case-file settings.
 //
 //   analysis:
-//     type: static                 # static | transient
+//     type: static                 # static | transient | modal
 //     end_time: 1.25 s             # transient: simulated time, from t = 0
 //     output_interval: 2.5 ms      # transient: fields and probes every this much
-//   solver:                        # static (Newton, or the elasticity's segregated method):
+//     modes: 6                     # modal: how many modes (default 6), the nearest the shift
+//     shift: 0 Hz                  # modal: the frequency the modes are nearest (default 0)
+//   solver:                        # static (Newton, or the elasticity's segregated method),
+//                                  # and the static state of a loaded modal analysis (Newton):
 //     tolerance: 1e-6              #   residual reduction ||R||/||R0|| (default 1e-6: the
 //                                  #   round-off floor of a slender beam is ~5e-7, and a
 //                                  #   linear problem needs one Newton step to reach it)
@@ -40,12 +43,16 @@
 // algebraic and made consistent at t = 0 by IDACalcIC. It starts from rest (u = v = 0) with
 // the consistent initial acceleration v'(0) = -M^-1 R(0, 0) (zero when every load ramps from
 // zero). Outputs at t = k dt for k = 0, 1, ... and at end_time.
+// Modal: the modes of the structure linearised about its static state at t_load
+// (physics/structure/modal_analysis.hpp); output k holds the shape of mode k + 1 (largest
+// displacement component +1), at "time" k + 1 (so a viewer's time steps through the modes).
 #pragma once
 #include <span>
 
 #include "io/case_file.hpp"
 #include "io/progress.hpp"
 #include "physics/elasticity/segregated_solver.hpp"
+#include "physics/structure/modal_analysis.hpp"
 #include "physics/structure/structural_model.hpp"
 #include "solvers/ida_integrator.hpp"
 #include "solvers/kinsol_solver.hpp"
@@ -61,6 +68,9 @@ struct AnalysisSettings {
   Real end_time = 0;
   Real output_interval = 0;
   IdaOptions ida;
+  // Modal.
+  Index modes = 6;
+  Real shift_frequency = 0;  // [Hz]
   // solver.distributed: the structure on distributed vectors (physics/structure/
   // distributed_analysis.hpp) instead of on rank 0.
   bool distributed = false;
@@ -71,7 +81,7 @@ AnalysisType read_analysis_type(const CaseNode& root);
 
 // The remaining analysis.* and solver.* keys for this model (defaults depend on its static
 // method and mesh size).
-AnalysisSettings read_analysis_settings(const CaseNode& root, const StructuralModel& model);
+AnalysisSettings read_analysis_settings(const CaseNode& root, StructuralModel& model);
 
 // Receives the state at each output time. v is empty for a static analysis.
 class AnalysisObserver {
@@ -86,6 +96,7 @@ struct AnalysisStats {
   IntegratorStats transient;             // transient
   NonlinearStats newton;                 // static, Newton
   SegregatedStats segregated;            // static, segregated (elasticity)
+  ModalStats modal;                      // modal
   int n_outputs = 0;
   Real final_time = 0;
   int distributed_ranks = 0;  // > 0: solved distributed over this many ranks

@@ -19,8 +19,8 @@
 
 namespace rfmems {
 
-enum class AnalysisType { Static, Transient };
-std::string to_string(AnalysisType type);  // "static", "transient"
+enum class AnalysisType { Static, Transient, Modal };
+std::string to_string(AnalysisType type);  // "static", "transient", "modal"
 
 struct AnalysisSettings;
 struct AnalysisStats;

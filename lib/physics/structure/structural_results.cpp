@@ -24,6 +24,19 @@ void StructuralResults::output(int index, Real t, std::span<const Real> y,
 void StructuralResults::finish(const CaseFile& case_file, const std::string& case_name,
                                const AnalysisStats& stats, Real wall_seconds) {
   const auto components = model_.probe_components();
+  if (stats.type == AnalysisType::Modal) {
+    std::vector<double> numbers;
+    std::vector<std::vector<double>> values;
+    for (const StructuralMode& m : stats.modal.modes) {
+      numbers.push_back(static_cast<double>(m.number));
+      values.push_back({m.frequency, m.angular_frequency, m.damping_ratio, m.eigenvalue.real(),
+                        m.eigenvalue.imag(), m.complex ? 1.0 : 0.0, m.residual});
+    }
+    writer_.write_time_series("modal", "modes", numbers, values,
+                              {"frequency", "angular_frequency", "damping_ratio", "eigenvalue_real",
+                               "eigenvalue_imag", "complex", "residual"},
+                              "mode", {"Hz", "rad/s", "1", "rad^2/s^2", "rad^2/s^2", "1", "1"});
+  }
   for (std::size_t p = 0; p < probes_.size(); ++p)
     writer_.write_time_series("probes", probes_[p].name, history_.times(), history_.series(p),
                               {components.begin(), components.end()});
@@ -45,7 +58,17 @@ void StructuralResults::finish(const CaseFile& case_file, const std::string& cas
 
 Json solver_stats_json(const AnalysisStats& stats) {
   Json j = Json::object();
-  if (stats.type == AnalysisType::Transient) {
+  if (stats.type == AnalysisType::Modal) {
+    const ShiftInvertStats& s = stats.modal.eigen;
+    j["modes_requested"] = s.requested;
+    j["modes_converged"] = s.converged;
+    j["operator_applications"] = s.operator_applications;
+    j["restarts"] = s.restarts;
+    j["subspace"] = s.subspace;
+    j["factor_time_s"] = s.factor_seconds;
+    j["eigensolve_time_s"] = s.solve_seconds;
+    j["static_newton_iterations"] = stats.modal.newton.newton_iters;
+  } else if (stats.type == AnalysisType::Transient) {
     const IntegratorStats& s = stats.transient;
     j["steps"] = s.steps;
     j["residual_evals"] = s.residual_evals;
@@ -100,10 +123,11 @@ Json structural_summary(const std::string& case_name, const StructuralModel& mod
   const ProbeHistory& h = results.history();
   for (std::size_t p = 0; p < results.probes().size(); ++p) {
     Json probe = Json::object();
-    if (h.n_samples() > 0) {
+    if (h.n_samples() > 0 && stats.type != AnalysisType::Modal) {
       const Vec3& last = h.value(h.n_samples() - 1, p);
       for (int k = 0; k < 3; ++k) probe[components[k]] = last[k];
     }
+    if (stats.type == AnalysisType::Modal) probe["samples"] = h.n_samples();  // one per mode
     if (stats.type == AnalysisType::Transient) {
       const int main = model.main_probe_component();
       probe["max_abs_" + components[main]] = h.max_abs(p, main);
@@ -112,6 +136,20 @@ Json structural_summary(const std::string& case_name, const StructuralModel& mod
     probes[results.probes()[p].name] = probe;
   }
   j["probes"] = probes;
+  if (stats.type == AnalysisType::Modal) {
+    Json modes = Json::array();
+    for (const StructuralMode& m : stats.modal.modes)
+      modes.push_back({{"index", m.number},
+                       {"frequency", m.frequency},
+                       {"angular_frequency", m.angular_frequency},
+                       {"damping_ratio", m.damping_ratio},
+                       {"eigenvalue_real", m.eigenvalue.real()},
+                       {"eigenvalue_imag", m.eigenvalue.imag()},
+                       {"complex", m.complex},
+                       {"residual", m.residual}});
+    j["modes"] = modes;
+    j["state"] = {{"time", stats.modal.state_time}, {"at_rest", stats.modal.at_rest}};
+  }
   j["solver"] = solver_stats_json(stats);
   j["wall_time_s"] = wall_seconds;
   return j;

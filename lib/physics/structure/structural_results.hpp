@@ -4,6 +4,9 @@
 // (StructuralModel::write_fields: displacement, velocity, stress for a continuum;
 // deflection, rotation, moment, shear force for a plate), and at the end:
 //   /probes/<name>/time, /probes/<name>/values (n_t x 3: StructuralModel::probe_components)
+//   /modal/modes/mode, /modal/modes/values (modal: per mode frequency [Hz], angular_frequency,
+//              damping_ratio, eigenvalue_real, eigenvalue_imag [rad^2/s^2], complex (0/1),
+//              residual); output k of the fields is mode k + 1's shape
 //   /metadata  strings case_file, case_name, case_text (as read), case_effective (after the
 //              overrides), overrides (one per line), analysis, model, static_method,
 //              git_hash; numbers: the solver statistics (as in the JSON summary) and
@@ -48,13 +51,18 @@ class StructuralResults : public AnalysisObserver {
 // Solver statistics by name: transient {steps, residual_evals, jacobian_evals,
 // newton_iterations, linear_setups, error_test_fails, newton_fails, last_order, last_step};
 // static Newton {newton_iterations, residual_evals, jacobian_evals, residual_initial,
-// residual_final}; static segregated {outer_iterations, residual_initial, residual_final}.
+// residual_final}; static segregated {outer_iterations, residual_initial, residual_final};
+// modal {modes_requested, modes_converged, operator_applications, restarts, subspace,
+// factor_time_s, eigensolve_time_s, static_newton_iterations}.
 Json solver_stats_json(const AnalysisStats& stats);
 
 // The --json object: case, analysis, model, static_method (static), mesh {dim, cells},
 // output {h5, xdmf}, final_time, n_outputs, probes {name: {the probe components at the final
 // time (ux, uy, uz or w, beta_x, beta_y), and for transients max_abs_<main component> and
-// samples}}, solver (solver_stats_json), wall_time_s.
+// samples; modal: samples only, one per mode, the shapes' values in the result file}}, solver
+// (solver_stats_json), wall_time_s; modal also modes [{index, frequency [Hz], angular_frequency
+// [rad/s], damping_ratio, eigenvalue_real, eigenvalue_imag [rad^2/s^2], complex, residual}]
+// (physics/structure/modal_analysis.hpp) and state {time, at_rest}.
 Json structural_summary(const std::string& case_name, const StructuralModel& model,
                         const StructuralResults& results, const AnalysisStats& stats,
                         Real wall_seconds);

@@ -121,7 +121,7 @@ TEST(AnalysisSettings, TransientDefaults) {
   text.replace(text.find("{type: static}"), 14,
                "{type: transient, end_time: 10 ms, output_interval: 1 ms}");
   const CaseFile cf = CaseFile::parse(text, "s.yaml");
-  const ElasticityScene scene = build_elasticity_scene(cf.root(), "", AnalysisType::Transient);
+  ElasticityScene scene = build_elasticity_scene(cf.root(), "", AnalysisType::Transient);
   const AnalysisSettings s = read_analysis_settings(cf.root(), scene);
   EXPECT_EQ(s.type, AnalysisType::Transient);
   EXPECT_DOUBLE_EQ(s.end_time, 0.01);
