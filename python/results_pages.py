@@ -326,6 +326,42 @@ def modal_bias():
         + modal_run_line(header))
 
 
+def quasi_static_trace():
+    """bench_quasi_static_trace: the bordered Jacobian's fill by ordering, and the whole curve's
+    cost on each mesh with each ordering; the ratio of the finest to the coarsest mesh with the
+    ordering chosen by size (AMD below 1000 unknowns, nested dissection above)."""
+    lines = read_jsonl(FIGURES / "quasi_static_trace.jsonl")
+    header = next(x for x in lines if x["section"] == "header")
+    order = [x for x in lines if x["section"] == "orderings"]
+    trace = [x for x in lines if x["section"] == "trace"]
+    rows = [["mesh", "unknowns", "ordering", "L + U entries", "per unknown", "analyse + factor [s]",
+             "refactor [s]", "solve [s]"]]
+    for x in order:
+        rows.append([f"{x['nx']} x {x['ny']}", str(x["unknowns"]), x["ordering"],
+                     f"{x['factor_entries']:.3g}", f"{x['factor_entries'] / x['unknowns']:.0f}",
+                     f"{x['analyze_factor_cpu_s']:.3g}", f"{x['refactor_cpu_s']:.3g}",
+                     f"{x['solve_cpu_s']:.2g}"])
+    out = markdown(rows) + "\n"
+    rows = [["mesh", "ordering", "CPU [s]", "solves", "Newton", "fresh factorisations",
+             "refactorisations", "V_PI [V]"]]
+    for x in trace:
+        rows.append([f"{x['nx']} x {x['ny']}", x["ordering"], f"{x['cpu_s']:.3g}", str(x["solves"]),
+                     str(x["newton_iters"]), str(x["fresh_factorizations"]),
+                     str(x["refactorizations"]), f"{x['pull_in_voltage']:.4f}"])
+    out += markdown(rows)
+
+    def chosen(x):
+        return x["ordering"] == ("amd" if x["unknowns"] < 1000 else "nested_dissection")
+
+    picked = sorted((x for x in trace if chosen(x)), key=lambda x: x["unknowns"])
+    if len(picked) >= 2:
+        a, b = picked[0], picked[-1]
+        out += (f"\nWith the ordering chosen by size, {b['nx']} x {b['ny']} costs "
+                f"**{b['cpu_s'] / a['cpu_s']:.0f}x** the CPU of {a['nx']} x {a['ny']} "
+                f"({b['unknowns'] / a['unknowns']:.0f}x the unknowns).\n")
+    return out + f"\nCommand: `{header['command']}`, {header['date']}.\n"
+
+
 TABLES = {
     "verification-checks": csv_table("verification_checks.csv"),
     "performance-ratios": csv_table("performance_ratios.csv"),
@@ -346,6 +382,7 @@ TABLES = {
     "coupling-schemes-touch-down": coupling_schemes("touch_down"),
     "coupling-schemes-study": coupling_schemes_study,
     "modal-cost": modal_cost,
+    "quasi-static-trace": quasi_static_trace,
     "modal-vs-transient": modal_vs_transient,
     "modal-bias": modal_bias,
 }

@@ -127,6 +127,7 @@ KinsolOptions displacement_control_kinsol(const QuasiStaticOptions& options) {
   kin.max_iterations = options.max_newton_iterations;
   kin.line_search = true;
   kin.keep_jacobian = true;
+  kin.round_off_floor = true;
   kin.ordering = options.ordering;
   return kin;
 }
@@ -225,7 +226,11 @@ std::vector<Real> follow_displacement(ParallelPlateActuation& act, Index control
   const Index n = act.size();
   const Real k_ref = stiffness_scale(act);
   DisplacementControlSystem system(act, control, k_ref);
-  KinsolSolver solver(system, displacement_control_kinsol(options));
+  // Exact Newton: a path may cross into contact, where the penalty switches on and a kept
+  // Jacobian would be wrong.
+  KinsolOptions kin = displacement_control_kinsol(options);
+  kin.keep_jacobian = false;
+  KinsolSolver solver(system, kin);
   std::vector<Real> state(from.begin(), from.end());
   for (const Real delta : path) {
     const Real scale = delta / state[control];

@@ -111,6 +111,7 @@ std::vector<Real> press_onto_dielectric(ParallelPlateActuation& act, Index contr
   const Real half = -(act.initial_gap() - contact.gap + 0.5 * contact.penetration);
   for (int k = 1; k <= 12; ++k) path.push_back(guess[control] + (half - guess[control]) * k / 12);
   QuasiStaticOptions qs;
+  qs.newton_tolerance = options.newton_tolerance;
   const std::vector<Real> controlled = follow_displacement(act, control, guess, path, qs);
   std::vector<Real> state(controlled.begin(), controlled.begin() + n), trial;
   Real v = std::sqrt(std::max(controlled[n], 0.0));

@@ -1,10 +1,11 @@
 // Static (steady) solves of a SystemOperator, F(t, y, 0) = 0, with SUNDIALS KINSOL: Newton's
-// method with an exact Jacobian (rebuilt every iteration, or kept while Newton converges), KLU
-// refactorising on the pattern's one symbolic analysis (solvers/klu_linear_solver.hpp), and
-// optional line search.
+// method with an exact Jacobian (rebuilt every iteration, or kept while Newton converges, then
+// with KLU refactorising on the pattern's one symbolic analysis: solvers/klu_linear_solver.hpp),
+// and optional line search.
 //
 // The stopping test is scaled to the problem: ||F||_inf <= relative_tolerance x the residual
-// scale (||F(y0)||_inf, or residual_scale), but never below the residual's round-off floor
+// scale (||F(y0)||_inf, or residual_scale), and with round_off_floor never below the residual's
+// round-off floor
 // c eps max_i (|J| |y|)_i: the size of the terms that cancel in F, times the unit round-off
 // (Higham, Accuracy and Stability of Numerical Algorithms, sec. 7.2: the componentwise
 // backward error of an LU solve). Without the floor a linear problem whose terms cancel by a
@@ -39,13 +40,17 @@ struct KinsolOptions {
   // step test fails with a stale one (modified Newton; for continuation, where successive
   // states are close).
   bool keep_jacobian = false;
-  KluOrdering ordering = KluOrdering::BySize;
+  // Stop at the residual's round-off floor where the tolerance lies below it (see above): one
+  // Newton step first, then the tolerance raised to the floor measured there. Off, KINSOL's
+  // own test alone (as penalty-contact solves need, whose floor is set by the penalty).
+  bool round_off_floor = false;
+  KluOrdering ordering = KluOrdering::BySize;  // with keep_jacobian
 };
 
 struct NonlinearStats {
   long newton_iters = 0, residual_evals = 0, jacobian_evals = 0, linear_iters = 0;
-  // KLU: factorisations with fresh pivoting and refactorisations keeping the pivots, over the
-  // solver's life (cumulative); entries of L + U.
+  // KLU with keep_jacobian: factorisations with fresh pivoting and refactorisations keeping the
+  // pivots, over the solver's life (cumulative); entries of L + U.
   long fresh_factorizations = 0, refactorizations = 0, factor_entries = 0;
   Real initial_residual = 0, final_residual = 0;
 };

@@ -7,7 +7,9 @@ namespace rfmems {
 StaticSolution solve_static(SecondOrderOperator& op, Real t, const KinsolOptions& options,
                             std::vector<Real> y0) {
   StaticSystem system(op);
-  KinsolSolver solver(system, options);
+  KinsolOptions kin = options;
+  kin.round_off_floor = true;
+  KinsolSolver solver(system, kin);
   StaticSolution solution;
   solution.y = y0.empty() ? std::vector<Real>(op.size(), 0.0) : std::move(y0);
   solution.stats = solver.solve(t, solution.y);

@@ -121,7 +121,9 @@ TEST(ContactPullOut, LumpedDynamicReleaseConvergesToStatic) {
   int k = 0;
   for (const double penetration : {kContactGap / 10, kContactGap / 30}) {
     Lumped l(penetration);
-    const QuasiStaticPullIn in = trace_pull_in(l.act, 0, QuasiStaticOptions{});
+    QuasiStaticOptions fine;  // V_PI, the bisection's upper end, to the closed form's digits
+    fine.voltage_tolerance = 1e-7;
+    const QuasiStaticPullIn in = trace_pull_in(l.act, 0, fine);
     PullOutOptions po;
     po.start_voltage = 1.05 * in.pull_in_voltage;
     po.voltage_tolerance = 1e-3;

@@ -154,10 +154,12 @@ TEST(PastUnstableEquilibrium, DefaultPlateKeepsItsBisectionAndTurnsBackShortOfTh
   EXPECT_GT(a.past_fold_runs, 0);
   EXPECT_EQ(b.past_fold_runs, 0);
   EXPECT_TRUE(a.upper_past_fold);
-  // docs/pull-in.md, "The pull-in time and its check": (173.5821, 173.9056] V, t_PI 11.921 us.
-  EXPECT_NEAR(a.voltage, 173.9056, 1e-3);
-  EXPECT_NEAR(a.lower, 173.5821, 1e-3);
-  EXPECT_NEAR(a.pull_in_time, 11.921e-6, 1e-9);
+  // docs/pull-in.md, "The pull-in time and its check": (173.5823, 173.9059] V, and t_PI at
+  // rtol 1e-3 within 1 % of the converged 11.82289 us (rtol 1e-6 at 173.9059 V; the driver's
+  // own estimate of its error is 0.37 %).
+  EXPECT_NEAR(a.voltage, 173.9059, 1e-3);
+  EXPECT_NEAR(a.lower, 173.5823, 1e-3);
+  EXPECT_NEAR(a.pull_in_time / 11.82289e-6, 1.0, 0.01);
 
   // The lower end, the run that comes closest without pulling in, to end_time.
   DynamicOptions whole = st.run;
