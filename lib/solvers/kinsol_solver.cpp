@@ -78,15 +78,19 @@ NonlinearStats KinsolSolver::solve(Real t, std::span<Real> y) {
   Real max_step = options_.max_newton_step > 0 ? options_.max_newton_step : 1e300;
   check(KINSetMaxNewtonStep(mem_, max_step), "KINSetMaxNewtonStep");
 
-  // One Newton step; then the tolerance is raised to the round-off floor where it lies below.
+  // With round_off_floor: one Newton step, then the tolerance raised to the round-off floor
+  // where it lies below it.
   residual_calls_ = 0;
   const bool setup_first = !(options_.keep_jacobian && solved_once_);
   long iterations = 0, jacobians = 0, linear = 0;
-  auto counted = [&](int flag) {
+  auto counted = [&](int flag) {  // KINSOL's counters restart with every KINSol call
     long v = 0;
-    KINGetNumNonlinSolvIters(mem_, &v), iterations += v;
-    KINGetNumJacEvals(mem_, &v), jacobians += v;
-    KINGetNumLinIters(mem_, &v), linear += v;
+    KINGetNumNonlinSolvIters(mem_, &v);
+    iterations += v;
+    KINGetNumJacEvals(mem_, &v);
+    jacobians += v;
+    KINGetNumLinIters(mem_, &v);
+    linear += v;
     return flag;
   };
   Real tolerance = options_.relative_tolerance;

@@ -7,8 +7,8 @@
 // scale (||F(y0)||_inf, or residual_scale), and with round_off_floor never below the residual's
 // round-off floor
 // c eps max_i (|J| |y|)_i: the size of the terms that cancel in F, times the unit round-off
-// (Higham, Accuracy and Stability of Numerical Algorithms, sec. 7.2: the componentwise
-// backward error of an LU solve). Without the floor a linear problem whose terms cancel by a
+// (the componentwise backward error of an LU solve: Higham, Accuracy and Stability of
+// Numerical Algorithms). Without the floor a linear problem whose terms cancel by a
 // factor (a/h)^2 (a thin plate's shear against its load) cannot meet a relative reduction of
 // 1e-6 and Newton iterates on round-off; with it, it stops after its one exact step.
 #pragma once
