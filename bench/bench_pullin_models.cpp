@@ -62,6 +62,7 @@
 #include <vector>
 
 #include "bench_support.hpp"
+#include "bench_switch_scene.hpp"
 #include "coupling/dynamic_pull_in.hpp"
 #include "coupling/field_coupled_structure.hpp"
 #include "coupling/pull_in_study.hpp"
@@ -73,7 +74,6 @@
 
 using namespace rfmems;
 using OJson = nlohmann::ordered_json;  // rfmems::Json is unordered
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -97,18 +97,6 @@ double load_average_1min() {
 
 std::string cells(int nx, int ny) {
   return "mesh.cells=[" + std::to_string(nx) + "," + std::to_string(ny) + "]";
-}
-
-struct Scene {
-  CaseFile file;
-  SwitchScene scene;
-};
-
-std::unique_ptr<Scene> load_scene(const std::string& path,
-                                  const std::vector<std::string>& overrides) {
-  CaseFile cf = CaseFile::load(path, overrides);
-  SwitchScene s = build_switch_scene(cf.root(), fs::path(path).parent_path().string());
-  return std::make_unique<Scene>(Scene{std::move(cf), std::move(s)});
 }
 
 QuasiStaticOptions sampling() {

@@ -15,14 +15,13 @@
 //   bench_quasi_static_trace [--nx 40 80 160] [--section orderings trace] [--repeat 3]
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "bench_support.hpp"
+#include "bench_switch_scene.hpp"
 #include "coupling/displacement_control_system.hpp"
 #include "coupling/quasi_static_pull_in.hpp"
 #include "coupling/switch_scene.hpp"
-#include "io/case_file.hpp"
 #include "solvers/klu_factorization.hpp"
 
 using namespace rfmems;
@@ -31,17 +30,11 @@ using json = nlohmann::json;
 
 namespace {
 
-struct Scene {
-  CaseFile file;
-  SwitchScene scene;
-};
-
+// The default switch without gas on nx x nx/10 cells.
 std::unique_ptr<Scene> plate_switch(int nx) {
-  const std::string path = default_cases_dir() + "/switch_plate/case.yaml";
-  CaseFile cf = CaseFile::load(path, {"gas.model=none", "mesh.cells=[" + std::to_string(nx) + "," +
-                                                            std::to_string(nx / 10) + "]"});
-  SwitchScene s = build_switch_scene(cf.root(), std::filesystem::path(path).parent_path().string());
-  return std::make_unique<Scene>(Scene{std::move(cf), std::move(s)});
+  return load_scene(default_cases_dir() + "/switch_plate/case.yaml",
+                    {"gas.model=none",
+                     "mesh.cells=[" + std::to_string(nx) + "," + std::to_string(nx / 10) + "]"});
 }
 
 const std::vector<std::pair<std::string, KluOrdering>> kOrderings = {
