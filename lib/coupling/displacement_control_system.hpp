@@ -19,7 +19,6 @@ class DisplacementControlSystem : public SystemOperator {
  public:
   DisplacementControlSystem(ParallelPlateActuation& actuation, Index control, Real k_ref);
   void set_target(Real delta) { delta_ = delta; }
-  Real target() const { return delta_; }
 
   Index size() const override { return n_ + 1; }
   std::vector<Real> differential_components() const override {
