@@ -618,6 +618,18 @@ std::vector<Real> CaseNode::get_quantities(const std::string& key, Dimension d) 
   return out;
 }
 
+std::vector<Real> CaseNode::get_quantity_or_list(const std::string& key, Dimension d,
+                                                 Real default_value) const {
+  note(key, quantity_type(d) + " or list of " + quantity_type(d), quantity_text(default_value, d),
+       "");
+  const YAML::Node v = lookup(key);
+  if (absent(v)) return {default_value};
+  if (!v.IsSequence()) return {to_quantity(key, v, d)};
+  std::vector<Real> out;
+  for (std::size_t i = 0; i < v.size(); ++i) out.push_back(to_quantity(key, v[i], d));
+  return out;
+}
+
 std::vector<std::string> CaseNode::get_strings(const std::string& key) const {
   note(key, "list of texts", kRequiredKey, "");
   const YAML::Node v = require_key(key);

@@ -116,6 +116,10 @@ class CaseNode {
   std::vector<Real> get_reals(const std::string& key) const;
   std::vector<Real> get_quantities(const std::string& key, Dimension d) const;
   std::vector<std::string> get_strings(const std::string& key) const;
+  // One quantity of dimension d, returned as a list of one, or a sequence of them; absent: the
+  // default (one value).
+  std::vector<Real> get_quantity_or_list(const std::string& key, Dimension d,
+                                         Real default_value) const;
 
   // --- checks the getters cannot express (e.g. "must be less than mesh.lx") ---
   // Throws "<file>: key '<path.key>' = <value>: <what>" (without " = <value>" if absent).

@@ -13,6 +13,9 @@ struct LinearElastic {
   Real nu = 0;   // Poisson's ratio
   Real rho = 0;  // density [kg/m^3]
   Hypothesis hypothesis = Hypothesis::ThreeD;
+  // The stress sigma0 the body holds at rest [Pa] (physics/structure/residual_stress.hpp); it
+  // is not part of stress(G), which is the stress of the deformation.
+  Mat3 residual_stress = Mat3::Zero();
 
   Real mu() const { return E / (2 * (1 + nu)); }
   Real lambda_3d() const { return E * nu / ((1 + nu) * (1 - 2 * nu)); }

@@ -156,7 +156,8 @@ std::vector<Mat3> ElasticityOperator::cell_gradients(Real t, std::span<const Rea
 }
 
 Vec3 ElasticityOperator::face_force(const Mat3& G, const Vec3& S) const {
-  return mu_ * (G * S + G.transpose() * S) + lambda_ * G.trace() * S;
+  return mu_ * (G * S + G.transpose() * S) + lambda_ * G.trace() * S +
+         G * (material_.residual_stress * S);
 }
 
 void ElasticityOperator::internal_residual(Real t, std::span<const Real> u, std::span<Real> r) {
@@ -263,11 +264,12 @@ void ElasticityOperator::stiffness(Real, std::span<const Real>, std::span<Real> 
         append_side_terms(side(f, 0), 1.0, -inv_d, out, e, terms);
       }
     }
-    // F = mu (G S + G^T S) + lambda tr(G) S with G = a h^T, a = T u_c:
-    // dF/da = mu (h.S) I + mu h S^T + lambda S h^T.
+    // F = mu (G S + G^T S) + lambda tr(G) S + G sigma0 S with G = a h^T, a = T u_c:
+    // dF/da = mu (h.S) I + mu h S^T + lambda S h^T + (h.sigma0 S) I.
+    const Vec3 prestress = material_.residual_stress * S;
     for (const Term& term : terms) {
-      Mat3 dF =
-          mu_ * term.h.dot(S) * I + mu_ * term.h * S.transpose() + lambda_ * S * term.h.transpose();
+      Mat3 dF = (mu_ * term.h.dot(S) + term.h.dot(prestress)) * I + mu_ * term.h * S.transpose() +
+                lambda_ * S * term.h.transpose();
       Mat3 block = out * dF * term.T;
       sparsity_->add_block(values, p, term.cell, -block);
       if (n >= 0) sparsity_->add_block(values, n, term.cell, block);

@@ -15,6 +15,10 @@
 // The jump term is the compact "primary" coupling (u_N - u_P)/|d| plus its high-order
 // correction; with linear reconstruction this is the classical scheme of the thesis.
 //
+// Residual stress (material.residual_stress, physics/structure/residual_stress.hpp): the face
+// force is the first Piola-Kirchhoff traction to first order, sigma_f S + G_f sigma0 S, where
+// sigma0 S itself (in equilibrium) is left out: the geometric stiffness of the prestress.
+//
 // Jacobian: the full linearisation of the stress tensor (thesis "Formulation 2"): the
 // transpose and trace terms and the reconstruction stencils all enter dR/du exactly, so a
 // linear static problem converges in one Newton step.
@@ -130,7 +134,7 @@ class ElasticityOperator : public SecondOrderOperator {
   void append_side_terms(const FaceSide& s, Real grad_factor, Real value_factor,
                          const Mat3& value_map, const Vec3& e, std::vector<Term>& terms) const;
   Vec3 cell_u(std::span<const Real> u, Index c) const;
-  // Face force sigma_f S_f for face f given the face gradient.
+  // Face force sigma_f S_f + G sigma0 S_f for face f given the face gradient.
   Vec3 face_force(const Mat3& G, const Vec3& S) const;
 
   const Mesh& mesh_;

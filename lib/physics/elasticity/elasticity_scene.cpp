@@ -15,6 +15,7 @@
 #include "io/mesh_from_case.hpp"
 #include "io/point_locator.hpp"
 #include "physics/structure/case_conditions.hpp"
+#include "physics/structure/residual_stress.hpp"
 #include "physics/structure/structural_analysis.hpp"
 
 namespace rfmems {
@@ -137,6 +138,8 @@ LinearElastic read_material(const CaseNode& root, AnalysisType analysis, int dim
                 fmt::format("needs a {}D mesh, but the mesh is {}D", needed, dim));
   model.require((name == "3d") == (structure == "solid3d"), "hypothesis",
                 fmt::format("'{}' does not fit model.structure '{}'", name, structure));
+  // The film's plane is normal to the last axis: x in a plane section, x and y in 3D.
+  m.residual_stress = read_residual_stress(material, dim, dim - 1);
   return m;
 }
 
@@ -202,6 +205,9 @@ ElasticityScene build_elasticity_scene(const CaseNode& root, const std::string& 
       model.get_choice("reconstruction", {"default", "linear", "quadratic", "cubic"}, "default"));
 
   std::vector<ElasticityBoundary> bcs = read_boundaries(root, *scene.mesh, scene.load_time);
+  require_released_edges_free(
+      root.child("material"), scene.material.residual_stress, *scene.mesh,
+      [&](int p) { return bcs[p].kind == ElasticityBoundary::Kind::Traction; });
   VectorField body_force = read_body_force(root, dim);
   scene.op = std::make_unique<ElasticityOperator>(*scene.mesh, scene.material, std::move(bcs),
                                                   std::move(body_force), degree);
@@ -267,7 +273,7 @@ void ElasticityScene::write_fields(ResultWriter& writer, int index, Real t, std:
   const std::vector<Mat3> gradients = op->cell_gradients(t, u);
   std::vector<double> stress(static_cast<std::size_t>(6 * nc));
   for (Index c = 0; c < nc; ++c) {
-    const Mat3 s = material.stress(gradients[c]);
+    const Mat3 s = material.residual_stress + material.stress(gradients[c]);
     const double voigt[6] = {s(0, 0), s(1, 1), s(2, 2), s(1, 2), s(0, 2), s(0, 1)};
     std::copy(voigt, voigt + 6, stress.begin() + 6 * c);
   }

@@ -129,7 +129,50 @@ PlateOperator::PlateOperator(const Mesh& mesh, const PlateSection& section,
     strain_offset_.push_back(static_cast<Index>(strain_weights_.size()));
   }
 
+  build_membrane_weights();
   assemble_stiffness();
+}
+
+void PlateOperator::build_membrane_weights() {
+  membrane_offset_.assign(1, 0);
+  membrane_weights_.clear();
+  const Mat3 N0 = section_.membrane_force();
+  if (N0.cwiseAbs().maxCoeff() == 0) return;
+  std::vector<Real> value;
+  std::vector<Vec3> gradient;
+  // grad_factor grad p_c(x_f).a + value_factor p_c(x_f), p_c(x) = w_c + sum_j v_j (w_j - w_c),
+  // grad p_c(x) = sum_j g_j (w_j - w_c): weight grad_factor g_j.a + value_factor v_j on w_j,
+  // value_factor minus their sum on w_c.
+  auto add_side = [&](Index c, const Vec3& x, Real grad_factor, Real value_factor, const Vec3& a) {
+    w_rec_->weights_at(c, x, value, gradient);
+    auto points = w_rec_->points(c);
+    Real own = value_factor;
+    for (std::size_t j = 0; j < points.size(); ++j) {
+      const Real k = grad_factor * gradient[j].dot(a) + value_factor * value[j];
+      own -= k;
+      if (points[j].kind == StencilPoint::Kind::Cell)
+        membrane_weights_.push_back({points[j].cell, -1, k});
+      else if (points[j].kind == StencilPoint::Kind::BoundaryValue)
+        membrane_weights_.push_back({-1, points[j].face, k});
+      else
+        throw std::logic_error("plate: mirror stencil points are not supported");
+    }
+    membrane_weights_.push_back({c, -1, own});
+  };
+  for (Index f = 0; f < mesh_.n_faces(); ++f) {
+    const Index p = mesh_.face_owner(f), n = mesh_.face_neighbour(f);
+    const Vec3& xf = mesh_.face_centroid(f);
+    const Vec3 a = N0 * mesh_.face_area(f);
+    const Real jump = face_e_[f].dot(a) / face_d_[f];
+    if (n >= 0) {
+      add_side(p, xf, 0.5, -jump, a);
+      add_side(n, xf, 0.5, jump, a);
+    } else if (boundaries_[mesh_.face_patch(f)].prescribes_deflection()) {
+      add_side(p, xf, 1.0, -jump, a);
+      membrane_weights_.push_back({-1, f, jump});
+    }
+    membrane_offset_.push_back(static_cast<Index>(membrane_weights_.size()));
+  }
 }
 
 PlateOperator::Eval PlateOperator::make_eval(Index c, const Vec3& x) {
@@ -299,6 +342,18 @@ void PlateOperator::internal_residual(Real t, std::span<const Real> y, std::span
       r[3 * n + kW] += FQ;
       add_moment(n, -(xf - mesh_.cell_centroid(n)) * FQ);
     }
+  }
+  // Membrane force of the residual stress on the slope.
+  for (Index f = 0; f + 1 < static_cast<Index>(membrane_offset_.size()); ++f) {
+    Real F = 0;
+    for (Index k = membrane_offset_[f]; k < membrane_offset_[f + 1]; ++k) {
+      const MembraneWeight& m = membrane_weights_[k];
+      F += m.weight * (m.cell >= 0 ? y[3 * m.cell + kW]
+                                   : bc_value(boundaries_[mesh_.face_patch(m.face)],
+                                              mesh_.face_centroid(m.face), t)[0]);
+    }
+    r[3 * mesh_.face_owner(f) + kW] -= F;
+    if (mesh_.face_neighbour(f) >= 0) r[3 * mesh_.face_neighbour(f) + kW] += F;
   }
   if (pressure_)
     for (Index c = 0; c < mesh_.n_cells(); ++c)
@@ -487,6 +542,18 @@ void PlateOperator::assemble_stiffness() {
     for (const ScalarTerm& s : merged) {
       add(p, s.cell, up * s.a.transpose());
       if (n >= 0) add(n, s.cell, un * s.a.transpose());
+    }
+  }
+
+  for (Index f = 0; f + 1 < static_cast<Index>(membrane_offset_.size()); ++f) {
+    const Index p = mesh_.face_owner(f), n = mesh_.face_neighbour(f);
+    for (Index k = membrane_offset_[f]; k < membrane_offset_[f + 1]; ++k) {
+      const MembraneWeight& m = membrane_weights_[k];
+      if (m.cell < 0) continue;  // prescribed w: a constant
+      Mat3 block = Mat3::Zero();
+      block(kW, kW) = m.weight;
+      add(p, m.cell, -block);
+      if (n >= 0) add(n, m.cell, block);
     }
   }
 

@@ -60,6 +60,17 @@
 // regions), and the quasi-static form has none for clamped and free edges
 // (test/study/test_plate_spectrum.cpp). The linear reconstruction has a real spectrum.
 //
+// Residual stress (physics/structure/residual_stress.hpp): the membrane force N0 = h sigma0 of
+// the section acts on the slope of the deflected plate, rho h w'' = div Q + div(N0 grad w) + q:
+//   R_w += -sum_f (N0 grad w)_f . S_f
+// with the face gradient of w built like that of beta, from the w reconstruction:
+//   interior: grad w_f = (grad p_P + grad p_N)(x_f)/2 + (p_N(x_f) - p_P(x_f)) e/|d|
+//   w given:  grad w_f = grad p_P(x_f) + (w_b - p_P(x_f)) e/|d|
+// Free and loaded edges carry no membrane force (N0 n = 0 there, which the case reader
+// requires). It is the plate's geometric stiffness: with a tension N0 = N I the simply
+// supported plate's Navier mode of wavenumber k deflects by q_k / (K_k + N k^2), where
+// 1/K_k = 1/(D k^4) + 1/(k G h k^2) is its bending and shear flexibility.
+//
 // Jacobian: the operator is linear, and dR/dy is assembled analytically (every reconstruction
 // stencil, the Simpson midpoints, the least-squares shear strain and the non-orthogonal
 // correction) once, in the constructor; a linear static plate converges in one Newton step.
@@ -196,6 +207,8 @@ class PlateOperator : public SecondOrderOperator {
                      std::vector<BendingTerm>& out) const;
   void strain_terms(Index f, std::vector<ScalarTerm>& out) const;
   void assemble_stiffness();
+  // Fills membrane_offset_ / membrane_weights_ (nothing without a residual stress).
+  void build_membrane_weights();
 
   const Mesh& mesh_;
   PlateSection section_;
@@ -223,6 +236,17 @@ class PlateOperator : public SecondOrderOperator {
   std::vector<StrainWeight> strain_weights_;
   mutable std::vector<Real> gamma_e_;  // scratch of internal_residual
   mutable std::vector<Vec3> gamma_c_;
+
+  // The membrane force of face f, (N0 grad w)_f . S_f = sum over [membrane_offset_[f],
+  // membrane_offset_[f+1]) of weight times the w of cell (cell >= 0) or the prescribed w of
+  // boundary face `face` (cell < 0).
+  struct MembraneWeight {
+    Index cell;
+    Index face;
+    Real weight;
+  };
+  std::vector<Index> membrane_offset_;
+  std::vector<MembraneWeight> membrane_weights_;
 
   CsrPattern pattern_;  // the structurally nonzero entries of dR/dy, and the diagonal
   std::vector<Real> stiffness_values_;

@@ -13,6 +13,7 @@
 #include "io/mesh_from_case.hpp"
 #include "io/probes.hpp"
 #include "physics/structure/case_conditions.hpp"
+#include "physics/structure/residual_stress.hpp"
 
 namespace rfmems {
 
@@ -93,6 +94,7 @@ PlateSection read_section(const CaseNode& root, AnalysisType analysis) {
               : material.get_quantity("density", Dimension::Density, 0.0, Range::positive());
   s.thickness = model.get_quantity("thickness", Dimension::Length, Range::positive());
   s.shear_factor = model.get_real("shear_correction", 5.0 / 6.0, Range{0.0, 1.0, true, false});
+  s.residual_stress = read_residual_stress(material, 2, 2);
   return s;
 }
 
@@ -143,6 +145,9 @@ PlateScene build_plate_scene(const CaseNode& root, const std::string& case_dir,
     bcs.push_back(std::move(b.bc));
     scene.load_time = std::max(scene.load_time, b.ramp);
   }
+  // Edges that hold no deflection hold no in-plane stress either.
+  require_released_edges_free(root.child("material"), scene.section.residual_stress, *scene.mesh,
+                              [&](int p) { return !bcs[p].prescribes_deflection(); });
   ScalarField pressure = read_pressure(root, scene.load_time);
   scene.op = std::make_unique<PlateOperator>(*scene.mesh, scene.section, std::move(bcs),
                                              std::move(pressure), degree);

@@ -3,6 +3,8 @@
 //
 //   mesh: {type: rectangle, lower: [0 um, 0 um], size: [400 um, 100 um], cells: [80, 20]}
 //   material: {E: 200 GPa, nu: 0.31, density: 7854 kg/m^3}    # density: transients only
+//             residual_stress: 30 MPa    # optional in-plane sigma0, or [xx, yy, xy]; its membrane
+//                                        # force h sigma0 stiffens the plate (residual_stress.hpp)
 //   model:
 //     structure: plate
 //     thickness: 4 um                # h > 0

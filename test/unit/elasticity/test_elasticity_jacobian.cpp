@@ -113,6 +113,39 @@ TEST(ElasticityJacobian, MatchesFiniteDifferences3DSkewedBox) {
   EXPECT_LT(check.relative(), 1e-6) << "max |J_fd - J| = " << check.max_abs_difference;
 }
 
+// The geometric stiffness of a residual stress: a full stress tensor, of the order of the
+// moduli so that its terms are not hidden in the elastic ones, in 2D and 3D.
+TEST(ElasticityJacobian, PrestressedMatchesFiniteDifferences) {
+  for (int dim : {2, 3}) {
+    BoxSpec spec;
+    spec.dim = dim;
+    spec.upper = Vec3(1.5, 1.0, 1.0);
+    spec.n[0] = 4;
+    spec.n[1] = 3;
+    spec.n[2] = dim == 3 ? 3 : 1;
+    Mesh mesh = make_structured_mesh(spec, distortion(0.03, 19));
+    LinearElastic steel{200e9, 0.3, 7854, dim == 3 ? Hypothesis::ThreeD : Hypothesis::PlaneStress};
+    steel.residual_stress << 9e10, 4e10, -2e10, 4e10, -6e10, 3e10, -2e10, 3e10, 7e10;
+    if (dim == 2) steel.residual_stress.col(2).setZero(), steel.residual_stress.row(2).setZero();
+    ElasticityOperator op(mesh, steel, mixed_boundaries(mesh));
+    StaticSystem system(op);
+    auto y = random_state(system.size(), 8);
+    std::vector<double> yp(system.size(), 0.0);
+    auto check = test_support::check_jacobian(system, 0.2, 0.0, y, yp, 1e-6);
+    EXPECT_LT(check.relative(), 1e-6) << dim << "D: max |J_fd - J| = " << check.max_abs_difference;
+    // The prestress changes the stiffness by a fraction of the elastic part, not by round-off.
+    ElasticityOperator plain(mesh, LinearElastic{200e9, 0.3, 7854, steel.hypothesis},
+                             mixed_boundaries(mesh));
+    std::vector<double> a(op.stiffness_pattern().nnz()), b(a.size());
+    op.stiffness(0.2, y, a);
+    plain.stiffness(0.2, y, b);
+    double change = 0, largest = 0;
+    for (std::size_t i = 0; i < a.size(); ++i)
+      change = std::max(change, std::abs(a[i] - b[i])), largest = std::max(largest, std::abs(b[i]));
+    EXPECT_GT(change, 0.05 * largest) << dim << "D";
+  }
+}
+
 // Kelvin-Voigt damping C = beta K in both first-order forms (FirstOrderSystem,
 // ReducedInertiaSystem): the v rows' Jacobian c_j M + beta K, by finite differences. beta is
 // chosen so that beta K is comparable with c_j M (an error in either is visible).
