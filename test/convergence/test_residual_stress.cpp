@@ -30,18 +30,31 @@
 //    stress-free beam against Euler-Bernoulli's (3. with E I per unit depth), where the
 //    continuum's shear and clamped faces, a few 1e-3 of each frequency, largely cancel.
 //    Measured on 160 x 16: rise 1.168811 against 1.168554 (+2.2e-4).
-// 5. The input contract: a stress across a free edge, and a wrong number of components.
+// 5. Pull-in of a tension-dominated membrane: the default switch (cases/switch_plate, no gas,
+//    nu = 0, 320 x 4 cells) thinned to h = 1 and 0.5 um under sigma_xx = 100 MPa. The string
+//    N w'' = -eps0 V^2/(2 (g - w)^2), w = 0 at both ends, in u = w/g and x/L is
+//    u'' = -lambda/(1 - u)^2 with lambda = eps0 V^2 L^2/(2 N g^3); its first integral gives the
+//    closed form sqrt(lambda) = sqrt(2 (1 - u_m)) [sqrt(u_m) + (1 - u_m) ln((1 + sqrt(u_m)) /
+//    sqrt(1 - u_m))] for the centre deflection u_m, whose maximum is the fold, lambda* = 1.40002
+//    at u_m = 0.388 (Pelesko & Bernstein, Modeling MEMS and NEMS, 2003: 1.400). The clamps add
+//    a bending layer of width l = sqrt(D/N) at each end, where the slope goes to zero; to first
+//    order in eps = l/L the string then spans L - 2 l, so V_PI = V_string/(1 - 2 eps), and the
+//    rest is O(eps^2). Measured: 1 + 4.2e-3 (eps = 0.032) and 1 + 9.6e-4 (eps = 0.016).
+// 6. The input contract: a stress across a free edge, and a wrong number of components.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <numbers>
 #include <string>
 
 #include "../support/convergence_order.hpp"
 #include "core/error.hpp"
+#include "coupling/quasi_static_pull_in.hpp"
+#include "coupling/switch_scene.hpp"
 #include "io/case_file.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/plate/plate_operator.hpp"
@@ -258,6 +271,57 @@ TEST(ResidualStress, ContinuumBeamInTensionStiffensAsEulerBernoulli) {
       stressed, free_beam, stressed / free_beam, rise, stressed / free_beam / rise - 1);
   EXPECT_GT(rise, 1.15);
   EXPECT_NEAR(stressed / free_beam / rise, 1.0, 2e-3);
+}
+
+// lambda* of the string (5.): the largest sqrt(lambda)(u_m), by golden section.
+double string_fold_lambda() {
+  auto root_lambda = [](double u) {
+    const double a = 1 - u;
+    return std::sqrt(2 * a) * (std::sqrt(u) + a * std::log((1 + std::sqrt(u)) / std::sqrt(a)));
+  };
+  double lo = 0.1, hi = 0.7;
+  const double r = (std::sqrt(5.0) - 1) / 2;
+  for (int i = 0; i < 100; ++i) {
+    const double c = hi - r * (hi - lo), d = lo + r * (hi - lo);
+    if (root_lambda(c) > root_lambda(d))
+      hi = d;
+    else
+      lo = c;
+  }
+  return std::pow(root_lambda(0.5 * (lo + hi)), 2);
+}
+
+TEST(ResidualStress, TensionDominatedMembranePullsInAsAClampedString) {
+  const double lambda = string_fold_lambda();
+  EXPECT_NEAR(lambda, 1.40002, 1e-5);
+  const double L = 400e-6, g = 3.75e-6, sigma = 100e6, eps0 = 8.8541878128e-12;
+  const std::string path = std::string(RFMEMS_SOURCE_DIR) + "/cases/switch_plate/case.yaml";
+  double deviation[2];
+  const double thickness[2] = {1e-6, 0.5e-6};
+  for (int k = 0; k < 2; ++k) {
+    const double h = thickness[k], N = sigma * h, D = E * h * h * h / 12;
+    const CaseFile cf = CaseFile::load(
+        path, {"gas.model=none", "material.nu=0", fmt::format("model.thickness={} m", h),
+               "material.residual_stress=[100 MPa, 0 MPa, 0 MPa]", "mesh.cells=[320,4]"});
+    SwitchScene scene =
+        build_switch_scene(cf.root(), std::filesystem::path(path).parent_path().string());
+    QuasiStaticOptions o;
+    o.n_points = 40;
+    o.max_fraction = 0.9;
+    o.voltage_tolerance = 1e-5;
+    const double V = trace_pull_in(*scene.actuation, scene.control, o).pull_in_voltage;
+    const double string = std::sqrt(2 * N * g * g * g * lambda / (eps0 * L * L));
+    const double layer = std::sqrt(D / N) / L;
+    deviation[k] = V / (string / (1 - 2 * layer)) - 1;
+    std::printf(
+        "h = %.2f um: V_PI = %.6f V, string %.6f V, with the clamps' layers (eps = "
+        "%.4f) %.6f V: %+.3e\n",
+        h * 1e6, V, string, layer, string / (1 - 2 * layer), deviation[k]);
+  }
+  EXPECT_LT(std::abs(deviation[0]), 6e-3);
+  EXPECT_LT(std::abs(deviation[1]), 1.5e-3);
+  // O(eps^2): halving eps divides the rest by about 4.
+  EXPECT_GT(std::abs(deviation[0] / deviation[1]), 3.0);
 }
 
 TEST(ResidualStress, StressAcrossAFreeEdgeOrAWrongCountIsAnInputError) {
