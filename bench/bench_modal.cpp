@@ -15,13 +15,13 @@
 //              spacing of its extrema (free_response.hpp, log_decrement), each against the modal
 //              first frequency of the same mesh, with the transient's wall and CPU time;
 //   bias       the first frequency of the 160-cell switch (plate + parallel-plate actuation, no
-//              film) against DC bias: the stable branch of its quasi-static pull-in curve
-//              (coupling/quasi_static_pull_in.hpp, displacement control, so states up to the
-//              fold are reached), the plate linearised about each state (linearised_modes: the
-//              actuation's exact Jacobian, the electrostatic softening included), against the
-//              1-DOF parallel-plate actuator's omega^2 = (k - eps0 A V^2 / g^3) / m in its
-//              dimensionless form: (f / f0)^2 = 1 - (8/27) v^2 / x^3 with v = V / V_PI and x =
-//              g / g0 from x^2 (1 - x) = (4/27) v^2.
+//              film; cases/switch_plate, or --bias-case) against DC bias: the stable branch of its
+//              quasi-static pull-in curve (coupling/quasi_static_pull_in.hpp, displacement control,
+//              so states up to the fold are reached), the plate linearised about each state
+//              (linearised_modes: the actuation's exact Jacobian, the electrostatic softening
+//              included), against the 1-DOF parallel-plate actuator's omega^2 = (k - eps0 A V^2 /
+//              g^3) / m in its dimensionless form: (f / f0)^2 = 1 - (8/27) v^2 / x^3 with v = V /
+//              V_PI and x = g / g0 from x^2 (1 - x) = (4/27) v^2.
 //
 //   build/bench/bench_modal                       # docs/modal.md's run
 //   build/bench/bench_modal --large-cells 200,50  # a quicker large plate
@@ -184,8 +184,8 @@ double lumped_gap(double v) {
   return 0.5 * (lo + hi);
 }
 
-std::vector<json> bias_run(const std::string& cases, int n_points) {
-  const std::string dir = cases + "/switch_plate";
+std::vector<json> bias_run(const std::string& cases, const std::string& name, int n_points) {
+  const std::string dir = cases + "/" + name;
   const CaseFile cf = CaseFile::load(dir + "/case.yaml", {"gas.model=none"});
   SwitchScene scene = build_switch_scene(cf.root(), dir);
   ParallelPlateActuation& actuation = *scene.actuation;
@@ -225,7 +225,7 @@ std::vector<json> bias_run(const std::string& cases, int n_points) {
     const double v = std::sqrt(std::max(v2, 0.0)) / curve.pull_in_voltage;
     const double x_lumped = lumped_gap(std::min(v, 1.0));
     rows.push_back({{"section", "bias"},
-                    {"case", "switch_plate"},
+                    {"case", name},
                     {"gas", "none"},
                     {"voltage", std::sqrt(std::max(v2, 0.0))},
                     {"pull_in_voltage", curve.pull_in_voltage},
@@ -249,6 +249,7 @@ int main(int argc, char** argv) {
   int n_modes = 10, repeat = 5, samples = 40;
   double periods = 5, rtol = 1e-4;
   int bias_points = 40;
+  std::string bias_case = "switch_plate";
   std::vector<std::string> sections = {"modes", "transient", "bias"};
   app.add_option("--cases", cases, "the cases directory");
   app.add_option("--modes", n_modes, "how many modes");
@@ -258,21 +259,11 @@ int main(int argc, char** argv) {
   app.add_option("--samples", samples, "transient: outputs per period");
   app.add_option("--rtol", rtol, "transient: IDA's relative tolerance");
   app.add_option("--bias-points", bias_points, "bias: samples of the pull-in curve");
+  app.add_option("--bias-case", bias_case, "bias: the switch case (a plate + parallel plate)");
   app.add_option("--sections", sections, "modes, transient, bias");
   CLI11_PARSE(app, argc, argv);
 
-  char date[16];
-  const std::time_t now = std::time(nullptr);
-  std::strftime(date, sizeof date, "%Y-%m-%d", std::gmtime(&now));
-  std::string command = "build/bench/bench_modal";
-  for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
-  // The machine's load when the run starts (shared machines: wall times rise with it, CPU
-  // times much less).
-  std::ifstream loadavg("/proc/loadavg");
-  double load = 0;
-  loadavg >> load;
-  bench::emit(json{
-      {"section", "header"}, {"command", command}, {"date", date}, {"load_average_1min", load}});
+  bench::emit(bench::run_header<json>("bench_modal", argc, argv));
   for (const std::string& section : sections) {
     if (section == "modes") {
       bench::emit(modes_run(cases, "", n_modes, repeat));
@@ -280,7 +271,7 @@ int main(int argc, char** argv) {
     } else if (section == "transient") {
       bench::emit(transient_run(cases, periods, samples, rtol));
     } else if (section == "bias") {
-      for (const json& row : bias_run(cases, bias_points)) bench::emit(row);
+      for (const json& row : bias_run(cases, bias_case, bias_points)) bench::emit(row);
     }
   }
 }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <ctime>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -33,6 +34,23 @@ inline double cpu_now() {
 template <class J>
 void emit(const J& j) {
   std::cout << j.dump() << std::endl;
+}
+
+// The header line of a run's JSON lines: the command as typed (program and arguments), the
+// date (UTC) and the machine's 1-minute load average when the run starts (shared machines: wall
+// times rise with it, CPU times much less).
+template <class J>
+J run_header(const std::string& program, int argc, char** argv) {
+  char date[16];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(date, sizeof date, "%Y-%m-%d", std::gmtime(&now));
+  std::string command = "build/bench/" + program;
+  for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
+  std::ifstream loadavg("/proc/loadavg");
+  double load = 0;
+  loadavg >> load;
+  return J{
+      {"section", "header"}, {"command", command}, {"date", date}, {"load_average_1min", load}};
 }
 
 // The repository's cases/ directory, from this header's path (CMake compiles by absolute path).

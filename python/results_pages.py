@@ -259,9 +259,9 @@ def immersed_esbgk_case_keys():
     return markdown(rows)
 
 
-def modal_records(section):
+def modal_records(section, name="modal_bench.jsonl"):
     """bench_modal's lines of one section (docs/data/modal_bench.jsonl), and its header."""
-    lines = read_jsonl(DATA / "modal_bench.jsonl")
+    lines = read_jsonl(DATA / name)
     header = next(x for x in lines if x["section"] == "header")
     return [x for x in lines if x["section"] == section], header
 
@@ -311,9 +311,9 @@ def modal_vs_transient():
         f"{x['rtol']:g}, {x['samples_per_period']} samples per period).\n" + modal_run_line(header))
 
 
-def modal_bias():
+def modal_bias(name="modal_bench.jsonl"):
     """The first frequency of the 160-cell switch against DC bias, and the 1-DOF forms."""
-    runs, header = modal_records("bias")
+    runs, header = modal_records("bias", name)
     rows = [["V [V]", "V / V_PI", "control deflection [um]", "f1 [Hz]", "f / f0",
              "1-DOF f / f0", "difference"]]
     for x in runs:
@@ -324,6 +324,47 @@ def modal_bias():
     return markdown(rows) + (
         f"\nQuasi-static pull-in voltage of this plate: {runs[0]['pull_in_voltage']:.3f} V.\n"
         + modal_run_line(header))
+
+
+def residual_stress_sweep():
+    """bench_residual_stress: pull-in voltage and modes of the switch plate against sigma_xx."""
+    lines = read_jsonl(DATA / "residual_stress_sweep.jsonl")
+    header = next(x for x in lines if x["section"] == "header")
+    rows = [["sigma_xx [MPa]", "N [N/m]", "N L^2 / D", "V_PI [V]", "V_PI / V_PI(0)", "f1 [kHz]",
+             "f1 / f1(0)", "f2 [kHz]", "f3 [kHz]", "lumped sqrt(1 + k_s/k_b)"]]
+    for x in lines:
+        if x["section"] != "sweep":
+            continue
+        f = x["frequencies_hz"]
+        rows.append([f"{x['residual_stress_mpa']:g}", f"{x['membrane_force_n_per_m']:g}",
+                     f"{x['tension_parameter']:.1f}", f"{x['pull_in_voltage']:.3f}",
+                     f"{x['voltage_ratio']:.4f}", f"{1e-3 * f[0]:.2f}",
+                     f"{x['frequency_ratio']:.4f}", f"{1e-3 * f[1]:.2f}", f"{1e-3 * f[2]:.2f}",
+                     f"{x['lumped_ratio']:.4f}"])
+    return markdown(rows) + modal_run_line(header)
+
+
+def residual_stress_switch():
+    """The default switch and cases/switch_prestressed side by side (rfmems-pullin --json)."""
+    lines = read_jsonl(DATA / "residual_stress_switch_runs.jsonl")
+    sweep = {x["residual_stress_mpa"]: x for x in read_jsonl(DATA / "residual_stress_sweep.jsonl")
+             if x["section"] == "sweep"}
+    rows = [["case", "sigma_xx [MPa]", "V_qs [V]", "V_dyn [V]", "V_dyn / V_qs", "t_PI [us]",
+             "t_PI error estimate", "f1 modal [kHz]", "small signal f [kHz], zeta", "wall [s]"]]
+    for x in lines:
+        p = x["summary"]["pull_in"]
+        d = p["dynamic"]
+        ss = d["small_signal"]
+        rows.append([f"`{x['case']}`", f"{x['residual_stress_mpa']:g}",
+                     f"{p['quasi_static']['pull_in_voltage']:.3f}",
+                     f"({d['not_pulling_in']:.2f}, {d['pull_in_voltage']:.2f}]",
+                     f"{d['ratio_to_quasi_static']:.4f}", f"{1e6 * d['pull_in_time']:.3f}",
+                     f"{100 * d['pull_in_time_check']['relative_error_estimate']:.2f} %",
+                     f"{1e-3 * sweep[x['residual_stress_mpa']]['frequencies_hz'][0]:.2f}",
+                     f"{1e-3 * ss['frequency']:.2f}, {ss['damping_ratio']:.4f}",
+                     f"{x['summary']['wall_time_s']:.1f}"])
+    commands = "; ".join(f"`{x['command']}`" for x in lines)
+    return markdown(rows) + f"\nCommands: {commands}, {lines[0]['date']}.\n"
 
 
 def quasi_static_trace():
@@ -385,6 +426,9 @@ TABLES = {
     "quasi-static-trace": quasi_static_trace,
     "modal-vs-transient": modal_vs_transient,
     "modal-bias": modal_bias,
+    "residual-stress-sweep": residual_stress_sweep,
+    "residual-stress-bias": lambda: modal_bias("residual_stress_bias.jsonl"),
+    "residual-stress-switch": residual_stress_switch,
 }
 
 

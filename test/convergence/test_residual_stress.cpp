@@ -40,7 +40,10 @@
 //    a bending layer of width l = sqrt(D/N) at each end, where the slope goes to zero; to first
 //    order in eps = l/L the string then spans L - 2 l, so V_PI = V_string/(1 - 2 eps), and the
 //    rest is O(eps^2). Measured: 1 + 4.2e-3 (eps = 0.032) and 1 + 9.6e-4 (eps = 0.016).
-// 6. The input contract: a stress across a free edge, and a wrong number of components.
+// 6. cases/switch_prestressed against cases/switch_plate (no gas): the stress raises the
+//    quasi-static pull-in voltage and the first frequency by the same factor, both going as the
+//    square root of one stiffness (measured 1.22381 and 1.22289).
+// 7. The input contract: a stress across a free edge, and a wrong number of components.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -322,6 +325,25 @@ TEST(ResidualStress, TensionDominatedMembranePullsInAsAClampedString) {
   EXPECT_LT(std::abs(deviation[1]), 1.5e-3);
   // O(eps^2): halving eps divides the rest by about 4.
   EXPECT_GT(std::abs(deviation[0] / deviation[1]), 3.0);
+}
+
+TEST(ResidualStress, PrestressedSwitchRaisesPullInAndFrequencyAlike) {
+  double voltage[2], frequency[2];
+  const char* names[2] = {"switch_plate", "switch_prestressed"};
+  for (int k = 0; k < 2; ++k) {
+    const std::string path = std::string(RFMEMS_SOURCE_DIR) + "/cases/" + names[k] + "/case.yaml";
+    const CaseFile cf = CaseFile::load(path, {"gas.model=none"});
+    SwitchScene scene =
+        build_switch_scene(cf.root(), std::filesystem::path(path).parent_path().string());
+    frequency[k] = structural_modes(*scene.structure, 1, 0.0).stats.modes[0].frequency;
+    QuasiStaticOptions o;
+    o.voltage_tolerance = 1e-4;
+    voltage[k] = trace_pull_in(*scene.actuation, scene.control, o).pull_in_voltage;
+    std::printf("%s: V_PI %.5f V, f1 %.2f Hz\n", names[k], voltage[k], frequency[k]);
+  }
+  const double rise = voltage[1] / voltage[0];
+  EXPECT_GT(rise, 1.2);
+  EXPECT_NEAR(frequency[1] / frequency[0], rise, 3e-3 * rise);
 }
 
 TEST(ResidualStress, StressAcrossAFreeEdgeOrAWrongCountIsAnInputError) {
