@@ -108,8 +108,27 @@ int run(const DriverOptions& options) {
     const auto components = model->probe_components();
     const bool plate = model->kind() == "plate";
     const int shown = plate || model->structure_mesh().dim() == 3 ? 3 : 2;
-    // A modal run's probes sample the shapes (in the result file), not a state: not printed.
-    const Json shown_probes = type == AnalysisType::Modal ? Json::object() : summary["probes"];
+    if (type == AnalysisType::Harmonic) {
+      // Per probe, the main component's largest amplitude over the sweep.
+      const int main = model->main_probe_component();
+      const std::string name = model->probe_components()[main];
+      const std::vector<Real>& f = stats.harmonic.frequencies;
+      for (std::size_t p = 0; p < results->harmonic().size(); ++p) {
+        std::size_t top = 0;
+        for (std::size_t k = 0; k < f.size(); ++k)
+          if (std::abs(results->harmonic()[p][k][main]) >
+              std::abs(results->harmonic()[p][top][main]))
+            top = k;
+        std::printf(
+            "probe %s: largest |%s| = %.6e at %.6e Hz (of %zu frequencies "
+            "from %.6e to %.6e Hz)\n",
+            results->probes()[p].name.c_str(), name.c_str(),
+            std::abs(results->harmonic()[p][top][main]), f[top], f.size(), f.front(), f.back());
+      }
+    }
+    // Modal and harmonic runs' probes sample shapes and responses, not a state: not printed.
+    const bool state = type != AnalysisType::Modal && type != AnalysisType::Harmonic;
+    const Json shown_probes = state ? summary["probes"] : Json::object();
     for (const auto& [probe, value] : shown_probes.items()) {
       std::printf("probe %s:", probe.c_str());
       for (int k = 0; k < shown; ++k)
@@ -128,8 +147,8 @@ int run(const DriverOptions& options) {
 int main(int argc, char** argv) {
   return driver_main(
       "rfmems-solid",
-      "rfmems-solid: static, transient and modal linear elasticity of a continuum or a "
-      "plate (FV)",
+      "rfmems-solid: static, transient, modal and harmonic linear elasticity of a continuum "
+      "or a plate (FV)",
       join_schemas({structure_case_keys(), structural_analysis_case_keys(), probes_case_keys()}),
       argc, argv, run, RankUse::AllRanks);
 }

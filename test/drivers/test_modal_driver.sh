@@ -4,7 +4,8 @@
 # the result file's /modal/modes table and one shape per mode (largest displacement component
 # +1), python/plot_modes.py on it, and the bad-input contract for the modal keys (modes < 1,
 # more modes than the structure has, a negative or non-frequency shift, modal under
-# solver.distributed).
+# solver.distributed); and analysis.type harmonic: the resonance of a sweep, the phase on
+# either side, the result file, and its bad input.
 #
 # Usage: bash test_modal_driver.sh <directory of rfmems-solid> <source directory>
 set -uo pipefail
@@ -123,6 +124,38 @@ else
   fail "continuum modal result file"
 fi
 
+# ---- harmonic: the plate strip's response to its load over a sweep ----------------------
+# The largest centre deflection is at the sweep's point nearest the first natural frequency,
+# and below it the response is in phase with the load (the case's load pushes along -z, so the
+# centre's w is negative: phase 180 degrees), above it in antiphase.
+expect_json_run harmonic "harmonic plate_vibration" "$PLATE" \
+  --set "analysis={type: harmonic, sweep: {from: 10 kHz, to: 200 kHz, points: 60}}" --set "solver={}"
+if $PY - "$WORK/harmonic.json" "$WORK/plate.json" "$WORK/harmonic.h5" <<'PY'; then
+import json, math, sys
+import h5py
+d = json.load(open(sys.argv[1]))
+f1 = json.load(open(sys.argv[2]))["modes"][0]["frequency"]
+assert d["analysis"] == "harmonic", d["analysis"]
+f = d["harmonic"]["frequencies"]
+assert len(f) == 60 and abs(f[0] - 1e4) < 1e-6 and abs(f[-1] - 2e5) < 1e-4, f
+w = d["harmonic"]["probes"]["centre"]["w"]
+top = max(range(len(f)), key=lambda k: w["amplitude"][k])
+nearest = min(range(len(f)), key=lambda k: abs(math.log(f[k] / f1)))
+assert top == nearest, (f[top], f1)
+phase = w["phase_deg"]
+assert all(abs(abs(phase[k]) - 180) < 1e-6 for k in range(len(f)) if f[k] < 0.9 * f1), phase
+assert all(abs(phase[k]) < 1e-6 for k in range(len(f)) if 1.1 * f1 < f[k] < 2.5 * f1), phase
+assert d["solver"]["factorizations"] == 1 and d["solver"]["refactorizations"] == 59, d["solver"]
+h = h5py.File(sys.argv[3], "r")
+values = h["harmonic/centre/values"][()]
+assert values.shape == (60, 6), values.shape
+assert abs(math.hypot(values[top, 0], values[top, 1]) / w["amplitude"][top] - 1) < 1e-12
+PY
+  pass "harmonic: resonance at the first mode, in phase below, antiphase above; result file"
+else
+  fail "harmonic sweep"
+fi
+
 # ---- bad input -------------------------------------------------------------------------
 modal ", modes: 0"
 expect_input_error zero_modes "analysis.modes' = 0: must be in \[1, " "$PLATE" "${MODAL[@]}"
@@ -136,6 +169,12 @@ modal ", shift: 3 m"
 expect_input_error shift_unit "analysis.shift' = '3 m'" "$PLATE" "${MODAL[@]}"
 expect_input_error modal_distributed "solver.distributed" "$BEAM" \
   --set "analysis={type: modal}" --set "solver={distributed: true}"
+expect_input_error harmonic_none "analysis.frequencies': give the frequencies or a sweep" \
+  "$PLATE" --set "analysis={type: harmonic}" --set "solver={}"
+expect_input_error harmonic_negative "analysis.frequencies' = .*every frequency must be > 0" \
+  "$PLATE" --set "analysis={type: harmonic, frequencies: [1 kHz, -2 kHz]}" --set "solver={}"
+expect_input_error harmonic_sweep "analysis.sweep.to' = '1 kHz': must not be below" \
+  "$PLATE" --set "analysis={type: harmonic, sweep: {from: 2 kHz, to: 1 kHz}}" --set "solver={}"
 
 echo "$failures failure(s)"
 [ "$failures" -eq 0 ]

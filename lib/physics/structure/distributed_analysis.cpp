@@ -17,8 +17,10 @@ void check_distributable(StructuralModel& model, const AnalysisSettings& setting
   const CaseNode solver = root.child_or_empty("solver");
   const bool continuum = dynamic_cast<const ElasticityOperator*>(&model.structure()) != nullptr;
   const bool plate = dynamic_cast<const PlateOperator*>(&model.structure()) != nullptr;
-  solver.require(settings.type != AnalysisType::Modal, "distributed",
-                 "is for static and transient analyses; a modal analysis is solved on one rank");
+  solver.require(settings.type != AnalysisType::Modal && settings.type != AnalysisType::Harmonic,
+                 "distributed",
+                 "is for static and transient analyses; modal and harmonic analyses are solved on "
+                 "one rank");
   solver.require(continuum || (plate && settings.type == AnalysisType::Static), "distributed",
                  "is for the continuum (model.structure plane or solid3d) and for static plates; "
                  "a plate transient is solved on one rank");

@@ -4,6 +4,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <complex>
+#include <ctime>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -13,6 +16,7 @@
 #include "core/structural_systems.hpp"
 #include "io/case_schema_yaml.hpp"
 #include "physics/structure/output_schedule.hpp"
+#include "solvers/harmonic_response.hpp"
 #include "solvers/static_solve.hpp"
 
 namespace rfmems {
@@ -128,12 +132,42 @@ AnalysisStats run_modal(StructuralModel& model, const AnalysisSettings& settings
   return stats;
 }
 
+AnalysisStats run_harmonic(StructuralModel& model, const AnalysisSettings& settings,
+                           AnalysisObserver& observer) {
+  AnalysisStats stats;
+  stats.type = AnalysisType::Harmonic;
+  const Real t = model.ramp_end_time();
+  const Index n = model.structure().size();
+  std::unique_ptr<SystemOperator> system = first_order_system(model);
+  // About rest, F(t, x, x') = F(t, 0, 0) + A x + B x': the loads' amplitude is F(t, 0, 0).
+  const std::vector<Real> rest(system->size(), 0.0);
+  std::vector<Real> load(system->size());
+  system->residual(t, rest, rest, load);
+  const double wall = std::clock();
+  HarmonicResponse response(*system, t, rest);
+  std::vector<Real> real(n), imag(n);
+  for (std::size_t k = 0; k < settings.frequencies.size(); ++k) {
+    const Real f = settings.frequencies[k];
+    const std::vector<std::complex<Real>> x = response.solve(2 * M_PI * f, load, rest);
+    for (Index i = 0; i < n; ++i) real[i] = x[i].real(), imag[i] = x[i].imag();
+    observer.harmonic_output(static_cast<int>(k), f, real, imag);
+  }
+  stats.harmonic.frequencies = settings.frequencies;
+  stats.harmonic.factorizations = response.fresh_factorizations();
+  stats.harmonic.refactorizations = response.refactorizations();
+  stats.harmonic.solve_seconds = (std::clock() - wall) / CLOCKS_PER_SEC;
+  stats.n_outputs = static_cast<int>(settings.frequencies.size());
+  stats.final_time = t;
+  return stats;
+}
+
 }  // namespace
 
 AnalysisType read_analysis_type(const CaseNode& root) {
   const std::string type =
-      root.child("analysis").get_choice("type", {"static", "transient", "modal"});
+      root.child("analysis").get_choice("type", {"static", "transient", "modal", "harmonic"});
   if (type == "modal") return AnalysisType::Modal;
+  if (type == "harmonic") return AnalysisType::Harmonic;
   return type == "static" ? AnalysisType::Static : AnalysisType::Transient;
 }
 
@@ -153,6 +187,26 @@ AnalysisSettings read_analysis_settings(const CaseNode& root, StructuralModel& m
                      "the structure has too few unknowns with inertia for a modal analysis");
     s.shift_frequency =
         analysis.get_quantity("shift", Dimension::Frequency, 0.0, Range::non_negative());
+  }
+  if (s.type == AnalysisType::Harmonic) {
+    analysis.require(analysis.has("frequencies") != analysis.has("sweep"), "frequencies",
+                     "give the frequencies or a sweep (one of the two)");
+    if (analysis.has("frequencies")) {
+      s.frequencies = analysis.get_quantities("frequencies", Dimension::Frequency);
+      analysis.require(!s.frequencies.empty(), "frequencies", "give at least one");
+      for (const Real f : s.frequencies)
+        analysis.require(f > 0, "frequencies", "every frequency must be > 0");
+    } else {
+      const CaseNode sweep = analysis.child("sweep");
+      const Real from = sweep.get_quantity("from", Dimension::Frequency, Range::positive());
+      const Real to = sweep.get_quantity("to", Dimension::Frequency, Range::positive());
+      const long points = sweep.get_int("points", 50, Range::closed(1, 100000));
+      sweep.require(to >= from, "to", "must not be below sweep.from");
+      for (long k = 0; k < points; ++k)
+        s.frequencies.push_back(points == 1 ? from
+                                            : from * std::pow(to / from, double(k) / (points - 1)));
+    }
+    return s;
   }
   if (s.type == AnalysisType::Static || s.type == AnalysisType::Modal) {
     const bool newton = model.static_method() == "newton";
@@ -187,6 +241,8 @@ std::string to_string(AnalysisType type) {
       return "transient";
     case AnalysisType::Modal:
       return "modal";
+    case AnalysisType::Harmonic:
+      return "harmonic";
   }
   return "";
 }
@@ -198,6 +254,8 @@ AnalysisStats run_analysis(StructuralModel& model, const AnalysisSettings& setti
       return run_static(model, settings, observer);
     case AnalysisType::Modal:
       return run_modal(model, settings, observer);
+    case AnalysisType::Harmonic:
+      return run_harmonic(model, settings, observer);
     case AnalysisType::Transient:
       break;
   }

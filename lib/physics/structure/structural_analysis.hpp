@@ -1,12 +1,14 @@
-// Static, transient and modal analyses of a StructuralModel (continuum or plate), and their
-// case-file settings.
+// Static, transient, modal and harmonic analyses of a StructuralModel (continuum or plate), and
+// their case-file settings.
 //
 //   analysis:
-//     type: static                 # static | transient | modal
+//     type: static                 # static | transient | modal | harmonic
 //     end_time: 1.25 s             # transient: simulated time, from t = 0
 //     output_interval: 2.5 ms      # transient: fields and probes every this much
 //     modes: 6                     # modal: how many modes (default 6), the nearest the shift
 //     shift: 0 Hz                  # modal: the frequency the modes are nearest (default 0)
+//     frequencies: [1 kHz, 2 kHz]  # harmonic: the load's frequencies, or
+//     sweep: {from: 1 kHz, to: 1 MHz, points: 61}   # evenly spaced in log f
 //   solver:                        # static (Newton, or the elasticity's segregated method),
 //                                  # and the static state of a loaded modal analysis (Newton):
 //     tolerance: 1e-6              #   residual reduction ||R||/||R0|| (default 1e-6: the
@@ -46,6 +48,13 @@
 // Modal: the modes of the structure linearised about its static state at t_load
 // (physics/structure/modal_analysis.hpp); output k holds the shape of mode k + 1 (largest
 // displacement component +1), at "time" k + 1 (so a viewer's time steps through the modes).
+// Harmonic: every load (pressure, tractions, point loads, prescribed boundary values) at its
+// value at t_load becomes the amplitude of a load varying as exp(i w t), and the steady
+// response u = Re(x exp(i w t)) of the structure about rest, with its inertia (the
+// transients' first-order form: the same quasi-static components) and its Kelvin-Voigt
+// damping, is solved for at each frequency (solvers/harmonic_response.hpp: one complex sparse
+// LU each). Output k holds Re x at frequency k, at "time" f_k [Hz]; the probes record Re and Im
+// (the result file's /harmonic/<probe>, the JSON's harmonic: amplitude and phase).
 #pragma once
 #include <span>
 
@@ -71,6 +80,8 @@ struct AnalysisSettings {
   // Modal.
   Index modes = 6;
   Real shift_frequency = 0;  // [Hz]
+  // Harmonic.
+  std::vector<Real> frequencies;  // [Hz]
   // solver.distributed: the structure on distributed vectors (physics/structure/
   // distributed_analysis.hpp) instead of on rank 0.
   bool distributed = false;
@@ -88,6 +99,18 @@ class AnalysisObserver {
  public:
   virtual ~AnalysisObserver() = default;
   virtual void output(int index, Real t, std::span<const Real> u, std::span<const Real> v) = 0;
+  // A harmonic analysis's response at one frequency [Hz]: u = Re x + i Im x for the loads'
+  // amplitude. By default the real part goes to output().
+  virtual void harmonic_output(int index, Real frequency, std::span<const Real> real,
+                               std::span<const Real> /*imag*/) {
+    output(index, frequency, real, {});
+  }
+};
+
+struct HarmonicStats {
+  std::vector<Real> frequencies;  // [Hz]
+  long factorizations = 0, refactorizations = 0;
+  double solve_seconds = 0;
 };
 
 struct AnalysisStats {
@@ -97,6 +120,7 @@ struct AnalysisStats {
   NonlinearStats newton;                 // static, Newton
   SegregatedStats segregated;            // static, segregated (elasticity)
   ModalStats modal;                      // modal
+  HarmonicStats harmonic;                // harmonic
   int n_outputs = 0;
   Real final_time = 0;
   int distributed_ranks = 0;  // > 0: solved distributed over this many ranks

@@ -19,8 +19,9 @@
 
 namespace rfmems {
 
-enum class AnalysisType { Static, Transient, Modal };
-std::string to_string(AnalysisType type);  // "static", "transient", "modal"
+enum class AnalysisType { Static, Transient, Modal, Harmonic };
+// "static", "transient", "modal", "harmonic"
+std::string to_string(AnalysisType type);
 
 struct AnalysisSettings;
 struct AnalysisStats;

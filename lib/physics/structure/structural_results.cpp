@@ -21,6 +21,23 @@ void StructuralResults::output(int index, Real t, std::span<const Real> y,
   history_.add(t, model_.probe_values(probes_, t, y));
 }
 
+void StructuralResults::harmonic_output(int index, Real frequency, std::span<const Real> real,
+                                        std::span<const Real> imag) {
+  model_.write_fields(writer_, index, frequency, real, {});
+  // The probes are affine in the state: their constant (prescribed boundary values) belongs to
+  // the real part, the load's amplitude.
+  const std::vector<Real> zero(real.size(), 0.0);
+  const std::vector<Vec3> re = model_.probe_values(probes_, frequency, real);
+  const std::vector<Vec3> im = model_.probe_values(probes_, frequency, imag);
+  const std::vector<Vec3> constant = model_.probe_values(probes_, frequency, zero);
+  harmonic_.resize(probes_.size());
+  for (std::size_t p = 0; p < probes_.size(); ++p) {
+    std::array<std::complex<Real>, 3> value;
+    for (int k = 0; k < 3; ++k) value[k] = {re[p][k], im[p][k] - constant[p][k]};
+    harmonic_[p].push_back(value);
+  }
+}
+
 void StructuralResults::finish(const CaseFile& case_file, const std::string& case_name,
                                const AnalysisStats& stats, Real wall_seconds) {
   const auto components = model_.probe_components();
@@ -37,7 +54,21 @@ void StructuralResults::finish(const CaseFile& case_file, const std::string& cas
                                "eigenvalue_imag", "complex", "residual"},
                               "mode", {"Hz", "rad/s", "1", "rad^2/s^2", "rad^2/s^2", "1", "1"});
   }
-  for (std::size_t p = 0; p < probes_.size(); ++p)
+  if (stats.type == AnalysisType::Harmonic) {
+    std::vector<std::string> names;
+    for (const std::string& c : components) names.push_back("re_" + c), names.push_back("im_" + c);
+    for (std::size_t p = 0; p < harmonic_.size(); ++p) {
+      std::vector<std::vector<double>> values;
+      for (const auto& sample : harmonic_[p]) {
+        std::vector<double> row;
+        for (const std::complex<Real>& z : sample) row.push_back(z.real()), row.push_back(z.imag());
+        values.push_back(row);
+      }
+      writer_.write_time_series("harmonic", probes_[p].name, stats.harmonic.frequencies, values,
+                                names, "frequency", std::vector<std::string>(6, ""));
+    }
+  }
+  for (std::size_t p = 0; p < probes_.size() && stats.type != AnalysisType::Harmonic; ++p)
     writer_.write_time_series("probes", probes_[p].name, history_.times(), history_.series(p),
                               {components.begin(), components.end()});
   std::map<std::string, double> numbers;
@@ -68,6 +99,11 @@ Json solver_stats_json(const AnalysisStats& stats) {
     j["factor_time_s"] = s.factor_seconds;
     j["eigensolve_time_s"] = s.solve_seconds;
     j["static_newton_iterations"] = stats.modal.newton.newton_iters;
+  } else if (stats.type == AnalysisType::Harmonic) {
+    j["frequencies"] = stats.harmonic.frequencies.size();
+    j["factorizations"] = stats.harmonic.factorizations;
+    j["refactorizations"] = stats.harmonic.refactorizations;
+    j["solve_cpu_s"] = stats.harmonic.solve_seconds;
   } else if (stats.type == AnalysisType::Transient) {
     const IntegratorStats& s = stats.transient;
     j["steps"] = s.steps;
@@ -123,7 +159,8 @@ Json structural_summary(const std::string& case_name, const StructuralModel& mod
   const ProbeHistory& h = results.history();
   for (std::size_t p = 0; p < results.probes().size(); ++p) {
     Json probe = Json::object();
-    if (h.n_samples() > 0 && stats.type != AnalysisType::Modal) {
+    if (h.n_samples() > 0 && stats.type != AnalysisType::Modal &&
+        stats.type != AnalysisType::Harmonic) {
       const Vec3& last = h.value(h.n_samples() - 1, p);
       for (int k = 0; k < 3; ++k) probe[components[k]] = last[k];
     }
@@ -149,6 +186,22 @@ Json structural_summary(const std::string& case_name, const StructuralModel& mod
                        {"residual", m.residual}});
     j["modes"] = modes;
     j["state"] = {{"time", stats.modal.state_time}, {"at_rest", stats.modal.at_rest}};
+  }
+  if (stats.type == AnalysisType::Harmonic) {
+    Json harmonic_probes = Json::object();
+    for (std::size_t p = 0; p < results.harmonic().size(); ++p) {
+      Json probe = Json::object();
+      for (int k = 0; k < 3; ++k) {
+        Json amplitude = Json::array(), phase = Json::array();
+        for (const auto& sample : results.harmonic()[p]) {
+          amplitude.push_back(std::abs(sample[k]));
+          phase.push_back(std::arg(sample[k]) * 180 / M_PI);
+        }
+        probe[components[k]] = {{"amplitude", amplitude}, {"phase_deg", phase}};
+      }
+      harmonic_probes[results.probes()[p].name] = probe;
+    }
+    j["harmonic"] = {{"frequencies", stats.harmonic.frequencies}, {"probes", harmonic_probes}};
   }
   j["solver"] = solver_stats_json(stats);
   j["wall_time_s"] = wall_seconds;

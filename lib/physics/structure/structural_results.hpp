@@ -7,11 +7,16 @@
 //   /modal/modes/mode, /modal/modes/values (modal: per mode frequency [Hz], angular_frequency,
 //              damping_ratio, eigenvalue_real, eigenvalue_imag [rad^2/s^2], complex (0/1),
 //              residual); output k of the fields is mode k + 1's shape
+//   /harmonic/<probe>/frequency, /harmonic/<probe>/values (harmonic: per frequency [Hz] the
+//              probe components' real and imaginary parts for the loads as given, re_<c>, im_<c>);
+//              output k of the fields is the real part at frequency k
 //   /metadata  strings case_file, case_name, case_text (as read), case_effective (after the
 //              overrides), overrides (one per line), analysis, model, static_method,
 //              git_hash; numbers: the solver statistics (as in the JSON summary) and
 //              wall_time_s.
 #pragma once
+#include <array>
+#include <complex>
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,6 +36,12 @@ class StructuralResults : public AnalysisObserver {
                     std::vector<Probe> probes);
 
   void output(int index, Real t, std::span<const Real> u, std::span<const Real> v) override;
+  void harmonic_output(int index, Real frequency, std::span<const Real> real,
+                       std::span<const Real> imag) override;
+  // Harmonic: per probe, per frequency, the complex amplitude of each probe component.
+  const std::vector<std::vector<std::array<std::complex<Real>, 3>>>& harmonic() const {
+    return harmonic_;
+  }
 
   // Writes the probe series and the metadata and moves the file into place.
   void finish(const CaseFile& case_file, const std::string& case_name, const AnalysisStats& stats,
@@ -46,6 +57,7 @@ class StructuralResults : public AnalysisObserver {
   ResultWriter writer_;
   std::vector<Probe> probes_;
   ProbeHistory history_;
+  std::vector<std::vector<std::array<std::complex<Real>, 3>>> harmonic_;
 };
 
 // Solver statistics by name: transient {steps, residual_evals, jacobian_evals,
@@ -62,7 +74,9 @@ Json solver_stats_json(const AnalysisStats& stats);
 // samples; modal: samples only, one per mode, the shapes' values in the result file}}, solver
 // (solver_stats_json), wall_time_s; modal also modes [{index, frequency [Hz], angular_frequency
 // [rad/s], damping_ratio, eigenvalue_real, eigenvalue_imag [rad^2/s^2], complex, residual}]
-// (physics/structure/modal_analysis.hpp) and state {time, at_rest}.
+// (physics/structure/modal_analysis.hpp) and state {time, at_rest}; harmonic: harmonic
+// {frequencies [Hz], probes {name: {component: {amplitude, phase_deg}}}} for the loads as given
+// (the phase of the response behind the load is -phase_deg).
 Json structural_summary(const std::string& case_name, const StructuralModel& model,
                         const StructuralResults& results, const AnalysisStats& stats,
                         Real wall_seconds);
