@@ -46,9 +46,12 @@ TEST(VelocityQuadrature, GaussHermiteIsExactToDegree2NMinus1) {
       EXPECT_NEAR(gaussian_moment(a, p, false), exact, 1e-13 * std::tgamma((p + 1) / 2.0))
           << "n = " << n << ", p = " << p;
     }
-    // Degree 2N is not integrated exactly: the exactness above is the rule's, not luck.
-    const Real miss = gaussian_moment(a, 2 * n, false) / std::tgamma(n + 0.5) - 1;
-    EXPECT_GT(std::abs(miss), 1e-3) << "n = " << n;
+    // Degree 2N is not integrated exactly (relative miss n! sqrt(pi) / (2^n Gamma(n + 1/2)),
+    // 0.02 at n = 8): the exactness above is the rule's, not luck.
+    if (n <= 8) {
+      const Real miss = gaussian_moment(a, 2 * n, false) / std::tgamma(n + 0.5) - 1;
+      EXPECT_GT(std::abs(miss), 1e-2) << "n = " << n;
+    }
   }
 }
 
@@ -61,8 +64,10 @@ TEST(VelocityQuadrature, HalfRangeHermiteIsExactOnEachHalf) {
       const Real exact = 0.5 * std::tgamma((p + 1) / 2.0);
       EXPECT_NEAR(gaussian_moment(a, p, true) / exact, 1.0, 1e-13) << "n = " << n << ", p = " << p;
     }
-    const Real miss = gaussian_moment(a, n, true) / (0.5 * std::tgamma((n + 1) / 2.0)) - 1;
-    EXPECT_GT(std::abs(miss), 1e-4) << "n = " << n;
+    if (n <= 8) {
+      const Real miss = gaussian_moment(a, n, true) / (0.5 * std::tgamma((n + 1) / 2.0)) - 1;
+      EXPECT_GT(std::abs(miss), 1e-6) << "n = " << n;
+    }
   }
   EXPECT_THROW(half_range_hermite_axis(7), InputError);
 }
@@ -89,9 +94,9 @@ TEST(VelocityQuadrature, RulesAreSymmetricUniformIsTheMidpointRule) {
   const VelocityAxis s = sinh_stretched_axis(16, 4.0, 3.0);
   Real sum = 0;
   for (Real w : s.w) sum += w;
-  EXPECT_NEAR(sum, 8.0, 0.02);  // midpoint rule of int cosh: 2E to O(ds^2)
+  EXPECT_NEAR(sum, 8.0, 0.08);  // midpoint rule of int cosh: 2E to O(a^2 ds^2 / 24)
   EXPECT_NEAR(s.x[8], 4.0 * std::sinh(3.0 / 16) / std::sinh(3.0), 1e-14);
-  EXPECT_LT(s.x[8], 0.25 * uniform_axis(16, 4.0).x[8]);
+  EXPECT_LT(s.x[8], 0.31 * uniform_axis(16, 4.0).x[8]);  // a / sinh(a) = 0.30
   EXPECT_THROW(velocity_axis(VelocityRule::GaussHermite, 1, 4, 3), InputError);
 }
 
@@ -106,10 +111,10 @@ struct GridCase {
 
 std::vector<GridCase> grid_cases() {
   using R = VelocityRule;
-  return {{"uniform", {R::Uniform, R::Uniform, R::Uniform}, {10, 8, 6}},
+  return {{"uniform", {R::Uniform, R::Uniform, R::Uniform}, {10, 12, 8}},
           {"gauss_hermite", {R::GaussHermite, R::GaussHermite, R::GaussHermite}, {3, 8, 5}},
           {"wall_half_range", {R::GaussHermite, R::HalfRangeHermite, R::GaussHermite}, {4, 16, 3}},
-          {"sinh_stretched", {R::Uniform, R::SinhStretched, R::Uniform}, {8, 16, 6}}};
+          {"sinh_stretched", {R::Uniform, R::SinhStretched, R::Uniform}, {10, 16, 10}}};
 }
 
 VelocityGrid grid_of(const GridCase& g) {
@@ -156,6 +161,8 @@ TEST(VelocityGridProduct, DiscreteEquilibriumIsExactOnEveryRule) {
         const VelocityGrid grid = grid_of(gc);
         const Vec3 u(25, -15, 10);
         const EquilibriumTarget target = maxwellian_target(kRho0, u, temperature, gas);
+        SCOPED_TRACE(gc.name + (model == CollisionModel::Bgk ? " bgk" : " esbgk") +
+                     " T/T0 = " + std::to_string(temperature / kT0));
         const EquilibriumCoefficients a = equilibrium(target, model, grid);
         std::vector<Real> f(grid.size());
         evaluate_equilibrium(a, grid, f);
