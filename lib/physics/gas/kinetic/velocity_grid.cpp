@@ -46,12 +46,13 @@ VelocityGrid VelocityGrid::uniform(int n1, int n2, int n3, const Vec3& extent) {
 }
 
 Index VelocityGrid::nearest_ordinate(const Vec3& v) const {
+  // Per direction the nearest node; halfway between two, the upper one.
   int idx[3];
   for (int d = 0; d < 3; ++d) {
     const std::vector<Real>& x = axis[d];
     const auto above = std::lower_bound(x.begin(), x.end(), v[d]);
     int i = static_cast<int>(above - x.begin());
-    if (i == static_cast<int>(x.size()) || (i > 0 && v[d] - x[i - 1] <= x[i] - v[d])) --i;
+    if (i == static_cast<int>(x.size()) || (i > 0 && v[d] - x[i - 1] < x[i] - v[d])) --i;
     idx[d] = i;
   }
   return index(idx[0], idx[1], idx[2]);
