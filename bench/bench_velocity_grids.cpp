@@ -137,7 +137,7 @@ int main(int argc, char** argv) {
   std::string cases = bench::default_cases_dir();
   app.add_option("--problems", problems, "couette, heat, poiseuille");
   app.add_option("--deltas", deltas, "rarefaction parameters (of the reference table)");
-  app.add_option("--grids", labels, "only these grids: 'label NxNyxNz', e.g. 'hr 3x16x3'");
+  app.add_option("--grids", labels, "only these grids: 'label NxNyxNz', e.g. 'gh+hr 3x16x3'");
   app.add_option("--cases", cases, "the repository's cases/ directory");
   CLI11_PARSE(app, argc, argv);
 
