@@ -16,8 +16,8 @@
 // and the flow rate, 12 x 64 x 12 for the heat flux, 32 across at delta = 10) and their
 // refinements, against product grids of Gauss-Hermite along the walls and a wall-refined rule
 // across them (half-range Gauss-Hermite, or sinh-stretched midpoints). A row records the
-// velocities, the solve's CPU seconds (this process; the machine is shared), its iterations
-// and the relative error.
+// velocities, the CPU seconds of building the run (grid, scene, initial state) and solving it
+// (this process; the machine is shared), the iterations and the relative error.
 //
 // Sample runs:
 //   build/bench/bench_velocity_grids > docs/figures/velocity_grids.jsonl   # every row
