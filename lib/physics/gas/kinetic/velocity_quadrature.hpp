@@ -13,9 +13,9 @@
 //   gauss_hermite       Gauss quadrature for the weight exp(-x^2) on the whole line (nodes: the
 //                       roots of the Hermite polynomial H_N), w_i = lambda_i exp(x_i^2) with
 //                       lambda_i the Gauss weights: exact for g = p exp(-x^2), p of degree
-//                       <= 2N - 1. No extent. N >= 3 lets the discrete equilibrium take any
-//                       temperature (N = 2 puts both nodes at +-v0/sqrt(2): a variance of at
-//                       most v0^2/2 = R T0).
+//                       <= 2N - 1. No extent. N = 2 puts both nodes at +-v0/sqrt(2), which
+//                       hold a variance of at most v0^2/2 = R T0: no discrete equilibrium of a
+//                       warmer gas; N points reach a variance x_max^2 v0^2 (N = 3: 3 T0).
 //   half_range_hermite  Gauss quadrature for exp(-x^2) on [0, inf) with N/2 nodes, mirrored onto
 //                       (-inf, 0] (N even): exact for g = p exp(-x^2) with p of degree
 //                       <= N - 1 on each half separately, so the jump at 0 costs nothing; the
