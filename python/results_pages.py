@@ -403,6 +403,74 @@ def quasi_static_trace():
     return out + f"\nCommand: `{header['command']}`, {header['date']}.\n"
 
 
+def velocity_grids():
+    """bench_velocity_grids: per problem and delta, today's uniform grid (the driver test's)
+    against the cheapest grid of each non-uniform family at least as accurate, and whether that
+    takes at most a quarter of the velocities."""
+    lines = read_jsonl(FIGURES / "velocity_grids.jsonl")
+    header = next(x for x in lines if x.get("section") == "header")
+    runs = [x for x in lines if "error" in x]
+    families = [("gh+hr", "Gauss-Hermite along, half-range Gauss-Hermite across"),
+                ("gh+sinh", "Gauss-Hermite along, sinh-stretched across")]
+    names = {"couette": "Couette P", "heat": "heat q*", "poiseuille": "Poiseuille G"}
+    rows = [["problem", "delta", "grid", "points", "velocities", "CPU [s]", "error",
+             "velocities / today's", "CPU / today's", "quarter"]]
+    pct = lambda e: f"{100 * e:+.4f} %"
+    points = lambda p: " x ".join(str(n) for n in p)
+    for problem in ("couette", "heat", "poiseuille"):
+        for delta in sorted({x["delta"] for x in runs}):
+            here = [x for x in runs if x["problem"] == problem and x["delta"] == delta]
+            along = 12 if problem == "heat" else 8
+            today = [along, 32 if delta >= 10 else 64, along]
+            base = next(x for x in here if x["grid"] == "uniform" and x["points"] == today)
+            target = abs(base["error"])
+            rows.append([names[problem], f"{delta:g}", "uniform (today)", points(base["points"]),
+                         str(base["ordinates"]), f"{base['cpu_s']:.3f}", pct(base["error"]),
+                         "1", "1", "-"])
+            for family, label in families:
+                ok = sorted((x for x in here if x["grid"] == family and abs(x["error"]) <= target),
+                            key=lambda x: x["ordinates"])
+                if not ok:
+                    rows.append([names[problem], f"{delta:g}", label, "-", "-", "-",
+                                 "none as accurate", "-", "-", "**no**"])
+                    continue
+                x = ok[0]
+                ratio = x["ordinates"] / base["ordinates"]
+                rows.append([names[problem], f"{delta:g}", label, points(x["points"]),
+                             str(x["ordinates"]), f"{x['cpu_s']:.3f}", pct(x["error"]),
+                             f"1/{1 / ratio:.1f}", f"1/{base['cpu_s'] / x['cpu_s']:.1f}",
+                             "yes" if ratio <= 0.25 else "**no**"])
+    return markdown(rows) + (f"\nCommand: `{header['command']}`, {header['date']} "
+                             f"(commit {header['commit']}; 1-minute load average "
+                             f"{header['load_average_1min']:g} on 2 cores at the start).\n")
+
+
+def velocity_grids_goal():
+    """bench_velocity_grids: per problem and delta, the cheapest grid of each family within 0.2 %
+    of the reference (the driver test's tolerance), or the best one run."""
+    runs = [x for x in read_jsonl(FIGURES / "velocity_grids.jsonl") if "error" in x]
+    families = [("uniform", "uniform"), ("gh+hr", "GH + half-range GH"),
+                ("gh+sinh", "GH + sinh-stretched"), ("gh", "GH in every direction")]
+    names = {"couette": "Couette P", "heat": "heat q*", "poiseuille": "Poiseuille G"}
+    rows = [["problem", "delta"] + [label for _, label in families]]
+    for problem in ("couette", "heat", "poiseuille"):
+        for delta in sorted({x["delta"] for x in runs}):
+            row = [names[problem], f"{delta:g}"]
+            for family, _ in families:
+                ok = sorted((x for x in runs if x["problem"] == problem and x["delta"] == delta
+                             and x["grid"] == family and abs(x["error"]) <= 2e-3),
+                            key=lambda x: x["ordinates"])
+                tried = [x for x in runs if x["problem"] == problem and x["delta"] == delta
+                         and x["grid"] == family]
+                best = min(tried, key=lambda x: abs(x["error"]))
+                x = ok[0] if ok else best
+                text = (f"{x['ordinates']} ({' x '.join(map(str, x['points']))}, "
+                        f"{100 * x['error']:+.3f} %)")
+                row.append(text if ok else "no; best " + text)
+            rows.append(row)
+    return markdown(rows)
+
+
 TABLES = {
     "verification-checks": csv_table("verification_checks.csv"),
     "performance-ratios": csv_table("performance_ratios.csv"),
@@ -429,6 +497,8 @@ TABLES = {
     "residual-stress-sweep": residual_stress_sweep,
     "residual-stress-bias": lambda: modal_bias("residual_stress_bias.jsonl"),
     "residual-stress-switch": residual_stress_switch,
+    "velocity-grids": velocity_grids,
+    "velocity-grids-goal": velocity_grids_goal,
 }
 
 

@@ -116,6 +116,7 @@ void check_kinetic(const SceneDescription::Kinetic &k, ValidityReport &r) {
   }
   r.ranges.push_back({"kinetic_knudsen", knudsen(k.density_max, k.temperature_min, k.viscosity_min),
                       knudsen(k.density_min, k.temperature_max, k.viscosity_max)});
+  if (!(k.velocity_extent > 0)) return;  // Gauss-Hermite in every direction: no truncation
   const Real needed = k.wall_speed + C::kVelocityGridThermalSpeeds *
                                          std::sqrt(2 * k.gas_constant * k.wall_temperature);
   r.ranges.push_back(

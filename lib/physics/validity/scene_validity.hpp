@@ -35,7 +35,8 @@
 //  - Immersed field: the touch-down gap below one background cell, the 1D Reynolds film at
 //    Kn > 1 or followed below half the gap, the kinetic gas's cell size (below).
 //  - Kinetic gas: Kn = lambda/L over the computed density range (lambda = mu(T)/p
-//    sqrt(pi R T/2) with p = rho R T), reported; the velocity grid's half-extent must cover
+//    sqrt(pi R T/2) with p = rho R T), reported; the velocity grid's half-extent (its truncated
+//    rules': a Gauss-Hermite rule covers the whole line) must cover
 //    every wall's speed plus 3 thermal speeds sqrt(2 R T_wall) (a Maxwellian keeps
 //    exp(-9) ~ 1e-4 of its mass beyond 3 thermal speeds);
 //    the cell size h against the mean free path: the first-order upwind scheme adds the
@@ -87,11 +88,11 @@ struct SceneDescription {
     Real temperature_min = 0,
          temperature_max = 0;  // [K] over the computed field
     Real viscosity_min = 0,
-         viscosity_max = 0;     // mu at temperature_min / _max [Pa s]
-    Real gas_constant = 0;      // R [J/(kg K)]
-    Real length = 0;            // the gap or domain length [m]
-    Real velocity_extent = 0;   // the grid's smallest half-extent [m/s]
-    Real wall_speed = 0;        // the largest wall velocity component [m/s]
+         viscosity_max = 0;    // mu at temperature_min / _max [Pa s]
+    Real gas_constant = 0;     // R [J/(kg K)]
+    Real length = 0;           // the gap or domain length [m]
+    Real velocity_extent = 0;  // the grid's smallest half-extent [m/s] (0: no check, Gauss-Hermite)
+    Real wall_speed = 0;       // the largest wall velocity component [m/s]
     Real wall_temperature = 0;  // the hottest wall [K]
     Real cell_size = 0;         // h [m]: max over cells of the smallest extent (0: no check)
     std::string cell_size_key;  // the case key that sets h, e.g. "mesh.cells"

@@ -185,6 +185,11 @@ TEST(SceneValidity, KineticKnudsenRangeAndVelocityGridCover) {
   EXPECT_TRUE(check_scene_validity(s).warnings.empty());
   k.wall_temperature = 2 * k.temperature_min;  // needs 3 sqrt(2) c + 0.4 c = 4.64 c
   EXPECT_EQ(check_scene_validity(s).warnings.size(), 1u);
+  // A grid of Gauss-Hermite rules only (velocity_extent 0) covers the whole line: no check.
+  k.velocity_extent = 0;
+  r = check_scene_validity(s);
+  EXPECT_TRUE(r.warnings.empty());
+  EXPECT_EQ(r.find("velocity_extent_over_needed"), nullptr);
 }
 
 // The cell size against the mean free path: argon at Kn = 0.1 over 1 m (lambda = 0.1 m) is

@@ -36,16 +36,18 @@ VecM<M> basis(const Vec3& xi) {
   return phi;
 }
 
-// Identifies the grid a per-thread cache was built for (its ordinates' storage, size, scale
-// and end points): every cell of a solve uses the same grid.
+// Identifies the grid a per-thread cache was built for (its ordinates' storage, size, scale,
+// end and middle points and their weights): every cell of a solve uses the same grid.
 struct GridKey {
   const Vec3* key = nullptr;
   Index n = 0;
-  Vec3 first = Vec3::Zero(), last = Vec3::Zero();
+  Vec3 first = Vec3::Zero(), middle = Vec3::Zero(), last = Vec3::Zero();
+  Real w_first = 0, w_middle = 0;
   Real s = 0;
   bool matches(const VelocityGrid& grid) const {
     return key == grid.c.data() && n == grid.size() && s == grid.reference_speed && n > 0 &&
-           first == grid.c.front() && last == grid.c.back();
+           first == grid.c.front() && middle == grid.c[n / 2] && last == grid.c.back() &&
+           w_first == grid.w.front() && w_middle == grid.w[n / 2];
   }
   void set(const VelocityGrid& grid) {
     key = grid.c.data();
@@ -53,7 +55,10 @@ struct GridKey {
     s = grid.reference_speed;
     if (n > 0) {
       first = grid.c.front();
+      middle = grid.c[n / 2];
       last = grid.c.back();
+      w_first = grid.w.front();
+      w_middle = grid.w[n / 2];
     }
   }
 };
@@ -200,8 +205,7 @@ Real dual_objective(const VecM<M>& a, const VecM<M>& m, const VelocityGrid& grid
   TensorKernelCache& T = tensor_kernel(grid);
   if (T.kernel.valid()) {
     T.kernel.exponential(a.data(), M, T.values.data());
-    const Eigen::Map<const Eigen::ArrayXd> v(T.values.data(), grid.size());
-    return T.kernel.weight() * v.sum() - a.dot(m);
+    return T.kernel.weighted_sum(T.values.data()) - a.dot(m);
   }
   const BasisMatrix<M>& B = basis_matrix<M>(grid);
   return (B.w * (B.phi * a).array().exp()).sum() - a.dot(m);

@@ -46,28 +46,38 @@ EquilibriumTensorKernel::EquilibriumTensorKernel(const VelocityGrid& grid) {
   for (int i = 0; i < n1_; ++i) x_[i] = grid.c[grid.index(i, 0, 0)][0] * inv_s;
   for (int j = 0; j < n2_; ++j) y_[j] = grid.c[grid.index(0, j, 0)][1] * inv_s;
   for (int l = 0; l < n3_; ++l) z_[l] = grid.c[grid.index(0, 0, l)][2] * inv_s;
-  w_ = grid.w[0];
-  // The ordinates must be exactly the product of the axes (and the weights one value).
+  wx_ = grid.axis_weight[0];
+  wy_ = grid.axis_weight[1];
+  wz_ = grid.axis_weight[2];
+  if (static_cast<int>(wx_.size()) != n1_ || static_cast<int>(wy_.size()) != n2_ ||
+      static_cast<int>(wz_.size()) != n3_)
+    return;
+  // The ordinates must be exactly the product of the axes, and the weights of theirs.
   for (int i = 0; i < n1_; ++i)
     for (int j = 0; j < n2_; ++j)
       for (int l = 0; l < n3_; ++l) {
         const Index k = grid.index(i, j, l);
         const Vec3 xi = grid.c[k] * inv_s;
-        if (xi[0] != x_[i] || xi[1] != y_[j] || xi[2] != z_[l] || grid.w[k] != w_) return;
+        if (xi[0] != x_[i] || xi[1] != y_[j] || xi[2] != z_[l] ||
+            grid.w[k] != wx_[i] * wy_[j] * wz_[l])
+          return;
       }
-  auto powers = [](const std::vector<Real>& v, std::array<std::vector<Real>, 5>& p) {
+  // Weighted powers w_i v_i^p: the nested sums carry the weights with the powers.
+  auto powers = [](const std::vector<Real>& v, const std::vector<Real>& w,
+                   std::array<std::vector<Real>, 5>& p) {
     for (auto& e : p) e.resize(v.size());
     for (std::size_t i = 0; i < v.size(); ++i) {
-      p[0][i] = 1.0;
-      p[1][i] = v[i];
-      p[2][i] = v[i] * v[i];
-      p[3][i] = p[2][i] * v[i];
-      p[4][i] = p[2][i] * p[2][i];
+      const Real v2 = v[i] * v[i];
+      p[0][i] = w[i];
+      p[1][i] = w[i] * v[i];
+      p[2][i] = w[i] * v2;
+      p[3][i] = w[i] * v2 * v[i];
+      p[4][i] = w[i] * v2 * v2;
     }
   };
-  powers(x_, xp_);
-  powers(y_, yp_);
-  powers(z_, zp_);
+  powers(x_, wx_, xp_);
+  powers(y_, wy_, yp_);
+  powers(z_, wz_, zp_);
   for (int p = 0; p < 5; ++p) {
     xs_[p].resize(n1_);
     ys_[p].resize(n2_);
@@ -122,8 +132,7 @@ void EquilibriumTensorKernel::nested_moments(const Real* g,
       Real t[P] = {};
       for (int l = 0; l < n3_; ++l) {
         const Real v = gl[l];
-        t[0] += v;
-        for (int r = 1; r < P; ++r) t[r] += v * zp[r][l];
+        for (int r = 0; r < P; ++r) t[r] += v * zp[r][l];
       }
       for (int q = 0; q < P; ++q) {
         const Real yq = yp[q][j];
@@ -136,9 +145,18 @@ void EquilibriumTensorKernel::nested_moments(const Real* g,
         for (int r = 0; p + q + r < P; ++r) mu[monomial(p, q, r)] += x * s[q][r];
     }
   }
-  for (int p = 0; p < P; ++p)
-    for (int q = 0; p + q < P; ++q)
-      for (int r = 0; p + q + r < P; ++r) mu[monomial(p, q, r)] *= w_;
+}
+
+Real EquilibriumTensorKernel::weighted_sum(const Real* g) const {
+  Real sum = 0;
+  for (int i = 0; i < n1_; ++i)
+    for (int j = 0; j < n2_; ++j) {
+      const Real* gl = g + (Index(i) * n2_ + j) * n3_;
+      Real t = 0;
+      for (int l = 0; l < n3_; ++l) t += gl[l] * wz_[l];
+      sum += wx_[i] * wy_[j] * t;
+    }
+  return sum;
 }
 
 template <int D>
@@ -152,19 +170,19 @@ void EquilibriumTensorKernel::central_moments(const Real* g, Real& rho, Vec3& u,
   nested_moments<1>(g, xp_, yp_, zp_, mu);
   rho = mu[monomial(0, 0, 0)];
   u = Vec3(mu[monomial(1, 0, 0)], mu[monomial(0, 1, 0)], mu[monomial(0, 0, 1)]) / rho;
-  auto shifted = [](const std::vector<Real>& axis, Real shift,
+  auto shifted = [](const std::vector<Real>& axis, const std::vector<Real>& w, Real shift,
                     std::array<std::vector<Real>, 5>& p) {
     for (std::size_t i = 0; i < axis.size(); ++i) {
       const Real v = axis[i] - shift;
-      p[0][i] = 1.0;
-      p[1][i] = v;
-      p[2][i] = v * v;
-      p[3][i] = p[2][i] * v;
+      p[0][i] = w[i];
+      p[1][i] = w[i] * v;
+      p[2][i] = w[i] * v * v;
+      p[3][i] = w[i] * v * v * v;
     }
   };
-  shifted(x_, u[0], xs_);
-  shifted(y_, u[1], ys_);
-  shifted(z_, u[2], zs_);
+  shifted(x_, wx_, u[0], xs_);
+  shifted(y_, wy_, u[1], ys_);
+  shifted(z_, wz_, u[2], zs_);
   nested_moments<3>(g, xs_, ys_, zs_, mu);
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 3; ++b) {

@@ -36,6 +36,32 @@ Real largest_extent(const FaceGraph& g) {
 
 }  // namespace
 
+VelocityGrid read_velocity_grid(const CaseNode& vg, Real thermal_speed) {
+  const std::vector<Real> points = vg.get_reals("points");
+  if (points.size() != 3) vg.fail("points", "expected 3 numbers [N1, N2, N3]");
+  std::array<int, 3> n;
+  for (int d = 0; d < 3; ++d) {
+    if (!(points[d] >= 2 && points[d] <= 200 && points[d] == std::floor(points[d])))
+      vg.fail("points", "each must be an integer in [2, 200]");
+    n[d] = static_cast<int>(points[d]);
+  }
+  const std::string type = vg.get_choice("type", velocity_rule_names(), "uniform");
+  const Real extent = vg.get_real("extent", 3.5, Range::positive());
+  const Real stretch = vg.get_real("stretch", 3.0, Range::positive());
+  std::array<VelocityRule, 3> rule;
+  Vec3 extents;
+  static const char* const kAxes[3] = {"x", "y", "z"};
+  for (int d = 0; d < 3; ++d) {
+    const CaseNode axis = vg.child_or_empty(kAxes[d]);
+    rule[d] = velocity_rule_from_name(axis.get_choice("type", velocity_rule_names(), type));
+    extents[d] = axis.get_real("extent", extent, Range::positive());
+    if (rule[d] == VelocityRule::HalfRangeHermite && n[d] % 2 != 0)
+      vg.fail("points", std::string("half_range_hermite along ") + kAxes[d] +
+                            " needs an even number of points");
+  }
+  return VelocityGrid::product(rule, n, extents, stretch, thermal_speed);
+}
+
 KineticSolverSettings read_kinetic_solver_settings(const CaseNode& node) {
   KineticSolverSettings s;
   std::vector<std::string> names;
@@ -86,18 +112,8 @@ KineticScene build_kinetic_scene(const CaseNode& root, const std::string& case_d
                         : Vec3::Zero();
   scene.knudsen = gas.knudsen(scene.initial.rho, scene.initial.T, scene.reference_length);
 
-  const CaseNode vg = root.child("velocity_grid");
-  const std::vector<Real> points = vg.get_reals("points");
-  if (points.size() != 3) vg.fail("points", "expected 3 numbers [N1, N2, N3]");
-  int n[3];
-  for (int d = 0; d < 3; ++d) {
-    if (!(points[d] >= 2 && points[d] <= 200 && points[d] == std::floor(points[d])))
-      vg.fail("points", "each must be an integer in [2, 200]");
-    n[d] = static_cast<int>(points[d]);
-  }
-  const Real extent = vg.get_real("extent", 3.5, Range::positive());
   VelocityGrid grid =
-      VelocityGrid::uniform(n[0], n[1], n[2], extent * gas.thermal_speed(scene.initial.T));
+      read_velocity_grid(root.child("velocity_grid"), gas.thermal_speed(scene.initial.T));
 
   std::vector<KineticBoundary> bcs =
       kinetic_boundaries_from_case(root.child("boundaries"), *scene.graph);

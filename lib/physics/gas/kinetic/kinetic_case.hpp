@@ -15,9 +15,12 @@
 //     knudsen: 0.1                       # Kn = lambda / L, lambda = mu/p sqrt(pi R T/2)
 //     reference_length: 1 m              # L (default: the mesh's largest extent)
 //     velocity: [0, 0, 0]                # optional
-//   velocity_grid:
+//   velocity_grid:                       # velocity_grid.hpp, velocity_quadrature.hpp
 //     points: [10, 10, 10]
+//     type: uniform                      # | gauss_hermite | half_range_hermite | sinh_stretched
 //     extent: 3.5                        # half-width in units of sqrt(2 R T_initial)
+//     stretch: 3                         # sinh_stretched: x = E sinh(a s) / sinh(a)
+//     y: {type: half_range_hermite}      # x, y, z: one direction's own type and extent
 //   boundaries: {...}                    # kinetic_boundary.hpp, every patch (periodic
 //                                        # pairs: sequential solver, one rank)
 //   body_force:
@@ -86,6 +89,9 @@ struct KineticScene {
 KineticScene build_kinetic_scene(const CaseNode& root, const std::string& case_dir,
                                  const Communicator& comm = Communicator::serial());
 
+// Reads `velocity_grid:` (above): the product of one rule per direction, velocities in units of
+// thermal_speed (sqrt(2 R T) of the initial state).
+VelocityGrid read_velocity_grid(const CaseNode& velocity_grid, Real thermal_speed);
 // Reads `solver:` (type must be a registered solver).
 KineticSolverSettings read_kinetic_solver_settings(const CaseNode& solver);
 // The transport keys of a node (transport, limiter, limiter_k, boundary_reconstruction; above):

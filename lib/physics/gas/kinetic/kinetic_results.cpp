@@ -1,5 +1,6 @@
 #include "physics/gas/kinetic/kinetic_results.hpp"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -65,9 +66,18 @@ Json kinetic_summary(const KineticScene& scene, const KineticSolveResult& result
                                       {"ghost_exchanges", sent.exchanges},
                                       {"reductions", sent.reductions}};
   }
-  summary["velocity_grid"] = {{"points", op.grid().n},
-                              {"ordinates", op.grid().size()},
-                              {"extent_m_per_s", op.grid().extent.maxCoeff()}};
+  const VelocityGrid& grid = op.grid();
+  nlohmann::json types = nlohmann::json::array(), extents = nlohmann::json::array();
+  for (int d = 0; d < 3; ++d) {
+    types.push_back(velocity_rule_name(grid.rule[d]));
+    // null: a Gauss-Hermite rule (the whole line).
+    extents.push_back(std::isfinite(grid.extent[d]) ? nlohmann::json(grid.extent[d])
+                                                    : nlohmann::json(nullptr));
+  }
+  summary["velocity_grid"] = {{"points", grid.n},
+                              {"ordinates", grid.size()},
+                              {"types", types},
+                              {"extents_m_per_s", extents}};
   summary["initial"] = {{"density", scene.initial.rho},
                         {"temperature", scene.initial.T},
                         {"knudsen", scene.knudsen},

@@ -1,6 +1,7 @@
 #include "physics/gas/kinetic/kinetic_validity.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "parallel/communicator.hpp"
 #include "parallel/distributed_mesh.hpp"
@@ -29,7 +30,12 @@ ValidityReport kinetic_scene_validity(const KineticScene &scene, const Communica
   k.viscosity_max = op.gas().viscosity(k.temperature_max);
   k.gas_constant = op.gas().R;
   k.length = scene.reference_length;
-  k.velocity_extent = op.grid().extent.minCoeff();
+  // The smallest half-width of a truncated rule; a Gauss-Hermite rule covers the whole line.
+  k.velocity_extent = 0;
+  for (int d = 0; d < 3; ++d)
+    if (std::isfinite(op.grid().extent[d]))
+      k.velocity_extent = k.velocity_extent > 0 ? std::min(k.velocity_extent, op.grid().extent[d])
+                                                : op.grid().extent[d];
   // h: the largest over the owned cells of the cell's smallest extent, volume / largest face
   // (a rectangle's shorter side): the resolution across a film or a Couette flow's shear, so
   // a quasi-1D mesh (one wide column) is judged by its rows.
