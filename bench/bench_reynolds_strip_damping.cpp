@@ -16,8 +16,8 @@
 //                                            [--flow-factor-table docs/data/flow_factor_bgk.csv]
 #include <CLI/CLI.hpp>
 #include <cmath>
-#include <nlohmann/json.hpp>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <string>
 #include <vector>

@@ -45,7 +45,8 @@ int run(const DriverOptions& options) {
     results.push_back(compute_flow_factor(options.case_path, options.overrides, point));
     const FlowFactorResult& r = results.back();
     if (!options.quiet)
-      std::fprintf(stderr, "%s: Kn = %-9.4g delta = %-9.4g G = %.6f  Q = %.6f  (%d sweeps, %.1f s)\n",
+      std::fprintf(stderr,
+                   "%s: Kn = %-9.4g delta = %-9.4g G = %.6f  Q = %.6f  (%d sweeps, %.1f s)\n",
                    kProgram, point.knudsen, r.rarefaction_parameter, r.flow_rate, r.flow_factor,
                    r.sweeps, r.seconds);
   }
@@ -92,6 +93,5 @@ int run(const DriverOptions& options) {
 int main(int argc, char** argv) {
   return driver_main(kProgram,
                      "rfmems-flow-factor: the Poiseuille flow factor Q(Kn) of the kinetic gas",
-                     join_schemas({kinetic_case_keys(), flow_factor_case_keys()}), argc, argv,
-                     run);
+                     join_schemas({kinetic_case_keys(), flow_factor_case_keys()}), argc, argv, run);
 }

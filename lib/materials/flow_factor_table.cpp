@@ -84,9 +84,9 @@ FlowFactorTable FlowFactorTable::read(const std::string& path) {
         if (cells[i] == "flow_factor") q_column = static_cast<int>(i);
       }
       if (kn_column < 0 || q_column < 0)
-        throw InputError(fmt::format(
-            "{}:{}: the header must name the columns 'knudsen' and 'flow_factor'", path,
-            line_number));
+        throw InputError(
+            fmt::format("{}:{}: the header must name the columns 'knudsen' and 'flow_factor'", path,
+                        line_number));
       n_columns = cells.size();
       continue;
     }
@@ -114,8 +114,7 @@ FlowFactorTable FlowFactorTable::read(const std::string& path) {
 
 FlowFactorTable::Value FlowFactorTable::evaluate(Real kn) const {
   const std::size_t n = kn_.size();
-  if (!(kn > 0))
-    throw InputError(fmt::format("{}: flow factor asked at Kn = {:g}", source_, kn));
+  if (!(kn > 0)) throw InputError(fmt::format("{}: flow factor asked at Kn = {:g}", source_, kn));
   if (kn < kn_.front()) {
     const Real s = (q_.front() - 1) / kn_.front();
     return {1 + s * kn, s};
@@ -140,8 +139,7 @@ FlowFactorTable::Value FlowFactorTable::evaluate(Real kn) const {
   const Real d00 = 6 * t * (t - 1), d10 = (1 - t) * (1 - 3 * t);
   const Real d01 = -d00, d11 = t * (3 * t - 2);
   const Real y = h00 * y_[i] + h * h10 * slope_[i] + h01 * y_[i + 1] + h * h11 * slope_[i + 1];
-  const Real dy_dx =
-      (d00 * y_[i] + d01 * y_[i + 1]) / h + d10 * slope_[i] + d11 * slope_[i + 1];
+  const Real dy_dx = (d00 * y_[i] + d01 * y_[i + 1]) / h + d10 * slope_[i] + d11 * slope_[i + 1];
   const Real q = std::exp(y);
   return {q, q / kn * dy_dx};
 }

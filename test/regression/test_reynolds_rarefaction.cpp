@@ -88,10 +88,13 @@ TEST(ReynoldsRarefaction, KineticTableAgainstVeijolaOnTheStrip) {
     const double c_veijola = strip_damping(veijola), c_table = strip_damping(kinetic);
     const double q_table = (*table)(kn);
     const double exact = veijola.viscosity / q_table * kW * kW * kW / (kGap * kGap * kGap);
-    std::printf("p_a = %-8g Kn = %-7.4g c Veijola = %.5e, c table = %.5e N s/m^2, "
-                "table / Veijola = %.4f\n",
-                pa, kn, c_veijola, c_table, c_table / c_veijola);
+    std::printf(
+        "p_a = %-8g Kn = %-7.4g c Veijola = %.5e, c table = %.5e N s/m^2, "
+        "table / Veijola = %.4f\n",
+        pa, kn, c_veijola, c_table, c_table / c_veijola);
     EXPECT_NEAR(c_table / exact / discretisation, 1.0, 1e-6) << pa;
-    if (kn <= 10) EXPECT_NEAR(c_table / c_veijola, 1.0, 0.05) << pa;
+    if (kn <= 10) {
+      EXPECT_NEAR(c_table / c_veijola, 1.0, 0.05) << pa;
+    }
   }
 }

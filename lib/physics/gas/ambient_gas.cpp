@@ -6,7 +6,6 @@
 #include <string>
 
 #include "core/error.hpp"
-
 #include "io/case_schema_yaml.hpp"
 
 namespace rfmems {
@@ -29,8 +28,8 @@ AmbientGas read_ambient_gas(const CaseNode& gas, bool pressure_required) {
       g.viscosity / g.ambient_pressure * std::sqrt(M_PI * kAirGasConstant * a.temperature / 2);
   g.mean_free_path =
       gas.get_quantity("mean_free_path", Dimension::Length, lambda, Range::positive());
-  const std::string rarefaction = gas.get_choice("rarefaction", {"veijola", "none", "table"},
-                                                 "veijola");
+  const std::string rarefaction =
+      gas.get_choice("rarefaction", {"veijola", "none", "table"}, "veijola");
   g.rarefaction = rarefaction == "veijola" ? Rarefaction::Veijola
                   : rarefaction == "table" ? Rarefaction::Table
                                            : Rarefaction::None;

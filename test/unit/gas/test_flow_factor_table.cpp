@@ -154,6 +154,6 @@ TEST(GasProperties, TableRarefactionUsesTheTable) {
   gas.flow_factor_table = std::make_shared<const FlowFactorTable>(veijola_table());
   EXPECT_NEAR(gas.rarefaction_factor(0.1), veijola(0.1), 1e-12);
   EXPECT_EQ(gas.rarefaction_factor_derivative(0.37), gas.flow_factor_table->evaluate(0.37).dq_dkn);
-  EXPECT_NEAR(gas.effective_viscosity(101325.0, 2e-6), gas.viscosity / gas.rarefaction_factor(0.034),
-              1e-15);
+  EXPECT_NEAR(gas.effective_viscosity(101325.0, 2e-6),
+              gas.viscosity / gas.rarefaction_factor(0.034), 1e-15);
 }

@@ -2,11 +2,12 @@
 // differences of its residual: dF/dp + c_j dF/dp' and dF/dg + c_j dF/dg', on a skewed,
 // jittered, graded mesh, with Veijola rarefaction at 1 atm (Kn ~ 0.03) and at 1 kPa
 // (Kn ~ 3, where the rarefaction factor dominates D), and with the kinetic flow-factor table
-// (docs/data/flow_factor_bgk.csv), random positive p and gap, Open and Wall edges. Every entry (also those outside the pattern, which must be zero) is compared;
-// c_j = 0 checks the flux part, c_j = 1e7 /s puts the storage part at the same scale.
-// (test/support/jacobian_check.hpp takes one step for y and y'; here the rate step must be
-// much larger than the state step, so the comparison is written out.) The IDA adaptor's
-// Jacobian is checked in both of its unknowns (p, and p g / g_ref).
+// (docs/data/flow_factor_bgk.csv), random positive p and gap, Open and Wall edges. Every entry
+// (also those outside the pattern, which must be zero) is compared; c_j = 0 checks the flux part,
+// c_j = 1e7 /s puts the storage part at the same scale. (test/support/jacobian_check.hpp takes one
+// step for y and y'; here the rate step must be much larger than the state step, so the comparison
+// is written out.) The IDA adaptor's Jacobian is checked in both of its unknowns (p, and p g /
+// g_ref).
 #include <gtest/gtest.h>
 
 #include <cmath>

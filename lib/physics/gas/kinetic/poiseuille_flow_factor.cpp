@@ -63,9 +63,10 @@ FlowFactorResult compute_flow_factor(const std::string& case_path,
   KineticOperator& op = *scene.op;
   const KineticReference ref = kinetic_reference(scene);
   if (!(ref.body_force > 0))
-    throw InputError(fmt::format("{}: the flow factor needs a body-force-driven channel "
-                                 "(body_force.acceleration along x, periodic sides)",
-                                 case_path));
+    throw InputError(
+        fmt::format("{}: the flow factor needs a body-force-driven channel "
+                    "(body_force.acceleration along x, periodic sides)",
+                    case_path));
 
   // The slip-flow start between the walls at the mesh's lowest and highest y.
   Real y0 = std::numeric_limits<Real>::infinity(), y1 = -y0;
@@ -93,8 +94,8 @@ FlowFactorResult compute_flow_factor(const std::string& case_path,
   op.update_collision(f);
   const Json summary = kinetic_summary(scene, result, f);
   if (!summary.contains("flow_rate"))
-    throw InputError(fmt::format("{}: no periodic patch the body force drives the gas out of",
-                                 case_path));
+    throw InputError(
+        fmt::format("{}: no periodic patch the body force drives the gas out of", case_path));
 
   FlowFactorResult r;
   r.point = point;
@@ -111,7 +112,8 @@ std::string flow_factor_csv(const std::vector<FlowFactorResult>& results,
                             const std::vector<std::string>& header) {
   std::string out;
   for (const std::string& line : header) out += "# " + line + "\n";
-  out += "knudsen,delta,flow_rate,flow_factor,cells,velocity_points,sweeps,residual_ratio,seconds\n";
+  out +=
+      "knudsen,delta,flow_rate,flow_factor,cells,velocity_points,sweeps,residual_ratio,seconds\n";
   for (const FlowFactorResult& r : results) {
     const auto& n = r.point.velocity_points;
     out += fmt::format("{:.6g},{:.8g},{:.8g},{:.8g},{},{}x{}x{},{},{:.2e},{:.2f}\n",
