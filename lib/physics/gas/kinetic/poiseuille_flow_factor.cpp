@@ -68,13 +68,11 @@ FlowFactorResult compute_flow_factor(const std::string& case_path,
                     "(body_force.acceleration along x, periodic sides)",
                     case_path));
 
-  // The slip-flow start between the walls at the mesh's lowest and highest y.
-  Real y0 = std::numeric_limits<Real>::infinity(), y1 = -y0;
-  for (const Vec3& x : scene.mesh->nodes()) {
-    y0 = std::min(y0, x.y());
-    y1 = std::max(y1, x.y());
-  }
-  const Real H = y1 - y0, delta = ref.rarefaction_parameter;
+  // The slip-flow start between the walls at y0, the mesh's lowest y, and y0 + H (H the
+  // reference length: the mesh may be the half channel below a symmetry plane).
+  Real y0 = std::numeric_limits<Real>::infinity();
+  for (const Vec3& x : scene.mesh->nodes()) y0 = std::min(y0, x.y());
+  const Real H = ref.reference_length, y1 = y0 + H, delta = ref.rarefaction_parameter;
   const Vec3 direction = scene.body_force / scene.body_force.norm();
   const Real scale = ref.density * ref.body_force / (2 * ref.viscosity);
   std::vector<Real> f(op.size());

@@ -1,7 +1,8 @@
 // The Poiseuille flow factor Q(Kn) of the kinetic gas: the rfmems-flow-factor driver's model.
 //
 // A case is a body-force-driven channel (cases/gas_poiseuille: diffuse walls bottom and top
-// across y, periodic sides, body force along x; kinetic_case.hpp) plus a list of points:
+// across y, or the half channel below a symmetry plane, periodic sides, body force along x,
+// the channel's width H as initial.reference_length; kinetic_case.hpp) plus a list of points:
 //
 //   flow_factor:
 //     points:
@@ -20,7 +21,7 @@
 //
 // The iteration starts from the local Maxwellian of the first-order slip solution,
 //   u_x(y) = (rho0 a / (2 mu0)) ((y - y0) (y1 - y) + sigma_P (H / delta) H),  sigma_P = 1.0162,
-// (walls at y0 and y1, H = y1 - y0) rather than the gas at rest: near the continuum the
+// (walls at y0, the mesh's lowest y, and y1 = y0 + H) rather than the gas at rest: near the continuum the
 // sequential solver's slowest mode is that parabola (its sweeps grow as delta^2), and the
 // start removes most of it.
 #pragma once
