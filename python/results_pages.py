@@ -408,6 +408,25 @@ def flow_factor_strip_damping():
     return markdown(out)
 
 
+def flow_factor_switch_plate():
+    """rfmems-pullin on cases/switch_plate with gas.rarefaction veijola and table
+    (docs/data/flow_factor_switch_plate.jsonl: one --json summary per line, each with the
+    rarefaction it ran with)."""
+    runs = read_jsonl(DATA / "flow_factor_switch_plate.jsonl")
+    out = [["film rarefaction", "damping ratio (small signal)", "frequency [kHz]", "V_PI dynamic [V]",
+            "t_PI [us]", "V_PI quasi-static [V]"]]
+    for x in runs:
+        p = x["pull_in"]
+        out.append([x["rarefaction"], f"{p['small_signal']['damping_ratio']:.5f}",
+                    f"{p['small_signal']['frequency'] / 1e3:.3f}", f"{p['pull_in_voltage']:.2f}",
+                    f"{1e6 * p['pull_in_time']:.3f}", f"{p['quasi_static']['pull_in_voltage']:.2f}"])
+    a, b = runs[0]["pull_in"], runs[1]["pull_in"]
+    return markdown(out) + (
+        f"\n{runs[1]['rarefaction']} over {runs[0]['rarefaction']}: damping ratio "
+        f"{b['small_signal']['damping_ratio'] / a['small_signal']['damping_ratio']:.4f}, pull-in time "
+        f"{b['pull_in_time'] / a['pull_in_time']:.4f}.\n")
+
+
 TABLES = {
     "verification-checks": csv_table("verification_checks.csv"),
     "performance-ratios": csv_table("performance_ratios.csv"),
@@ -433,6 +452,7 @@ TABLES = {
     "modal-bias": modal_bias,
     "flow-factor-table": flow_factor_table,
     "flow-factor-strip-damping": flow_factor_strip_damping,
+    "flow-factor-switch-plate": flow_factor_switch_plate,
 }
 
 
