@@ -2,7 +2,8 @@
 """The Poiseuille flow factor Q(Kn) of a flow-factor table (rfmems-flow-factor) against
 Veijola's fit Q = 1 + 9.638 Kn^1.159, the first-order slip form 1 + 6 sigma_P (2 / sqrt(pi)) Kn
 (BGK: sigma_P = 1.0162) and, if given, the linearised BGK reference
-(python/flow_factor_reference.py): Q on log axes above, the deviations in % below.
+(python/flow_factor_reference.py): Q on log axes above, below in % the fit's error against the
+kinetic Q and the kinetic Q's against the reference.
 
   plot_flow_factor.py docs/data/flow_factor_bgk.csv \
       --reference docs/data/flow_factor_bgk_reference.csv -o docs/figures/flow_factor.png
@@ -43,7 +44,8 @@ def main():
                      label="Veijola +- 5 %")
     top.loglog(fine, slip, "k:", lw=1, label="first-order slip, BGK")
     top.loglog(kn, q, "o", color="C0", label="kinetic (rfmems-flow-factor)")
-    bottom.semilogx(kn, 100 * (q / veijola(kn) - 1), "o-", color="C0", label="kinetic / Veijola")
+    bottom.semilogx(kn, 100 * (veijola(kn) / q - 1), "o-", color="C0",
+                    label="Veijola's fit against the kinetic Q")
     if args.reference:
         kr, qr = read(args.reference)
         top.loglog(kr, qr, "x", color="C3", label="linearised BGK reference")

@@ -64,6 +64,14 @@ FlowFactorTable::FlowFactorTable(std::vector<Real> knudsen, std::vector<Real> fl
   slope_[n - 1] = secant(n - 2);
   for (std::size_t i = 1; i + 1 < n; ++i)
     slope_[i] = interior_slope(x_[i] - x_[i - 1], x_[i + 1] - x_[i], secant(i - 1), secant(i));
+
+  const Real root_pi = std::sqrt(std::numbers::pi);
+  auto g = [&](std::size_t i) { return root_pi * q_[i] / (12 * kn_[i]); };
+  const Real last_slope = (g(n - 1) - g(n - 2)) / (x_[n - 1] - x_[n - 2]);
+  fm_slope_ = (last_slope + 1 / root_pi) / 2;
+  const Real bound = std::abs(1 / root_pi - last_slope) / 2;
+  const Real log_reach = bound > 0 ? kExtrapolationError * g(n - 1) / bound : HUGE_VAL;
+  max_extrapolated_ = kn_.back() * std::exp(std::min(log_reach, std::log(kMaxReach)));
 }
 
 FlowFactorTable FlowFactorTable::read(const std::string& path) {
@@ -122,12 +130,12 @@ FlowFactorTable::Value FlowFactorTable::evaluate(Real kn) const {
   if (kn > kn_.back()) {
     if (kn > max_extrapolated_knudsen())
       throw InputError(fmt::format(
-          "{}: Kn = {:.4g} is beyond the flow-factor table's free-molecular reach ({:g} x its "
-          "largest Kn {:g}); extend the table (rfmems-flow-factor)",
-          source_, kn, kFreeMolecularReach, kn_.back()));
+          "{}: Kn = {:.4g} is beyond the flow-factor table's free-molecular extrapolation (up to "
+          "Kn = {:.4g}, its largest Kn {:g}); extend the table (rfmems-flow-factor)",
+          source_, kn, max_extrapolated_, kn_.back()));
     const Real root_pi = std::sqrt(std::numbers::pi);
-    const Real g = root_pi * q_.back() / (12 * kn_.back()) + std::log(kn / kn_.back()) / root_pi;
-    return {12 * kn * g / root_pi, 12 * g / root_pi + 12 / std::numbers::pi};
+    const Real g = root_pi * q_.back() / (12 * kn_.back()) + fm_slope_ * std::log(kn / kn_.back());
+    return {12 * kn * g / root_pi, 12 * (g + fm_slope_) / root_pi};
   }
   const Real x = std::log(kn);
   const std::size_t i =

@@ -20,12 +20,16 @@
 //  - continuum end, Kn < Kn_1: first-order slip flow, Q = 1 + s Kn with s = (Q_1 - 1) / Kn_1
 //    (the slip form Q = 1 + 6 sigma_P (2 / sqrt(pi)) Kn, its coefficient taken from the first
 //    node; exact as Kn -> 0, where Q -> 1);
-//  - free-molecular end, Kn_n < Kn <= kFreeMolecularReach Kn_n: G grows by the free-molecular
-//    law's slope, G = G_n + ln(Kn / Kn_n) / sqrt(pi) (Cercignani: G ~ -ln(delta) / sqrt(pi)
-//    as delta -> 0), Q = 12 Kn G / sqrt(pi). The true slope approaches 1 / sqrt(pi) from below
-//    (0.44 between delta = 0.1 and 0.01), so this bounds Q from above, by ~5 % after a decade;
-//  - beyond: InputError naming the table and the Kn (the constant of the log law is not
-//    known past the table).
+//  - free-molecular end, Kn > Kn_n: G = sqrt(pi) Q / (12 Kn) grows linearly in ln Kn towards the
+//    free-molecular law's slope 1 / sqrt(pi) (Cercignani: G ~ -ln(delta) / sqrt(pi) as
+//    delta -> 0), which it approaches from below: past the table the true slope lies between
+//    the last interval's, s_n, and 1 / sqrt(pi). The extrapolation takes their mean,
+//      G = G_n + s ln(Kn / Kn_n),  s = (s_n + 1 / sqrt(pi)) / 2,  Q = 12 Kn G / sqrt(pi),
+//    whose error is at most b ln(Kn / Kn_n) with b = |1 / sqrt(pi) - s_n| / 2, and stops where
+//    that bound reaches kExtrapolationError of G_n (capped at 10 Kn_n): for the kinetic table
+//    (docs/data/flow_factor_bgk.csv, s_n = 0.33 at Kn_n = 10) up to Kn = 24.6;
+//  - beyond: InputError naming the table and the Kn (the log law's constant is not known
+//    further out).
 #pragma once
 #include <string>
 #include <vector>
@@ -36,7 +40,8 @@ namespace rfmems {
 
 class FlowFactorTable {
  public:
-  static constexpr Real kFreeMolecularReach = 10.0;
+  static constexpr Real kExtrapolationError = 0.05;
+  static constexpr Real kMaxReach = 10.0;
 
   // Nodes (Kn_i, Q_i); `source` names the table in error messages (a file, a key). Throws
   // InputError on fewer than two nodes, non-increasing Kn or Q, Kn <= 0 or Q <= 1.
@@ -49,14 +54,16 @@ class FlowFactorTable {
   struct Value {
     Real q, dq_dkn;
   };
-  // Q(Kn) and dQ/dKn; InputError beyond the free-molecular reach.
+  // Q(Kn) and dQ/dKn; InputError beyond max_extrapolated_knudsen().
   Value evaluate(Real kn) const;
   Real operator()(Real kn) const { return evaluate(kn).q; }
 
   Real min_knudsen() const { return kn_.front(); }
   Real max_knudsen() const { return kn_.back(); }
   // The largest Kn evaluate() accepts.
-  Real max_extrapolated_knudsen() const { return kFreeMolecularReach * kn_.back(); }
+  Real max_extrapolated_knudsen() const { return max_extrapolated_; }
+  // The slope s of G in ln Kn past the table.
+  Real free_molecular_slope() const { return fm_slope_; }
   const std::vector<Real>& knudsen() const { return kn_; }
   const std::vector<Real>& flow_factor() const { return q_; }
   const std::string& source() const { return source_; }
@@ -64,6 +71,7 @@ class FlowFactorTable {
  private:
   std::vector<Real> kn_, q_;
   std::vector<Real> x_, y_, slope_;  // ln Kn, ln Q, dy/dx at the nodes
+  Real fm_slope_ = 0, max_extrapolated_ = 0;
   std::string source_;
 };
 
