@@ -21,9 +21,9 @@
 //
 // The iteration starts from the local Maxwellian of the first-order slip solution,
 //   u_x(y) = (rho0 a / (2 mu0)) ((y - y0) (y1 - y) + sigma_P (H / delta) H),  sigma_P = 1.0162,
-// (walls at y0, the mesh's lowest y, and y1 = y0 + H) rather than the gas at rest: near the continuum the
-// sequential solver's slowest mode is that parabola (its sweeps grow as delta^2), and the
-// start removes most of it.
+// (walls at y0, the mesh's lowest y, and y1 = y0 + H) rather than the gas at rest: near the
+// continuum the sequential solver's slowest mode is that parabola (its sweeps grow as delta^2), and
+// the start removes most of it.
 #pragma once
 #include <array>
 #include <string>
