@@ -13,6 +13,7 @@
 #include <fmt/chrono.h>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -51,8 +52,12 @@ int run(const DriverOptions& options) {
                    r.sweeps, r.seconds);
   }
 
+  // One header line: an override's own line breaks become spaces.
   std::string command = fmt::format("{} {}", kProgram, options.case_path);
-  for (const std::string& s : options.overrides) command += " --set '" + s + "'";
+  for (std::string s : options.overrides) {
+    std::replace(s.begin(), s.end(), '\n', ' ');
+    command += " --set '" + s + "'";
+  }
   const std::string output =
       std::filesystem::path(run_case.output).replace_extension(".csv").string();
   const std::vector<std::string> header = {
