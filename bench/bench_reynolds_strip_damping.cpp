@@ -7,13 +7,19 @@
 // per pressure of the sweep: the damping per unit length c = -F / (g' L), the analytic
 // mu_eff w^3 / g^3 it must equal up to the scheme's factor 1 + 2 (h/w)^2
 // (test_reynolds_rarefaction.cpp), and the CPU seconds of the solve (the cost per point to
-// set against the ESBGK runs of python/gas_damping_regimes_study.py).
+// set against the ESBGK runs of python/gas_damping_regimes_study.py). With a flow-factor table
+// (materials/flow_factor_table.hpp), the same strip with the table's Q(Kn) in place of
+// Veijola's fit too, where the table reaches (docs/gas_damping.md "Kinetic flow factor against
+// Veijola's fit").
 //
 //   build/bench/bench_reynolds_strip_damping [--cells 100] [--repeat 20]
+//                                            [--flow-factor-table docs/data/flow_factor_bgk.csv]
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "bench_support.hpp"
@@ -49,11 +55,16 @@ Real strip_damping(Real width, const GasProperties& gas, int cells) {
 
 int main(int argc, char** argv) {
   int cells = 100, repeat = 20;
+  std::string table_path;
   CLI::App app{
       "bench_reynolds_strip_damping: Reynolds/Veijola damping of the regime study's strip"};
   app.add_option("--cells", cells, "cells across the strip");
   app.add_option("--repeat", repeat, "solves per point (the CPU time is their mean)");
+  app.add_option("--flow-factor-table", table_path, "also the film with this Q(Kn) table");
   CLI11_PARSE(app, argc, argv);
+  std::shared_ptr<const FlowFactorTable> table;
+  if (!table_path.empty())
+    table = std::make_shared<const FlowFactorTable>(FlowFactorTable::read(table_path));
   const double load = [] {
     double l[1] = {0};
     return getloadavg(l, 1) == 1 ? l[0] : -1.0;
@@ -82,6 +93,16 @@ int main(int argc, char** argv) {
     j["fv_over_analytic"] = c / exact;
     j["cpu_seconds_per_solve"] = cpu;
     j["load_average"] = load;
+    if (table && kn <= table->max_extrapolated_knudsen()) {
+      GasProperties kinetic = gas;
+      kinetic.rarefaction = Rarefaction::Table;
+      kinetic.flow_factor_table = table;
+      const Real c_table = strip_damping(kW, kinetic, cells);
+      j["flow_factor_veijola"] = gas.rarefaction_factor(kn);
+      j["flow_factor_table"] = kinetic.rarefaction_factor(kn);
+      j["reynolds_table"] = c_table;
+      j["table_over_veijola"] = c_table / c;
+    }
     bench::emit(j);
   }
 }

@@ -471,6 +471,72 @@ def velocity_grids_goal():
     return markdown(rows)
 
 
+def comment_lines(name):
+    """The '#' lines of a data file under docs/data/, without the '# '."""
+    return [line[2:].rstrip("\n") for line in open(DATA / name) if line.startswith("# ")]
+
+
+def flow_factor_table():
+    """rfmems-flow-factor's Q(Kn) (docs/data/flow_factor_bgk.csv) against the linearised BGK
+    reference (python/flow_factor_reference.py) and Veijola's fit Q = 1 + 9.638 Kn^1.159."""
+    with open(DATA / "flow_factor_bgk.csv", newline="") as f:
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+    with open(DATA / "flow_factor_bgk_reference.csv", newline="") as f:
+        ref = {r["knudsen"]: r for r in csv.DictReader(line for line in f if not line.startswith("#"))}
+    out = [["Kn", "delta", "cells", "velocities", "sweeps", "time [s]", "Q kinetic", "Q linearised BGK",
+            "kinetic error", "Q Veijola", "Veijola error"]]
+    worst_ref = worst_veijola = seconds = 0.0
+    for r in rows:
+        kn, q = float(r["knudsen"]), float(r["flow_factor"])
+        q_ref = float(ref[r["knudsen"]]["flow_factor"])
+        q_v = 1 + 9.638 * kn ** 1.159
+        worst_ref = max(worst_ref, abs(q / q_ref - 1))
+        worst_veijola = max(worst_veijola, abs(q_v / q - 1))
+        seconds += float(r["seconds"])
+        out.append([f"{kn:.4g}", f"{float(r['delta']):.4g}", r["cells"], r["velocity_points"].replace("x", " x "),
+                    r["sweeps"], r["seconds"], f"{q:.5f}", f"{q_ref:.5f}", f"{100 * (q / q_ref - 1):+.3f} %",
+                    f"{q_v:.5f}", f"{100 * (q_v / q - 1):+.2f} %"])
+    head = comment_lines("flow_factor_bgk.csv")
+    return markdown(out) + (
+        f"\nKinetic error: Q against the linearised BGK reference, largest **{100 * worst_ref:.2f} %**. "
+        f"Veijola error: his fit against the kinetic Q, largest **{100 * worst_veijola:.2f} %** at the "
+        f"nodes (his stated accuracy: 5 %). The solves' time "
+        f"summed {seconds:.0f} s. Table: `{head[1].removeprefix('command: ')}`, {head[2].removeprefix('date: ')}; "
+        f"reference: `{comment_lines('flow_factor_bgk_reference.csv')[1].removeprefix('command: ')}`.\n")
+
+
+def flow_factor_strip_damping():
+    """bench_reynolds_strip_damping --flow-factor-table: the strip's Reynolds damping with
+    Veijola's fit and with the kinetic table."""
+    rows = [x for x in read_jsonl(DATA / "flow_factor_strip_damping.jsonl") if "reynolds_table" in x]
+    out = [["p [Pa]", "Kn", "Q Veijola", "Q table", "c Veijola [N s/m^2]", "c table [N s/m^2]",
+            "table / Veijola"]]
+    for x in rows:
+        out.append([f"{x['pressure']:g}", f"{x['knudsen']:.3g}", f"{x['flow_factor_veijola']:.4f}",
+                    f"{x['flow_factor_table']:.4f}", f"{x['reynolds_veijola']:.4e}",
+                    f"{x['reynolds_table']:.4e}", f"{x['table_over_veijola']:.4f}"])
+    return markdown(out)
+
+
+def flow_factor_switch_plate():
+    """rfmems-pullin on cases/switch_plate with gas.rarefaction veijola and table
+    (docs/data/flow_factor_switch_plate.jsonl: one --json summary per line, each with the
+    rarefaction it ran with)."""
+    runs = read_jsonl(DATA / "flow_factor_switch_plate.jsonl")
+    out = [["film rarefaction", "damping ratio (small signal)", "frequency [kHz]", "V_PI dynamic [V]",
+            "t_PI [us]", "V_PI quasi-static [V]"]]
+    for x in runs:
+        d, q = x["pull_in"]["dynamic"], x["pull_in"]["quasi_static"]
+        out.append([x["rarefaction"], f"{d['small_signal']['damping_ratio']:.5f}",
+                    f"{d['small_signal']['frequency'] / 1e3:.3f}", f"{d['pull_in_voltage']:.2f}",
+                    f"{1e6 * d['pull_in_time']:.3f}", f"{q['pull_in_voltage']:.2f}"])
+    a, b = runs[0]["pull_in"]["dynamic"], runs[1]["pull_in"]["dynamic"]
+    return markdown(out) + (
+        f"\n{runs[1]['rarefaction']} over {runs[0]['rarefaction']}: damping ratio "
+        f"{b['small_signal']['damping_ratio'] / a['small_signal']['damping_ratio']:.4f}, pull-in time "
+        f"{b['pull_in_time'] / a['pull_in_time']:.4f}.\n")
+
+
 TABLES = {
     "verification-checks": csv_table("verification_checks.csv"),
     "performance-ratios": csv_table("performance_ratios.csv"),
@@ -499,6 +565,9 @@ TABLES = {
     "residual-stress-switch": residual_stress_switch,
     "velocity-grids": velocity_grids,
     "velocity-grids-goal": velocity_grids_goal,
+    "flow-factor-table": flow_factor_table,
+    "flow-factor-strip-damping": flow_factor_strip_damping,
+    "flow-factor-switch-plate": flow_factor_switch_plate,
 }
 
 

@@ -13,7 +13,7 @@ SRC="$2"
 source "$SRC/test/drivers/common.sh"
 export RFMEMS_CHECK_CASE_SCHEMA=1
 
-for driver in rfmems-solid rfmems-pullin rfmems-gas rfmems-creep; do
+for driver in rfmems-solid rfmems-pullin rfmems-gas rfmems-creep rfmems-flow-factor; do
   if "$BIN/$driver" --help-case >"$WORK/$driver.keys" 2>"$WORK/$driver.err" &&
      head -1 "$WORK/$driver.keys" | grep -q "^# Case keys of $driver$" &&
      [ "$(grep -c '^| `' "$WORK/$driver.keys")" -ge 20 ]; then
@@ -55,7 +55,7 @@ while read -r name driver; do
   else
     fail "rfmems-$driver cases/$name --check: exit $code, $(cat "$WORK/$name.err")"
   fi
-done < <(sed -nE 's/^\| `(\w+)` \((\w+).*/\1 \2/p' "$SRC/README.md")
+done < <(sed -nE 's/^\| `(\w+)` \(([a-z-]+).*/\1 \2/p' "$SRC/README.md")
 
 # --check still refuses a typo (exit 2, one line).
 DRIVER="$BIN/rfmems-solid"

@@ -8,9 +8,15 @@
 //   c_FV = mu_eff(p_a) W^3 / g^3 (1 + 2 (h/W)^2)
 // to 1e-6, and their ratio c(1 kPa)/c(1 atm) = Q(1 atm)/Q(1 kPa) = 0.02876. The
 // continuum model (Rarefaction::None) gives the same damping at both pressures.
+// The same strip both ways, Veijola's fit and the kinetic solver's flow-factor table
+// (docs/data/flow_factor_bgk.csv), from 1 atm to 300 Pa (Kn 0.034 to 11.5, the last beyond the
+// table's Kn = 10, on its free-molecular extrapolation): each damping is its own mu_eff W^3 / g^3
+// to 1e-6, so their ratio is Q_Veijola / Q_table, within Veijola's 5 % up to Kn = 10.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
+#include <string>
 
 #include "mesh/structured_mesh.hpp"
 #include "physics/gas/reynolds_film.hpp"
@@ -68,3 +74,27 @@ TEST(ReynoldsRarefaction, DampingFollowsTheVeijolaFactor) {
 }
 
 }  // namespace
+
+TEST(ReynoldsRarefaction, KineticTableAgainstVeijolaOnTheStrip) {
+  const auto table = std::make_shared<const FlowFactorTable>(
+      FlowFactorTable::read(std::string(RFMEMS_SOURCE_DIR) + "/docs/data/flow_factor_bgk.csv"));
+  const double discretisation = 1 + 2.0 / (kCells * kCells);
+  for (double pa : {101325.0, 1e4, 1e3, 300.0}) {
+    GasProperties veijola, kinetic;
+    veijola.ambient_pressure = kinetic.ambient_pressure = pa;
+    kinetic.rarefaction = Rarefaction::Table;
+    kinetic.flow_factor_table = table;
+    const double kn = veijola.knudsen(pa, kGap);
+    const double c_veijola = strip_damping(veijola), c_table = strip_damping(kinetic);
+    const double q_table = (*table)(kn);
+    const double exact = veijola.viscosity / q_table * kW * kW * kW / (kGap * kGap * kGap);
+    std::printf(
+        "p_a = %-8g Kn = %-7.4g c Veijola = %.5e, c table = %.5e N s/m^2, "
+        "table / Veijola = %.4f\n",
+        pa, kn, c_veijola, c_table, c_table / c_veijola);
+    EXPECT_NEAR(c_table / exact / discretisation, 1.0, 1e-6) << pa;
+    if (kn <= 10) {
+      EXPECT_NEAR(c_table / c_veijola, 1.0, 0.05) << pa;
+    }
+  }
+}

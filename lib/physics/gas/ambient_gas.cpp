@@ -1,7 +1,11 @@
 #include "physics/gas/ambient_gas.hpp"
 
 #include <cmath>
+#include <filesystem>
+#include <memory>
+#include <string>
 
+#include "core/error.hpp"
 #include "io/case_schema_yaml.hpp"
 
 namespace rfmems {
@@ -24,9 +28,25 @@ AmbientGas read_ambient_gas(const CaseNode& gas, bool pressure_required) {
       g.viscosity / g.ambient_pressure * std::sqrt(M_PI * kAirGasConstant * a.temperature / 2);
   g.mean_free_path =
       gas.get_quantity("mean_free_path", Dimension::Length, lambda, Range::positive());
-  g.rarefaction = gas.get_choice("rarefaction", {"veijola", "none"}, "veijola") == "veijola"
-                      ? Rarefaction::Veijola
-                      : Rarefaction::None;
+  const std::string rarefaction =
+      gas.get_choice("rarefaction", {"veijola", "none", "table"}, "veijola");
+  g.rarefaction = rarefaction == "veijola" ? Rarefaction::Veijola
+                  : rarefaction == "table" ? Rarefaction::Table
+                                           : Rarefaction::None;
+  const bool table = g.rarefaction == Rarefaction::Table;
+  if (table || gas.has("flow_factor_table")) {
+    const std::string file = gas.get_string("flow_factor_table");
+    gas.require(table, "flow_factor_table", "read only with rarefaction: table");
+    gas.require(!file.empty(), "flow_factor_table", "expected a file name");
+    std::filesystem::path path(file);
+    if (path.is_relative()) path = std::filesystem::path(gas.file()).parent_path() / path;
+    try {
+      g.flow_factor_table = std::make_shared<const FlowFactorTable>(
+          FlowFactorTable::read(path.lexically_normal().string()));
+    } catch (const InputError& e) {
+      gas.require(false, "flow_factor_table", e.what());
+    }
+  }
   return a;
 }
 

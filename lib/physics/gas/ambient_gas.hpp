@@ -8,7 +8,9 @@
 //     viscosity: 1.85e-5 Pa*s    # mu at T0 (air at 300 K)
 //     omega: 0.74                # mu(T) = mu (T / T0)^omega (the kinetic gas's temperature law)
 //     mean_free_path: 67 nm      # lambda at p0 and T0; default mu / p0 sqrt(pi R T0 / 2), air
-//     rarefaction: veijola       # the film's flow factor: veijola | none
+//     rarefaction: veijola       # the film's flow factor: veijola | none | table
+//     flow_factor_table: FILE    # rarefaction: table: Q(Kn) (materials/flow_factor_table.hpp),
+//                                # a path relative to the case file
 //
 // The film's Knudsen number at a local pressure p and gap g is lambda p0 / (p g).
 #pragma once

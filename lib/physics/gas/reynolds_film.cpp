@@ -20,9 +20,11 @@ ReynoldsFilm::ReynoldsFilm(const Mesh& mesh, GasProperties gas,
                      " boundary conditions for " + std::to_string(mesh_.patches().size()) +
                      " mesh patches");
   if (!(gas_.viscosity > 0) || !(gas_.ambient_pressure > 0) ||
-      (gas_.rarefaction == Rarefaction::Veijola &&
+      (gas_.rarefaction != Rarefaction::None &&
        (!(gas_.mean_free_path > 0) || !(gas_.reference_pressure > 0))))
     throw InputError("ReynoldsFilm: viscosity, pressures and mean free path must be > 0");
+  if (gas_.rarefaction == Rarefaction::Table && !gas_.flow_factor_table)
+    throw InputError("ReynoldsFilm: rarefaction table without a flow-factor table");
 
   const Index n = mesh_.n_cells();
   area_.resize(n);

@@ -6,8 +6,10 @@
 //
 // p: film pressure (one unknown per cell), g(x, y, t) > 0: the gap between the plate and the
 // substrate, Q(Kn) = 1 + 9.638 Kn^1.159 with Kn = lambda_ref p_ref / (p g) (Veijola 1995,
-// materials/gas_properties.hpp) or Q = 1. The equation is gas mass conservation (p g ~ mass
-// per area for an isothermal ideal gas) with the lubrication (Poiseuille) flux -D grad p.
+// materials/gas_properties.hpp), Q from the kinetic solver's table
+// (materials/flow_factor_table.hpp, monotone cubic in ln Kn with its exact derivative) or
+// Q = 1. The equation is gas mass conservation (p g ~ mass per area for an isothermal ideal
+// gas) with the lubrication (Poiseuille) flux -D grad p.
 //
 // Validity. Lubrication theory: g << plate size, small reduced Reynolds number
 // (rho w L^2 / mu << 1, far below 1 for micron gaps at RF MEMS speeds), isothermal gas (the

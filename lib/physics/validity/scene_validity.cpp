@@ -18,8 +18,16 @@ void check_film(const SceneDescription &s, ValidityReport &r) {
   const Real kn_min = s.gas.knudsen(p, s.gap), kn_max = s.gas.knudsen(p, g_min);
   r.ranges.push_back({"film_knudsen", kn_min, kn_max});
   const bool veijola = s.gas.rarefaction == Rarefaction::Veijola;
+  if (s.gas.rarefaction == Rarefaction::Table) {
+    const Real table_max = s.gas.flow_factor_table->max_knudsen();
+    if (kn_max > table_max)
+      r.warnings.push_back(fmt::format(
+          "Reynolds film: Kn of the local gap reaches {:.3g} (gap {:.3g} um at {:.3g} Pa), beyond "
+          "the flow-factor table's largest Kn {:g} ({}): extrapolated by the free-molecular law",
+          kn_max, g_min * 1e6, p, table_max, s.gas.flow_factor_table->source()));
+  }
   const Real kn_limit = veijola ? C::kVeijolaMaxKnudsen : C::kContinuumMaxKnudsen;
-  if (kn_max > kn_limit)
+  if (s.gas.rarefaction != Rarefaction::Table && kn_max > kn_limit)
     r.warnings.push_back(veijola
                              ? fmt::format("Reynolds film: Kn of the local gap reaches {:.3g} "
                                            "(gap {:.3g} um at "

@@ -11,6 +11,8 @@
 //      rarefaction veijola: Kn <= 880, the range of Veijola's fit (Veijola et al., Sensors and
 //        Actuators A 48 (1995) 239, within 5 % of the Fukui-Kaneko flow rate for 0..880);
 //      rarefaction none: Kn <= 0.01 (no-slip continuum film);
+//      rarefaction table: Kn <= the table's largest Kn (beyond it the free-molecular log law
+//        extrapolates, materials/flow_factor_table.hpp);
 //    large displacement: the deepest equilibrium the run computed (the quasi-static fold)
 //      beyond displacement/gap = 0.5: the film's lubrication flux goes as g^3, so at half the
 //      gap the damping is 8x its value at rest and set by the thinnest region, whose slope the

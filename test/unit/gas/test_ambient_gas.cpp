@@ -4,7 +4,9 @@
 //     at p0 is lambda / g, whatever p0;
 //  2. a given mean free path is lambda at p0: the film's Kn at a pressure p is lambda p0 / (p g);
 //  3. the pressure is required when the gas is on, and optional when it is off; a value out of
-//     range is bad input naming the key.
+//     range is bad input naming the key;
+//  4. rarefaction: table reads gas.flow_factor_table relative to the case file; a missing table,
+//     a table without rarefaction: table, and rarefaction: table without one name the key.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -59,5 +61,34 @@ TEST(AmbientGas, PressureRequiredWhenTheGasIsOn) {
     FAIL() << "a negative pressure was accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("gas.pressure"), std::string::npos) << e.what();
+  }
+}
+
+TEST(AmbientGas, FlowFactorTableIsRelativeToTheCaseFile) {
+  const std::string case_path = std::string(RFMEMS_SOURCE_DIR) + "/cases/switch_plate/case.yaml";
+  auto read_at = [&](const std::string& gas) {
+    const CaseFile cf = CaseFile::parse("gas: " + gas + "\n", case_path);
+    AmbientGas a = read_ambient_gas(cf.root().child("gas"), true);
+    cf.check_all_used();
+    return a;
+  };
+  const AmbientGas a = read_at(
+      "{pressure: 1 atm, rarefaction: table, flow_factor_table: "
+      "../../docs/data/flow_factor_bgk.csv}");
+  ASSERT_EQ(a.film.rarefaction, Rarefaction::Table);
+  ASSERT_TRUE(a.film.flow_factor_table);
+  EXPECT_EQ(a.film.flow_factor_table->knudsen().size(), 13u);
+  EXPECT_NEAR(a.film.flow_factor_table->min_knudsen(), 0.01, 1e-12);
+  // A missing table names the key and the file; a table without `rarefaction: table` is refused.
+  for (const char* gas :
+       {"{pressure: 1 atm, rarefaction: table, flow_factor_table: none.csv}",
+        "{pressure: 1 atm, flow_factor_table: ../../docs/data/flow_factor_bgk.csv}",
+        "{pressure: 1 atm, rarefaction: table}"}) {
+    try {
+      read_at(gas);
+      FAIL() << gas << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("gas.flow_factor_table"), std::string::npos) << e.what();
+    }
   }
 }

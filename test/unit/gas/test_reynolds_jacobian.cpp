@@ -1,17 +1,19 @@
 // The analytic Jacobian blocks of the squeeze-film Reynolds operator against central finite
 // differences of its residual: dF/dp + c_j dF/dp' and dF/dg + c_j dF/dg', on a skewed,
 // jittered, graded mesh, with Veijola rarefaction at 1 atm (Kn ~ 0.03) and at 1 kPa
-// (Kn ~ 3, where the rarefaction factor dominates D), random positive p and gap, Open and
-// Wall edges. Every entry (also those outside the pattern, which must be zero) is compared;
-// c_j = 0 checks the flux part, c_j = 1e7 /s puts the storage part at the same scale.
-// (test/support/jacobian_check.hpp takes one step for y and y'; here the rate step must be
-// much larger than the state step, so the comparison is written out.) The IDA adaptor's
-// Jacobian is checked in both of its unknowns (p, and p g / g_ref).
+// (Kn ~ 3, where the rarefaction factor dominates D), and with the kinetic flow-factor table
+// (docs/data/flow_factor_bgk.csv), random positive p and gap, Open and Wall edges. Every entry
+// (also those outside the pattern, which must be zero) is compared; c_j = 0 checks the flux part,
+// c_j = 1e7 /s puts the storage part at the same scale. (test/support/jacobian_check.hpp takes one
+// step for y and y'; here the rate step must be much larger than the state step, so the comparison
+// is written out.) The IDA adaptor's Jacobian is checked in both of its unknowns (p, and p g /
+// g_ref).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <memory>
 #include <random>
+#include <string>
 
 #include "core/error.hpp"
 #include "mesh/structured_mesh.hpp"
@@ -145,6 +147,33 @@ TEST_P(ReynoldsJacobian, BothBlocksMatchFiniteDifferences) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AmbientPressures, ReynoldsJacobian, ::testing::Values(101325.0, 1000.0));
+
+// The same with the kinetic solver's flow-factor table: at 1 atm inside the table
+// (Kn 0.02 - 0.11), at 1 kPa across its largest Kn (10) into the free-molecular extrapolation.
+TEST(ReynoldsJacobianTable, BothBlocksMatchFiniteDifferences) {
+  Mesh mesh = skewed_mesh();
+  for (double pa : {101325.0, 1000.0}) {
+    GasProperties gas;
+    gas.ambient_pressure = pa;
+    gas.rarefaction = Rarefaction::Table;
+    gas.flow_factor_table = std::make_shared<const FlowFactorTable>(
+        FlowFactorTable::read(std::string(RFMEMS_SOURCE_DIR) + "/docs/data/flow_factor_bgk.csv"));
+    ReynoldsFilm film(mesh, gas, mixed_boundaries(mesh));
+    State s = random_state(film.size(), pa);
+    if (pa < 1e5) {
+      const double kn_max = gas.knudsen(0.6 * pa, 1e-6);
+      ASSERT_GT(kn_max, gas.flow_factor_table->max_knudsen());
+    }
+    for (double c_j : {0.0, 1e7}) {
+      double dp = block_difference(film, Block::Pressure, c_j, s);
+      double dg = block_difference(film, Block::Gap, c_j, s);
+      EXPECT_LE(dp, 1e-6) << "pressure block, p_a = " << pa << ", c_j = " << c_j;
+      EXPECT_LE(dg, 1e-6) << "gap block, p_a = " << pa << ", c_j = " << c_j;
+      std::printf("table, p_a = %g Pa, c_j = %g: pressure block %.2e, gap block %.2e\n", pa, c_j,
+                  dp, dg);
+    }
+  }
+}
 
 TEST(ReynoldsPrescribedMotion, AdaptorJacobianMatchesFiniteDifferences) {
   Mesh mesh = skewed_mesh();
