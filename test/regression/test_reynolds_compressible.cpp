@@ -60,16 +60,29 @@ SpringDamper blech(double sigma, double omega, double pa) {
           64 * sigma * pa * kA * kB / (pi * pi * kGap) * s_damping / omega};
 }
 
-SpringDamper simulate(double sigma, int periods, int nx, int ny) {
+// The plate's a x b mesh, the continuum gas, and w of a squeeze number.
+Mesh plate_mesh(int nx, int ny) {
   BoxSpec spec;
   spec.upper = Vec3(kA, kB, 0);
   spec.n[0] = nx;
   spec.n[1] = ny;
-  Mesh mesh = make_structured_mesh(spec);
+  return make_structured_mesh(spec);
+}
+
+GasProperties continuum_gas() {
   GasProperties gas;
   gas.rarefaction = Rarefaction::None;
-  const double pa = gas.ambient_pressure;
-  const double omega = sigma * pa * kGap * kGap / (12 * gas.viscosity * kB * kB);
+  return gas;
+}
+
+double squeeze_frequency(double sigma, const GasProperties& gas) {
+  return sigma * gas.ambient_pressure * kGap * kGap / (12 * gas.viscosity * kB * kB);
+}
+
+SpringDamper simulate(double sigma, int periods, int nx, int ny) {
+  const Mesh mesh = plate_mesh(nx, ny);
+  const GasProperties gas = continuum_gas();
+  const double pa = gas.ambient_pressure, omega = squeeze_frequency(sigma, gas);
   ReynoldsFilm film(mesh, gas,
                     std::vector<FilmBoundary>(mesh.patches().size(), {FilmBoundary::Kind::Open}));
   auto gap = [&](const Vec3&, double t) { return kGap * (1 + kEps * std::sin(omega * t)); };
@@ -103,8 +116,7 @@ struct Errors {
 
 Errors compare(double sigma, int periods, int nx, int ny, SpringDamper* out = nullptr) {
   const double pa = GasProperties{}.ambient_pressure;
-  const double mu = GasProperties{}.viscosity;
-  const double omega = sigma * pa * kGap * kGap / (12 * mu * kB * kB);
+  const double omega = squeeze_frequency(sigma, continuum_gas());
   SpringDamper exact = blech(sigma, omega, pa);
   SpringDamper fv = simulate(sigma, periods, nx, ny);
   Errors e{fv.spring / exact.spring - 1, fv.damping / exact.damping - 1};
@@ -140,15 +152,9 @@ TEST(ReynoldsCompressible, SpringAndDampingForcesFollowBlech) {
 // k_s and c of the linearised film on nx x ny cells: the force's complex amplitude per unit
 // amplitude of the gap g = g0 + Re(dg exp(i w t)), F = -(k_s + i w c) dg.
 SpringDamper harmonic(double sigma, int nx, int ny, long* factorizations = nullptr) {
-  BoxSpec spec;
-  spec.upper = Vec3(kA, kB, 0);
-  spec.n[0] = nx;
-  spec.n[1] = ny;
-  Mesh mesh = make_structured_mesh(spec);
-  GasProperties gas;
-  gas.rarefaction = Rarefaction::None;
-  const double pa = gas.ambient_pressure;
-  const double omega = sigma * pa * kGap * kGap / (12 * gas.viscosity * kB * kB);
+  const Mesh mesh = plate_mesh(nx, ny);
+  const GasProperties gas = continuum_gas();
+  const double pa = gas.ambient_pressure, omega = squeeze_frequency(sigma, gas);
   ReynoldsFilm film(mesh, gas,
                     std::vector<FilmBoundary>(mesh.patches().size(), {FilmBoundary::Kind::Open}));
   double gap = kGap, rate = 0;
@@ -182,9 +188,9 @@ SpringDamper harmonic(double sigma, int nx, int ny, long* factorizations = nullp
 }  // namespace
 
 TEST(ReynoldsCompressible, HarmonicResponseFollowsBlechAtSecondOrder) {
-  const double pa = GasProperties{}.ambient_pressure, mu = GasProperties{}.viscosity;
+  const double pa = GasProperties{}.ambient_pressure;
   for (const double sigma : {0.5, 5.0, 50.0, 500.0}) {
-    const double omega = sigma * pa * kGap * kGap / (12 * mu * kB * kB);
+    const double omega = squeeze_frequency(sigma, continuum_gas());
     const SpringDamper exact = blech(sigma, omega, pa);
     double spring[3], damping[3];
     const int meshes[3] = {20, 40, 80};
