@@ -10,10 +10,7 @@ line is the error of today's uniform grid, the shaded band a quarter of its velo
 import argparse
 import json
 
-import matplotlib
-
-matplotlib.use("Agg")  # files only, no display needed
-import matplotlib.pyplot as plt  # noqa: E402
+from plotting import plt, run_main, save
 
 PROBLEMS = [("couette", "Couette P"), ("heat", "heat flux q*"), ("poiseuille", "Poiseuille G")]
 STYLE = {"uniform": ("uniform", "o", "k"),
@@ -61,9 +58,8 @@ def main():
     axes[0][0].legend(fontsize=6, loc="lower left")
     fig.suptitle("Velocity grids: error against velocities (dotted: today's uniform grid; "
                  "dashed: 0.2 %; shaded: <= 1/4 of its velocities)", fontsize=9)
-    fig.tight_layout()
-    fig.savefig(args.output, dpi=130)
+    save(fig, args.output, dpi=130)
 
 
 if __name__ == "__main__":
-    main()
+    run_main(main)

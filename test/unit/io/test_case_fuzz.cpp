@@ -31,6 +31,7 @@
 #include "io/run_limits.hpp"
 #include "physics/creep/creep_case.hpp"
 #include "physics/gas/kinetic/kinetic_case.hpp"
+#include "physics/gas/kinetic/poiseuille_flow_factor.hpp"
 #include "physics/structure/structural_analysis.hpp"
 #include "physics/structure/structure_from_case.hpp"
 
@@ -65,6 +66,9 @@ void read_like_driver(const CaseFile& file, const std::string& dir) {
   } else if (root.has("pull_in")) {
     const SwitchScene scene = build_switch_scene(root, dir);
     read_pull_in_settings(root, scene);
+  } else if (root.has("flow_factor")) {  // rfmems-flow-factor: its points, then the channel
+    read_flow_factor_points(root.child("flow_factor"));
+    read_with_input_solves(root, "gas state", [&] { return build_kinetic_scene(root, dir); });
   } else if (root.has("velocity_grid")) {
     read_with_input_solves(root, "gas state", [&] { return build_kinetic_scene(root, dir); });
   } else {
