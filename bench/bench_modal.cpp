@@ -21,7 +21,9 @@
 //              (linearised_modes: the actuation's exact Jacobian, the electrostatic softening
 //              included), against the 1-DOF parallel-plate actuator's omega^2 = (k - eps0 A V^2 /
 //              g^3) / m in its dimensionless form: (f / f0)^2 = 1 - (8/27) v^2 / x^3 with v = V /
-//              V_PI and x = g / g0 from x^2 (1 - x) = (4/27) v^2.
+//              V_PI and x = g / g0 from x^2 (1 - x) = (4/27) v^2 (coupling/bias_modes.hpp, as
+//              rfmems-pullin's pull_in.quasi_static.modes); modal_wall_s is per state, its
+//              re-solve included.
 //
 //   build/bench/bench_modal                       # docs/modal.md's run
 //   build/bench/bench_modal --large-cells 200,50  # a quicker large plate
@@ -33,6 +35,7 @@
 #include <numbers>
 
 #include "bench_support.hpp"
+#include "coupling/bias_modes.hpp"
 #include "coupling/quasi_static_pull_in.hpp"
 #include "coupling/switch_scene.hpp"
 #include "io/case_file.hpp"
@@ -172,64 +175,31 @@ json transient_run(const std::string& cases, double periods, int samples, double
   return j;
 }
 
-// The 1-DOF actuator's x = g / g0 at v = V / V_PI: the root of x^2 (1 - x) = (4/27) v^2 in
-// [2/3, 1] (bisection).
-double lumped_gap(double v) {
-  double lo = 2.0 / 3, hi = 1;
-  for (int i = 0; i < 200; ++i) {
-    const double x = 0.5 * (lo + hi);
-    // x^2 (1 - x) decreases on [2/3, 1]: above the target, the root lies to the right.
-    (x * x * (1 - x) > 4.0 / 27 * v * v ? lo : hi) = x;
-  }
-  return 0.5 * (lo + hi);
-}
-
 std::vector<json> bias_run(const std::string& cases, const std::string& name, int n_points) {
   const std::string dir = cases + "/" + name;
   const CaseFile cf = CaseFile::load(dir + "/case.yaml", {"gas.model=none"});
   SwitchScene scene = build_switch_scene(cf.root(), dir);
-  ParallelPlateActuation& actuation = *scene.actuation;
-  const std::vector<Real> mass = modal_mass(*scene.structure);
   QuasiStaticOptions options;
   options.n_points = n_points;
   const double wall = bench::now();
-  const QuasiStaticPullIn curve = trace_pull_in(actuation, scene.control, options);
+  const QuasiStaticPullIn curve = trace_pull_in(*scene.actuation, scene.control, options);
   const double trace_s = bench::now() - wall;
-  const Index n = actuation.size();
-  // Displacement control continues from a solved, deflected state (structure unknowns, then
-  // V^2): the static solution at a tenth of the pull-in voltage.
-  const double v_start = 0.1 * curve.pull_in_voltage;
-  actuation.set_voltage_squared([v_start](Real) { return v_start * v_start; });
-  std::vector<Real> state = solve_static(actuation, 0.0).y;
-  state.push_back(v_start * v_start);
+  const double modes_wall = bench::now();
+  const std::vector<BiasedModes> states = modes_along_curve(
+      *scene.actuation, scene.control, curve, modal_mass(*scene.structure), 1, options);
+  const double modal_s = (bench::now() - modes_wall) / static_cast<double>(states.size());
   std::vector<json> rows;
-  double f0 = 0;
-  // Rest first (f0), then the stable branch.
-  std::vector<PullInPoint> points{PullInPoint{0.0, 0.0, scene.gap, true, 0}};
-  for (const PullInPoint& point : curve.curve)
-    if (point.stable) points.push_back(point);
-  for (const PullInPoint& point : points) {
-    std::vector<Real> y(n, 0.0);
-    double v2 = 0;
-    if (point.displacement != 0) {
-      state = follow_displacement(actuation, scene.control, state, {point.displacement}, options);
-      y.assign(state.begin(), state.begin() + n);
-      v2 = state[n];
-    }
-    actuation.set_voltage_squared([v2](Real) { return v2; });
-    const double modal_wall = bench::now();
-    const StructuralModes modes = linearised_modes(actuation, mass, 0.0, y, 1);
-    const double modal_s = bench::now() - modal_wall;
-    const StructuralMode& first = modes.stats.modes[0];
-    if (f0 == 0) f0 = first.frequency;
-    const double v = std::sqrt(std::max(v2, 0.0)) / curve.pull_in_voltage;
-    const double x_lumped = lumped_gap(std::min(v, 1.0));
+  const double f0 = states.front().modes[0].frequency;
+  for (const BiasedModes& state : states) {
+    const StructuralMode& first = state.modes[0];
+    const double v = state.voltage / curve.pull_in_voltage;
+    const double x_lumped = lumped_gap_fraction(std::min(v, 1.0));
     rows.push_back({{"section", "bias"},
                     {"case", name},
                     {"gas", "none"},
-                    {"voltage", std::sqrt(std::max(v2, 0.0))},
+                    {"voltage", state.voltage},
                     {"pull_in_voltage", curve.pull_in_voltage},
-                    {"control_displacement", point.displacement},
+                    {"control_displacement", state.displacement},
                     {"frequency_hz", first.frequency},
                     {"complex", first.complex},
                     {"frequency_ratio", first.frequency / f0},

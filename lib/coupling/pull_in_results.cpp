@@ -1,5 +1,7 @@
 #include "coupling/pull_in_results.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <vector>
 
@@ -14,6 +16,24 @@ void write_pull_in_curve(ResultWriter& writer, const QuasiStaticPullIn& quasi_st
   }
   writer.write_time_series("pull_in", "curve", delta, rows, {"voltage", "min_gap", "stable"},
                            "control_displacement");
+}
+
+void write_bias_modes(ResultWriter& writer, const std::vector<BiasedModes>& modes) {
+  std::vector<double> voltage;
+  std::vector<std::vector<double>> rows;
+  std::vector<std::string> names{"control_displacement"};
+  std::vector<std::string> units{"m"};
+  for (std::size_t k = 0; k < modes.front().modes.size(); ++k) {
+    names.push_back(fmt::format("f{}", k + 1));
+    units.push_back("Hz");
+  }
+  for (const BiasedModes& b : modes) {
+    voltage.push_back(b.voltage);
+    std::vector<double> row{b.displacement};
+    for (const StructuralMode& m : b.modes) row.push_back(m.frequency);
+    rows.push_back(row);
+  }
+  writer.write_time_series("pull_in", "modes", voltage, rows, names, "voltage", units);
 }
 
 void write_dynamic_history(ResultWriter& writer, const std::string& name, const DynamicRun& run,

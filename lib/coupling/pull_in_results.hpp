@@ -1,11 +1,13 @@
 // The pull-in studies' curves and histories in a result file, one layout for every switch
 // (pull_in_study.hpp, immersed_switch_study.hpp):
 //   /pull_in/curve     abscissa control_displacement; values voltage, min_gap, stable (1 / 0)
+//   /pull_in/modes     abscissa voltage; values control_displacement, f1 ... fN [Hz]
 //   /dynamic/<name>    time; control, min_gap, electrostatic_force, gas_force, contact_force,
 //                      voltage
 #pragma once
 #include <string>
 
+#include "coupling/bias_modes.hpp"
 #include "coupling/dynamic_pull_in.hpp"
 #include "coupling/quasi_static_pull_in.hpp"
 #include "io/json_summary.hpp"
@@ -14,6 +16,7 @@
 namespace rfmems {
 
 void write_pull_in_curve(ResultWriter& writer, const QuasiStaticPullIn& quasi_static);
+void write_bias_modes(ResultWriter& writer, const std::vector<BiasedModes>& modes);
 // force_units: of the run's forces, "N" (a plate: whole) or "N/m" (a plane beam: per depth).
 void write_dynamic_history(ResultWriter& writer, const std::string& name, const DynamicRun& run,
                            const std::string& force_units);

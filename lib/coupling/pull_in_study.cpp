@@ -98,6 +98,15 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
       qs.get_quantity("voltage_tolerance", Dimension::Voltage, 0.01, Range::positive());
   s.quasi_static.newton_tolerance =
       qs.get_real("newton_tolerance", 0.0, Range{0.0, 1e-2, false, true});
+  s.bias_modes = qs.get_int("modes", 0, Range::closed(0, 1000));
+  if (s.bias_modes > 0) {
+    qs.require(scene.field() == FieldModel::ParallelPlate, "modes",
+               "the modes under bias need actuation.electrostatics parallel_plate");
+    const Index most = max_shift_invert_modes(modal_mass(*scene.structure));
+    qs.require(
+        s.bias_modes <= most, "modes",
+        fmt::format("the structure has {} modes to give (its unknowns with inertia less 2)", most));
+  }
 
   const CaseNode tr = block(Analysis::Transient);
   const bool transient = s.analysis == Analysis::Transient;
@@ -392,6 +401,12 @@ PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& setting
       scene.structure->write_fields(writer, 0, 0.0,
                                     structure_part(scene, report.quasi_static.fold_state), {});
       write_pull_in_curve(writer, report.quasi_static);
+      if (settings.bias_modes > 0) {
+        report.bias_modes = modes_along_curve(*scene.actuation, scene.control, report.quasi_static,
+                                              modal_mass(*scene.structure), settings.bias_modes,
+                                              settings.quasi_static);
+        write_bias_modes(writer, report.bias_modes);
+      }
       if (settings.analysis == Analysis::Dynamic)
         run_dynamic_study(scene, *manager, settings, writer, report);
       break;
@@ -475,6 +490,21 @@ Json pull_in_summary(const SwitchScene& scene, const PullInSettings& settings,
                          {"curve_points", qs.curve.size()},
                          {"solves", qs.solves},
                          {"newton_iterations", qs.newton_iterations}};
+  if (!report.bias_modes.empty()) {
+    Json modes = Json::array();
+    for (const BiasedModes& b : report.bias_modes) {
+      Json frequencies = Json::array(), damping = Json::array();
+      for (const StructuralMode& m : b.modes) {
+        frequencies.push_back(m.frequency);
+        damping.push_back(m.damping_ratio);
+      }
+      modes.push_back({{"voltage", b.voltage},
+                       {"control", b.displacement},
+                       {"frequencies", frequencies},
+                       {"damping_ratios", damping}});
+    }
+    j["quasi_static"]["modes"] = modes;
+  }
   if (report.has_pull_out) {
     const QuasiStaticPullOut& po = report.pull_out;
     j["contact"] = {{"gap", scene.contact().gap}, {"penetration", scene.contact().penetration}};

@@ -14,6 +14,9 @@
 //       points: 40                    # samples of the control deflection in (0, max_fraction g0]
 //       max_fraction: 0.9
 //       voltage_tolerance: 0.01 V     # on the fold voltage
+//       modes: 3                      # parallel_plate: the lowest modes at rest and at every
+//                                     # stable point of the curve (bias_modes.hpp; default 0:
+//                                     # none), the frequency against the DC bias
 //     dynamic:                        # a voltage waveform from rest, with the events of
 //                                     # dynamic_pull_in.hpp
 //       waveform: {type: step}        # step (default) | ramp {rise_time} | pulse {rise_time,
@@ -89,6 +92,7 @@
 #include <string>
 #include <vector>
 
+#include "coupling/bias_modes.hpp"
 #include "coupling/coupling_manager.hpp"
 #include "coupling/dynamic_pull_in.hpp"
 #include "coupling/dynamic_release.hpp"
@@ -107,6 +111,7 @@ struct PullInSettings {
   Analysis analysis = Analysis::QuasiStatic;
   Real static_voltage = 0;  // static
   QuasiStaticOptions quasi_static;
+  Index bias_modes = 0;                    // quasi_static.modes
   DynamicOptions run;                      // dynamic: end_time, contact_gap, output_interval, ida,
                                            // coupling
   Real bracket_low = 0, bracket_high = 0;  // 0: from the quasi-static V_PI
@@ -136,6 +141,7 @@ struct PullInReport {
   SwitchStatic static_state;
   bool has_quasi_static = false;
   QuasiStaticPullIn quasi_static;
+  std::vector<BiasedModes> bias_modes;  // quasi_static.modes > 0
   bool has_dynamic = false;
   std::string waveform;  // step, ramp or pulse
   DynamicPullIn dynamic;
@@ -163,8 +169,9 @@ struct PullInReport {
 };
 
 // Runs the study; writes the structure's fields (index 0: at the fold, the static state or the
-// transient's end), the curve (/pull_in/curve, pull_in_results.hpp), with contact the contact
-// branch (/pull_in/contact_branch: abscissa voltage, values control, min_gap,
+// transient's end), the curve (/pull_in/curve, pull_in_results.hpp), the modes under bias
+// (/pull_in/modes: abscissa voltage, values control_displacement and f1 ... fN [Hz]), with contact
+// the contact branch (/pull_in/contact_branch: abscissa voltage, values control, min_gap,
 // contact_fraction) and the histories (/dynamic/V<k>, pull_in_results.hpp; the small-signal
 // run is /dynamic/small_signal, the release /dynamic/release: the approach and the hold; the
 // transient /dynamic/transient) into `writer`.

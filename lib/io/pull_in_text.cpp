@@ -100,6 +100,15 @@ std::string pull_in_text(const std::string& name, const Json& p) {
       "gap)\n",
       head, qs["pull_in_voltage"].get<double>(), um(qs["pull_in_displacement"]),
       100 * qs["pull_in_fraction_of_gap"].get<double>());
+  if (qs.contains("modes")) {
+    // The first frequency at rest and at the last stable state before the fold.
+    const Json& first = qs["modes"].front();
+    const Json& last = qs["modes"].back();
+    out += fmt::format(
+        "  first frequency {:.4g} Hz at rest, {:.4g} Hz at {:.2f} V ({} states, {} modes each)\n",
+        first["frequencies"][0].get<double>(), last["frequencies"][0].get<double>(),
+        last["voltage"].get<double>(), qs["modes"].size(), first["frequencies"].size());
+  }
   if (qs.contains("pull_out"))
     out += fmt::format(
         "  quasi-static pull-out at {:.2f} V (resting on the dielectric over {:.1f} "

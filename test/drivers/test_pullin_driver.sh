@@ -3,7 +3,8 @@
 # at 1 atm and 1 kPa: quasi-static V_PI near the thesis's 187 V, dynamic V_PI below it, higher
 # with more gas (damping), pull-in slower at 1 atm at the same voltage, the pull-in time's
 # error estimate against a converged run; the Laplace plane case near the thesis's 181 V; the
-# plots; and the bad-input contract for actuation and gas keys.
+# plots; the modes under DC bias along the quasi-static curve; and the bad-input contract for
+# actuation and gas keys.
 #
 # Usage: bash test_pullin_driver.sh <directory of rfmems-pullin> <source directory>
 set -uo pipefail
@@ -128,6 +129,45 @@ then
 else
   fail "slender plate: $(cat "$WORK/thin.err" "$WORK/thin05.err" | tail -3)"
 fi
+
+# ---- the modes under DC bias along the quasi-static curve ---------------------------------
+# The first frequency at rest is the structure's own (130.9 kHz, docs/modal.md); it falls
+# monotonically along the stable branch and follows the 1-DOF parallel-plate law
+# (f/f0)^2 = 1 - (8/27) v^2/x^3, x^2 (1 - x) = (4/27) v^2, to 2 % up to 0.95 V_PI; the result
+# file's /pull_in/modes holds the same numbers.
+expect_json_run bias "quasi-static with modes" "$PLATE" --set pull_in.mode=quasi_static \
+  --set pull_in.quasi_static.modes=2 --set gas.model=none
+if $PY - "$WORK/bias.json" "$WORK/bias.h5" <<'PY'; then
+import json, sys
+import h5py
+q = json.load(open(sys.argv[1]))["pull_in"]["quasi_static"]
+modes, v_pi = q["modes"], q["pull_in_voltage"]
+assert modes[0]["voltage"] == 0 and modes[0]["control"] == 0, modes[0]
+f0 = modes[0]["frequencies"][0]
+assert abs(f0 / 130898.9 - 1) < 1e-5, f0
+f1 = [m["frequencies"][0] for m in modes]
+assert all(b < a for a, b in zip(f1, f1[1:]) if b > 0), f1
+def lumped(v):
+    lo, hi = 2 / 3, 1.0
+    for _ in range(200):
+        x = (lo + hi) / 2
+        lo, hi = (x, hi) if x * x * (1 - x) > 4 / 27 * v * v else (lo, x)
+    return (max(0.0, 1 - 8 / 27 * v * v / x**3)) ** 0.5
+checked = [m for m in modes if 0 < m["voltage"] <= 0.95 * v_pi]
+assert len(checked) >= 5, len(checked)
+for m in checked:
+    ratio = m["frequencies"][0] / f0
+    assert abs(ratio - lumped(m["voltage"] / v_pi)) < 0.02, (m["voltage"], ratio)
+h = h5py.File(sys.argv[2], "r")["pull_in/modes"]
+assert h["values"].shape == (len(modes), 3), h["values"].shape
+assert abs(h["values"][-1][1] - modes[-1]["frequencies"][0]) <= 1e-9 * f0
+PY
+  pass "modes under bias: f0 130.9 kHz, falling, the 1-DOF law within 2 % to 0.95 V_PI"
+else
+  fail "modes under bias"
+fi
+expect_input_error bias_modes_laplace "pull_in.quasi_static.modes" "$PLANE" \
+  --set pull_in.mode=quasi_static --set pull_in.quasi_static.modes=2
 
 expect_input_error negative_gap "actuation.gap" "$PLATE" --set "actuation.gap=-1 um"
 expect_input_error laplace_plate "actuation.electrostatics" "$PLATE" --set actuation.electrostatics=laplace
