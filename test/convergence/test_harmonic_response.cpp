@@ -54,9 +54,10 @@ struct CentreResponse : AnalysisObserver {
   std::vector<std::complex<double>> w;
   CentreResponse(const StructuralModel& m, std::vector<Probe> p) : model(m), probes(std::move(p)) {}
   void output(int, Real, std::span<const Real>, std::span<const Real>) override {}
-  void harmonic_output(int, Real f, std::span<const Real> re, std::span<const Real> im) override {
-    w.emplace_back(model.probe_values(probes, f, re)[0][0],
-                   model.probe_values(probes, f, im)[0][0]);
+  void harmonic_output(int, Real, Real t, std::span<const Real> re,
+                       std::span<const Real> im) override {
+    w.emplace_back(model.probe_values(probes, t, re)[0][0],
+                   model.probe_values(probes, t, im)[0][0]);
   }
 };
 

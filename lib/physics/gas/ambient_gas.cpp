@@ -44,7 +44,7 @@ AmbientGas read_ambient_gas(const CaseNode& gas, bool pressure_required) {
       g.flow_factor_table = std::make_shared<const FlowFactorTable>(
           FlowFactorTable::read(path.lexically_normal().string()));
     } catch (const InputError& e) {
-      gas.require(false, "flow_factor_table", e.what());
+      gas.fail("flow_factor_table", e.what());
     }
   }
   return a;

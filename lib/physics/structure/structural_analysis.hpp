@@ -100,9 +100,10 @@ class AnalysisObserver {
   virtual ~AnalysisObserver() = default;
   virtual void output(int index, Real t, std::span<const Real> u, std::span<const Real> v) = 0;
   // A harmonic analysis's response at one frequency [Hz]: u = Re x + i Im x for the loads'
-  // amplitude. By default the real part goes to output().
-  virtual void harmonic_output(int index, Real frequency, std::span<const Real> real,
-                               std::span<const Real> /*imag*/) {
+  // amplitude, the loads and boundary data taken at t_load. By default the real part goes to
+  // output().
+  virtual void harmonic_output(int index, Real frequency, Real /*t_load*/,
+                               std::span<const Real> real, std::span<const Real> /*imag*/) {
     output(index, frequency, real, {});
   }
 };
@@ -110,7 +111,7 @@ class AnalysisObserver {
 struct HarmonicStats {
   std::vector<Real> frequencies;  // [Hz]
   long factorizations = 0, refactorizations = 0;
-  double solve_seconds = 0;
+  double solve_seconds = 0;  // CPU of the complex solves, factorisations included
 };
 
 struct AnalysisStats {

@@ -21,15 +21,15 @@ void StructuralResults::output(int index, Real t, std::span<const Real> y,
   history_.add(t, model_.probe_values(probes_, t, y));
 }
 
-void StructuralResults::harmonic_output(int index, Real frequency, std::span<const Real> real,
-                                        std::span<const Real> imag) {
+void StructuralResults::harmonic_output(int index, Real frequency, Real t_load,
+                                        std::span<const Real> real, std::span<const Real> imag) {
   model_.write_fields(writer_, index, frequency, real, {});
   // The probes are affine in the state: their constant (prescribed boundary values) belongs to
   // the real part, the load's amplitude.
   const std::vector<Real> zero(real.size(), 0.0);
-  const std::vector<Vec3> re = model_.probe_values(probes_, frequency, real);
-  const std::vector<Vec3> im = model_.probe_values(probes_, frequency, imag);
-  const std::vector<Vec3> constant = model_.probe_values(probes_, frequency, zero);
+  const std::vector<Vec3> re = model_.probe_values(probes_, t_load, real);
+  const std::vector<Vec3> im = model_.probe_values(probes_, t_load, imag);
+  const std::vector<Vec3> constant = model_.probe_values(probes_, t_load, zero);
   harmonic_.resize(probes_.size());
   for (std::size_t p = 0; p < probes_.size(); ++p) {
     std::array<std::complex<Real>, 3> value;

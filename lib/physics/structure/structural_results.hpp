@@ -36,7 +36,7 @@ class StructuralResults : public AnalysisObserver {
                     std::vector<Probe> probes);
 
   void output(int index, Real t, std::span<const Real> u, std::span<const Real> v) override;
-  void harmonic_output(int index, Real frequency, std::span<const Real> real,
+  void harmonic_output(int index, Real frequency, Real t_load, std::span<const Real> real,
                        std::span<const Real> imag) override;
   // Harmonic: per probe, per frequency, the complex amplitude of each probe component.
   const std::vector<std::vector<std::array<std::complex<Real>, 3>>>& harmonic() const {
