@@ -101,7 +101,8 @@ int main(int argc, char** argv) {
       w0 = bench::now();
       c0 = bench::cpu_now();
       DistributedNewtonOptions options;
-      options.overlap = overlap;
+      options.preconditioner = overlap ? DistributedLinearization::Family::Schwarz
+                                       : DistributedLinearization::Family::BlockJacobi;
       const DistributedStaticSolution s = solve_static_distributed(dist, 0.0, options);
       const double solve_wall = bench::now() - w0, solve_cpu = comm.max(bench::cpu_now() - c0);
 

@@ -18,6 +18,10 @@
 // file:
 //   mpirun -np 2 rfmems-solid cases/cantilever_static/case.yaml --set 'solver={distributed: true}'
 //
+// Large 3D continua are solved by GMRES with algebraic multigrid (hypre's BoomerAMG) on the
+// same distributed vectors, on one rank unless distributed (solver.linear; docs/scale.md):
+//   rfmems-solid cases/cantilever_box_3d/case.yaml --set 'mesh.cells=[320,32,32]'  # 1M unknowns
+//
 // Exit codes: 0 success; 2 bad input (case file, option, mesh file): one line
 // "rfmems-solid: <message>" on stderr and no result file; 1 any other failure.
 #include <fmt/format.h>
@@ -64,9 +68,11 @@ int run(const DriverOptions& options) {
 
   const AnalysisType type = read_analysis_type(root);
   std::unique_ptr<StructuralModel> model = build_structure(root, run_case.dir, type);
-  const AnalysisSettings settings = read_analysis_settings(root, *model);
+  AnalysisSettings settings = read_analysis_settings(root, *model);
   std::vector<Probe> probes = read_probes(root.child_or_empty("probes"), model->structure_mesh());
-  if (distributed) check_distributable(*model, settings, root);
+  settle_linear_solver(*model, settings, root);
+  // Multigrid alone runs the distributed solvers on the root's one rank.
+  const Communicator comm = distributed ? world : Communicator::serial();
   if (!run_case.finish_reading()) return 0;  // a typo stops the run here, before any solving
 
   // The result file exists on the root only; if creating it fails there, a distributed run's
@@ -89,8 +95,9 @@ int run(const DriverOptions& options) {
   }
   ProgressReporter progress(options.quiet || type != AnalysisType::Transient, settings.end_time);
   const AnalysisStats stats =
-      distributed ? run_distributed_analysis(*model, settings, world, *results, progress)
-                  : run_analysis(*model, settings, *results, progress);
+      on_distributed_vectors(settings)
+          ? run_distributed_analysis(*model, settings, comm, *results, progress)
+          : run_analysis(*model, settings, *results, progress);
   progress.finish();
   results->finish(case_file, name, stats, elapsed());
 

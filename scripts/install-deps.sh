@@ -11,6 +11,7 @@ packages=(
   libeigen3-dev                         # dense small blocks, least-squares gradients
   libspectra-dev                        # Arnoldi eigensolver (modal analysis), header-only
   libmetis-dev                          # mesh partitioning
+  libhypre-dev                          # BoomerAMG: algebraic multigrid for large structures
   libopenmpi-dev openmpi-bin            # MPI
   libhdf5-dev hdf5-tools                # results; h5dump for inspection
   libyaml-cpp-dev                       # case files

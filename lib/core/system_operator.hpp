@@ -64,6 +64,12 @@ class SecondOrderOperator {
   virtual Real damping_time() const { return 0; }
   // r += C v for the velocities v.
   virtual void add_damping_force(Real /*t*/, std::span<const Real> /*v*/, std::span<Real> /*r*/) {}
+
+  // Optional: the product kv = dR/dy(t, y) v without assembling the matrix, for Krylov
+  // solvers of structures too large to store their stiffness.
+  virtual bool has_stiffness_product() const { return false; }
+  virtual void stiffness_product(Real /*t*/, std::span<const Real> /*y*/,
+                                 std::span<const Real> /*v*/, std::span<Real> /*kv*/) {}
 };
 
 }  // namespace rfmems

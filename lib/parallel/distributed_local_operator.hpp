@@ -48,6 +48,7 @@ class DistributedLocalOperator : public DistributedSecondOrderOperator {
   void add_damping_force(Real t, std::span<const Real> v, std::span<Real> r) override;
   std::vector<Real> gather_to_root(std::span<const Real> owned) const override;
   std::vector<Real> owned_part(std::span<const Real> global) const override;
+  int unknowns_per_cell() const override { return block_; }
 
   const DistributedMesh& distributed_mesh() const { return *mesh_; }
 

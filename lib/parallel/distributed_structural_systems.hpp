@@ -26,6 +26,16 @@ class DistributedStaticSystem : public DistributedSystem {
                         std::span<Real> values) override {
     op_.overlap_stiffness(t, y, values);
   }
+  int unknowns_per_cell() const override { return op_.unknowns_per_cell(); }
+  bool matrix_free() const override { return op_.matrix_free(); }
+  void jacobian_product(Real t, std::span<const Real> y, std::span<const Real> v,
+                        std::span<Real> jv) override {
+    op_.stiffness_product(t, y, v, jv);
+  }
+  const CsrPattern& preconditioner_pattern() const override { return op_.preconditioner_pattern(); }
+  void preconditioner_jacobian(Real t, std::span<const Real> y, std::span<Real> values) override {
+    op_.preconditioner_stiffness(t, y, values);
+  }
 
  private:
   DistributedSecondOrderOperator& op_;

@@ -49,6 +49,21 @@ class DistributedSystem {
   // Optional: the structural operator of a first-order system [y' - v; M v' + R] (state
   // [y; v]), for preconditioners that eliminate v; nullptr otherwise.
   virtual DistributedSecondOrderOperator* second_order() { return nullptr; }
+  // Unknowns per cell, interleaved (cell-major), for preconditioners that treat a system of
+  // PDEs unknown by unknown (algebraic multigrid).
+  virtual int unknowns_per_cell() const { return 1; }
+
+  // Optional, for structures too large to store their Jacobian: the product
+  // jv = (dF/dy + c_j dF/dy') v on the owned rows without the matrix, and a sparser matrix
+  // close to the Jacobian to build the preconditioner from (owned rows x local columns; a
+  // compact discretisation of the same equations). With it the Krylov solvers never call
+  // jacobian(). Static systems only (c_j = 0).
+  virtual bool matrix_free() const { return false; }
+  virtual void jacobian_product(Real /*t*/, std::span<const Real> /*y*/,
+                                std::span<const Real> /*v*/, std::span<Real> /*jv*/) {}
+  virtual const CsrPattern& preconditioner_pattern() const { return jacobian_pattern(); }
+  virtual void preconditioner_jacobian(Real /*t*/, std::span<const Real> /*y*/,
+                                       std::span<Real> /*values*/) {}
 };
 
 // M y'' + R(t, y) = 0 with y distributed (the structure's operators on a distributed mesh):
@@ -84,6 +99,16 @@ class DistributedSecondOrderOperator {
   // reverse: the owned part of a global vector known on every rank.
   virtual std::vector<Real> gather_to_root(std::span<const Real> owned) const = 0;
   virtual std::vector<Real> owned_part(std::span<const Real> global) const = 0;
+  // Unknowns per cell, interleaved (cell-major), as DistributedSystem's.
+  virtual int unknowns_per_cell() const { return 1; }
+  // Optional, as DistributedSystem's: kv = dR/dy v without the matrix (owned rows, collective)
+  // and the compact matrix to precondition with (owned rows x local columns).
+  virtual bool matrix_free() const { return false; }
+  virtual void stiffness_product(Real /*t*/, std::span<const Real> /*y*/,
+                                 std::span<const Real> /*v*/, std::span<Real> /*kv*/) {}
+  virtual const CsrPattern& preconditioner_pattern() const { return stiffness_pattern(); }
+  virtual void preconditioner_stiffness(Real /*t*/, std::span<const Real> /*y*/,
+                                        std::span<Real> /*values*/) {}
 };
 
 }  // namespace rfmems

@@ -18,15 +18,18 @@
 #include <span>
 
 #include "parallel/distributed_system.hpp"
+#include "solvers/distributed_linearization.hpp"
 #include "solvers/ida_integrator.hpp"
 
 namespace rfmems {
 
 class DistributedIdaIntegrator {
  public:
-  // Collective. overlap false: block Jacobi even where the system offers more.
-  DistributedIdaIntegrator(DistributedSystem& system, const IdaOptions& options,
-                           bool overlap = true);
+  // Collective. The preconditioner family's best variant for the system
+  // (DistributedLinearization::best_for).
+  DistributedIdaIntegrator(
+      DistributedSystem& system, const IdaOptions& options,
+      DistributedLinearization::Family preconditioner = DistributedLinearization::Family::Schwarz);
   ~DistributedIdaIntegrator();
   DistributedIdaIntegrator(const DistributedIdaIntegrator&) = delete;
   DistributedIdaIntegrator& operator=(const DistributedIdaIntegrator&) = delete;

@@ -25,22 +25,39 @@
 // (K and M of the local rows, c of the last setup) and recovers dv. With the structure's
 // damping C = beta K (J's v block c M + beta K) it is ((1 + c beta) K + c^2 M) dy =
 // r_v + (c M + beta K) r_y.
+//
+// Algebraic multigrid (solvers/boomer_amg.hpp) in place of the subdomain LU: one BoomerAMG
+// V-cycle on the whole distributed matrix (owned rows x every column, in global numbers),
+// of J for a static system and of the Schur complement (1 + c beta) K + c^2 M for a
+// structural first-order one. Its cost per application and its memory grow in proportion to
+// the unknowns, where the LU's fill grows faster (the large structures: docs/scale.md), and
+// its quality does not fall with the number of ranks. A matrix-free static system
+// (DistributedSystem::matrix_free) is multiplied by without its Jacobian, and the multigrid is
+// built from its compact preconditioner matrix instead.
 #pragma once
 #include <memory>
 #include <span>
 #include <vector>
 
 #include "parallel/distributed_system.hpp"
+#include "solvers/boomer_amg.hpp"
 #include "solvers/klu_factorization.hpp"
 
 namespace rfmems {
 
 class DistributedLinearization {
  public:
-  enum class Preconditioner { BlockJacobi, RestrictedAdditiveSchwarz, SchurAdditiveSchwarz };
+  enum class Preconditioner {
+    BlockJacobi,
+    RestrictedAdditiveSchwarz,
+    SchurAdditiveSchwarz,
+    AlgebraicMultigrid,
+    SchurAlgebraicMultigrid
+  };
   // with_derivative_terms: evaluate dF/dy' too (IDA); false: c_j is always 0 (KINSOL).
   // RestrictedAdditiveSchwarz needs system.overlap_pattern() and c_j = 0, SchurAdditiveSchwarz
-  // a second_order() operator with an overlap_stiffness_pattern() (else SolverError).
+  // a second_order() operator with an overlap_stiffness_pattern(), AlgebraicMultigrid c_j = 0,
+  // SchurAlgebraicMultigrid a second_order() operator (else SolverError).
   DistributedLinearization(DistributedSystem& system, bool with_derivative_terms,
                            Preconditioner preconditioner = Preconditioner::BlockJacobi);
   ~DistributedLinearization();
@@ -58,10 +75,19 @@ class DistributedLinearization {
   // IDA's Newton tolerance with this preconditioner: 5e-4 with the overlap (the Schwarz
   // variants), 5e-7 with block Jacobi, which drops the parts' coupling (measured on the
   // cantilever with and without damping, 2 and 3 ranks: the serial step count and answer, where
-  // SUNDIALS' 0.05 gave up to 6e-2 off; docs/mpi.md, "Krylov tolerance").
+  // SUNDIALS' 0.05 gave up to 6e-2 off; docs/mpi.md, "Krylov tolerance"), and 5e-7 with
+  // multigrid, whose cycle on the damped slender beam's Schur complement is weak (5e-4: 100
+  // steps against the serial 75).
   Real krylov_tolerance_factor() const;
-  // The strongest preconditioner the system offers (Schur Schwarz, Schwarz, block Jacobi).
-  static Preconditioner best_for(DistributedSystem& system, bool with_derivative_terms);
+  // What a solver asks for; best_for() picks the family's variant for the system.
+  enum class Family { BlockJacobi, Schwarz, Multigrid };
+  // Schwarz: the strongest the system offers (Schur Schwarz, Schwarz, block Jacobi);
+  // Multigrid: algebraic multigrid, Schur or not (block Jacobi for a transient without a
+  // structural operator); BlockJacobi: block Jacobi.
+  static Preconditioner best_for(DistributedSystem& system, bool with_derivative_terms,
+                                 Family family = Family::Schwarz);
+  // The hierarchy of the last setup (multigrid only; collective).
+  AmgStats multigrid_stats() const;
 
  private:
   DistributedSystem& system_;
@@ -73,10 +99,17 @@ class DistributedLinearization {
   std::vector<Index> overlap_diagonal_;
   Real schur_c_ = 0;
   std::vector<Real> a_, b_;  // J(0) and J(1) - J(0) on jacobian_pattern()
+  // Matrix-free: a_ is the preconditioner matrix; the product is at the last setup's state.
+  bool matrix_free_ = false;
+  Real setup_time_ = 0;
+  std::vector<Real> setup_state_;
   CsrPattern block_pattern_;
   std::vector<Index> block_source_;  // entry of jacobian_pattern() for each block entry
   std::vector<Real> block_values_, column_work_;
   std::unique_ptr<KluFactorization> lu_;
+  bool multigrid_ = false;
+  std::unique_ptr<BoomerAmg> amg_;
+  std::vector<Real> owned_stiffness_;  // the Schur multigrid's K, then its matrix
   long setups_ = 0;
 };
 

@@ -31,12 +31,9 @@ struct Problem {
   CallbackGuard guard;
   std::vector<Real> no_derivative;
 
-  Problem(DistributedSecondOrderOperator& op, Real time, bool overlap)
+  Problem(DistributedSecondOrderOperator& op, Real time, DistributedLinearization::Family family)
       : system(op),
-        linearization(system, false,
-                      overlap && system.overlap_pattern()
-                          ? DistributedLinearization::Preconditioner::RestrictedAdditiveSchwarz
-                          : DistributedLinearization::Preconditioner::BlockJacobi),
+        linearization(system, false, DistributedLinearization::best_for(system, false, family)),
         t(time),
         no_derivative(op.owned_size(), 0.0) {}
 };
@@ -85,7 +82,7 @@ DistributedStaticSolution solve_static_distributed(DistributedSecondOrderOperato
                                                    std::vector<Real> y0) {
   const Communicator& comm = op.communicator();
   const Index n = op.owned_size();
-  Problem problem(op, t, options.overlap);
+  Problem problem(op, t, options.preconditioner);
   DistributedStaticSolution solution;
   solution.y = y0.empty() ? std::vector<Real>(n, 0.0) : std::move(y0);
 
@@ -106,10 +103,14 @@ DistributedStaticSolution solve_static_distributed(DistributedSecondOrderOperato
   N_VConst(1.0 / stats.initial_residual, scale_f.get());
   N_VConst(1.0, scale_u.get());
 
+  // Classical Gram-Schmidt's dot products fused (one pass, one reduction) on the vectors SPGMR
+  // clones from y; without them N_VDotProdMulti loops.
+  if (options.classical_gram_schmidt) sundials::enable_fused_operations(y.get());
   sundials::LinearSolver gmres(
       SUNLinSol_SPGMR(y.get(), SUN_PREC_RIGHT, options.krylov_dimension, ctx.get()));
   if (!gmres) throw SolverError("SUNLinSol_SPGMR failed");
-  SUNLinSol_SPGMRSetGSType(gmres.get(), SUN_MODIFIED_GS);
+  SUNLinSol_SPGMRSetGSType(gmres.get(),
+                           options.classical_gram_schmidt ? SUN_CLASSICAL_GS : SUN_MODIFIED_GS);
   SUNLinSol_SPGMRSetMaxRestarts(gmres.get(), options.max_restarts);
 
   void* mem = KINCreate(ctx.get());
@@ -145,6 +146,7 @@ DistributedStaticSolution solve_static_distributed(DistributedSecondOrderOperato
   stats.jacobian_evals = problem.linearization.setups();
   stats.linear_iters = nli;
   stats.residual_evals += problem.residual_calls;
+  solution.multigrid = problem.linearization.multigrid_stats();
   problem.system.residual(t, yv, problem.no_derivative, f0);
   stats.final_residual = global_max_abs(comm, f0);
   std::copy(yv.begin(), yv.end(), solution.y.begin());

@@ -1,8 +1,9 @@
 // Static equilibrium R(t, y) = 0 of a distributed structural operator: KINSOL on
 // SUNDIALS' MPI parallel N_Vector, Newton with SPGMR (right-preconditioned GMRES, modified
 // Gram-Schmidt) for the linear systems, the exact distributed Jacobian-vector product and a
-// KLU preconditioner on the rank-local blocks (restricted additive Schwarz on the ghost
-// overlap, or block Jacobi; solvers/distributed_linearization.hpp).
+// preconditioner: KLU on the rank-local blocks (restricted additive Schwarz on the ghost
+// overlap, or block Jacobi) or algebraic multigrid on the whole matrix
+// (solvers/distributed_linearization.hpp).
 //
 // The convergence test is the serial one (solvers/static_solve.hpp): ||R||_inf <=
 // relative_tolerance ||R(y0)||_inf. Each Newton step's Krylov solve is tight (constant
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "parallel/distributed_system.hpp"
+#include "solvers/distributed_linearization.hpp"
 #include "solvers/kinsol_solver.hpp"
 
 namespace rfmems {
@@ -24,14 +26,18 @@ struct DistributedNewtonOptions {
   Real linear_tolerance = 1e-12;
   int krylov_dimension = 200;
   int max_restarts = 10;
-  // Restricted additive Schwarz on the ghost overlap where the operator offers it, else
-  // block Jacobi on the owned blocks (solvers/distributed_linearization.hpp).
-  bool overlap = true;
+  // Classical Gram-Schmidt with reorthogonalisation (fused dot products: one pass over the
+  // basis per iteration) instead of modified (one pass per basis vector).
+  bool classical_gram_schmidt = false;
+  // Schwarz: restricted additive Schwarz on the ghost overlap where the operator offers it,
+  // else block Jacobi on the owned blocks; Multigrid: BoomerAMG on the whole Jacobian.
+  DistributedLinearization::Family preconditioner = DistributedLinearization::Family::Schwarz;
 };
 
 struct DistributedStaticSolution {
   std::vector<Real> y;   // this rank's owned unknowns
   NonlinearStats stats;  // linear_iters: the GMRES iterations (the same on every rank)
+  AmgStats multigrid;    // the hierarchy of the last setup (multigrid only)
 };
 
 // Collective. Starts from y0 (owned; zero if empty).

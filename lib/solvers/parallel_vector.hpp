@@ -11,6 +11,10 @@ namespace rfmems::sundials {
 
 Vector make_parallel_vector(const Communicator& comm, Index n_local, SUNContext ctx);
 
+// Turns on the fused vector operations (N_VDotProdMulti and the like as one pass and one
+// reduction) of a parallel or serial vector and of the vectors later cloned from it.
+void enable_fused_operations(N_Vector v);
+
 inline std::span<Real> local_span(N_Vector v) {
   if (N_VGetVectorID(v) == SUNDIALS_NVEC_PARALLEL)
     return {N_VGetArrayPointer(v), static_cast<std::size_t>(N_VGetLocalLength_Parallel(v))};

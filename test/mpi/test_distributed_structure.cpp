@@ -16,6 +16,7 @@
 #include "core/structural_systems.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "parallel/distributed_structural_systems.hpp"
+#include "parallel/single_rank_operator.hpp"
 #include "physics/elasticity/distributed_elasticity.hpp"
 #include "physics/plate/distributed_plate.hpp"
 #include "solvers/distributed_ida_integrator.hpp"
@@ -131,7 +132,8 @@ TEST(DistributedStructure, CantileverStaticEqualsSerialKlu) {
   long iterations[2] = {0, 0};
   for (const bool overlap : {false, true}) {  // block Jacobi, restricted additive Schwarz
     DistributedNewtonOptions options;
-    options.overlap = overlap;
+    options.preconditioner = overlap ? DistributedLinearization::Family::Schwarz
+                                     : DistributedLinearization::Family::BlockJacobi;
     const DistributedStaticSolution s = solve_static_distributed(dist, 0.0, options);
     iterations[overlap] = s.stats.linear_iters;
 
@@ -200,15 +202,17 @@ void expect_cantilever_transient_equals_serial_ida(double damping_time) {
 
   DistributedElasticity dist(*beam.op, comm);
   DistributedFirstOrderSystem system(dist);
-  long iterations[2] = {0, 0};
-  for (const bool overlap : {false, true}) {  // block Jacobi, Schur complement by Schwarz
+  using Family = DistributedLinearization::Family;
+  long iterations[3] = {0, 0, 0};
+  for (const Family family : {Family::BlockJacobi, Family::Schwarz, Family::Multigrid}) {
+    // Block Jacobi; the Schur complement by Schwarz or by algebraic multigrid.
     // Block Jacobi drops the parts' coupling, which with damping, (1 + c_j beta) K against
     // c_j^2 M, dominates: its preconditioned residual then understates the correction's error
     // by orders of magnitude, and with SUNDIALS' Krylov tolerance (eps_lin 0.05) the run ended
     // 3.6e-2 off the serial answer on 2 ranks, 6.1e-2 on 3, with every GMRES solve converged
     // (docs/mpi.md, "Krylov tolerance"). The integrator's per-preconditioner tolerance
     // (DistributedLinearization::krylov_tolerance_factor) is what this checks.
-    DistributedIdaIntegrator ida(system, options, overlap);
+    DistributedIdaIntegrator ida(system, options, family);
     std::vector<double> owned_zero(system.owned_size(), 0.0);
     ida.initialize(0.0, owned_zero, owned_zero);
     double worst = 0, amplitude = 0;
@@ -222,26 +226,34 @@ void expect_cantilever_transient_equals_serial_ida(double damping_time) {
       amplitude = std::max(amplitude, max_abs(u_serial[k - 1]));
     }
     const IntegratorStats s = ida.stats();
-    iterations[overlap] = s.linear_iters;
+    iterations[static_cast<int>(family)] = s.linear_iters;
+    const char* name = family == Family::BlockJacobi ? "block Jacobi"
+                       : family == Family::Schwarz   ? "Schur additive Schwarz"
+                                                     : "Schur algebraic multigrid";
     if (comm.is_root())
       std::printf(
           "ranks %d, %s: transient to 30 ms: max |u - u_serial| / max |u| = %.2e; steps %ld "
           "(serial %ld), Newton %ld, GMRES %ld (%.1f per Newton iteration), preconditioner "
           "setups %ld, unconverged GMRES solves %ld; damping time %.2e s\n",
-          comm.size(), overlap ? "Schur additive Schwarz" : "block Jacobi", worst / amplitude,
-          s.steps, s_serial.steps, s.newton_iters, s.linear_iters,
-          static_cast<double>(s.linear_iters) / s.newton_iters, s.preconditioner_setups,
-          s.linear_conv_fails, damping_time);
+          comm.size(), name, worst / amplitude, s.steps, s_serial.steps, s.newton_iters,
+          s.linear_iters, static_cast<double>(s.linear_iters) / s.newton_iters,
+          s.preconditioner_setups, s.linear_conv_fails, damping_time);
     EXPECT_GT(amplitude, 1e-5);  // the beam has moved (static tip deflection ~1e-4 m)
     EXPECT_LT(worst, 10 * options.rtol * amplitude);
     // The Newton corrections' errors beneath the local error test: the serial run's steps
     // (inexact corrections inflate IDA's error estimate; on main block Jacobi took 1.2 (2
     // ranks) and 3.5 (3 ranks) times the serial steps with damping, 1.6 and 4.0 without).
-    EXPECT_LE(s.steps, 1.1 * s_serial.steps);
+    // With damping the Schur complement is (1 + c_j beta) K, the stiffness of a slender plane
+    // beam (L/h = 50, cells 5:1), on which a multigrid cycle is weak (90 GMRES iterations a
+    // Newton step, a few solves at the restart limit): up to 1.25 times the serial steps
+    // measured on 1-3 ranks.
+    const bool weak = family == Family::Multigrid && damping_time > 0;
+    EXPECT_LE(s.steps, (weak ? 1.35 : 1.1) * s_serial.steps);
   }
   // Eliminating v and solving (1 + c_j beta) K + c_j^2 M on the overlap: fewer iterations than
   // block Jacobi, at its looser tolerance too.
-  EXPECT_LE(iterations[1], iterations[0]);
+  EXPECT_LE(iterations[static_cast<int>(Family::Schwarz)],
+            iterations[static_cast<int>(Family::BlockJacobi)]);
 }
 
 }  // namespace
@@ -306,19 +318,84 @@ TEST(DistributedStructure, ClampedPlateStaticEqualsSerialKlu) {
   extra = comm.max(extra) / max_abs(k_serial);
   EXPECT_LT(extra, 1e-12);  // round-off where a local stencil differs from the serial one
 
+  EXPECT_LT(k_rel, 1e-12);
+
   const StaticSolution serial = solve_static(*plate, 0.0);
-  const DistributedStaticSolution s = solve_static_distributed(dist, 0.0);
   const std::vector<double> reference = dist.owned_part(serial.y);
-  double u_diff = 0;
+  using Family = DistributedLinearization::Family;
+  for (const Family family : {Family::Schwarz, Family::Multigrid}) {
+    DistributedNewtonOptions options;
+    options.preconditioner = family;
+    const DistributedStaticSolution s = solve_static_distributed(dist, 0.0, options);
+    double u_diff = 0;
+    for (std::size_t i = 0; i < s.y.size(); ++i)
+      u_diff = std::max(u_diff, std::abs(s.y[i] - reference[i]));
+    const double rel = comm.max(u_diff) / max_abs(serial.y);
+    if (comm.is_root())
+      std::printf(
+          "ranks %d, plate 16 x 16, %s: max |K_owned - K_serial| / max |K| = %.2e (entries "
+          "outside the serial pattern: %.2e); %ld GMRES iterations, |y - y_KLU| / |y| = %.2e\n",
+          comm.size(), family == Family::Schwarz ? "additive Schwarz" : "algebraic multigrid",
+          k_rel, extra, s.stats.linear_iters, rel);
+    EXPECT_EQ(s.stats.newton_iters, 1);
+    EXPECT_LT(rel, 1e-8);  // a stocky plate (L/h = 10): well conditioned
+  }
+}
+
+// The 3D box of cases/cantilever_box_3d (L = 1 m, b = h = 0.1 m, end shear 100 kPa) on a
+// coarse mesh, quadratic reconstruction, by GMRES with algebraic multigrid: distributed over
+// the ranks with the assembled Jacobian, and on one rank matrix-free (the product from the
+// operator, the multigrid from the linear reconstruction's compact operator). Both give the
+// serial KLU answer to 1e-8 in one Newton step.
+TEST(DistributedStructure, BoxStaticMultigridEqualsSerialKlu) {
+  const Communicator comm = Communicator::world();
+  BoxSpec spec;
+  spec.dim = 3;
+  spec.lower = Vec3(0, -0.05, -0.05);
+  spec.upper = Vec3(1, 0.05, 0.05);
+  spec.n[0] = 24;
+  spec.n[1] = spec.n[2] = 4;
+  const Mesh mesh = make_structured_mesh(spec);
+  std::vector<ElasticityBoundary> bcs;
+  for (const Patch& p : mesh.patches()) {
+    if (p.name == "left")
+      bcs.push_back({ElasticityBoundary::Kind::Fixed, {}});
+    else if (p.name == "right")
+      bcs.push_back({ElasticityBoundary::Kind::Traction,
+                     [](const Vec3&, double) { return Vec3(0, -1e5, 0); }});
+    else
+      bcs.push_back({ElasticityBoundary::Kind::Traction, {}});
+  }
+  const LinearElastic steel{200e9, 0.3, 7854, Hypothesis::ThreeD};
+  ElasticityOperator op(mesh, steel, bcs);
+  ElasticityOperator compact(mesh, steel, bcs, {}, 1);
+  const StaticSolution serial = solve_static(op, 0.0);
+  DistributedNewtonOptions options;
+  options.preconditioner = DistributedLinearization::Family::Multigrid;
+
+  DistributedElasticity dist(op, comm);
+  const DistributedStaticSolution s = solve_static_distributed(dist, 0.0, options);
+  const std::vector<double> reference = dist.owned_part(serial.y);
+  double diff = 0;
   for (std::size_t i = 0; i < s.y.size(); ++i)
-    u_diff = std::max(u_diff, std::abs(s.y[i] - reference[i]));
-  const double rel = comm.max(u_diff) / max_abs(serial.y);
+    diff = std::max(diff, std::abs(s.y[i] - reference[i]));
+  const double rel = comm.max(diff) / max_abs(serial.y);
+
+  SingleRankOperator one_rank(op, 3, &compact);  // every rank alone, matrix-free
+  ASSERT_TRUE(one_rank.matrix_free());
+  const DistributedStaticSolution m = solve_static_distributed(one_rank, 0.0, options);
+  double diff_free = 0;
+  for (std::size_t i = 0; i < m.y.size(); ++i)
+    diff_free = std::max(diff_free, std::abs(m.y[i] - serial.y[i]));
+  const double rel_free = diff_free / max_abs(serial.y);
   if (comm.is_root())
     std::printf(
-        "ranks %d, plate 16 x 16: max |K_owned - K_serial| / max |K| = %.2e (entries outside "
-        "the serial pattern: %.2e); %ld GMRES iterations, |y - y_KLU| / |y| = %.2e\n",
-        comm.size(), k_rel, extra, s.stats.linear_iters, rel);
-  EXPECT_LT(k_rel, 1e-12);
+        "ranks %d, box 24 x 4 x 4: multigrid %ld GMRES iterations (%d levels), |u - u_KLU| / "
+        "|u| = %.2e; one rank matrix-free %ld iterations, %.2e\n",
+        comm.size(), s.stats.linear_iters, s.multigrid.levels, rel, m.stats.linear_iters, rel_free);
   EXPECT_EQ(s.stats.newton_iters, 1);
-  EXPECT_LT(rel, 1e-8);  // a stocky plate (L/h = 10): well conditioned
+  EXPECT_EQ(m.stats.newton_iters, 1);
+  EXPECT_GT(s.multigrid.levels, 1);
+  EXPECT_LT(rel, 1e-8);
+  EXPECT_LT(rel_free, 1e-8);
 }

@@ -80,8 +80,11 @@ ElasticityOperator::ElasticityOperator(const Mesh& mesh, const LinearElastic& ma
     point_offset_.push_back(static_cast<Index>(centroid_gradient_.size()));
   }
   point_delta_.resize(centroid_gradient_.size());
+}
 
-  // Stencil of each cell: the cells its face forces depend on.
+const BlockSparsity& ElasticityOperator::sparsity() const {
+  if (sparsity_) return *sparsity_;
+  const Index nf = mesh_.n_faces();
   std::vector<std::set<Index>> stencils(mesh_.n_cells());
   for (Index c = 0; c < mesh_.n_cells(); ++c) stencils[c].insert(c);
   for (Index f = 0; f < nf; ++f) {
@@ -97,6 +100,7 @@ ElasticityOperator::ElasticityOperator(const Mesh& mesh, const LinearElastic& ma
     if (n >= 0) stencils[n].insert(cells.begin(), cells.end());
   }
   sparsity_ = std::make_unique<BlockSparsity>(stencils, dim_);
+  return *sparsity_;
 }
 
 Vec3 ElasticityOperator::cell_u(std::span<const Real> u, Index c) const {
@@ -167,6 +171,12 @@ void ElasticityOperator::internal_residual(Real t, std::span<const Real> u, std:
 
 void ElasticityOperator::add_damping_force(Real t, std::span<const Real> v, std::span<Real> r) {
   if (damping_time_ > 0) add_internal_forces(t, v, true, damping_time_, r);
+}
+
+void ElasticityOperator::stiffness_product(Real t, std::span<const Real>, std::span<const Real> v,
+                                           std::span<Real> kv) {
+  std::fill(kv.begin(), kv.end(), 0.0);
+  add_internal_forces(t, v, true, 1.0, kv);
 }
 
 Real ElasticityOperator::grid_damping_time(Real zeta) const {
@@ -271,8 +281,8 @@ void ElasticityOperator::stiffness(Real, std::span<const Real>, std::span<Real> 
       Mat3 dF = (mu_ * term.h.dot(S) + term.h.dot(prestress)) * I + mu_ * term.h * S.transpose() +
                 lambda_ * S * term.h.transpose();
       Mat3 block = out * dF * term.T;
-      sparsity_->add_block(values, p, term.cell, -block);
-      if (n >= 0) sparsity_->add_block(values, n, term.cell, block);
+      sparsity().add_block(values, p, term.cell, -block);
+      if (n >= 0) sparsity().add_block(values, n, term.cell, block);
     }
   }
 }

@@ -62,7 +62,8 @@ class ElasticityOperator : public SecondOrderOperator {
   int requested_reconstruction_degree() const { return requested_degree_; }
 
   void internal_residual(Real t, std::span<const Real> u, std::span<Real> r) override;
-  const CsrPattern& stiffness_pattern() const override { return sparsity_->pattern(); }
+  // Built on first use (a matrix-free solve never builds it).
+  const CsrPattern& stiffness_pattern() const override { return sparsity().pattern(); }
   void stiffness(Real t, std::span<const Real> u, std::span<Real> values) override;
   std::vector<Real> mass_diagonal() const override;
 
@@ -75,6 +76,10 @@ class ElasticityOperator : public SecondOrderOperator {
   Real damping_time() const override { return damping_time_; }
   void set_damping_time(Real beta) { damping_time_ = beta; }
   void add_damping_force(Real t, std::span<const Real> v, std::span<Real> r) override;
+  // K v: the residual's homogeneous part (R is affine in u).
+  bool has_stiffness_product() const override { return true; }
+  void stiffness_product(Real t, std::span<const Real> u, std::span<const Real> v,
+                         std::span<Real> kv) override;
   // The beta that gives damping ratio zeta at the grid's highest frequency omega_h = 2 c_p /
   // h_min (P-wave speed c_p = sqrt((lambda + 2 mu) / rho), h_min the smallest distance between
   // neighbouring centroids): beta = 2 zeta / omega_h. 0 without a density.
@@ -134,6 +139,8 @@ class ElasticityOperator : public SecondOrderOperator {
   void append_side_terms(const FaceSide& s, Real grad_factor, Real value_factor,
                          const Mat3& value_map, const Vec3& e, std::vector<Term>& terms) const;
   Vec3 cell_u(std::span<const Real> u, Index c) const;
+  // The Jacobian's block sparsity: each cell's stencil is the cells its face forces use.
+  const BlockSparsity& sparsity() const;
   // Face force sigma_f S_f + G sigma0 S_f for face f given the face gradient.
   Vec3 face_force(const Mat3& G, const Vec3& S) const;
 
@@ -145,7 +152,7 @@ class ElasticityOperator : public SecondOrderOperator {
   int requested_degree_;
   Real mu_, lambda_;
   std::unique_ptr<PolynomialReconstruction> reconstruction_;
-  std::unique_ptr<BlockSparsity> sparsity_;
+  mutable std::unique_ptr<BlockSparsity> sparsity_;
   std::vector<FaceSide> sides_;  // two per face (the second unused on boundaries)
   std::vector<Real> side_value_;
   std::vector<Vec3> side_gradient_;

@@ -18,12 +18,23 @@
 
 namespace rfmems {
 
-// InputError (naming solver.distributed) if this model or these settings cannot run
-// distributed. Cheap; call before any solving, on every rank.
-void check_distributable(StructuralModel& model, const AnalysisSettings& settings,
-                         const CaseNode& root);
+// solver.linear auto solves a 3D continuum's static problem with multigrid above this many
+// unknowns, where GMRES with BoomerAMG overtakes KLU (the 3D box: equal at 1920 unknowns, 1.6x
+// faster at 6480, 4x at 15360; docs/scale.md). Plane and plate structures stay direct: KLU's fill
+// is mild in 2D and the cycle is weak on their slender beams (docs/scale.md).
+inline constexpr Index kMultigridUnknowns = 5000;
 
-// Collective. `observer` (and `progress`) are used on the root only; other ranks may pass
+// Settles solver.linear (auto becomes direct or multigrid) and checks that the model and the
+// analysis can run on distributed vectors where solver.distributed or multigrid asks for them:
+// InputError naming the key if not (auto falls back to direct instead). Cheap; call before any
+// solving, on every rank.
+void settle_linear_solver(StructuralModel& model, AnalysisSettings& settings, const CaseNode& root);
+// After settle_linear_solver: whether the run goes through run_distributed_analysis.
+bool on_distributed_vectors(const AnalysisSettings& settings);
+
+// Collective (over `comm`: the world when distributed, one rank for multigrid alone), with
+// KLU on the parts or multigrid as settings.linear says. `observer` (and `progress`) are
+// used on the root only; other ranks may pass
 // any observer, it is never called there. The statistics are the distributed solvers'
 // (Newton: linear_iters = GMRES iterations; transient: linear_iters, preconditioner_setups).
 AnalysisStats run_distributed_analysis(StructuralModel& model, const AnalysisSettings& settings,

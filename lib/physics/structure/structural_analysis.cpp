@@ -179,6 +179,10 @@ AnalysisSettings read_analysis_settings(const CaseNode& root, StructuralModel& m
   const CaseNode analysis = root.child("analysis");
   const CaseNode solver = root.child_or_empty("solver");
   s.distributed = solver.get_bool("distributed", false);
+  const std::string linear = solver.get_choice("linear", {"auto", "direct", "multigrid"}, "auto");
+  s.linear = linear == "direct"      ? AnalysisSettings::Linear::Direct
+             : linear == "multigrid" ? AnalysisSettings::Linear::Multigrid
+                                     : AnalysisSettings::Linear::Auto;
   if (s.type == AnalysisType::Modal) {
     // The most modes the eigensolver can return: the unknowns with inertia less 2.
     const std::vector<Real> mass = modal_mass(model);

@@ -36,6 +36,9 @@
 //                                  #   over P METIS parts (distributed_analysis.hpp; GMRES
 //                                  #   with rank-local KLU blocks); false (default): the structure
 //                                  #   is solved on rank 0 while the other ranks wait
+//     linear: auto                 #   direct (KLU), multigrid (GMRES with BoomerAMG) or auto
+//                                  #   (multigrid for a 3D continuum's static solve above
+//                                  #   5000 unknowns; distributed_analysis.hpp)
 //
 // Static: R(t_load, u) = 0 at the time every ramp has finished (model.ramp_end_time()), by
 // Newton with KINSOL or the model's own method (segregated); one output, index 0, at t_load.
@@ -85,6 +88,12 @@ struct AnalysisSettings {
   // solver.distributed: the structure on distributed vectors (physics/structure/
   // distributed_analysis.hpp) instead of on rank 0.
   bool distributed = false;
+  // solver.linear: the linear solver of static and transient solves. Direct: KLU (serial) or
+  // KLU on the parts (distributed); Multigrid: GMRES with algebraic multigrid on the
+  // distributed vectors (one rank unless distributed); Auto: multigrid where it is the faster
+  // (3D continua's static solves above kMultigridUnknowns: distributed_analysis.hpp).
+  enum class Linear { Auto, Direct, Multigrid };
+  Linear linear = Linear::Auto;
 };
 
 // analysis.type alone: the scene needs it before the rest can be read.
@@ -125,6 +134,12 @@ struct AnalysisStats {
   int n_outputs = 0;
   Real final_time = 0;
   int distributed_ranks = 0;  // > 0: solved distributed over this many ranks
+  // The linear solver that ran: "klu", "klu_subdomains" (GMRES, KLU on the parts) or
+  // "multigrid" (GMRES, BoomerAMG); with multigrid its hierarchy's levels and operator
+  // complexity (static solves).
+  std::string linear_solver = "klu";
+  int multigrid_levels = 0;
+  Real multigrid_complexity = 0;
 };
 
 // Runs the analysis. Progress (transients) goes to `progress`; the caller finishes it.

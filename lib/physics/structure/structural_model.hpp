@@ -34,6 +34,9 @@ class StructuralModel {
   virtual std::string kind() const = 0;
   virtual const Mesh& structure_mesh() const = 0;
   virtual SecondOrderOperator& structure() = 0;
+  const SecondOrderOperator& structure() const {
+    return const_cast<StructuralModel*>(this)->structure();
+  }
   // The time at which every load ramp has finished (0 without ramps): a static analysis is
   // solved there.
   virtual Real ramp_end_time() const = 0;

@@ -73,7 +73,8 @@ void StructuralResults::finish(const CaseFile& case_file, const std::string& cas
                               {components.begin(), components.end()});
   std::map<std::string, double> numbers;
   const Json solver = solver_stats_json(stats);  // named: items() refers into it
-  for (const auto& [key, value] : solver.items()) numbers["solver_" + key] = value.get<double>();
+  for (const auto& [key, value] : solver.items())
+    if (value.is_number()) numbers["solver_" + key] = value.get<double>();
   numbers["wall_time_s"] = wall_seconds;
   writer_.write_metadata({{"case_file", case_file.path()},
                           {"case_name", case_name},
@@ -82,7 +83,8 @@ void StructuralResults::finish(const CaseFile& case_file, const std::string& cas
                           {"overrides", fmt::format("{}", fmt::join(case_file.overrides(), "\n"))},
                           {"analysis", to_string(stats.type)},
                           {"model", model_.kind()},
-                          {"static_method", stats.static_method}},
+                          {"static_method", stats.static_method},
+                          {"linear_solver", stats.linear_solver}},
                          numbers);
   writer_.finish();
 }
@@ -128,7 +130,13 @@ Json solver_stats_json(const AnalysisStats& stats) {
     j["residual_initial"] = s.initial_residual;
     j["residual_final"] = s.final_residual;
   }
-  if (stats.distributed_ranks > 0) {  // GMRES with rank-local KLU blocks over the ranks
+  if (stats.type == AnalysisType::Static || stats.type == AnalysisType::Transient)
+    j["linear_solver"] = stats.linear_solver;
+  if (stats.multigrid_levels > 0) {
+    j["multigrid_levels"] = stats.multigrid_levels;
+    j["multigrid_operator_complexity"] = stats.multigrid_complexity;
+  }
+  if (stats.distributed_ranks > 0) {  // GMRES with KLU on the parts, or multigrid
     j["distributed_ranks"] = stats.distributed_ranks;
     j["krylov_iterations"] = stats.type == AnalysisType::Transient ? stats.transient.linear_iters
                                                                    : stats.newton.linear_iters;
@@ -151,6 +159,7 @@ Json structural_summary(const std::string& case_name, const StructuralModel& mod
   if (stats.type == AnalysisType::Static) j["static_method"] = stats.static_method;
   const Mesh& mesh = model.structure_mesh();
   j["mesh"] = {{"dim", mesh.dim()}, {"cells", mesh.n_cells()}};
+  j["unknowns"] = model.structure().size();
   j["output"] = {{"h5", results.path()}, {"xdmf", results.xdmf_path()}};
   j["final_time"] = stats.final_time;
   j["n_outputs"] = stats.n_outputs;
