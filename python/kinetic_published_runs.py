@@ -63,7 +63,7 @@ def main():
         d = run(driver, delta, cells, across)
         s = d["solver"]
         lines.append(f"poiseuille,{delta:g},{role},{cells},3x{across}x3,"
-                     f"{d['velocity_grid']['ordinates']},{s['iterations']},{s['seconds']:.2f},"
+                     f"{d['velocity_grid']['ordinates']},{s['iterations']},{s['seconds']:.3g},"
                      f"{d['flow_rate']['normalised_flow_rate']:.6f}")
         print(lines[-1], file=sys.stderr)
     OUT.write_text("\n".join(lines) + "\n")

@@ -3,7 +3,8 @@
 (docs/figures/velocity_grids.jsonl) as one panel per problem and delta, |error| against the
 number of velocities, one line per grid family (uniform; Gauss-Hermite along the walls with
 half-range Gauss-Hermite, sinh-stretched midpoints or Gauss-Hermite across them). The dotted
-line is the error of today's uniform grid, the shaded band a quarter of its velocities or fewer.
+line is the error of today's uniform grid, the shaded band a quarter of its velocities or fewer;
+open markers: half-range runs on more cells than the set-up's (Poiseuille at delta = 10).
 
   plot_velocity_grids.py docs/figures/velocity_grids.jsonl -o docs/figures/velocity_grids.png
 """
