@@ -185,7 +185,7 @@ TABLE
 # docs/data/kinetic_published_bgk.csv. Within 0.2 % of each, except two entries left out because
 # they disagree with the other two solutions of the same table: Huang et al. at delta = 0.1
 # (1.9829, -2.5 % from both others: a discrete-velocity grid near the free-molecular limit) and
-# Cercignani & Daneri at delta = 10 (2.7558, -0.46 % from our converged 2.76857 on 400 cells x
+# Cercignani & Daneri at delta = 10 (2.7558, -0.46 % from our converged 2.76863 on 400 cells x
 # 3 x 16 x 3, where Huang et al. give 2.7681 and the discrete-ordinates reference 2.76864;
 # docs/kinetic.md "Against published tables"). Grids: Gauss-Hermite along the walls, half-range
 # Gauss-Hermite across; at delta = 10 on 200 cells (the 50-cell spatial error is -0.09 %).
