@@ -3,7 +3,8 @@
 (docs/figures/velocity_grids.jsonl) as one panel per problem and delta, |error| against the
 number of velocities, one line per grid family (uniform; Gauss-Hermite along the walls with
 half-range Gauss-Hermite, sinh-stretched midpoints or Gauss-Hermite across them). The dotted
-line is the error of today's uniform grid, the shaded band a quarter of its velocities or fewer.
+line is the error of today's uniform grid, the shaded band a quarter of its velocities or fewer;
+open markers: half-range runs on more cells than the set-up's (Poiseuille at delta = 10).
 
   plot_velocity_grids.py docs/figures/velocity_grids.jsonl -o docs/figures/velocity_grids.png
 """
@@ -39,10 +40,19 @@ def main():
         for j, delta in enumerate(deltas):
             ax = axes[i][j]
             here = [r for r in runs if r["problem"] == problem and r["delta"] == delta]
+            # Lines on the set-up's cells; runs on more cells as open markers, one per count.
+            cells = min(r["cells"] for r in here)
             for grid, (label, marker, colour) in STYLE.items():
-                pts = sorted((r["ordinates"], abs(r["error"])) for r in here if r["grid"] == grid)
+                pts = sorted((r["ordinates"], abs(r["error"])) for r in here
+                             if r["grid"] == grid and r["cells"] == cells)
                 if pts:
                     ax.loglog(*zip(*pts), marker=marker, color=colour, label=label, ms=4)
+                for more in sorted({r["cells"] for r in here if r["grid"] == grid} - {cells}):
+                    pts = sorted((r["ordinates"], abs(r["error"])) for r in here
+                                 if r["grid"] == grid and r["cells"] == more)
+                    ax.loglog(*zip(*pts), marker=marker, color=colour, ls=":", mfc="none", ms=5,
+                              label=f"{label}, {more} cells")
+                    ax.legend(fontsize=5, loc="lower left")
             base = [r for r in here if r["grid"] == "uniform" and r["points"] == today(problem, delta)]
             if base:
                 n0, e0 = base[0]["ordinates"], abs(base[0]["error"])
