@@ -11,7 +11,7 @@ serial run's (max |u_P - u_1| / max |u_1|).
 
 Usage:
   bench/bench_scale.py --case cases/cantilever_box_3d/case.yaml --meshes 80,8,8 160,16,16 \\
-      --linear multigrid --reference -2.016e-4 [--component uy] [--ranks 2]
+      --linear multigrid --reference=-2.016e-4 [--component uy] [--ranks 2]
       [--solver 'tolerance: 1e-10'] [--set key=value ...]
 """
 import argparse

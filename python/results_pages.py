@@ -568,6 +568,34 @@ def flow_factor_switch_plate():
         f"{b['pull_in_time'] / a['pull_in_time']:.4f}.\n")
 
 
+def scale_runs(name):
+    """bench_scale.py: rfmems-solid's static solve against the mesh, by linear solver; each
+    multigrid row's growth exponent d log(CPU) / d log(unknowns) from the previous row."""
+    def table():
+        lines = read_jsonl(DATA / name)
+        runs = [x for x in lines if x["section"] == "run"]
+        rows = [["mesh", "unknowns", "linear solver", "GMRES iterations", "levels, complexity",
+                 "wall [s]", "CPU [s]", "growth", "peak memory [GiB]", "probe error"]]
+        previous = {}
+        for x in sorted(runs, key=lambda r: (r["linear"], r["unknowns"])):
+            last = previous.get(x["linear"])
+            growth = (math.log(x["cpu_s"] / last["cpu_s"]) / math.log(x["unknowns"] / last["unknowns"])
+                      if last else None)
+            previous[x["linear"]] = x
+            mg = x["linear"] == "multigrid"
+            rows.append([x["mesh"].replace(",", " x "), f"{x['unknowns']:,}",
+                         "BoomerAMG + GMRES" if mg else "KLU",
+                         str(x["krylov_iterations"]) if mg else "-",
+                         f"{x['multigrid_levels']}, {x['multigrid_operator_complexity']:.2f}" if mg else "-",
+                         f"{x['wall_s']:.2f}", f"{x['cpu_s']:.2f}",
+                         f"n^{growth:.2f}" if growth is not None else "-",
+                         f"{x['max_rss_gib']:.2f}", f"{100 * x['relative_error']:+.3f} %"])
+        headers = [x for x in lines if x["section"] == "header"]
+        commands = "; ".join(f"`{h['command']}` (load average {h['load_average']:.1f})" for h in headers)
+        return markdown(rows) + f"\nCommands: {commands}, {headers[0]['date']}.\n"
+    return table
+
+
 TABLES = {
     "verification-checks": csv_table("verification_checks.csv"),
     "performance-ratios": csv_table("performance_ratios.csv"),
@@ -600,6 +628,8 @@ TABLES = {
     "flow-factor-table": flow_factor_table,
     "flow-factor-strip-damping": flow_factor_strip_damping,
     "flow-factor-switch-plate": flow_factor_switch_plate,
+    "scale-box-3d": scale_runs("scale_box_3d.jsonl"),
+    "scale-plane-stress": scale_runs("scale_plane_stress.jsonl"),
 }
 
 

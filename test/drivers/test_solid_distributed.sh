@@ -8,6 +8,10 @@
 # its tolerance; the clamped plate's static deflection and rotations on 2 ranks equal the
 # serial ones to 1e-8 (a stocky plate: well conditioned); a plate transient (serial only)
 # stops with exit 2 naming the key.
+# solver.linear multigrid (GMRES with BoomerAMG): the 3D box matrix-free on one rank and
+# distributed on 2 ranks equals the serial KLU run to 1e-8 at a 1e-10 Newton tolerance, in one
+# Newton step; auto picks multigrid for the case's 3D box (15,360 unknowns) and KLU for the
+# plane cantilever; a modal analysis with multigrid is bad input.
 #
 # Usage: bash test_solid_distributed.sh <directory of the drivers> <source directory>
 set -uo pipefail
@@ -72,4 +76,40 @@ else
 fi
 expect_input_error plate_transient_distributed "solver.distributed" \
   "$SRC/cases/plate_vibration/case.yaml" --set solver.distributed=true
+
+BOX=("$SRC/cases/cantilever_box_3d/case.yaml" --set "mesh.cells=[40, 4, 4]" --json --quiet)
+linear_solver() {  # linear_solver FILE.json: the solver's name, its Newton and GMRES iterations
+  $PY -c "import json,sys; s=json.load(open(sys.argv[1]))['solver']; print(s['linear_solver'], s['newton_iterations'], s.get('krylov_iterations'))" "$1"
+}
+"$DRIVER" "${BOX[@]}" --set "solver={linear: direct, tolerance: 1e-10}" -o "$WORK/bklu.h5" \
+  >"$WORK/bklu.json" 2>"$WORK/err" || fail "box with KLU: $(cat "$WORK/err")"
+if "$DRIVER" "${BOX[@]}" --set "solver={linear: multigrid, tolerance: 1e-10}" -o "$WORK/bamg.h5" \
+    >"$WORK/bamg.json" 2>"$WORK/err" && [ "$(linear_solver "$WORK/bamg.json" | cut -d' ' -f1-2)" = "multigrid 1" ] &&
+   compare "$WORK/bklu.h5" "$WORK/bamg.h5" displacement 1e-8; then
+  pass "3D box, multigrid (matrix-free) on one rank = KLU: $(linear_solver "$WORK/bamg.json")"
+else
+  fail "3D box multigrid: $(head -3 "$WORK/err") $(linear_solver "$WORK/bamg.json")"
+fi
+if "${MPIRUN[@]}" -np 2 "$DRIVER" "${BOX[@]}" \
+    --set "solver={distributed: true, linear: multigrid, tolerance: 1e-10}" -o "$WORK/bamg2.h5" \
+    >"$WORK/bamg2.json" 2>"$WORK/err" && [ "$(linear_solver "$WORK/bamg2.json" | cut -d' ' -f1-2)" = "multigrid 1" ] &&
+   compare "$WORK/bklu.h5" "$WORK/bamg2.h5" displacement 1e-8; then
+  pass "3D box, multigrid distributed on 2 ranks = KLU: $(linear_solver "$WORK/bamg2.json")"
+else
+  fail "3D box multigrid on 2 ranks: $(head -3 "$WORK/err")"
+fi
+"$DRIVER" "$SRC/cases/cantilever_box_3d/case.yaml" --json --quiet -o "$WORK/auto3d.h5" \
+  >"$WORK/auto3d.json" 2>"$WORK/err" || fail "box, auto: $(cat "$WORK/err")"
+"$DRIVER" "${STATIC[@]}" -o "$WORK/auto2d.h5" >"$WORK/auto2d.json" 2>"$WORK/err" ||
+  fail "cantilever, auto: $(cat "$WORK/err")"
+if [ "$(linear_solver "$WORK/auto3d.json" | cut -d' ' -f1)" = multigrid ] &&
+   [ "$(linear_solver "$WORK/auto2d.json" | cut -d' ' -f1)" = klu ]; then
+  pass "solver.linear auto: multigrid for the 3D box, KLU for the plane cantilever"
+else
+  fail "solver.linear auto: $(linear_solver "$WORK/auto3d.json") / $(linear_solver "$WORK/auto2d.json")"
+fi
+expect_input_error modal_multigrid "solver.linear" "$SRC/cases/cantilever_box_3d/case.yaml" \
+  --set analysis.type=modal --set "solver={linear: multigrid}"
+expect_input_error linear_typo "solver.linear" "$SRC/cases/cantilever_box_3d/case.yaml" \
+  --set "solver={linear: amg}"
 exit $((failures > 0))

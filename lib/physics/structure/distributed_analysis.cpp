@@ -135,7 +135,8 @@ AnalysisStats run_distributed_analysis(StructuralModel& model, const AnalysisSet
   // One rank: the operator itself; with multigrid on a continuum of higher degree,
   // matrix-free with the linear reconstruction's operator as the preconditioner's matrix.
   std::unique_ptr<ElasticityOperator> compact;
-  if (comm.is_serial() && elasticity && settings.linear == AnalysisSettings::Linear::Multigrid &&
+  if (comm.is_serial() && elasticity && elasticity->dim() == 3 &&
+      settings.linear == AnalysisSettings::Linear::Multigrid &&
       settings.type == AnalysisType::Static) {
     compact =
         std::make_unique<ElasticityOperator>(elasticity->mesh(), elasticity->material(),
