@@ -6,6 +6,7 @@
 #include "parallel/distributed_structural_systems.hpp"
 #include "physics/elasticity/distributed_elasticity.hpp"
 #include "physics/plate/distributed_plate.hpp"
+#include "physics/plate/von_karman_plate.hpp"
 #include "physics/structure/output_schedule.hpp"
 #include "solvers/distributed_ida_integrator.hpp"
 #include "solvers/distributed_static_solve.hpp"
@@ -17,6 +18,9 @@ void check_distributable(StructuralModel& model, const AnalysisSettings& setting
   const CaseNode solver = root.child_or_empty("solver");
   const bool continuum = dynamic_cast<const ElasticityOperator*>(&model.structure()) != nullptr;
   const bool plate = dynamic_cast<const PlateOperator*>(&model.structure()) != nullptr;
+  solver.require(dynamic_cast<const VonKarmanPlate*>(&model.structure()) == nullptr, "distributed",
+                 "does not support model.geometric_nonlinearity (the von Karman plate is solved on "
+                 "one rank)");
   solver.require(settings.type != AnalysisType::Modal && settings.type != AnalysisType::Harmonic,
                  "distributed",
                  "is for static and transient analyses; modal and harmonic analyses are solved on "

@@ -13,8 +13,12 @@ std::unique_ptr<StructuralModel> build_structure(const CaseNode& root, const std
   const CaseNode model = root.child("model");
   const std::string structure =
       model.has("structure") ? model.get_choice("structure", {"plane", "solid3d", "plate"}) : "";
+  // The one reader of model.geometric_nonlinearity (von Karman plate; the continuum is linear).
+  const bool nonlinear = model.get_bool("geometric_nonlinearity", false);
   if (structure == "plate")
-    return std::make_unique<PlateScene>(build_plate_scene(root, case_dir, analysis));
+    return std::make_unique<PlateScene>(build_plate_scene(root, case_dir, analysis, nonlinear));
+  model.require(!nonlinear, "geometric_nonlinearity",
+                "large deformations are modelled for the plate only (model.structure: plate)");
   return std::make_unique<ElasticityScene>(
       build_elasticity_scene(root, case_dir, analysis, structure));
 }

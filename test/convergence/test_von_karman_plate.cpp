@@ -1,0 +1,202 @@
+// The von Karman plate (physics/plate/von_karman_plate.hpp) against closed forms, with observed
+// orders over three meshes, and its Newton iteration.
+//
+// 1. Cylindrical bending of a long strip with immovable edges (Timoshenko & Woinowsky-Krieger,
+//    Theory of Plates and Shells, ch. 1): span l, uniform pressure q, the edges clamped or
+//    simply supported and held in-plane (u = 0). The strip bends into a cylinder and its
+//    mid-surface stretches under a constant axial force S per unit width; with x measured from
+//    the middle of the span,
+//      D w'''' - S w'' = q,
+//    w = A + B cosh(k x) - q x^2/(2 S), k = sqrt(S/D), u = k l/2 (Timoshenko's tension
+//    parameter), and the end conditions give
+//      clamped  (w = w' = 0):  w' = (q/S) [(l/2) sinh(k x)/sinh(u) - x],
+//                              w(0) = (q/S) [l^2/8 - (l/(2k)) (cosh u - 1)/sinh u]
+//      simply supported (w = w'' = 0):
+//                              w' = (q/S) [sinh(k x)/(k cosh u) - x],
+//                              w(0) = (q/S) [l^2/8 - (1 - 1/cosh u)/k^2]
+//    (the latter is Timoshenko's w0 = 5 q l^4/(384 D) f0(u)). The edges do not move, so the
+//    stretching of the span is that of its slope alone:
+//      S l / C = 1/2 int w'^2 dx,   C = E h/(1 - nu^2)
+//    a scalar equation for S, solved here by bisection (the integral by Simpson's rule on 4000
+//    intervals). nu = 0, so that the plate's free long sides (M n = 0, N n = 0) leave the strip
+//    in the plane strain of an infinitely long one (no anticlastic curvature, eps_yy = 0); l/h =
+//    1000, so that the shear deflection of the Mindlin plate, ~10 (h/l)^2 of the bending one,
+//    stays below the discretisation error. Loads for a centre deflection of 0.5, 1.5 and 3
+//    thicknesses; 20, 40, 80 x 2 cells.
+// 2. Newton's iteration: quadratic (the residual norms of a plain Newton iteration with the
+//    analytic Jacobian, from rest), KINSOL's iteration counts for the strip, and the linear plate
+//    (geometric nonlinearity off) still one step.
+#include <gtest/gtest.h>
+
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+
+#include "../support/convergence_order.hpp"
+#include "mesh/structured_mesh.hpp"
+#include "physics/plate/von_karman_plate.hpp"
+#include "solvers/static_solve.hpp"
+
+using namespace rfmems;
+using Kind = PlateBoundary::Kind;
+
+namespace {
+
+constexpr double E = 200e9, l = 1.0, h = 1e-3;
+
+// Bisection of a function with f(lo) > 0 > f(hi) (or the reverse), on a log scale.
+double log_bisect(const std::function<double(double)>& f, double lo, double hi) {
+  const double f_lo = f(lo);
+  for (int i = 0; i < 60; ++i) {
+    const double mid = std::sqrt(lo * hi);
+    ((f(mid) > 0) == (f_lo > 0) ? lo : hi) = mid;
+  }
+  return std::sqrt(lo * hi);
+}
+
+// The strip at tension parameter u (1.): the pressure q that makes the stretching condition
+// hold (w' is proportional to q) and the centre deflection.
+struct StripState {
+  double q, w0;
+};
+StripState strip_at(bool clamped, double u, double D, double C) {
+  const double k = 2 * u / l, S = D * k * k;
+  auto slope = [&](double x) {  // w' / q
+    return clamped ? (l / 2 * std::sinh(k * x) / std::sinh(u) - x) / S
+                   : (std::sinh(k * x) / (k * std::cosh(u)) - x) / S;
+  };
+  const int n = 4000;
+  double sum = 0;
+  for (int i = 0; i <= n; ++i) {
+    const double x = -l / 2 + l * i / n, w = (i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2);
+    sum += w * slope(x) * slope(x);
+  }
+  const double integral = sum * l / (3 * n);  // int (w'/q)^2 dx
+  const double q = std::sqrt(S * l / C / (0.5 * integral));
+  const double w0 = clamped ? q / S * (l * l / 8 - l / (2 * k) * (std::cosh(u) - 1) / std::sinh(u))
+                            : q / S * (l * l / 8 - (1 - 1 / std::cosh(u)) / (k * k));
+  return {q, w0};
+}
+
+struct Strip {
+  Mesh mesh;
+  PlateSection section{E, 0.0, 7854, h};
+  std::unique_ptr<PlateOperator> plate;
+  std::unique_ptr<VonKarmanPlate> op;
+  Strip(int nx, bool clamped, double q) : mesh(make_mesh(nx)) {
+    std::vector<PlateBoundary> bcs(mesh.patches().size());
+    for (std::size_t p = 0; p < bcs.size(); ++p) {
+      const std::string& name = mesh.patches()[p].name;
+      bcs[p].kind = name == "left" || name == "right"
+                        ? (clamped ? Kind::Clamped : Kind::SimplySupportedHard)
+                        : Kind::Free;
+    }
+    plate =
+        std::make_unique<PlateOperator>(mesh, section, bcs, [q](const Vec3&, double) { return q; });
+    op = std::make_unique<VonKarmanPlate>(*plate);
+  }
+  static Mesh make_mesh(int nx) {
+    BoxSpec spec;
+    spec.upper = Vec3(l, l / 10, 0);
+    spec.n[0] = nx;
+    spec.n[1] = 2;
+    return make_structured_mesh(spec);
+  }
+  // The mean of the four centre cells' reconstructions at the centre.
+  double centre(std::span<const double> y) const {
+    const Vec3 c(l / 2, l / 20, 0);
+    double w = 0;
+    int count = 0;
+    for (Index k = 0; k < mesh.n_cells(); ++k)
+      if (std::abs(mesh.cell_centroid(k).x() - c.x()) < l / (mesh.n_cells() / 2)) {
+        w += plate->deflection_at(k, c, 0.0, y);
+        ++count;
+      }
+    EXPECT_EQ(count, 4);
+    return w / count;
+  }
+};
+
+}  // namespace
+
+TEST(VonKarmanPlate, CylindricalBendingOfAStripWithImmovableEdges) {
+  const PlateSection section{E, 0.0, 7854, h};
+  const double D = section.bending_stiffness(), C = E * h;
+  for (bool clamped : {true, false}) {
+    for (double target : {0.5, 1.5, 3.0}) {
+      const double u = log_bisect(
+          [&](double u) { return strip_at(clamped, u, D, C).w0 - target * h; }, 1e-2, 1e2);
+      const auto [q, exact] = strip_at(clamped, u, D, C);
+      double error[3];
+      const int meshes[3] = {40, 80, 160};
+      for (int m = 0; m < 3; ++m) {
+        Strip strip(meshes[m], clamped, q);
+        const StaticSolution sol = solve_static(*strip.op, 0.0);
+        const double w = strip.centre(sol.y);
+        error[m] = std::abs(w / exact - 1);
+        std::printf(
+            "%s strip, u = %.4f, q l^4/(E h^4) = %8.3f, %2d x 2: w_c/h = %.6f, closed form "
+            "%.6f, error %.2e, Newton iterations %ld\n",
+            clamped ? "clamped" : "simply supported", u, q * std::pow(l / h, 4) / E, meshes[m],
+            w / h, exact / h, error[m], sol.stats.newton_iters);
+      }
+      const double p = test_support::fitted_order({4.0, 2.0, 1.0}, {error[0], error[1], error[2]});
+      std::printf("  observed order %.2f\n", p);
+      EXPECT_GE(p, 1.8);
+      EXPECT_LT(error[2], 5e-4);
+    }
+  }
+}
+
+TEST(VonKarmanPlate, NewtonConvergesQuadratically) {
+  // The clamped strip at w_c = 3 h (q l^4/(E h^4) = 718.6), 80 x 2 cells, from rest.
+  Strip strip(80, true, 718.601 * E * std::pow(h / l, 4));
+  VonKarmanPlate& op = *strip.op;
+  const Index n = op.size();
+  std::vector<double> y(n, 0.0), r(n), values(op.stiffness_pattern().nnz());
+  const CsrPattern& pattern = op.stiffness_pattern();
+  std::vector<double> norms;
+  for (int it = 0; it < 30; ++it) {
+    op.internal_residual(0.0, y, r);
+    norms.push_back(Eigen::Map<Eigen::VectorXd>(r.data(), n).lpNorm<Eigen::Infinity>());
+    std::printf("Newton iteration %2d: ||R||_inf = %.3e\n", it, norms.back());
+    // Stop at the round-off floor (the residual no longer halves).
+    if (norms.size() > 2 && norms.back() > 0.5 * norms[norms.size() - 2] &&
+        norms.back() < 1e-6 * *std::max_element(norms.begin(), norms.end()))
+      break;
+    op.stiffness(0.0, y, values);
+    std::vector<Eigen::Triplet<double>> triplets;
+    for (Index i = 0; i < n; ++i)
+      for (Index k = pattern.row_ptr[i]; k < pattern.row_ptr[i + 1]; ++k)
+        triplets.emplace_back(i, pattern.col_idx[k], values[k]);
+    Eigen::SparseMatrix<double> K(n, n);
+    K.setFromTriplets(triplets.begin(), triplets.end());
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(K);
+    ASSERT_EQ(lu.info(), Eigen::Success);
+    const Eigen::VectorXd dy = lu.solve(Eigen::Map<Eigen::VectorXd>(r.data(), n));
+    for (Index i = 0; i < n; ++i) y[i] -= dy[i];
+  }
+  const std::size_t m = norms.size() - 2;  // the first iterate at the floor
+  ASSERT_LT(norms[m], 1e-8 * *std::max_element(norms.begin(), norms.end())) << "not converged";
+  // The last two reductions above round-off: log(r_k+1 / r_k) / log(r_k / r_k-1) -> 2.
+  const double order =
+      std::log(norms[m - 1] / norms[m - 2]) / std::log(norms[m - 2] / norms[m - 3]);
+  std::printf("Newton: %zu iterations, order of the last reductions %.2f\n", m, order);
+  EXPECT_GT(order, 1.8);
+  EXPECT_LE(m, 15u);
+
+  // KINSOL's iteration on the same plate, and the linear plate's one step.
+  const StaticSolution nonlinear = solve_static(op, 0.0);
+  std::printf("KINSOL: von Karman plate %ld Newton iterations, w_c/h = %.5f\n",
+              nonlinear.stats.newton_iters, strip.centre(nonlinear.y) / h);
+  EXPECT_GT(nonlinear.stats.newton_iters, 3);
+  EXPECT_LE(nonlinear.stats.newton_iters, 15);
+  EXPECT_NEAR(strip.centre(nonlinear.y) / h, strip.centre(y) / h, 1e-6);
+  const StaticSolution linear = solve_static(*strip.plate, 0.0);
+  std::printf("KINSOL: linear plate %ld Newton iteration, w_c/h = %.3f\n",
+              linear.stats.newton_iters, strip.centre(linear.y) / h);
+  EXPECT_EQ(linear.stats.newton_iters, 1);
+}
