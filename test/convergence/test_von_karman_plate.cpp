@@ -23,11 +23,21 @@
 //    1000, so that the shear deflection of the Mindlin plate, ~10 (h/l)^2 of the bending one,
 //    stays below the discretisation error. Loads for a centre deflection of 0.5, 1.5 and 3
 //    thicknesses; 20, 40, 80 x 2 cells.
-// 2. Newton's iteration: quadratic (the residual norms of a plain Newton iteration with the
+// 2. Modes about the deflected state: the clamped strip of 1. at w_c = 1.5 h, built from a case
+//    (model.geometric_nonlinearity: true, a modal analysis), linearised about its static state.
+//    The perturbation phi of an antisymmetric mode changes the stretching by
+//    dS = (C/l) int w' phi' dx = 0 (w' odd, phi' even), so the mode is that of the clamped beam
+//    under the constant tension S of the deflected state: D phi'''' - S phi'' = rho h omega^2 phi,
+//    phi = phi' = 0 at the ends, its frequency the second zero of the end conditions'
+//    determinant. The in-plane displacements and the rotations quasi-static (modal mass zero);
+//    40, 80, 160 x 2 cells.
+// 3. Newton's iteration: quadratic (the residual norms of a plain Newton iteration with the
 //    analytic Jacobian, from rest), KINSOL's iteration counts for the strip, and the linear plate
 //    (geometric nonlinearity off) still one step.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
 #include <algorithm>
@@ -36,8 +46,11 @@
 #include <functional>
 
 #include "../support/convergence_order.hpp"
+#include "io/case_file.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/plate/von_karman_plate.hpp"
+#include "physics/structure/modal_analysis.hpp"
+#include "physics/structure/structure_from_case.hpp"
 #include "solvers/static_solve.hpp"
 
 using namespace rfmems;
@@ -149,6 +162,88 @@ TEST(VonKarmanPlate, CylindricalBendingOfAStripWithImmovableEdges) {
       EXPECT_LT(error[2], 5e-4);
     }
   }
+}
+
+// The k-th natural frequency [rad/s] of the clamped-clamped beam D w'''' - S w'' = m omega^2 w
+// on [0, L] per unit width: the k-th sign change of the end conditions' determinant.
+double clamped_beam_in_tension(double D, double S, double m, double L, int k) {
+  auto det = [&](double omega) {
+    const double disc = std::sqrt(S * S / (4 * D * D) + m * omega * omega / D);
+    const double a = std::sqrt(S / (2 * D) + disc), b = std::sqrt(disc - S / (2 * D));
+    Eigen::Matrix4d A;
+    A << 1, 0, 1, 0,  //
+        0, a, 0, b,   //
+        std::cosh(a * L), std::sinh(a * L), std::cos(b * L), std::sin(b * L), a * std::sinh(a * L),
+        a * std::cosh(a * L), -b * std::sin(b * L), b * std::cos(b * L);
+    return A.determinant() / std::cosh(a * L);
+  };
+  // From below the first root (the pinned string's and the stress-free beam's are below it).
+  double lo = 0.5 * std::min(M_PI / L * std::sqrt(S / m), std::pow(4.73 / L, 2) * std::sqrt(D / m));
+  if (S == 0) lo = 0.5 * std::pow(4.73 / L, 2) * std::sqrt(D / m);
+  double hi = lo * 1.001;
+  for (int found = 0;; lo = hi, hi *= 1.001) {
+    if (det(lo) * det(hi) > 0) continue;
+    if (++found == k) break;
+  }
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (det(lo) * det(mid) <= 0 ? hi : lo) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+TEST(VonKarmanPlate, AntisymmetricModeAboutTheDeflectedStateIsTheBeamInTension) {
+  const double rho = 7854;
+  const PlateSection section{E, 0.0, rho, h};
+  const double D = section.bending_stiffness(), C = E * h;
+  const double u =
+      log_bisect([&](double u) { return strip_at(true, u, D, C).w0 - 1.5 * h; }, 1e-2, 1e2);
+  const double q = strip_at(true, u, D, C).q, S = D * std::pow(2 * u / l, 2);
+  const double exact = clamped_beam_in_tension(D, S, rho * h, l, 2) / (2 * M_PI);
+  const double free_beam = clamped_beam_in_tension(D, 0.0, rho * h, l, 2) / (2 * M_PI);
+  double error[3];
+  const int meshes[3] = {40, 80, 160};
+  for (int m = 0; m < 3; ++m) {
+    const std::string text = fmt::format(
+        "mesh: {{type: rectangle, lower: [0 m, 0 m], size: [{} m, {} m], cells: [{}, 2]}}\n"
+        "material: {{E: {} Pa, nu: 0, density: {} kg/m^3}}\n"
+        "model: {{structure: plate, thickness: {} m, geometric_nonlinearity: true}}\n"
+        "boundaries: {{left: {{type: clamped}}, right: {{type: clamped}}, bottom: {{type: free}}, "
+        "top: {{type: free}}}}\n"
+        "pressure: {{value: {} Pa}}\n",
+        l, l / 10, meshes[m], E, rho, h, q);
+    const CaseFile cf = CaseFile::parse(text, "strip.yaml");
+    std::unique_ptr<StructuralModel> model = build_structure(cf.root(), "", AnalysisType::Modal);
+    const StructuralModes modes = structural_modes(*model, 4, 0.0);
+    EXPECT_GT(modes.stats.newton.newton_iters, 1);  // the deflected state, by Newton
+    // The first mode whose w is antisymmetric about the middle of the span.
+    const Mesh& mesh = model->structure_mesh();
+    double f = 0;
+    for (std::size_t k = 0; k < modes.shapes.size() && f == 0; ++k) {
+      double odd = 0, even = 0;
+      for (Index c = 0; c < mesh.n_cells(); ++c) {
+        const Vec3 x = mesh.cell_centroid(c);
+        for (Index d = 0; d < mesh.n_cells(); ++d) {
+          const Vec3 y = mesh.cell_centroid(d);
+          if (std::abs(x.x() + y.x() - l) < 1e-9 && std::abs(x.y() - y.y()) < 1e-9) {
+            odd += std::abs(modes.shapes[k][3 * c] + modes.shapes[k][3 * d]);
+            even += std::abs(modes.shapes[k][3 * c] - modes.shapes[k][3 * d]);
+          }
+        }
+      }
+      if (odd < 1e-6 * even) f = modes.stats.modes[k].frequency;
+    }
+    ASSERT_GT(f, 0.0) << "no antisymmetric mode among the first four";
+    error[m] = std::abs(f / exact - 1);
+    std::printf(
+        "clamped strip at w_c = 1.5 h (S l^2/D = %.2f), %3d x 2: antisymmetric mode %.6f Hz, beam "
+        "in tension %.6f Hz (stress-free %.6f Hz), error %.2e\n",
+        S * l * l / D, meshes[m], f, exact, free_beam, error[m]);
+  }
+  const double p = test_support::fitted_order({4.0, 2.0, 1.0}, {error[0], error[1], error[2]});
+  std::printf("  observed order %.2f\n", p);
+  EXPECT_GE(p, 1.8);
+  EXPECT_LT(error[2], 1e-3);
 }
 
 TEST(VonKarmanPlate, NewtonConvergesQuadratically) {
