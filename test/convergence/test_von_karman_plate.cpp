@@ -35,6 +35,7 @@
 //    analytic Jacobian, from rest), KINSOL's iteration counts for the strip, and the linear plate
 //    (geometric nonlinearity off) still one step.
 #include <fmt/format.h>
+// 4. The input contract: the key on a continuum, and in a creep run.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -43,11 +44,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 
 #include "../support/convergence_order.hpp"
+#include "core/error.hpp"
 #include "io/case_file.hpp"
 #include "mesh/structured_mesh.hpp"
+#include "physics/creep/creep_case.hpp"
 #include "physics/plate/von_karman_plate.hpp"
 #include "physics/structure/modal_analysis.hpp"
 #include "physics/structure/structure_from_case.hpp"
@@ -294,4 +298,36 @@ TEST(VonKarmanPlate, NewtonConvergesQuadratically) {
   std::printf("KINSOL: linear plate %ld Newton iteration, w_c/h = %.3f\n",
               linear.stats.newton_iters, strip.centre(linear.y) / h);
   EXPECT_EQ(linear.stats.newton_iters, 1);
+}
+
+// The input contract: the key on a continuum and in a creep run is bad input naming the file,
+// the key and its value.
+TEST(VonKarmanPlate, UnsupportedCombinationsAreInputErrors) {
+  auto message = [](const std::function<void()>& build) {
+    try {
+      build();
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  const std::string plane =
+      "mesh: {type: rectangle, lower: [0 um, 0 um], size: [400 um, 10 um], cells: [8, 2]}\n"
+      "material: {E: 200 GPa, nu: 0.3}\n"
+      "model: {structure: plane, geometric_nonlinearity: true}\n"
+      "boundaries: {left: {type: fixed}, right: {type: free}, bottom: {type: free}, top: {type: "
+      "free}}\n";
+  const std::string continuum = message(
+      [&] { build_structure(CaseFile::parse(plane, "c.yaml").root(), "", AnalysisType::Static); });
+  EXPECT_NE(continuum.find("c.yaml: key 'model.geometric_nonlinearity' = 'true'"),
+            std::string::npos)
+      << continuum;
+  const std::string creep = message([] {
+    const std::string path = std::string(RFMEMS_SOURCE_DIR) + "/cases/creep_switch_hold/case.yaml";
+    const CaseFile cf = CaseFile::load(path, {"model.geometric_nonlinearity=true"});
+    read_creep_case(cf.root(), std::filesystem::path(path).parent_path().string());
+  });
+  EXPECT_NE(creep.find("case.yaml: key 'model.geometric_nonlinearity' = 'true': creep runs"),
+            std::string::npos)
+      << creep;
 }
