@@ -35,7 +35,7 @@
 //    analytic Jacobian, from rest), KINSOL's iteration counts for the strip, and the linear plate
 //    (geometric nonlinearity off) still one step.
 #include <fmt/format.h>
-// 4. The input contract: the key on a continuum, and in a creep run.
+// 4. The input contract: the continuum's follower loads and segregated method, creep runs.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -300,8 +300,9 @@ TEST(VonKarmanPlate, NewtonConvergesQuadratically) {
   EXPECT_EQ(linear.stats.newton_iters, 1);
 }
 
-// The input contract: the key on a continuum and in a creep run is bad input naming the file,
-// the key and its value.
+// The input contract: a pressure boundary (a follower load) or the segregated method with the
+// large-deformation continuum, and the key in a creep run, are bad input naming the file, the
+// key and its value.
 TEST(VonKarmanPlate, UnsupportedCombinationsAreInputErrors) {
   auto message = [](const std::function<void()>& build) {
     try {
@@ -316,12 +317,19 @@ TEST(VonKarmanPlate, UnsupportedCombinationsAreInputErrors) {
       "material: {E: 200 GPa, nu: 0.3}\n"
       "model: {structure: plane, geometric_nonlinearity: true}\n"
       "boundaries: {left: {type: fixed}, right: {type: free}, bottom: {type: free}, top: {type: "
-      "free}}\n";
-  const std::string continuum = message(
+      "pressure, value: 1 kPa}}\n";
+  const std::string pressure = message(
       [&] { build_structure(CaseFile::parse(plane, "c.yaml").root(), "", AnalysisType::Static); });
-  EXPECT_NE(continuum.find("c.yaml: key 'model.geometric_nonlinearity' = 'true'"),
+  EXPECT_NE(pressure.find("c.yaml: key 'boundaries.top.type' = 'pressure': a pressure follows"),
             std::string::npos)
-      << continuum;
+      << pressure;
+  const std::string segregated = message([&] {
+    const CaseFile cf =
+        CaseFile::parse(plane, "c.yaml", {"model.stress=segregated", "boundaries.top.type=free"});
+    build_structure(cf.root(), "", AnalysisType::Static);
+  });
+  EXPECT_NE(segregated.find("c.yaml: key 'model.stress' = 'segregated'"), std::string::npos)
+      << segregated;
   const std::string creep = message([] {
     const std::string path = std::string(RFMEMS_SOURCE_DIR) + "/cases/creep_switch_hold/case.yaml";
     const CaseFile cf = CaseFile::load(path, {"model.geometric_nonlinearity=true"});
