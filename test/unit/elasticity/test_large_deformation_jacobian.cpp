@@ -100,7 +100,7 @@ TEST(LargeDeformationJacobian, MatchesFiniteDifferencesInEveryHypothesis) {
       const std::vector<double> yp(system.size(), 0.0);
       const auto values = test_support::analytic_jacobian(system, 0.3, 0.0, y, yp);
       const double d = fd_difference(system, y, yp, 0.0, values);
-      std::printf("%s%s: max |J_fd - J| / max |J| = %.2e\n", dim,
+      std::printf("%s%s: max |J_fd - J| / max |J| = %.2e\n",
                   hyp == Hypothesis::PlaneStress   ? "plane stress"
                   : hyp == Hypothesis::PlaneStrain ? "plane strain"
                                                    : "3D",
