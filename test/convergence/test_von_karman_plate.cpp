@@ -35,8 +35,10 @@
 //    analytic Jacobian, from rest), KINSOL's iteration counts for the strip, and the linear plate
 //    (geometric nonlinearity off) still one step.
 #include <fmt/format.h>
-// 4. The input contract: the continuum's follower loads and segregated method, creep runs.
+// 4. The input contract: the continuum's follower loads and segregated method, creep runs, an
+//    in-plane release without geometric nonlinearity.
 // 5. The default switch as plate and as plane-stress beam: the same rise of its pull-in voltage.
+// 6. A strip with an end released in-plane (in_plane: free) does not stretch.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -55,6 +57,7 @@
 #include "io/case_file.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/creep/creep_case.hpp"
+#include "physics/plate/plate_scene.hpp"
 #include "physics/plate/von_karman_plate.hpp"
 #include "physics/structure/modal_analysis.hpp"
 #include "physics/structure/structure_from_case.hpp"
@@ -99,6 +102,14 @@ StripState strip_at(bool clamped, double u, double D, double C) {
   const double w0 = clamped ? q / S * (l * l / 8 - l / (2 * k) * (std::cosh(u) - 1) / std::sinh(u))
                             : q / S * (l * l / 8 - (1 - 1 / std::cosh(u)) / (k * k));
   return {q, w0};
+}
+
+// int_0^1 g(s) ds by Simpson's rule on 2000 intervals.
+double simpson_01(const std::function<double(double)>& g) {
+  const int n = 2000;
+  double sum = 0;
+  for (int i = 0; i <= n; ++i) sum += (i == 0 || i == n ? 1 : (i % 2 ? 4 : 2)) * g(double(i) / n);
+  return sum / (3 * n);
 }
 
 struct Strip {
@@ -333,6 +344,19 @@ TEST(VonKarmanPlate, UnsupportedCombinationsAreInputErrors) {
   });
   EXPECT_NE(segregated.find("c.yaml: key 'model.stress' = 'segregated'"), std::string::npos)
       << segregated;
+  const std::string released = message([] {
+    const CaseFile cf = CaseFile::parse(
+        "mesh: {type: rectangle, lower: [0 um, 0 um], size: [400 um, 40 um], cells: [8, 2]}\n"
+        "material: {E: 200 GPa, nu: 0.3}\n"
+        "model: {structure: plate, thickness: 2 um}\n"
+        "boundaries: {left: {type: clamped, in_plane: free}, right: {type: clamped}, bottom: "
+        "{type: free}, top: {type: free}}\n",
+        "p.yaml");
+    build_structure(cf.root(), "", AnalysisType::Static);
+  });
+  EXPECT_NE(released.find("p.yaml: key 'boundaries.left.in_plane' = 'free': is for the von Karman"),
+            std::string::npos)
+      << released;
   const std::string creep = message([] {
     const std::string path = std::string(RFMEMS_SOURCE_DIR) + "/cases/creep_switch_hold/case.yaml";
     const CaseFile cf = CaseFile::load(path, {"model.geometric_nonlinearity=true"});
@@ -371,4 +395,54 @@ TEST(VonKarmanPlate, PlateAndPlaneSwitchesStiffenAlike) {
   }
   EXPECT_GT(rise[0], 1.04);
   EXPECT_NEAR(rise[0], rise[1], 1e-3);
+}
+
+// The clamped strip of 1. with its right end released in-plane (boundaries.right.in_plane: free,
+// from a case): nothing holds the span's length, so no membrane force builds up (N = 0), the
+// deflection is the linear plate's, and the end slides in by the shortening of the deflected
+// span, u(x) = -1/2 int_0^x w'^2, with w' = q x (l - x)(l - 2x)/(12 D) of the clamped beam.
+TEST(VonKarmanPlate, AStripWithASlidingEndDoesNotStretch) {
+  const double D = PlateSection{E, 0.0, 7854, h}.bending_stiffness();
+  const double q = 718.601 * E * std::pow(h / l, 4);  // w_c = 3 h immovable, 22.5 h linear
+  const int nx = 80;
+  double w[2];
+  std::vector<double> y;
+  std::unique_ptr<StructuralModel> model;
+  for (int nonlinear = 0; nonlinear < 2; ++nonlinear) {
+    const std::string text = fmt::format(
+        "mesh: {{type: rectangle, lower: [0 m, 0 m], size: [{} m, {} m], cells: [{}, 2]}}\n"
+        "material: {{E: {} Pa, nu: 0}}\n"
+        "model: {{structure: plate, thickness: {} m, geometric_nonlinearity: {}}}\n"
+        "boundaries: {{left: {{type: clamped}}, right: {{type: clamped{}}}, bottom: {{type: "
+        "free}}, top: {{type: free}}}}\n"
+        "pressure: {{value: {} Pa}}\n",
+        l, l / 10, nx, E, h, nonlinear ? "true" : "false", nonlinear ? ", in_plane: free" : "", q);
+    const CaseFile cf = CaseFile::parse(text, "strip.yaml");
+    model = build_structure(cf.root(), "", AnalysisType::Static);
+    const StaticSolution sol = solve_static(model->structure(), 0.0);
+    const auto& plate = *dynamic_cast<PlateScene&>(*model).op;
+    w[nonlinear] =
+        plate.deflection_at(nx / 2, Vec3(l / 2, l / 20, 0), 0.0, sol.y);  // a centre cell
+    y = sol.y;
+  }
+  // The end cells' u against -1/2 int_0^x w'^2 dx at their centroids.
+  const auto& vk = *dynamic_cast<PlateScene&>(*model).von_karman;
+  const Mesh& mesh = model->structure_mesh();
+  double worst = 0, end_u = 0, end_exact = 0;
+  for (Index c = 0; c < mesh.n_cells(); ++c) {
+    const double x = mesh.cell_centroid(c).x();
+    const double exact = -0.5 * x * simpson_01([&](double s) {
+      const double xi = s * x;
+      return std::pow(q * xi * (l - xi) * (l - 2 * xi) / (12 * D), 2);
+    });
+    const double u = y[vk.in_plane_index(c, 0)];
+    worst = std::max(worst, std::abs(u - exact));
+    if (x > l - l / nx) end_u = u, end_exact = exact;
+  }
+  std::printf(
+      "sliding strip: w_c %.6e m (linear plate %.6e), end u %.6e m (-1/2 int w'^2: %.6e), worst "
+      "|u - exact| / |u_end| = %.2e\n",
+      w[1], w[0], end_u, end_exact, worst / std::abs(end_exact));
+  EXPECT_NEAR(w[1] / w[0], 1.0, 1e-4);
+  EXPECT_LT(worst, 5e-3 * std::abs(end_exact));
 }

@@ -142,12 +142,23 @@ PlateScene build_plate_scene(const CaseNode& root, const std::string& case_dir,
   std::vector<PlateBoundary> bcs;
   for (const CaseNode& entry : patch_entries(root.child("boundaries"), *scene.mesh)) {
     BoundaryEntry b = boundary_readers().at(entry.get_choice("type", types))(entry);
+    // The von Karman plate's in-plane condition on an edge that holds w: immovable (u = 0) or
+    // free (N n = 0).
+    if (entry.has("in_plane")) {
+      entry.require(geometric_nonlinearity, "in_plane",
+                    "is for the von Karman plate (model.geometric_nonlinearity: true)");
+      entry.require(b.bc.prescribes_deflection(), "in_plane",
+                    "is for an edge that holds the deflection (free and loaded edges carry no "
+                    "membrane force already)");
+    }
+    b.bc.in_plane_free = entry.get_choice("in_plane", {"immovable", "free"}, "immovable") == "free";
     bcs.push_back(std::move(b.bc));
     scene.load_time = std::max(scene.load_time, b.ramp);
   }
-  // Edges that hold no deflection hold no in-plane stress either.
-  require_released_edges_free(root.child("material"), scene.section.residual_stress, *scene.mesh,
-                              [&](int p) { return !bcs[p].prescribes_deflection(); });
+  // Edges that hold no deflection, or no in-plane displacement, hold no in-plane stress either.
+  require_released_edges_free(
+      root.child("material"), scene.section.residual_stress, *scene.mesh,
+      [&](int p) { return !bcs[p].prescribes_deflection() || bcs[p].in_plane_free; });
   ScalarField pressure = read_pressure(root, scene.load_time);
   scene.op = std::make_unique<PlateOperator>(*scene.mesh, scene.section, std::move(bcs),
                                              std::move(pressure), degree);

@@ -21,6 +21,8 @@
 //     edge2:  {type: load, shear: -100 N/m, moment: [0 N, 0 N]} # Q.n and M n per unit edge
 //                                                               # length acting on the plate
 //   (simply supported edges take an optional w and beta too: a support that moves)
+//   in_plane: immovable     # with geometric nonlinearity, on an edge that holds w: u = v = 0
+//                           # (immovable, the default) or N n = 0 (free: it slides)
 //   pressure: {value: -1 kPa, ramp: 0 s}   # uniform pressure along +z, optional
 //   point_loads:                           # optional; each on the cell nearest to `at`
 //     - {at: [200 um, 50 um], force: -1 uN, moment: [0 N*m, 0 N*m], ramp: 0 s}

@@ -22,57 +22,81 @@ VonKarmanPlate::VonKarmanPlate(PlateOperator& plate) : plate_(plate), mesh_(plat
   mu_ = 0.5 * membrane_stiffness * (1 - s.nu);
   lambda_ = membrane_stiffness * s.nu;
   const std::vector<PlateBoundary>& bcs = plate_.boundaries();
-  auto held = [&](Index f) { return bcs[mesh_.face_patch(f)].prescribes_deflection(); };
-  rec_ = std::make_unique<PolynomialReconstruction>(
-      mesh_, [&](Index f) { return held(f) ? BoundaryPoint::Value : BoundaryPoint::None; },
-      plate_.reconstruction_degree());
+  // w given (held edges), u given (held and not released in-plane).
+  auto w_held = [&](Index f) { return bcs[mesh_.face_patch(f)].prescribes_deflection(); };
+  auto u_held = [&](Index f) {
+    const PlateBoundary& bc = bcs[mesh_.face_patch(f)];
+    return bc.prescribes_deflection() && !bc.in_plane_free;
+  };
+  auto point = [](bool given) { return given ? BoundaryPoint::Value : BoundaryPoint::None; };
+  w_rec_ = std::make_unique<PolynomialReconstruction>(
+      mesh_, [&](Index f) { return point(w_held(f)); }, plate_.reconstruction_degree());
+  bool same = true;
+  for (Index f = 0; f < mesh_.n_faces() && same; ++f)
+    same = !mesh_.is_boundary(f) || w_held(f) == u_held(f);
+  if (!same)
+    own_u_rec_ = std::make_unique<PolynomialReconstruction>(
+        mesh_, [&](Index f) { return point(u_held(f)); }, plate_.reconstruction_degree());
+  const PolynomialReconstruction& u_rec = same ? *w_rec_ : *own_u_rec_;
 
   // Face-gradient weights: side(c, g, v) adds g grad p_c(x_f) + v p_c(x_f), with
-  // p_c(x) = phi_c + sum_j value_j (phi_j - phi_c), grad p_c(x) = sum_j gradient_j (phi_j - phi_c).
+  // p_c(x) = phi_c + sum_j value_j (phi_j - phi_c), grad p_c(x) = sum_j gradient_j (phi_j - phi_c),
+  // into the w weights (slot 0) or the u weights (slot 1); u's boundary values are zero.
   std::vector<Real> value;
   std::vector<Vec3> gradient;
   std::vector<GradientWeight> face;
-  auto add_side = [&](Index c, const Vec3& x, Real grad_factor, const Vec3& value_vector) {
-    rec_->weights_at(c, x, value, gradient);
-    auto points = rec_->points(c);
+  auto add_side = [&](const PolynomialReconstruction& rec, int slot, Index c, const Vec3& x,
+                      Real grad_factor, const Vec3& value_vector) {
+    rec.weights_at(c, x, value, gradient);
+    auto points = rec.points(c);
     Vec3 own = value_vector;
+    auto push = [&](Index cell, Index boundary_face, const Vec3& k) {
+      GradientWeight g{cell, boundary_face, Vec3::Zero(), Vec3::Zero()};
+      (slot == 0 ? g.w : g.u) = k;
+      face.push_back(g);
+    };
     for (std::size_t j = 0; j < points.size(); ++j) {
       const Vec3 k = grad_factor * gradient[j] + value[j] * value_vector;
       own -= k;
       if (points[j].kind == StencilPoint::Kind::Cell)
-        face.push_back({points[j].cell, -1, k});
-      else if (points[j].kind == StencilPoint::Kind::BoundaryValue)
-        face.push_back({-1, points[j].face, k});
-      else
+        push(points[j].cell, -1, k);
+      else if (points[j].kind == StencilPoint::Kind::BoundaryValue && slot == 0)
+        push(-1, points[j].face, k);
+      else if (points[j].kind == StencilPoint::Kind::Mirror)
         throw std::logic_error("von Karman plate: mirror stencil points are not supported");
     }
-    face.push_back({c, -1, own});
+    push(c, -1, own);
   };
   for (Index f = 0; f < mesh_.n_faces(); ++f) {
     const Index p = mesh_.face_owner(f), n = mesh_.face_neighbour(f);
-    if (n < 0 && !held(f)) continue;  // N n = 0
+    if (n < 0 && !u_held(f)) continue;  // N n = 0
     const Vec3& xf = mesh_.face_centroid(f);
     // The plate operator's face geometry: d = x_N - x_P (x_f - x_P on a boundary).
     const Vec3 d = (n >= 0 ? mesh_.cell_centroid(n) : xf) - mesh_.cell_centroid(p);
     const Vec3 jump = d / d.squaredNorm();  // e / |d|
     face.clear();
-    if (n >= 0) {
-      add_side(p, xf, 0.5, -jump);
-      add_side(n, xf, 0.5, jump);
-    } else {
-      add_side(p, xf, 1.0, -jump);
-      face.push_back({-1, f, jump});
+    for (int slot = 0; slot < 2; ++slot) {
+      const PolynomialReconstruction& rec = slot == 0 ? *w_rec_ : u_rec;
+      if (n >= 0) {
+        add_side(rec, slot, p, xf, 0.5, -jump);
+        add_side(rec, slot, n, xf, 0.5, jump);
+      } else {
+        add_side(rec, slot, p, xf, 1.0, -jump);
+      }
     }
+    if (n < 0) face.push_back({-1, f, jump, Vec3::Zero()});  // w_b (u_b = 0)
     // One weight per cell and per boundary value.
     std::vector<GradientWeight> merged;
     for (const GradientWeight& g : face) {
       auto it = std::find_if(merged.begin(), merged.end(), [&](const GradientWeight& m) {
         return m.cell == g.cell && m.face == g.face;
       });
-      if (it == merged.end())
+      if (it == merged.end()) {
         merged.push_back(g);
-      else
-        it->weight += g.weight;
+      } else {
+        it->w += g.w;
+        it->u += g.u;
+      }
     }
     faces_.push_back(f);
     weights_.insert(weights_.end(), merged.begin(), merged.end());
@@ -154,12 +178,11 @@ VonKarmanPlate::FaceState VonKarmanPlate::face_state(Index k, Real t,
   for (Index j = offset_[k]; j < offset_[k + 1]; ++j) {
     const GradientWeight& g = weights_[j];
     if (g.cell < 0) {
-      s.gw += g.weight * boundary_w(g.face, t);  // u = 0 there
+      s.gw += g.w * boundary_w(g.face, t);  // u = 0 there
       continue;
     }
-    s.gw += g.weight * y[3 * g.cell + PlateOperator::kW];
-    s.gu +=
-        Vec3(y[in_plane_index(g.cell, 0)], y[in_plane_index(g.cell, 1)], 0) * g.weight.transpose();
+    s.gw += g.w * y[3 * g.cell + PlateOperator::kW];
+    s.gu += Vec3(y[in_plane_index(g.cell, 0)], y[in_plane_index(g.cell, 1)], 0) * g.u.transpose();
   }
   s.gw.z() = 0;
   Mat3 eps = 0.5 * (s.gu + s.gu.transpose()) + 0.5 * s.gw * s.gw.transpose();
@@ -205,10 +228,10 @@ void VonKarmanPlate::stiffness(Real t, std::span<const Real> y, std::span<Real> 
     for (Index j = offset_[k]; j < offset_[k + 1]; ++j) {
       const GradientWeight& g = weights_[j];
       if (g.cell < 0) continue;
-      const Vec3& a = g.weight;
+      const Vec3 &a = g.w, &c = g.u;
       // Rows (F_w, F_u, F_v), columns (w, u, v) of the weight's cell.
       const Vec3 dFu_dw = mu_ * (a * s.gw.dot(S) + s.gw * a.dot(S)) + lambda_ * a.dot(s.gw) * S;
-      const Mat3 dFu_du = mu_ * (a.dot(S) * I + a * S.transpose()) + lambda_ * S * a.transpose();
+      const Mat3 dFu_du = mu_ * (c.dot(S) * I + c * S.transpose()) + lambda_ * S * c.transpose();
       Mat3 b;
       b(0, 0) = a.dot(NS) + s.gw.dot(dFu_dw);
       for (int i = 0; i < 2; ++i) {

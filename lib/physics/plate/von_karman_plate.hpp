@@ -22,8 +22,10 @@
 // so grad phi_f is a fixed linear map of the cell values, built once.
 //
 // Boundary conditions: an edge that holds the deflection (clamped, simply supported,
-// displacement) is immovable in-plane, u = 0; a free or loaded edge carries no membrane force,
-// N n = 0 (which is why the residual stress must vanish across it).
+// displacement) is immovable in-plane, u = 0, unless it is released in-plane
+// (PlateBoundary::in_plane_free); a released, free or loaded edge carries no membrane force,
+// N n = 0 (which is why the residual stress must vanish across it). The face gradients of w and
+// u then come from two reconstructions, each with its own given boundary values.
 //
 // Unknowns: the plate's (w, beta_x, beta_y) per cell first, as the plate operator numbers them
 // (so y[3c] is still w of cell c), then (u, v) per cell: y[3 n + 2c], y[3 n + 2c + 1].
@@ -67,12 +69,12 @@ class VonKarmanPlate : public SecondOrderOperator {
   std::vector<Mat3> membrane_forces(Real t, std::span<const Real> y) const;
 
  private:
-  // grad phi_f = sum over [offset_[f], offset_[f+1]) of weight times phi of `cell` (>= 0) or the
-  // prescribed value at boundary face `face` (cell < 0; w only, u = 0 there).
+  // grad w_f = sum over [offset_[k], offset_[k+1]) of w times w of `cell` (>= 0) or the
+  // prescribed w at boundary face `face` (cell < 0); grad u_f the same with u (u_b = 0).
   struct GradientWeight {
     Index cell;
     Index face;
-    Vec3 weight;
+    Vec3 w, u;
   };
   struct FaceState {
     Vec3 gw;  // grad w_f
@@ -86,7 +88,7 @@ class VonKarmanPlate : public SecondOrderOperator {
   PlateOperator& plate_;
   const Mesh& mesh_;
   Real mu_, lambda_;  // the membrane's E h / (2 (1 + nu)) and E h nu / (1 - nu^2)
-  std::unique_ptr<PolynomialReconstruction> rec_;
+  std::unique_ptr<PolynomialReconstruction> w_rec_, own_u_rec_;  // u's when they differ
   std::vector<Index> offset_{0};
   std::vector<GradientWeight> weights_;
   std::vector<Index> faces_;  // the faces that carry a membrane force

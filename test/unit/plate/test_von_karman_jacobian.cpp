@@ -1,11 +1,11 @@
 // The analytic Jacobian of the von Karman plate (physics/plate/von_karman_plate.hpp) against
 // central finite differences of its residual, on irregular non-orthogonal meshes (smooth
 // distortion, random jitter, grading), at random states whose slopes make the membrane strains
-// of the deflection comparable to those of the in-plane displacements, with held and free
-// edges (u = 0 and N n = 0), a residual stress, cubic and linear reconstructions, in the static
-// and the reduced-inertia transient forms. Entries are compared per class (row and column
-// kinds w, beta, u), each on its own scale; a Jacobian with a planted 1 % error in the
-// membrane-bending coupling dF_u/dw must fail the same check.
+// of the deflection comparable to those of the in-plane displacements, with held, free and
+// released edges (u = 0; N n = 0; w held but N n = 0), a residual stress, cubic and linear
+// reconstructions, in the static and the reduced-inertia transient forms. Entries are compared per
+// class (row and column kinds w, beta, u), each on its own scale; a Jacobian with a planted 1 %
+// error in the membrane-bending coupling dF_u/dw must fail the same check.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -107,7 +107,7 @@ struct Setup {
 };
 
 std::unique_ptr<Setup> setup(Kind left, Kind right, Kind bottom, Kind top, int degree,
-                             bool prestressed) {
+                             bool prestressed, bool release_right = false) {
   auto s =
       std::make_unique<Setup>(Setup{distorted_mesh(6, 5, 3), {200e9, 0.3, 7854, 0.05}, {}, {}});
   if (prestressed) s->section.residual_stress << 8e7, 3e7, 0, 3e7, 5e7, 0, 0, 0, 0;
@@ -189,6 +189,24 @@ INSTANTIATE_TEST_SUITE_P(
                                     Kind::SimplySupportedHard, 3, true},
                       VonKarmanCase{Kind::SimplySupportedHard, Kind::Free, Kind::Displacement,
                                     Kind::Load, 1, true}));
+
+// An edge that holds w but is released in-plane (N n = 0 there): separate reconstructions of w
+// and u.
+TEST(VonKarmanJacobian, EdgeReleasedInPlaneMatchesFiniteDifferences) {
+  auto s = setup(Kind::Clamped, Kind::SimplySupportedHard, Kind::Displacement, Kind::Free, 3, false,
+                 true);
+  StaticSystem system(*s->op);
+  const auto y = state(*s->op, 3);
+  const std::vector<double> yp(system.size(), 0.0);
+  const auto values = test_support::analytic_jacobian(system, 0.4, 0.0, y, yp);
+  EXPECT_LT(worst_class_difference(system, s->plate->size(), 0.4, 0.0, y, yp, values), 1e-6);
+  MembranePart membrane(*s->op);
+  StaticSystem membrane_system(membrane);
+  const auto membrane_values = test_support::analytic_jacobian(membrane_system, 0.4, 0.0, y, yp);
+  EXPECT_LT(
+      worst_class_difference(membrane_system, s->plate->size(), 0.4, 0.0, y, yp, membrane_values),
+      1e-6);
+}
 
 // A 1 % error planted in the membrane-bending coupling (rows u, v; columns w), or in the w-w
 // entries of the membrane part, is caught.
