@@ -111,8 +111,10 @@ std::unique_ptr<Setup> setup(Kind left, Kind right, Kind bottom, Kind top, int d
   auto s =
       std::make_unique<Setup>(Setup{distorted_mesh(6, 5, 3), {200e9, 0.3, 7854, 0.05}, {}, {}});
   if (prestressed) s->section.residual_stress << 8e7, 3e7, 0, 3e7, 5e7, 0, 0, 0, 0;
-  s->plate = std::make_unique<PlateOperator>(
-      s->mesh, s->section, boundaries(s->mesh, left, right, bottom, top), pressure, degree);
+  std::vector<PlateBoundary> bcs = boundaries(s->mesh, left, right, bottom, top);
+  for (std::size_t p = 0; p < bcs.size(); ++p)
+    bcs[p].in_plane_free = release_right && s->mesh.patches()[p].name == "right";
+  s->plate = std::make_unique<PlateOperator>(s->mesh, s->section, bcs, pressure, degree);
   s->op = std::make_unique<VonKarmanPlate>(*s->plate);
   return s;
 }
