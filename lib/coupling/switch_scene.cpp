@@ -69,6 +69,14 @@ SwitchScene build_switch_scene(const CaseNode& root, const std::string& case_dir
   for (const auto& [key, field] : own)
     act.require(s.field() == field || !act.has(key), key,
                 "only with actuation.electrostatics: " + field_name(field));
+  // The Laplace and immersed fields find equilibria by fixed points on the stiffness at rest
+  // (field_coupled_structure.hpp): a linear structure's.
+  if (const auto* beam = dynamic_cast<const ElasticityScene*>(s.structure.get()))
+    root.child("model").require(
+        !beam->op->geometric_nonlinearity() || s.field() == FieldModel::ParallelPlate,
+        "geometric_nonlinearity",
+        "the Laplace and immersed fields couple a linear structure (use actuation.electrostatics: "
+        "parallel_plate)");
   if (s.field() == FieldModel::Immersed) {
     auto* beam = dynamic_cast<ElasticityScene*>(s.structure.get());
     s.immersed = read_immersed_field(root, *beam, s.gas());

@@ -89,6 +89,11 @@ CreepCase read_creep_case(const CaseNode& root, const std::string& case_dir) {
   root.require(!root.has("analysis"), "analysis", "rfmems-creep runs a creep analysis; remove it");
 
   c.structure = build_structure(root, case_dir, AnalysisType::Static);
+  if (const auto* plate = dynamic_cast<const PlateScene*>(c.structure.get());
+      plate && plate->von_karman)
+    model.fail("geometric_nonlinearity",
+               "creep runs use the linear plate (the creep strains are bending strains about the "
+               "flat mid-surface)");
   if (root.has("actuation")) {
     // The hold voltage's field: the parallel-plate law the pull-in study uses.
     const CaseNode act = root.child("actuation");

@@ -18,6 +18,7 @@ std::unique_ptr<SecondOrderOperator> local_elasticity(const ElasticityOperator& 
                                                     std::move(boundaries), global.body_force(),
                                                     global.requested_reconstruction_degree());
   local->set_damping_time(global.damping_time());  // the global mesh's beta, not the part's
+  local->set_geometric_nonlinearity(global.geometric_nonlinearity());
   return local;
 }
 

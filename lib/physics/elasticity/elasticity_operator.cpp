@@ -159,9 +159,48 @@ std::vector<Mat3> ElasticityOperator::cell_gradients(Real t, std::span<const Rea
   return grad;
 }
 
-Vec3 ElasticityOperator::face_force(const Mat3& G, const Vec3& S) const {
+Vec3 ElasticityOperator::face_force(const Mat3& G, const Vec3& S, bool homogeneous) const {
+  if (nonlinear_ && !homogeneous)
+    return (Mat3::Identity() + G) * (second_piola_kirchhoff(G) * S) +
+           G * (material_.residual_stress * S);
   return mu_ * (G * S + G.transpose() * S) + lambda_ * G.trace() * S +
          G * (material_.residual_stress * S);
+}
+
+Mat3 ElasticityOperator::second_piola_kirchhoff(const Mat3& G) const {
+  Mat3 E = 0.5 * (G + G.transpose() + G.transpose() * G);
+  Mat3 I = Mat3::Identity();
+  if (dim_ == 2) {  // the in-plane strain and stress (E_zz of plane stress is implied)
+    E.row(2).setZero();
+    E.col(2).setZero();
+    I(2, 2) = 0;
+  }
+  return lambda_ * E.trace() * I + 2 * mu_ * E;
+}
+
+bool ElasticityOperator::face_gradient(Index f, Real t, std::span<const Real> u, bool homogeneous,
+                                       Mat3& G) const {
+  const Index n = mesh_.face_neighbour(f);
+  const Vec3& e = face_e_[f];
+  const Real inv_d = 1.0 / face_d_[f];
+  Vec3 vp, vn;
+  Mat3 gp, gn;
+  if (n >= 0) {
+    evaluate_side(side(f, 0), u, vp, gp);
+    evaluate_side(side(f, 1), u, vn, gn);
+    G = 0.5 * (gp + gn) + (vn - vp) * inv_d * e.transpose();
+    return true;
+  }
+  const ElasticityBoundary& bc = boundaries_[mesh_.face_patch(f)];
+  if (bc.kind == Kind::Traction) return false;
+  evaluate_side(side(f, 0), u, vp, gp);
+  if (bc.kind == Kind::Fixed) {
+    const Vec3 ub = homogeneous ? Vec3(Vec3::Zero()) : bc.at(mesh_.face_centroid(f), t);
+    G = gp + (ub - vp) * inv_d * e.transpose();
+  } else {  // symmetry: no normal displacement
+    G = gp - (normal_projector(mesh_.face_area(f)) * vp) * inv_d * e.transpose();
+  }
+  return true;
 }
 
 void ElasticityOperator::internal_residual(Real t, std::span<const Real> u, std::span<Real> r) {
@@ -193,33 +232,23 @@ void ElasticityOperator::add_internal_forces(Real t, std::span<const Real> u, bo
     for (int k = 0; k < dim_; ++k) r[c * dim_ + k] += scale * v[k];
   };
   compute_point_deltas(t, u, homogeneous);
-  Vec3 vp, vn;
-  Mat3 gp, gn;
+  Mat3 G;
   for (Index f = 0; f < mesh_.n_faces(); ++f) {
     const Index p = mesh_.face_owner(f), n = mesh_.face_neighbour(f);
     const Vec3& S = mesh_.face_area(f);
-    const Vec3& e = face_e_[f];
-    const Real inv_d = 1.0 / face_d_[f];
+    if (!face_gradient(f, t, u, homogeneous, G)) {  // traction
+      if (!homogeneous)
+        add(p, -boundaries_[mesh_.face_patch(f)].at(mesh_.face_centroid(f), t) * S.norm());
+      continue;
+    }
+    const Vec3 F = face_force(G, S, homogeneous);
     if (n >= 0) {
-      evaluate_side(side(f, 0), u, vp, gp);
-      evaluate_side(side(f, 1), u, vn, gn);
-      Vec3 F = face_force(0.5 * (gp + gn) + (vn - vp) * inv_d * e.transpose(), S);
       add(p, -F);
       add(n, F);
-      continue;
-    }
-    const ElasticityBoundary& bc = boundaries_[mesh_.face_patch(f)];
-    if (bc.kind == Kind::Traction) {
-      if (!homogeneous) add(p, -bc.at(mesh_.face_centroid(f), t) * S.norm());
-      continue;
-    }
-    evaluate_side(side(f, 0), u, vp, gp);
-    if (bc.kind == Kind::Fixed) {
-      const Vec3 ub = homogeneous ? Vec3(Vec3::Zero()) : bc.at(mesh_.face_centroid(f), t);
-      add(p, -face_force(gp + (ub - vp) * inv_d * e.transpose(), S));
-    } else {  // symmetry: no normal displacement, only the normal force is transmitted
-      Mat3 nn = normal_projector(S);
-      add(p, -(nn * face_force(gp - (nn * vp) * inv_d * e.transpose(), S)));
+    } else if (boundaries_[mesh_.face_patch(f)].kind == Kind::Fixed) {
+      add(p, -F);
+    } else {  // symmetry: only the normal force is transmitted
+      add(p, -(normal_projector(S) * F));
     }
   }
   if (body_force_ && !homogeneous)
@@ -250,10 +279,12 @@ void ElasticityOperator::append_side_terms(const FaceSide& s, Real grad_factor, 
   terms.push_back({s.cell, value_map, value_factor * (1 - value_sum) * e});
 }
 
-void ElasticityOperator::stiffness(Real, std::span<const Real>, std::span<Real> values) {
+void ElasticityOperator::stiffness(Real t, std::span<const Real> u, std::span<Real> values) {
   std::fill(values.begin(), values.end(), 0.0);
   std::vector<Term> terms;
   const Mat3 I = Mat3::Identity();
+  if (nonlinear_) compute_point_deltas(t, u);
+  Mat3 G = Mat3::Zero();
   for (Index f = 0; f < mesh_.n_faces(); ++f) {
     const Index p = mesh_.face_owner(f), n = mesh_.face_neighbour(f);
     const Vec3& S = mesh_.face_area(f);
@@ -275,11 +306,24 @@ void ElasticityOperator::stiffness(Real, std::span<const Real>, std::span<Real> 
       }
     }
     // F = mu (G S + G^T S) + lambda tr(G) S + G sigma0 S with G = a h^T, a = T u_c:
-    // dF/da = mu (h.S) I + mu h S^T + lambda S h^T + (h.sigma0 S) I.
+    // dF/da = mu (h.S) I + mu h S^T + lambda S h^T + (h.sigma0 S) I; with large deformations
+    // the total Lagrangian derivative of the header.
     const Vec3 prestress = material_.residual_stress * S;
+    Mat3 Fd = I, FFt = I;
+    Vec3 FS = S, stress_S = prestress;
+    if (nonlinear_) {
+      face_gradient(f, t, u, false, G);
+      Fd = I + G;
+      FFt = Fd * Fd.transpose();
+      FS = Fd * S;
+      stress_S += second_piola_kirchhoff(G) * S;
+    }
     for (const Term& term : terms) {
-      Mat3 dF = (mu_ * term.h.dot(S) + term.h.dot(prestress)) * I + mu_ * term.h * S.transpose() +
-                lambda_ * S * term.h.transpose();
+      const Vec3 Fh = Fd * term.h;
+      Mat3 dF = nonlinear_ ? Mat3(term.h.dot(stress_S) * I + lambda_ * FS * Fh.transpose() +
+                                  mu_ * term.h.dot(S) * FFt + mu_ * Fh * FS.transpose())
+                           : Mat3((mu_ * term.h.dot(S) + term.h.dot(prestress)) * I +
+                                  mu_ * term.h * S.transpose() + lambda_ * S * term.h.transpose());
       Mat3 block = out * dF * term.T;
       sparsity().add_block(values, p, term.cell, -block);
       if (n >= 0) sparsity().add_block(values, n, term.cell, block);

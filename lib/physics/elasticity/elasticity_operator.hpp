@@ -22,6 +22,17 @@
 // Jacobian: the full linearisation of the stress tensor (thesis "Formulation 2"): the
 // transpose and trace terms and the reconstruction stencils all enter dR/du exactly, so a
 // linear static problem converges in one Newton step.
+//
+// Large deformations (set_geometric_nonlinearity; model.geometric_nonlinearity): total
+// Lagrangian on the reference mesh, F = I + G, the Green-Lagrange strain E = (F^T F - I)/2 and
+// the St Venant-Kirchhoff second Piola-Kirchhoff stress S = lambda tr(E) I + 2 mu E (in plane
+// stress with the reduced lambda*, which for this material is exact: S_zz = 0 fixes E_zz). The
+// face force is the first Piola-Kirchhoff traction on the reference face, P S_f = F S S_f, plus
+// the prestress's G sigma0 S_f as above; loads are dead (tractions per reference area, body
+// forces per reference volume). With G_f = a h^T for the unknowns a of one stencil term,
+//   d(P S_f)/da = (h.(S + sigma0) S_f) I + lambda (F S_f)(F h)^T + mu (h.S_f) F F^T
+//                 + mu (F h)(F S_f)^T
+// (at G = 0 the linear block). The Kelvin-Voigt damping keeps the stiffness at rest.
 #pragma once
 #include <memory>
 #include <vector>
@@ -74,10 +85,13 @@ class ElasticityOperator : public SecondOrderOperator {
   // omega^2 / 2, while the bending modes, 1e2-1e4 times slower, keep damping ratios beta omega / 2
   // of 1e-5 (the switches' meshes) to 4e-4 (a coarse 3D beam).
   Real damping_time() const override { return damping_time_; }
+  // Large deformations (see above); off by default.
+  void set_geometric_nonlinearity(bool on) { nonlinear_ = on; }
+  bool geometric_nonlinearity() const { return nonlinear_; }
   void set_damping_time(Real beta) { damping_time_ = beta; }
   void add_damping_force(Real t, std::span<const Real> v, std::span<Real> r) override;
-  // K v: the residual's homogeneous part (R is affine in u).
-  bool has_stiffness_product() const override { return true; }
+  // K v: the residual's homogeneous part, where R is affine in u (small deformations).
+  bool has_stiffness_product() const override { return !nonlinear_; }
   void stiffness_product(Real t, std::span<const Real> u, std::span<const Real> v,
                          std::span<Real> kv) override;
   // The beta that gives damping ratio zeta at the grid's highest frequency omega_h = 2 c_p /
@@ -141,8 +155,14 @@ class ElasticityOperator : public SecondOrderOperator {
   Vec3 cell_u(std::span<const Real> u, Index c) const;
   // The Jacobian's block sparsity: each cell's stencil is the cells its face forces use.
   const BlockSparsity& sparsity() const;
-  // Face force sigma_f S_f + G sigma0 S_f for face f given the face gradient.
-  Vec3 face_force(const Mat3& G, const Vec3& S) const;
+  // Face force sigma_f S_f + G sigma0 S_f for face f given the face gradient; with large
+  // deformations (and not homogeneous) F S S_f + G sigma0 S_f.
+  Vec3 face_force(const Mat3& G, const Vec3& S, bool homogeneous = false) const;
+  // The Green-Lagrange strain's second Piola-Kirchhoff stress of a displacement gradient.
+  Mat3 second_piola_kirchhoff(const Mat3& G) const;
+  // The face gradient G_f of boundary or interior face f (after compute_point_deltas); false
+  // for a traction face, which has none.
+  bool face_gradient(Index f, Real t, std::span<const Real> u, bool homogeneous, Mat3& G) const;
 
   const Mesh& mesh_;
   LinearElastic material_;
@@ -162,6 +182,7 @@ class ElasticityOperator : public SecondOrderOperator {
   std::vector<Vec3> face_e_;               // unit vector P -> N (or P -> face centroid)
   std::vector<Real> face_d_;               // |d|
   Real damping_time_ = 0;                  // beta of the Kelvin-Voigt damping
+  bool nonlinear_ = false;                 // large deformations
 };
 
 }  // namespace rfmems

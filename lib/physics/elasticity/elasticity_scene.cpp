@@ -181,7 +181,8 @@ SegregatedOptions read_segregated(const CaseNode& root) {
 }  // namespace
 
 ElasticityScene build_elasticity_scene(const CaseNode& root, const std::string& case_dir,
-                                       AnalysisType analysis, const std::string& structure) {
+                                       AnalysisType analysis, const std::string& structure,
+                                       bool geometric_nonlinearity) {
   ElasticityScene scene;
   scene.mesh = std::make_unique<Mesh>(mesh_from_case(root.child("mesh"), case_dir));
   const int dim = scene.mesh->dim();
@@ -195,6 +196,9 @@ ElasticityScene build_elasticity_scene(const CaseNode& root, const std::string& 
     model.require(analysis == AnalysisType::Static, "stress",
                   "the segregated method is for static analyses only (analysis.type static)");
     scene.segregated = read_segregated(root);
+    model.require(!geometric_nonlinearity, "stress",
+                  "the segregated method is for small deformations (model.geometric_nonlinearity "
+                  "is true)");
   }
 
   // Face-gradient reconstruction: linear (the thesis's scheme), quadratic or cubic; the
@@ -205,6 +209,11 @@ ElasticityScene build_elasticity_scene(const CaseNode& root, const std::string& 
       model.get_choice("reconstruction", {"default", "linear", "quadratic", "cubic"}, "default"));
 
   std::vector<ElasticityBoundary> bcs = read_boundaries(root, *scene.mesh, scene.load_time);
+  if (geometric_nonlinearity)
+    for (const CaseNode& entry : patch_entries(root.child("boundaries"), *scene.mesh))
+      entry.require(entry.get_string("type") != "pressure", "type",
+                    "a pressure follows the deformed surface, and the large-deformation model "
+                    "(model.geometric_nonlinearity) has dead loads only: use a traction");
   require_released_edges_free(
       root.child("material"), scene.material.residual_stress, *scene.mesh,
       [&](int p) { return bcs[p].kind == ElasticityBoundary::Kind::Traction; });
@@ -214,6 +223,7 @@ ElasticityScene build_elasticity_scene(const CaseNode& root, const std::string& 
   // Grid damping: the damping ratio at the grid's highest frequency of the Kelvin-Voigt
   // damping that keeps the stiffness's growing grid-scale modes decaying (ElasticityOperator::
   // grid_damping_time; docs/immersed_switch.md, "Grid damping"). 0: undamped.
+  scene.op->set_geometric_nonlinearity(geometric_nonlinearity);
   scene.op->set_damping_time(scene.op->grid_damping_time(
       model.get_real("grid_damping", kGridDamping, Range::closed(0.0, 1.0))));
   return scene;

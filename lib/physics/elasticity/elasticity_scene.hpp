@@ -11,6 +11,10 @@
 //     reconstruction: default       # default (cubic 2D, quadratic 3D) | linear | quadratic | cubic
 //     grid_damping: 0.2             # damping ratio at the grid's highest frequency, in [0, 1]
 //                                   # (numerical Kelvin-Voigt damping; 0: none)
+//     geometric_nonlinearity: false # true: total Lagrangian, St Venant-Kirchhoff (see
+//                                   # ElasticityOperator); read by build_structure. Loads stay
+//                                   # dead: a pressure boundary (a follower load) and the
+//                                   # segregated method are bad input with it
 //   boundaries:                     # one entry per mesh patch, no more, no fewer
 //     left:   {type: fixed}                                    # u = value (default 0)
 //     right:  {type: traction, value: [0, -1000 Pa], ramp: 0.02 s}
@@ -46,7 +50,8 @@ std::string to_string(StressMethod method);  // "coupled", "segregated"
 
 // Fields written per output: displacement (n x 3, z = 0 in 2D) [m], velocity [m/s]
 // (transients), stress (n x 6, Voigt xx yy zz yz xz xy) [Pa] from the cell gradients.
-// Probes record the displacement (ux, uy, uz) from the cell's reconstruction.
+// Probes record the displacement (ux, uy, uz) from the cell's reconstruction. With geometric
+// nonlinearity the stress field is still that of the small-strain law, C : sym(grad u).
 struct ElasticityScene : StructuralModel {
   // On the heap because the operator keeps a reference to the mesh: the scene may move.
   std::unique_ptr<Mesh> mesh;
@@ -78,9 +83,10 @@ struct ElasticityScene : StructuralModel {
 
 // Reads mesh, material, model, boundaries, body_force (and solver.segregated) from the case
 // root; structure: plane or solid3d as build_structure read model.structure (empty: the one
-// the mesh's dimension says). case_dir locates relative mesh files. InputError on anything
-// wrong.
+// the mesh's dimension says); geometric_nonlinearity as build_structure read it. case_dir
+// locates relative mesh files. InputError on anything wrong.
 ElasticityScene build_elasticity_scene(const CaseNode& root, const std::string& case_dir,
-                                       AnalysisType analysis, const std::string& structure = "");
+                                       AnalysisType analysis, const std::string& structure = "",
+                                       bool geometric_nonlinearity = false);
 
 }  // namespace rfmems

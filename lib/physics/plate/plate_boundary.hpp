@@ -23,6 +23,9 @@ struct PlateBoundary {
   enum class Kind { Clamped, Displacement, SimplySupportedHard, SimplySupportedSoft, Free, Load };
   Kind kind = Kind::Free;
   std::function<Vec3(const Vec3& x, Real t)> value;  // empty: zero
+  // The von Karman plate (von_karman_plate.hpp) only: an edge that holds w but not the in-plane
+  // displacement (N n = 0 there instead of u = 0).
+  bool in_plane_free = false;
 
   Vec3 at(const Vec3& x, Real t) const { return value ? value(x, t) : Vec3::Zero(); }
   // w is prescribed (the transverse shear force is a reaction).

@@ -126,7 +126,7 @@ void add_point_loads(const CaseNode& root, const Mesh& mesh, PlateOperator& op, 
 }  // namespace
 
 PlateScene build_plate_scene(const CaseNode& root, const std::string& case_dir,
-                             AnalysisType analysis) {
+                             AnalysisType analysis, bool geometric_nonlinearity) {
   PlateScene scene;
   scene.mesh = std::make_unique<Mesh>(mesh_from_case(root.child("mesh"), case_dir));
   const CaseNode model = root.child("model");
@@ -142,16 +142,28 @@ PlateScene build_plate_scene(const CaseNode& root, const std::string& case_dir,
   std::vector<PlateBoundary> bcs;
   for (const CaseNode& entry : patch_entries(root.child("boundaries"), *scene.mesh)) {
     BoundaryEntry b = boundary_readers().at(entry.get_choice("type", types))(entry);
+    // The von Karman plate's in-plane condition on an edge that holds w: immovable (u = 0) or
+    // free (N n = 0).
+    if (entry.has("in_plane")) {
+      entry.require(geometric_nonlinearity, "in_plane",
+                    "is for the von Karman plate (model.geometric_nonlinearity: true)");
+      entry.require(b.bc.prescribes_deflection(), "in_plane",
+                    "is for an edge that holds the deflection (free and loaded edges carry no "
+                    "membrane force already)");
+    }
+    b.bc.in_plane_free = entry.get_choice("in_plane", {"immovable", "free"}, "immovable") == "free";
     bcs.push_back(std::move(b.bc));
     scene.load_time = std::max(scene.load_time, b.ramp);
   }
-  // Edges that hold no deflection hold no in-plane stress either.
-  require_released_edges_free(root.child("material"), scene.section.residual_stress, *scene.mesh,
-                              [&](int p) { return !bcs[p].prescribes_deflection(); });
+  // Edges that hold no deflection, or no in-plane displacement, hold no in-plane stress either.
+  require_released_edges_free(
+      root.child("material"), scene.section.residual_stress, *scene.mesh,
+      [&](int p) { return !bcs[p].prescribes_deflection() || bcs[p].in_plane_free; });
   ScalarField pressure = read_pressure(root, scene.load_time);
   scene.op = std::make_unique<PlateOperator>(*scene.mesh, scene.section, std::move(bcs),
                                              std::move(pressure), degree);
   add_point_loads(root, *scene.mesh, *scene.op, scene.load_time);
+  if (geometric_nonlinearity) scene.von_karman = std::make_unique<VonKarmanPlate>(*scene.op);
   return scene;
 }
 
@@ -163,6 +175,10 @@ void PlateScene::write_fields(ResultWriter& writer, int index, Real t, std::span
   const std::vector<Mat3> gradients = op->rotation_gradients(t, y);
   const std::vector<Vec3> q = op->shear_forces(t, y);
   for (Index c = 0; c < nc; ++c) {
+    if (von_karman) {
+      deflection[3 * c] = y[von_karman->in_plane_index(c, 0)];
+      deflection[3 * c + 1] = y[von_karman->in_plane_index(c, 1)];
+    }
     deflection[3 * c + 2] = y[3 * c + PlateOperator::kW];
     rotation[3 * c] = y[3 * c + PlateOperator::kBetaX];
     rotation[3 * c + 1] = y[3 * c + PlateOperator::kBetaY];
@@ -173,7 +189,10 @@ void PlateScene::write_fields(ResultWriter& writer, int index, Real t, std::span
     shear[3 * c] = q[c].x();
     shear[3 * c + 1] = q[c].y();
   }
-  writer.write_cell_field_at(index, t, "deflection", deflection, 3, {"0", "0", "w"});
+  if (von_karman)
+    writer.write_cell_field_at(index, t, "deflection", deflection, 3, {"u", "v", "w"});
+  else
+    writer.write_cell_field_at(index, t, "deflection", deflection, 3, {"0", "0", "w"});
   writer.write_cell_field_at(index, t, "rotation", rotation, 3, {"beta_x", "beta_y", "0"});
   if (!v.empty()) {
     std::vector<double> velocity(3 * nc, 0.0);
@@ -182,6 +201,16 @@ void PlateScene::write_fields(ResultWriter& writer, int index, Real t, std::span
   }
   writer.write_cell_field_at(index, t, "moment", moment, 3, {"Mxx", "Myy", "Mxy"});
   writer.write_cell_field_at(index, t, "shear_force", shear, 3, {"Qx", "Qy", "0"});
+  if (von_karman) {
+    std::vector<double> membrane(3 * nc);
+    const std::vector<Mat3> N = von_karman->membrane_forces(t, y);
+    for (Index c = 0; c < nc; ++c) {
+      membrane[3 * c] = N[c](0, 0);
+      membrane[3 * c + 1] = N[c](1, 1);
+      membrane[3 * c + 2] = N[c](0, 1);
+    }
+    writer.write_cell_field_at(index, t, "membrane_force", membrane, 3, {"Nxx", "Nyy", "Nxy"});
+  }
 }
 
 std::vector<Vec3> PlateScene::probe_values(const std::vector<Probe>& probes, Real t,

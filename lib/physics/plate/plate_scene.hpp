@@ -10,6 +10,8 @@
 //     thickness: 4 um                # h > 0
 //     shear_correction: 0.8333       # k in Q = k G h (grad w + beta), default 5/6
 //     reconstruction: cubic          # linear | quadratic | cubic (default; see PlateOperator)
+//     geometric_nonlinearity: false  # true: the von Karman plate (von_karman_plate.hpp), the
+//                                    # in-plane displacements u, v added; read by build_structure
 //   boundaries:                      # one entry per mesh patch
 //     left:   {type: clamped}                          # w = 0, beta = 0
 //     right:  {type: simply_supported}                 # w = 0, M_nn = 0, beta.t = 0 (hard)
@@ -19,6 +21,8 @@
 //     edge2:  {type: load, shear: -100 N/m, moment: [0 N, 0 N]} # Q.n and M n per unit edge
 //                                                               # length acting on the plate
 //   (simply supported edges take an optional w and beta too: a support that moves)
+//   in_plane: immovable     # with geometric nonlinearity, on an edge that holds w: u = v = 0
+//                           # (immovable, the default) or N n = 0 (free: it slides)
 //   pressure: {value: -1 kPa, ramp: 0 s}   # uniform pressure along +z, optional
 //   point_loads:                           # optional; each on the cell nearest to `at`
 //     - {at: [200 um, 50 um], force: -1 uN, moment: [0 N*m, 0 N*m], ramp: 0 s}
@@ -28,12 +32,15 @@
 // rotation (beta_x, beta_y, 0), velocity (transients: 0, 0, dw/dt), moment (n x 3: M_xx,
 // M_yy, M_xy) [N m/m] from the cell rotation gradients, shear_force (Q_x, Q_y, 0) [N/m].
 // Probes record (w, beta_x, beta_y) at their point from the cell's reconstruction.
+// With geometric nonlinearity the deflection field is (u, v, w) and a membrane_force field
+// (N_xx, N_yy, N_xy) [N/m] of the stretching (without the residual stress's N0) is written.
 #pragma once
 #include <memory>
 #include <string>
 
 #include "io/case_file.hpp"
 #include "physics/plate/plate_operator.hpp"
+#include "physics/plate/von_karman_plate.hpp"
 #include "physics/structure/structural_model.hpp"
 
 namespace rfmems {
@@ -42,13 +49,18 @@ struct PlateScene : StructuralModel {
   std::unique_ptr<Mesh> mesh;  // on the heap: the operator keeps a reference
   PlateSection section;
   std::unique_ptr<PlateOperator> op;
-  Real load_time = 0;  // the longest ramp
+  std::unique_ptr<VonKarmanPlate> von_karman;  // with geometric nonlinearity: built on op
+  Real load_time = 0;                          // the longest ramp
 
   std::string kind() const override { return "plate"; }
   const Mesh& structure_mesh() const override { return *mesh; }
-  SecondOrderOperator& structure() override { return *op; }
+  SecondOrderOperator& structure() override {
+    return von_karman ? static_cast<SecondOrderOperator&>(*von_karman) : *op;
+  }
   Real ramp_end_time() const override { return load_time; }
-  std::vector<bool> quasi_static_components() const override { return op->rotation_components(); }
+  std::vector<bool> quasi_static_components() const override {
+    return von_karman ? von_karman->quasi_static_components() : op->rotation_components();
+  }
   void write_fields(ResultWriter& writer, int index, Real t, std::span<const Real> y,
                     std::span<const Real> v) const override;
   std::array<std::string, 3> probe_components() const override { return {"w", "beta_x", "beta_y"}; }
@@ -65,9 +77,10 @@ struct PlateScene : StructuralModel {
 // cells (plate_scene.cpp).
 std::vector<GapElement> plate_gap_elements(const Mesh& mesh, const PlateOperator& op);
 
-// Reads the keys above from the case root (model.structure, which chose the plate, is
-// build_structure's). case_dir locates relative mesh files. InputError on anything wrong.
+// Reads the keys above from the case root (model.structure, which chose the plate, and
+// model.geometric_nonlinearity, passed as geometric_nonlinearity, are build_structure's).
+// case_dir locates relative mesh files. InputError on anything wrong.
 PlateScene build_plate_scene(const CaseNode& root, const std::string& case_dir,
-                             AnalysisType analysis);
+                             AnalysisType analysis, bool geometric_nonlinearity = false);
 
 }  // namespace rfmems

@@ -7,6 +7,7 @@
 #include "parallel/single_rank_operator.hpp"
 #include "physics/elasticity/distributed_elasticity.hpp"
 #include "physics/plate/distributed_plate.hpp"
+#include "physics/plate/von_karman_plate.hpp"
 #include "physics/structure/output_schedule.hpp"
 #include "solvers/distributed_ida_integrator.hpp"
 #include "solvers/distributed_static_solve.hpp"
@@ -19,6 +20,9 @@ namespace {
 std::string why_not_distributable(StructuralModel& model, const AnalysisSettings& settings) {
   const bool continuum = dynamic_cast<const ElasticityOperator*>(&model.structure()) != nullptr;
   const bool plate = dynamic_cast<const PlateOperator*>(&model.structure()) != nullptr;
+  if (dynamic_cast<const VonKarmanPlate*>(&model.structure()))
+    return "does not support model.geometric_nonlinearity (the von Karman plate is solved on one "
+           "rank with KLU)";
   if (settings.type == AnalysisType::Modal || settings.type == AnalysisType::Harmonic)
     return "is for static and transient analyses; modal and harmonic analyses are solved on "
            "one rank with a direct factorisation";
@@ -136,6 +140,7 @@ AnalysisStats run_distributed_analysis(StructuralModel& model, const AnalysisSet
   // matrix-free with the linear reconstruction's operator as the preconditioner's matrix.
   std::unique_ptr<ElasticityOperator> compact;
   if (comm.is_serial() && elasticity && elasticity->dim() == 3 &&
+      elasticity->has_stiffness_product() &&
       settings.linear == AnalysisSettings::Linear::Multigrid &&
       settings.type == AnalysisType::Static) {
     compact =

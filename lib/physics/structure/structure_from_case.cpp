@@ -13,10 +13,13 @@ std::unique_ptr<StructuralModel> build_structure(const CaseNode& root, const std
   const CaseNode model = root.child("model");
   const std::string structure =
       model.has("structure") ? model.get_choice("structure", {"plane", "solid3d", "plate"}) : "";
+  // The one reader of model.geometric_nonlinearity: the von Karman plate, or the total
+  // Lagrangian continuum.
+  const bool nonlinear = model.get_bool("geometric_nonlinearity", false);
   if (structure == "plate")
-    return std::make_unique<PlateScene>(build_plate_scene(root, case_dir, analysis));
+    return std::make_unique<PlateScene>(build_plate_scene(root, case_dir, analysis, nonlinear));
   return std::make_unique<ElasticityScene>(
-      build_elasticity_scene(root, case_dir, analysis, structure));
+      build_elasticity_scene(root, case_dir, analysis, structure, nonlinear));
 }
 
 CaseSchema structure_case_keys() {
