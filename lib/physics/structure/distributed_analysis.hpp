@@ -20,8 +20,8 @@ namespace rfmems {
 
 // solver.linear auto solves a 3D continuum's static problem with multigrid above this many
 // unknowns, where GMRES with BoomerAMG overtakes KLU (the 3D box: equal at 1920 unknowns, 1.6x
-// faster at 6480, 4x at 15360; docs/scale.md). Plane and plate structures stay direct: KLU's fill
-// is mild in 2D and the cycle is weak on their slender beams (docs/scale.md).
+// faster at 6480, 6.1x at 15360, in CPU; docs/scale.md). Plane and plate structures stay direct:
+// on slender plane beams the cycle is weak and KLU the faster (docs/scale.md).
 inline constexpr Index kMultigridUnknowns = 5000;
 
 // Settles solver.linear (auto becomes direct or multigrid) and checks that the model and the

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "../../support/distorted_box.hpp"
 #include "../../support/jacobian_check.hpp"
 #include "core/reduced_inertia_system.hpp"
 #include "core/structural_systems.hpp"
@@ -13,22 +14,9 @@
 #include "physics/elasticity/elasticity_operator.hpp"
 
 using namespace rfmems;
+using rfmems::test::distortion;
 
 namespace {
-
-// Moves every node by a smooth non-affine map plus random jitter, so faces are non-orthogonal
-// and cells are irregular.
-NodeMap distortion(double amplitude, unsigned seed) {
-  auto rng = std::make_shared<std::mt19937>(seed);
-  return [=](const Vec3& x) {
-    std::uniform_real_distribution<double> jitter(-amplitude, amplitude);
-    Vec3 y = x;
-    y.x() += 0.15 * std::sin(2.0 * x.y()) + jitter(*rng);
-    y.y() += 0.1 * std::sin(3.0 * x.x()) + jitter(*rng);
-    if (x.z() != 0) y.z() += 0.1 * std::sin(2.0 * x.x()) + jitter(*rng);
-    return y;
-  };
-}
 
 std::vector<ElasticityBoundary> mixed_boundaries(const Mesh& mesh) {
   std::vector<ElasticityBoundary> bcs(mesh.patches().size());
@@ -188,4 +176,41 @@ TEST(ElasticityJacobian, DampingForceIsBetaTimesTheStiffnessTimesTheVelocity) {
   }
   EXPECT_GT(scale, 0.0);
   EXPECT_LT(difference, 1e-9 * scale);
+}
+
+// The matrix-free product of the multigrid path (physics/structure/distributed_analysis.cpp):
+// K v from the operator without the matrix equals the assembled stiffness times v, on a
+// skewed 3D box and a 2D square with a residual stress and boundary data (which K v leaves
+// out), and is not offered with large deformations (where K depends on u).
+TEST(ElasticityJacobian, StiffnessProductEqualsTheAssembledStiffness) {
+  for (const int dim : {2, 3}) {
+    BoxSpec spec;
+    spec.dim = dim;
+    spec.upper = Vec3(1.5, 1.0, 1.0);
+    spec.n[0] = 4;
+    spec.n[1] = 3;
+    spec.n[2] = dim == 3 ? 3 : 1;
+    const Mesh mesh = make_structured_mesh(spec, distortion(0.03, 21));
+    LinearElastic steel{200e9, 0.3, 7854, dim == 3 ? Hypothesis::ThreeD : Hypothesis::PlaneStress};
+    steel.residual_stress << 9e8, 4e8, -2e8, 4e8, -6e8, 3e8, -2e8, 3e8, 7e8;
+    if (dim == 2) steel.residual_stress.col(2).setZero(), steel.residual_stress.row(2).setZero();
+    ElasticityOperator op(mesh, steel, mixed_boundaries(mesh));
+    ASSERT_TRUE(op.has_stiffness_product());
+    const Index n = op.size();
+    const auto u = random_state(n, 22), v = random_state(n, 23);
+    std::vector<double> k(op.stiffness_pattern().nnz()), kv(n), product(n, 0.0);
+    op.stiffness(0.4, u, k);
+    op.stiffness_product(0.4, u, v, kv);
+    const CsrPattern& p = op.stiffness_pattern();
+    double difference = 0, scale = 0;
+    for (Index i = 0; i < n; ++i) {
+      for (Index e = p.row_ptr[i]; e < p.row_ptr[i + 1]; ++e) product[i] += k[e] * v[p.col_idx[e]];
+      difference = std::max(difference, std::abs(kv[i] - product[i]));
+      scale = std::max(scale, std::abs(product[i]));
+    }
+    EXPECT_GT(scale, 0.0);
+    EXPECT_LT(difference, 1e-12 * scale) << dim << "D";
+    op.set_geometric_nonlinearity(true);
+    EXPECT_FALSE(op.has_stiffness_product()) << dim << "D";
+  }
 }

@@ -10,26 +10,16 @@
 #include <cmath>
 #include <random>
 
+#include "../../support/distorted_box.hpp"
 #include "../../support/jacobian_check.hpp"
 #include "core/structural_systems.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/elasticity/elasticity_operator.hpp"
 
 using namespace rfmems;
+using rfmems::test::distortion;
 
 namespace {
-
-NodeMap distortion(double amplitude, unsigned seed) {
-  auto rng = std::make_shared<std::mt19937>(seed);
-  return [=](const Vec3& x) {
-    std::uniform_real_distribution<double> jitter(-amplitude, amplitude);
-    Vec3 y = x;
-    y.x() += 0.15 * std::sin(2.0 * x.y()) + jitter(*rng);
-    y.y() += 0.1 * std::sin(3.0 * x.x()) + jitter(*rng);
-    if (x.z() != 0) y.z() += 0.1 * std::sin(2.0 * x.x()) + jitter(*rng);
-    return y;
-  };
-}
 
 std::vector<ElasticityBoundary> mixed_boundaries(const Mesh& mesh) {
   std::vector<ElasticityBoundary> bcs(mesh.patches().size());
