@@ -18,6 +18,7 @@ import argparse
 import datetime
 import json
 import os
+import shlex
 import subprocess
 import sys
 import tempfile
@@ -68,7 +69,7 @@ def main():
     ap.add_argument("--set", action="append", default=[], dest="sets")
     a = ap.parse_args()
     print(json.dumps({"section": "header", "date": datetime.date.today().isoformat(),
-                      "command": " ".join(["bench/bench_scale.py"] + sys.argv[1:]),
+                      "command": shlex.join(["bench/bench_scale.py"] + sys.argv[1:]),
                       "load_average": os.getloadavg()[0]}), flush=True)
     mpirun = ["mpirun", "--allow-run-as-root", "--oversubscribe", "--bind-to", "none",
               "-np", str(a.ranks)]

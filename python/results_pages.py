@@ -596,6 +596,28 @@ def scale_runs(name):
     return table
 
 
+def scale_ranks():
+    """bench_scale.py --ranks 2: the 3D box serial (one rank, matrix-free) and distributed on
+    2 ranks (assembled), by solver.tolerance; their fields' largest difference."""
+    lines = read_jsonl(DATA / "scale_box_3d_mpi.jsonl")
+    headers = [x for x in lines if x["section"] == "header"]
+    rows = [["mesh", "unknowns", "solver.tolerance", "Newton 1 rank", "GMRES 1 -> 2 ranks",
+             "wall 1 -> 2 ranks [s]", "peak memory 1 -> 2 ranks [GiB]", "field difference (largest, relative)"]]
+    tolerance = None
+    for x in lines:
+        if x["section"] == "header":
+            tolerance = x["command"].split("tolerance: ")[1]
+            continue
+        rows.append([x["mesh"].replace(",", " x "), f"{x['unknowns']:,}", tolerance,
+                     str(x["newton_iterations"]),
+                     f"{x['krylov_iterations']} -> {x['ranks_krylov_iterations']}",
+                     f"{x['wall_s']:.2f} -> {x['ranks_wall_s']:.2f}",
+                     f"{x['max_rss_gib']:.2f} -> {x['ranks_max_rss_gib']:.2f}",
+                     f"{x['ranks_field_difference']:.1e}"])
+    commands = "; ".join(f"`{h['command']}`" for h in headers)
+    return markdown(rows) + f"\nCommands: {commands}, {headers[0]['date']}.\n"
+
+
 TABLES = {
     "verification-checks": csv_table("verification_checks.csv"),
     "performance-ratios": csv_table("performance_ratios.csv"),
@@ -630,6 +652,7 @@ TABLES = {
     "flow-factor-switch-plate": flow_factor_switch_plate,
     "scale-box-3d": scale_runs("scale_box_3d.jsonl"),
     "scale-plane-stress": scale_runs("scale_plane_stress.jsonl"),
+    "scale-ranks": scale_ranks,
 }
 
 
