@@ -4,6 +4,7 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "core/system_operator.hpp"
@@ -23,6 +24,15 @@ struct JacobianCheck {
   Index worst_entry_row = -1, worst_entry_col = -1;  // where max_entry_relative occurs
   double relative() const { return max_abs_difference / max_abs_entry; }
 };
+
+// A state to check at: n values uniform in [-scale, scale] from a generator seeded with seed.
+inline std::vector<double> random_state(Index n, unsigned seed, double scale) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> value(-scale, scale);
+  std::vector<double> y(n);
+  for (double& v : y) v = value(rng);
+  return y;
+}
 
 // The analytic J = dF/dy + c_j dF/dy' in the operator's CSR pattern.
 inline std::vector<double> analytic_jacobian(SystemOperator& op, double t, double c_j,

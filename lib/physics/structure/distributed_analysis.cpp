@@ -140,7 +140,7 @@ AnalysisStats run_distributed_analysis(StructuralModel& model, const AnalysisSet
   // matrix-free with the linear reconstruction's operator as the preconditioner's matrix.
   std::unique_ptr<ElasticityOperator> compact;
   if (comm.is_serial() && elasticity && elasticity->dim() == 3 &&
-      elasticity->has_stiffness_product() &&
+      elasticity->requested_reconstruction_degree() != 1 && elasticity->has_stiffness_product() &&
       settings.linear == AnalysisSettings::Linear::Multigrid &&
       settings.type == AnalysisType::Static) {
     compact =

@@ -44,11 +44,7 @@ Mesh distorted_square(int nx, int ny, double amplitude, unsigned seed) {
 }
 
 std::vector<double> random_state(Index n, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> value(-1e-3, 1e-3);
-  std::vector<double> y(n);
-  for (double& v : y) v = value(rng);
-  return y;
+  return test_support::random_state(n, seed, 1e-3);
 }
 
 }  // namespace

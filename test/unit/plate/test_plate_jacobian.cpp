@@ -10,6 +10,7 @@
 #include <memory>
 #include <random>
 
+#include "../../support/distorted_plate.hpp"
 #include "../../support/jacobian_check.hpp"
 #include "core/reduced_inertia_system.hpp"
 #include "core/structural_systems.hpp"
@@ -18,19 +19,10 @@
 
 using namespace rfmems;
 using Kind = PlateBoundary::Kind;
+using rfmems::test::distorted_mesh;
+using rfmems::test_support::random_state;
 
 namespace {
-
-NodeMap distortion(double amplitude, unsigned seed) {
-  auto rng = std::make_shared<std::mt19937>(seed);
-  return [=](const Vec3& x) {
-    std::uniform_real_distribution<double> jitter(-amplitude, amplitude);
-    Vec3 y = x;
-    y.x() += 0.12 * std::sin(2.0 * x.y()) + jitter(*rng);
-    y.y() += 0.08 * std::sin(3.0 * x.x()) + jitter(*rng);
-    return y;
-  };
-}
 
 // left, right, bottom, top get the four kinds named; values depend on x and t.
 std::vector<PlateBoundary> boundaries(const Mesh& mesh, Kind left, Kind right, Kind bottom,
@@ -52,23 +44,6 @@ std::vector<PlateBoundary> boundaries(const Mesh& mesh, Kind left, Kind right, K
       bcs[p].value = value;
   }
   return bcs;
-}
-
-std::vector<double> random_state(Index n, unsigned seed, double scale) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> value(-scale, scale);
-  std::vector<double> y(n);
-  for (double& v : y) v = value(rng);
-  return y;
-}
-
-Mesh distorted_mesh(int nx, int ny, unsigned seed) {
-  BoxSpec spec;
-  spec.upper = Vec3(2.0, 1.2, 0);
-  spec.n[0] = nx;
-  spec.n[1] = ny;
-  spec.grading[0] = 1.6;
-  return make_structured_mesh(spec, distortion(0.03, seed));
 }
 
 // Central-difference check per class of entry (row component, column component) of

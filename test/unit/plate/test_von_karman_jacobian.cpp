@@ -13,6 +13,7 @@
 #include <memory>
 #include <random>
 
+#include "../../support/distorted_plate.hpp"
 #include "../../support/jacobian_check.hpp"
 #include "core/reduced_inertia_system.hpp"
 #include "core/structural_systems.hpp"
@@ -21,24 +22,10 @@
 
 using namespace rfmems;
 using Kind = PlateBoundary::Kind;
+using rfmems::test::distorted_mesh;
+using rfmems::test_support::random_state;
 
 namespace {
-
-Mesh distorted_mesh(int nx, int ny, unsigned seed) {
-  auto rng = std::make_shared<std::mt19937>(seed);
-  BoxSpec spec;
-  spec.upper = Vec3(2.0, 1.2, 0);
-  spec.n[0] = nx;
-  spec.n[1] = ny;
-  spec.grading[0] = 1.6;
-  return make_structured_mesh(spec, [=](const Vec3& x) {
-    std::uniform_real_distribution<double> jitter(-0.03, 0.03);
-    Vec3 y = x;
-    y.x() += 0.12 * std::sin(2.0 * x.y()) + jitter(*rng);
-    y.y() += 0.08 * std::sin(3.0 * x.x()) + jitter(*rng);
-    return y;
-  });
-}
 
 std::vector<PlateBoundary> boundaries(const Mesh& mesh, Kind left, Kind right, Kind bottom,
                                       Kind top) {
@@ -55,14 +42,6 @@ std::vector<PlateBoundary> boundaries(const Mesh& mesh, Kind left, Kind right, K
       bcs[p].value = value;
   }
   return bcs;
-}
-
-std::vector<double> random_state(Index n, unsigned seed, double scale) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> value(-scale, scale);
-  std::vector<double> y(n);
-  for (double& v : y) v = value(rng);
-  return y;
 }
 
 const ScalarField pressure = [](const Vec3& x, double t) { return -1e3 * (1 + x.x() * x.y() + t); };
