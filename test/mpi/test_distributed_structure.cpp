@@ -38,6 +38,21 @@ struct Cantilever {
   std::unique_ptr<ElasticityOperator> op;
 };
 
+// Clamped at the left end, a uniform traction on the right end, every other face free.
+std::vector<ElasticityBoundary> end_loaded(const Mesh& mesh, const Vec3& load) {
+  std::vector<ElasticityBoundary> bcs;
+  for (const Patch& p : mesh.patches()) {
+    if (p.name == "left")
+      bcs.push_back({ElasticityBoundary::Kind::Fixed, {}});
+    else if (p.name == "right")
+      bcs.push_back(
+          {ElasticityBoundary::Kind::Traction, [load](const Vec3&, double) { return load; }});
+    else
+      bcs.push_back({ElasticityBoundary::Kind::Traction, {}});
+  }
+  return bcs;
+}
+
 Cantilever make_cantilever(int nx, int ny, double load = traction) {
   BoxSpec spec;
   spec.lower = Vec3(0, -h / 2, 0);
@@ -45,18 +60,9 @@ Cantilever make_cantilever(int nx, int ny, double load = traction) {
   spec.n[0] = nx;
   spec.n[1] = ny;
   Cantilever beam{make_structured_mesh(spec), nullptr};
-  std::vector<ElasticityBoundary> bcs;
-  for (const Patch& p : beam.mesh.patches()) {
-    if (p.name == "left")
-      bcs.push_back({ElasticityBoundary::Kind::Fixed, {}});
-    else if (p.name == "right")
-      bcs.push_back({ElasticityBoundary::Kind::Traction,
-                     [load](const Vec3&, double) { return Vec3(0, -load, 0); }});
-    else
-      bcs.push_back({ElasticityBoundary::Kind::Traction, {}});
-  }
   beam.op = std::make_unique<ElasticityOperator>(
-      beam.mesh, LinearElastic{E, nu, 7854, Hypothesis::PlaneStress}, bcs);
+      beam.mesh, LinearElastic{E, nu, 7854, Hypothesis::PlaneStress},
+      end_loaded(beam.mesh, Vec3(0, -load, 0)));
   return beam;
 }
 
@@ -383,16 +389,7 @@ TEST(DistributedStructure, BoxStaticMultigridEqualsSerialKlu) {
   spec.n[0] = 24;
   spec.n[1] = spec.n[2] = 4;
   const Mesh mesh = make_structured_mesh(spec);
-  std::vector<ElasticityBoundary> bcs;
-  for (const Patch& p : mesh.patches()) {
-    if (p.name == "left")
-      bcs.push_back({ElasticityBoundary::Kind::Fixed, {}});
-    else if (p.name == "right")
-      bcs.push_back({ElasticityBoundary::Kind::Traction,
-                     [](const Vec3&, double) { return Vec3(0, -1e5, 0); }});
-    else
-      bcs.push_back({ElasticityBoundary::Kind::Traction, {}});
-  }
+  const std::vector<ElasticityBoundary> bcs = end_loaded(mesh, Vec3(0, -1e5, 0));
   const LinearElastic steel{200e9, 0.3, 7854, Hypothesis::ThreeD};
   ElasticityOperator op(mesh, steel, bcs);
   ElasticityOperator compact(mesh, steel, bcs, {}, 1);
