@@ -89,8 +89,7 @@ struct DistributedLinearSolver::Impl {
         b(sundials::make_parallel_vector(comm, a.n_owned, ctx.get())) {
     // The fused reductions (one MPI_Allreduce for all of classical Gram-Schmidt's dot
     // products) on the vectors SPGMR clones from x; without them N_VDotProdMulti loops.
-    if (N_VGetVectorID(x.get()) == SUNDIALS_NVEC_PARALLEL)
-      for (N_Vector v : {x.get(), b.get()}) N_VEnableFusedOps_Parallel(v, SUNTRUE);
+    for (N_Vector v : {x.get(), b.get()}) sundials::enable_fused_operations(v);
     gmres.reset(SUNLinSol_SPGMR(x.get(), SUN_PREC_RIGHT, o.krylov_dimension, ctx.get()));
     if (!gmres) throw SolverError("SUNLinSol_SPGMR failed");
     SUNLinSol_SPGMRSetGSType(gmres.get(),
