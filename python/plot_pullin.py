@@ -7,6 +7,9 @@
   <PREFIX>_release.png   with pull_in.release: smallest gap and voltage vs time through
                          touch-down, rest on the dielectric, the drop to the hold voltage and
                          the release; the contact branch (pull-out) is added to the curve plot
+  <PREFIX>_harmonic.png  mode harmonic: the control's response per volt of AC amplitude about
+                         the DC bias (amplitude and phase) against frequency and, with a film,
+                         the film's spring and damping coefficients against frequency
 
 Usage: plot_pullin.py RESULT.h5 [-o PREFIX]     (PREFIX defaults to RESULT without .h5)
 """
@@ -18,6 +21,7 @@ import matplotlib
 
 matplotlib.use("Agg")  # files only, no display needed
 import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from plotting import finish, open_result, prefix_args, run_main  # noqa: E402
@@ -95,7 +99,40 @@ def main():
             ax.set_title(title, fontsize="medium")
             written.append(finish(fig, ax, "time [µs]", "smallest gap [µm]",
                                   prefix + "_release.png", fontsize="small", loc="center right"))
+        if "pull_in/harmonic" in f:
+            written.append(plot_harmonic(f["pull_in/harmonic"], summary["harmonic"],
+                                         prefix + "_harmonic.png"))
     print("wrote " + ", ".join(written))
+
+
+def plot_harmonic(group, summary, path):
+    """Bode plot of the control's response per AC volt; the film's spring and damping."""
+    freq = group["frequency"][()]
+    values = group["values"][()]
+    names = [n.decode() if isinstance(n, bytes) else str(n) for n in group["values"].attrs["components"]]
+    column = {n: values[:, i] for i, n in enumerate(names)}
+    response = column["control_real"] + 1j * column["control_imag"]
+    film = "film_spring" in column
+    fig, axes = plt.subplots(3 if film else 2, 1, figsize=(7, 8 if film else 6), sharex=True)
+    axes[0].loglog(freq, abs(response) * 1e9, "-", color="C0")
+    axes[0].set_ylabel("control amplitude [nm/V]")
+    axes[0].set_title(f"small-signal response about {summary['bias']:.2f} V DC", fontsize="medium")
+    axes[1].semilogx(freq, np.degrees(np.angle(response)), "-", color="C0")
+    axes[1].set_ylabel("phase to the AC voltage [deg]")
+    if film:
+        axes[2].loglog(freq, np.abs(column["film_spring"]), "-", color="C1",
+                       label="spring k_film [N/m]")
+        axes[2].loglog(freq, column["film_damping"] * 2 * np.pi * freq, "--", color="C2",
+                       label="damping x omega, omega c_film [N/m]")
+        axes[2].set_ylabel("film impedance per mean gap [N/m]")
+        axes[2].legend(fontsize="small")
+    axes[-1].set_xlabel("frequency [Hz]")
+    for ax in axes:
+        ax.grid(True, which="both", lw=0.3)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return path
 
 
 if __name__ == "__main__":

@@ -36,6 +36,25 @@ void write_bias_modes(ResultWriter& writer, const std::vector<BiasedModes>& mode
   writer.write_time_series("pull_in", "modes", voltage, rows, names, "voltage", units);
 }
 
+void write_harmonic_under_bias(ResultWriter& writer, const HarmonicUnderBias& response) {
+  std::vector<std::string> names{"control_real", "control_imag"}, units{"m/V", "m/V"};
+  if (response.has_film) {
+    names.insert(names.end(),
+                 {"film_force_real", "film_force_imag", "film_spring", "film_damping"});
+    units.insert(units.end(), {"N/V", "N/V", "N/m", "N s/m"});
+  }
+  std::vector<std::vector<double>> rows;
+  for (std::size_t k = 0; k < response.frequencies.size(); ++k) {
+    std::vector<double> row{response.control[k].real(), response.control[k].imag()};
+    if (response.has_film)
+      row.insert(row.end(), {response.film_force[k].real(), response.film_force[k].imag(),
+                             response.film_spring[k], response.film_damping[k]});
+    rows.push_back(row);
+  }
+  writer.write_time_series("pull_in", "harmonic", response.frequencies, rows, names, "frequency",
+                           units);
+}
+
 void write_dynamic_history(ResultWriter& writer, const std::string& name, const DynamicRun& run,
                            const std::string& force_units) {
   std::vector<double> t;

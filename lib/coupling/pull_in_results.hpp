@@ -2,6 +2,9 @@
 // (pull_in_study.hpp, immersed_switch_study.hpp):
 //   /pull_in/curve     abscissa control_displacement; values voltage, min_gap, stable (1 / 0)
 //   /pull_in/modes     abscissa voltage; values control_displacement, f1 ... fN [Hz]
+//   /pull_in/harmonic  abscissa frequency [Hz]; values control_real, control_imag [m/V] and,
+//                      with a film, film_force_real, film_force_imag [N/V], film_spring [N/m],
+//                      film_damping [N s/m]
 //   /dynamic/<name>    time; control, min_gap, electrostatic_force, gas_force, contact_force,
 //                      voltage
 #pragma once
@@ -9,6 +12,7 @@
 
 #include "coupling/bias_modes.hpp"
 #include "coupling/dynamic_pull_in.hpp"
+#include "coupling/harmonic_under_bias.hpp"
 #include "coupling/quasi_static_pull_in.hpp"
 #include "io/json_summary.hpp"
 #include "io/result_writer.hpp"
@@ -17,6 +21,7 @@ namespace rfmems {
 
 void write_pull_in_curve(ResultWriter& writer, const QuasiStaticPullIn& quasi_static);
 void write_bias_modes(ResultWriter& writer, const std::vector<BiasedModes>& modes);
+void write_harmonic_under_bias(ResultWriter& writer, const HarmonicUnderBias& response);
 // force_units: of the run's forces, "N" (a plate: whole) or "N/m" (a plane beam: per depth).
 void write_dynamic_history(ResultWriter& writer, const std::string& name, const DynamicRun& run,
                            const std::string& force_units);

@@ -5,12 +5,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <complex>
 #include <ctime>
 #include <functional>
 
 #include "core/error.hpp"
 #include "coupling/pull_in_results.hpp"
 #include "io/case_schema_yaml.hpp"
+#include "io/frequency_sweep.hpp"
 
 namespace rfmems {
 
@@ -172,6 +174,13 @@ PullInSettings read_pull_in_settings(const CaseNode& root, const SwitchScene& sc
       s.waveform.hold_fraction = w.get_real("hold", 0.0, Range::closed(0.0, 1.0));
     }
   }
+
+  const CaseNode harmonic = block(Analysis::Harmonic);
+  const bool is_harmonic = s.analysis == Analysis::Harmonic;
+  s.harmonic_bias = mode_quantity(harmonic, "bias", Dimension::Voltage, is_harmonic);
+  if (is_harmonic || harmonic.has("frequencies") || harmonic.has("sweep"))
+    s.harmonic_frequencies = read_frequency_sweep(harmonic);
+  s.reject_bias = [harmonic](const std::string& what) { harmonic.fail("bias", what); };
 
   if (node.has("release")) {
     const CaseNode r = node.child("release");
@@ -390,6 +399,27 @@ PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& setting
       report.has_static = true;
       scene.structure->write_fields(writer, 0, 0.0, report.static_state.u, {});
       break;
+    case Analysis::Harmonic: {
+      report.quasi_static = manager->quasi_static(settings.quasi_static);
+      report.has_quasi_static = true;
+      write_pull_in_curve(writer, report.quasi_static);
+      if (settings.harmonic_bias >= report.quasi_static.pull_in_voltage)
+        settings.reject_bias(fmt::format(
+            "not below the quasi-static pull-in voltage {:.6g} V: no equilibrium to linearise "
+            "about",
+            report.quasi_static.pull_in_voltage));
+      const std::vector<Real> state =
+          equilibrium_at_voltage(*scene.actuation, scene.control, report.quasi_static,
+                                 settings.harmonic_bias, settings.quasi_static);
+      scene.structure->write_fields(writer, 0, 0.0, state, {});
+      const std::vector<Index> film = film_unknowns(scene);
+      report.harmonic =
+          harmonic_under_bias(*manager->switch_system(), scene.control, settings.harmonic_bias,
+                              state, settings.harmonic_frequencies, scene.film.get(), film);
+      report.has_harmonic = true;
+      write_harmonic_under_bias(writer, report.harmonic);
+      break;
+    }
     case Analysis::QuasiStatic:
     case Analysis::Dynamic: {
       report.quasi_static = manager->quasi_static(settings.quasi_static);
@@ -430,6 +460,38 @@ Json run_json(const DynamicRun& r) {
           {"steps", r.stats.steps},
           {"residual_evals", r.stats.residual_evals},
           {"newton_iterations", r.stats.newton_iters}};
+}
+
+// Amplitudes and phases [deg] of complex amplitudes.
+Json amplitude_phase(const std::vector<std::complex<Real>>& values, const std::string& units) {
+  Json amplitude = Json::array(), phase = Json::array();
+  for (const std::complex<Real>& z : values) {
+    amplitude.push_back(std::abs(z));
+    phase.push_back(std::arg(z) * 180 / M_PI);
+  }
+  return {{"amplitude", amplitude}, {"phase_deg", phase}, {"units", units}};
+}
+
+Json harmonic_json(const HarmonicUnderBias& h) {
+  Json j = {{"bias", h.bias},
+            {"static_control", h.static_control},
+            {"frequencies", h.frequencies},
+            {"control", amplitude_phase(h.control, "m/V")},
+            {"factorizations", h.factorizations},
+            {"refactorizations", h.refactorizations},
+            {"solve_cpu_s", h.solve_cpu_s}};
+  // The sweep's largest control response (a resonance, when the sweep brackets it).
+  std::size_t peak = 0;
+  for (std::size_t k = 0; k < h.control.size(); ++k)
+    if (std::abs(h.control[k]) > std::abs(h.control[peak])) peak = k;
+  if (!h.control.empty())
+    j["peak"] = {{"frequency", h.frequencies[peak]}, {"amplitude", std::abs(h.control[peak])}};
+  if (h.has_film)
+    j["film"] = {{"force", amplitude_phase(h.film_force, "N/V")},
+                 {"mean_gap", amplitude_phase(h.mean_gap, "m/V")},
+                 {"spring", h.film_spring},
+                 {"damping", h.film_damping}};
+  return j;
 }
 
 Json coupling_json(const SwitchScene& scene, const CouplingOptions& c) {
@@ -505,6 +567,7 @@ Json pull_in_summary(const SwitchScene& scene, const PullInSettings& settings,
     }
     j["quasi_static"]["modes"] = modes;
   }
+  if (report.has_harmonic) j["harmonic"] = harmonic_json(report.harmonic);
   if (report.has_pull_out) {
     const QuasiStaticPullOut& po = report.pull_out;
     j["contact"] = {{"gap", scene.contact().gap}, {"penetration", scene.contact().penetration}};

@@ -3,8 +3,8 @@
 // as the case file asks:
 //
 //   pull_in:
-//     mode: dynamic                   # static | quasi_static | dynamic | transient (the
-//                                     # scene's allowed analyses: scene_combinations.hpp)
+//     mode: dynamic                   # static | quasi_static | dynamic | transient | harmonic
+//                                     # (the scene's allowed analyses: scene_combinations.hpp)
 //     contact_gap: 0.1 um             # touch-down of every run at this gap (default 2 % of the
 //                                     # gap, and no less than the field resolves: 1.5
 //                                     # background cells of the immersed field); with
@@ -68,6 +68,11 @@
 //       voltage: 180 V                #   or touch-down, by the coupling scheme
 //       end_time: 5 us                #   (coupling_settings.hpp); no quasi-static curve
 //       output_interval: 0.1 us       # sampling (default end_time / 500)
+//     harmonic:                       # mode harmonic (parallel_plate): the small-signal response
+//       bias: 40 V                    #   to an AC voltage about this DC bias (below the
+//       sweep: {from: 10 kHz, to: 1 MHz, points: 61}  # quasi-static V_PI, traced first),
+//                                     #   or frequencies: [...] (io/frequency_sweep.hpp);
+//                                     #   harmonic_under_bias.hpp
 //   solver:                           # every run (IDA)
 //     rtol: 1e-3                      # default 1e-3
 //     atol: 0.375 nm                  # displacements (default 1e-4 x the gap; per_kind: rtol x
@@ -89,6 +94,7 @@
 // (quasi_static_pull_out.hpp).
 #pragma once
 #include <cstdio>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -96,6 +102,7 @@
 #include "coupling/coupling_manager.hpp"
 #include "coupling/dynamic_pull_in.hpp"
 #include "coupling/dynamic_release.hpp"
+#include "coupling/harmonic_under_bias.hpp"
 #include "coupling/quasi_static_pull_in.hpp"
 #include "coupling/quasi_static_pull_out.hpp"
 #include "coupling/switch_scene.hpp"
@@ -129,7 +136,13 @@ struct PullInSettings {
   Real release_bracket_low = 0, release_bracket_high = 0;  // high 0: the default
   // pull_in.transient
   Real transient_voltage = 0;
-  DynamicOptions transient_run;   // end_time, contact_gap, output_interval, ida, coupling
+  DynamicOptions transient_run;  // end_time, contact_gap, output_interval, ida, coupling
+  // pull_in.harmonic
+  Real harmonic_bias = 0;                  // [V]
+  std::vector<Real> harmonic_frequencies;  // [Hz]
+  // Bad input naming the case file and pull_in.harmonic.bias (the bias is checked against the
+  // pull-in voltage once the curve is traced).
+  std::function<void(const std::string& what)> reject_bias;
   std::FILE* progress = nullptr;  // a line per dynamic run (null: none)
 };
 
@@ -164,6 +177,8 @@ struct PullInReport {
   bool has_transient = false;  // mode transient: only this run (no quasi-static curve)
   DynamicRun transient;        // history: at output_interval
   double transient_wall_s = 0, transient_cpu_s = 0;
+  bool has_harmonic = false;  // mode harmonic: the quasi-static curve, then this
+  HarmonicUnderBias harmonic;
   Real contact_gap = 0;  // of the timed runs (dynamic, transient)
   Json counters;         // the coupling manager's (coupling_manager.hpp)
 };
@@ -174,7 +189,8 @@ struct PullInReport {
 // the contact branch (/pull_in/contact_branch: abscissa voltage, values control, min_gap,
 // contact_fraction) and the histories (/dynamic/V<k>, pull_in_results.hpp; the small-signal
 // run is /dynamic/small_signal, the release /dynamic/release: the approach and the hold; the
-// transient /dynamic/transient) into `writer`.
+// transient /dynamic/transient; the harmonic response /pull_in/harmonic, its fields at index 0 the
+// biased static state) into `writer`.
 PullInReport run_pull_in_study(SwitchScene& scene, const PullInSettings& settings,
                                ResultWriter& writer);
 

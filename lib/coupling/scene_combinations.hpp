@@ -43,7 +43,7 @@ namespace rfmems {
 enum class StructureModel { Plate, Plane };
 enum class FieldModel { ParallelPlate, Laplace, Immersed };
 enum class GasModel { None, Reynolds, Esbgk };
-enum class Analysis { Static, QuasiStatic, Dynamic, Transient };
+enum class Analysis { Static, QuasiStatic, Dynamic, Transient, Harmonic };
 enum class CouplingScheme { Monolithic, Staggered, Implicit, StronglyCoupled };
 
 // The case-file spellings.

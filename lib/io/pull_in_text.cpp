@@ -63,6 +63,27 @@ std::string dynamic_lines(const Json& p) {
   return out;
 }
 
+// The harmonic response: the sweep, its peak and, with a film, its spring and damping at the
+// sweep's ends.
+std::string harmonic_lines(const Json& h) {
+  const Json& f = h["frequencies"];
+  const Json& amplitude = h["control"]["amplitude"];
+  std::string out = fmt::format(
+      "  harmonic about {:.2f} V (static control deflection {:.4f} um): {} frequencies {:.4g} .. "
+      "{:.4g} Hz; control response {:.4g} nm/V at {:.4g} Hz, largest {:.4g} nm/V at {:.4g} Hz\n",
+      h["bias"].get<double>(), um(h["static_control"]), f.size(), f.front().get<double>(),
+      f.back().get<double>(), 1e9 * amplitude.front().get<double>(), f.front().get<double>(),
+      1e9 * h["peak"]["amplitude"].get<double>(), h["peak"]["frequency"].get<double>());
+  if (h.contains("film")) {
+    const Json& film = h["film"];
+    for (const std::size_t k : {std::size_t{0}, f.size() - 1})
+      out += fmt::format("  film at {:.4g} Hz: spring {:.4g} N/m, damping {:.4g} N s/m\n",
+                         f[k].get<double>(), film["spring"][k].get<double>(),
+                         film["damping"][k].get<double>());
+  }
+  return out;
+}
+
 std::string transient_line(const std::string& head, const Json& p) {
   const Json& t = p["transient"];
   std::string out = fmt::format(
@@ -115,6 +136,7 @@ std::string pull_in_text(const std::string& name, const Json& p) {
         "% of the electrode just above it)\n",
         qs["pull_out"]["voltage"].get<double>(),
         100 * qs["pull_out"]["contact_fraction"].get<double>());
+  if (p.contains("harmonic")) out += harmonic_lines(p["harmonic"]);
   if (p.contains("dynamic")) out += dynamic_lines(p);
   return out;
 }

@@ -21,7 +21,9 @@ What each cell asserts:
   transient: the schemes of one scene agree (the partitioned and staggered ones to their lag,
     the implicit and strongly coupled ones closely); a step far below pull-in overshoots to about
     twice its static deflection (the undamped step response of a softening spring: 2.0-2.3x);
-    a film lowers the peak.
+    a film lowers the peak;
+  harmonic (the parallel-plate scenes): linearised about the static equilibrium at a voltage of
+    the quasi-static curve, which it lands on.
 
 Usage: python3 scene_combinations.py <directory of rfmems-pullin> <source directory>
        [--kinetic-dynamic]
@@ -55,12 +57,12 @@ COARSE = {
 STRUCTURES = ["plate", "plane"]
 FIELDS = ["parallel_plate", "laplace", "immersed"]
 GASES = ["none", "reynolds", "esbgk"]
-ANALYSES = ["static", "quasi_static", "dynamic", "transient"]
+ANALYSES = ["static", "quasi_static", "dynamic", "transient", "harmonic"]
 SCHEMES = ["monolithic", "staggered", "implicit", "strongly_coupled"]
 TIMED = ("dynamic", "transient")
 
 # The table: (structure, field, gas) -> {analysis: schemes of the timed ones}.
-PP = {"quasi_static": [], "dynamic": ["monolithic"], "transient": ["monolithic"]}
+PP = {"quasi_static": [], "dynamic": ["monolithic"], "transient": ["monolithic"], "harmonic": []}
 # The fields without exact Jacobian blocks (laplace, immersed): the field-coupled structure's schemes.
 LAGGED = {"static": [], "quasi_static": [], "dynamic": ["staggered", "implicit", "strongly_coupled"],
           "transient": ["staggered", "implicit", "strongly_coupled"]}
@@ -241,6 +243,25 @@ if all(tr.values()):
         check(vac["transient"]["extreme_control"] < tr["monolithic"]["transient"]["extreme_control"],
               "plate: the film slows the 180 V step")
 
+
+
+def harmonic_on_curve(name, s, f, g, qs_h5):
+    """The harmonic analysis at the curve's third point's voltage linearises about that point
+    (its static equilibrium, voltage-controlled, against the displacement-controlled curve, whose
+    points hold to the quasi-static Newton tolerance: 6e-6 here)."""
+    v, x_curve = curve_point(qs_h5, 2)
+    h = cell(s, f, g, "harmonic", None, [f"pull_in.harmonic={{bias: {v!r} V, frequencies: [1 Hz]}}"])
+    if h:
+        x = h["harmonic"]["static_control"]
+        check(abs(x / x_curve - 1) < 1e-4 and h["harmonic"]["control"]["amplitude"][0] > 0,
+              f"{name}: the harmonic analysis at {v:.3f} V is about the curve's point "
+              f"({x:.6e} / {x_curve:.6e})")
+
+
+for g in ("none", "reynolds"):
+    harmonic_on_curve(f"plate, gas {g}", "plate", "parallel_plate", g,
+                      f"{work}/plate-parallel_plate-{g}-quasi_static-none.h5")
+
 # The plane beam: parallel-plate and Laplace fields.
 for f in ("parallel_plate", "laplace"):
     qs = cell("plane", f, "none", "quasi_static", None)
@@ -251,6 +272,8 @@ for f in ("parallel_plate", "laplace"):
         continue
     v_qs = qs["quasi_static"]["pull_in_voltage"]
     qs_h5 = f"{work}/plane-{f}-none-quasi_static-none.h5"
+    if f == "parallel_plate":
+        harmonic_on_curve("plane", "plane", f, "none", qs_h5)
     # A step at the curve's first point (a small deflection), recorded over ~2 periods (the
     # coarse beam's ~385 kHz): its peak against that point's static deflection.
     v, x_curve = curve_point(qs_h5, 0)

@@ -15,6 +15,7 @@
 #include "core/reduced_inertia_system.hpp"
 #include "core/structural_systems.hpp"
 #include "io/case_schema_yaml.hpp"
+#include "io/frequency_sweep.hpp"
 #include "physics/structure/output_schedule.hpp"
 #include "solvers/harmonic_response.hpp"
 #include "solvers/static_solve.hpp"
@@ -195,23 +196,7 @@ AnalysisSettings read_analysis_settings(const CaseNode& root, StructuralModel& m
         analysis.get_quantity("shift", Dimension::Frequency, 0.0, Range::non_negative());
   }
   if (s.type == AnalysisType::Harmonic) {
-    analysis.require(analysis.has("frequencies") != analysis.has("sweep"), "frequencies",
-                     "give the frequencies or a sweep (one of the two)");
-    if (analysis.has("frequencies")) {
-      s.frequencies = analysis.get_quantities("frequencies", Dimension::Frequency);
-      analysis.require(!s.frequencies.empty(), "frequencies", "give at least one");
-      for (const Real f : s.frequencies)
-        analysis.require(f > 0, "frequencies", "every frequency must be > 0");
-    } else {
-      const CaseNode sweep = analysis.child("sweep");
-      const Real from = sweep.get_quantity("from", Dimension::Frequency, Range::positive());
-      const Real to = sweep.get_quantity("to", Dimension::Frequency, Range::positive());
-      const long points = sweep.get_int("points", 50, Range::closed(1, 100000));
-      sweep.require(to >= from, "to", "must not be below sweep.from");
-      for (long k = 0; k < points; ++k)
-        s.frequencies.push_back(points == 1 ? from
-                                            : from * std::pow(to / from, double(k) / (points - 1)));
-    }
+    s.frequencies = read_frequency_sweep(analysis);
     return s;
   }
   if (s.type == AnalysisType::Static || s.type == AnalysisType::Modal) {
