@@ -3,7 +3,8 @@
 # plates, read straight from the JSON summary (physics/gas/kinetic/kinetic_reference.hpp):
 #   plane Couette flow, P = -p_xy v0 / (p0 U), and plane heat transfer, q* = q / (p0 v0 dT/T0),
 #   at delta = p0 H / (mu0 v0) = 0.1, 1, 10, within 0.2 %; plane Poiseuille flow (periodic
-#   sides, body force), G, below.
+#   sides, body force), G, below; and, further below, G and P against published linearised-BGK
+#   solutions (Sharipov & Seleznev's Table 1; Jiang & Luo).
 # Reference values (7 digits): python/linearised_bgk_reference.py, a discrete-ordinates
 # solution of the linearised BGK equation (half-range Gauss quadrature in c_y, exact
 # characteristics, Richardson-extrapolated in y), which meets the free-molecular limit
@@ -227,8 +228,8 @@ TABLE
 # methods", arXiv:1806.09225 (J. Comput. Sci.), caption of the shear-stress accuracy figure:
 # p_xy^(ex) at k = 0.3, 0.1, 0.03. Their k = mu0 sqrt(2 R T0) / (p0 H) is 1 / delta (their
 # tau = mu0 c0 / (p0 H) = k / sqrt(2) with c0 = sqrt(R T0)), and p_xy^(ex) is -P: the values meet
-# the slip asymptote 1 / (delta + 2 sigma_P) at k = 0.03 to 1e-5 and the in-repo
-# discrete-ordinates reference to 1e-6 (docs/data/kinetic_published_bgk.csv). Jiang & Luo's own
+# the slip asymptote 1 / (delta + 2 sigma_P) at k = 0.03 to 5e-7 and the in-repo
+# discrete-ordinates reference to 3e-7 (docs/data/kinetic_published_bgk.csv). Jiang & Luo's own
 # table was not readable from here; the paper's source was. Same set-up as the Couette rows
 # above, Gauss-Hermite along the walls and half-range Gauss-Hermite across them.
 while read -r k cells points solver published; do
