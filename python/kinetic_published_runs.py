@@ -73,12 +73,13 @@ def main():
                             capture_output=True, text=True).stdout.strip()
     with open("/proc/loadavg") as f:
         load = f.read().split()[0]
-    lines = ["# rfmems-gas's plane Poiseuille G (JSON flow_rate.normalised_flow_rate) and plane Couette P",
-             "# (JSON walls.bottom.normalised_shear) at the deltas of docs/data/kinetic_published_bgk.csv;",
-             "# grids: Gauss-Hermite along the walls (3 points), half-range Gauss-Hermite across",
-             "# (points), cells across H; role 'test' is the grid of test/drivers/test_gas_linearised_bgk.sh,",
-             "# 'finer' a refinement of both. Iterations: sweeps, or COMET's outer iterations (method).",
-             "# Seconds: the solve's wall time on the shared 2-core machine.",
+    lines = ["# rfmems-gas's plane Poiseuille G (JSON flow_rate.normalised_flow_rate) and plane",
+             "# Couette P (JSON walls.bottom.normalised_shear) at the deltas of",
+             "# docs/data/kinetic_published_bgk.csv; grids: Gauss-Hermite along the walls (3 points),",
+             "# half-range Gauss-Hermite across (points), cells across H; role 'test' is the grid of",
+             "# test/drivers/test_gas_linearised_bgk.sh, 'finer' a refinement of both. Iterations:",
+             "# sweeps, or COMET's outer iterations (method). Seconds: the solve's wall time on the",
+             "# shared 2-core machine.",
              f"# Command: /usr/bin/python3 python/kinetic_published_runs.py --bin {args.bin}, "
              f"{datetime.date.today()} (commit {commit}; 1-minute load average {load}).",
              "problem,delta,role,cells,velocity_points,velocities,method,iterations,seconds,value"]
