@@ -1,12 +1,15 @@
 #!/usr/bin/python3
-"""rfmems-gas's plane Poiseuille flow rate G at the deltas of the published linearised-BGK table
-(docs/data/kinetic_published_bgk.csv), on the driver test's grids and on finer ones, read from the
-driver's JSON summary; writes docs/data/kinetic_published_runs.csv (docs/kinetic.md "Against
-published tables" is generated from it by python/results_pages.py).
+"""rfmems-gas's plane Poiseuille flow rate G and plane Couette shear P at the deltas of the
+published linearised-BGK solutions (docs/data/kinetic_published_bgk.csv), on the driver test's
+grids and on finer ones, read from the driver's JSON summary; writes
+docs/data/kinetic_published_runs.csv (docs/kinetic.md "Against published tables" is generated from
+it by python/results_pages.py).
 
-Set-up: cases/gas_poiseuille (BGK, diffuse walls H = 1 m apart, body force, periodic sides,
-second-order transport, sequential solver to 1e-6), Gauss-Hermite along the walls (3 points) and
-half-range Gauss-Hermite across them; Kn = sqrt(pi) / (2 delta).
+Set-up as test/drivers/test_gas_linearised_bgk.sh: BGK, diffuse walls H = 1 m apart,
+second-order transport, solver to 1e-6, Gauss-Hermite along the walls (3 points) and half-range
+Gauss-Hermite across them, Kn = sqrt(pi) / (2 delta). Poiseuille: cases/gas_poiseuille (body
+force, periodic sides, sequential solver). Couette: cases/gas_couette with the walls at -+0.5 m/s
+(U / v0 = 0.003) and velocity_grid.extent = 4; delta = 1 / k at Jiang & Luo's k = 0.3, 0.1, 0.03.
 
   /usr/bin/python3 python/kinetic_published_runs.py --bin build/drivers
 """
@@ -21,21 +24,40 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 OUT = ROOT / "docs" / "data" / "kinetic_published_runs.csv"
 
-# delta, cells across, points across, role: the driver test's grid, then a finer one (cells and
-# points both refined) that says how far the test's grid is from the converged answer.
-RUNS = [(0.1, 10, 48, "test"), (0.1, 20, 96, "finer"),
-        (1, 40, 12, "test"), (1, 160, 24, "finer"),
-        (10, 200, 12, "test"), (10, 400, 16, "finer")]
+# problem, delta, cells across, points across, solver, role: the driver test's grid, then a finer
+# one (cells and points both refined) that says how far the test's grid is from the converged
+# answer.
+RUNS = [("poiseuille", 0.1, 10, 48, "sequential", "test"),
+        ("poiseuille", 0.1, 20, 96, "sequential", "finer"),
+        ("poiseuille", 1, 40, 12, "sequential", "test"),
+        ("poiseuille", 1, 160, 24, "sequential", "finer"),
+        ("poiseuille", 10, 200, 12, "sequential", "test"),
+        ("poiseuille", 10, 400, 16, "sequential", "finer"),
+        ("couette", 1 / 0.3, 20, 8, "sequential", "test"),
+        ("couette", 1 / 0.3, 160, 24, "sequential", "finer"),
+        ("couette", 1 / 0.1, 50, 8, "comet", "test"),
+        ("couette", 1 / 0.1, 200, 12, "comet", "finer"),
+        ("couette", 1 / 0.03, 100, 8, "comet", "test"),
+        ("couette", 1 / 0.03, 400, 12, "comet", "finer")]
+
+# The JSON key of each problem's normalised answer.
+VALUE = {"poiseuille": lambda d: d["flow_rate"]["normalised_flow_rate"],
+         "couette": lambda d: d["walls"]["bottom"]["normalised_shear"]}
 
 
-def run(driver, delta, cells, across):
+def run(driver, problem, delta, cells, across, solver):
     kn = math.sqrt(math.pi) / (2 * delta)
-    cmd = [str(driver), str(ROOT / "cases" / "gas_poiseuille" / "case.yaml"),
+    cmd = [str(driver), str(ROOT / "cases" / f"gas_{problem}" / "case.yaml"),
            "--set", f"initial.knudsen={kn:.17g}", "--set", f"mesh.cells=[1, {cells}]",
            "--set", f"velocity_grid.points=[3, {across}, 3]",
            "--set", "velocity_grid.type=gauss_hermite",
-           "--set", "velocity_grid.y={type: half_range_hermite}",
-           "-o", "/tmp/kinetic_published_runs.h5", "--json", "--quiet"]
+           "--set", "velocity_grid.y={type: half_range_hermite}", "--set", f"solver.type={solver}"]
+    if problem == "couette":
+        cmd += ["--set", "gas.collision=bgk", "--set", "velocity_grid.extent=4",
+                "--set", "solver.transport=second_order",
+                "--set", "boundaries.bottom.velocity=[0 m/s, 0 m/s, -0.5 m/s]",
+                "--set", "boundaries.top.velocity=[0 m/s, 0 m/s, 0.5 m/s]"]
+    cmd += ["-o", "/tmp/kinetic_published_runs.h5", "--json", "--quiet"]
     d = json.loads(subprocess.run(cmd, check=True, capture_output=True, text=True).stdout)
     assert d["solver"]["converged"], d["solver"]
     assert abs(d["reference"]["rarefaction_parameter"] / delta - 1) < 1e-9, d["reference"]
@@ -51,20 +73,22 @@ def main():
                             capture_output=True, text=True).stdout.strip()
     with open("/proc/loadavg") as f:
         load = f.read().split()[0]
-    lines = ["# rfmems-gas's plane Poiseuille G (JSON flow_rate.normalised_flow_rate) at the deltas of",
+    lines = ["# rfmems-gas's plane Poiseuille G (JSON flow_rate.normalised_flow_rate) and plane",
+             "# Couette P (JSON walls.bottom.normalised_shear) at the deltas of",
              "# docs/data/kinetic_published_bgk.csv; grids: Gauss-Hermite along the walls (3 points),",
              "# half-range Gauss-Hermite across (points), cells across H; role 'test' is the grid of",
-             "# test/drivers/test_gas_linearised_bgk.sh, 'finer' a refinement of both. Seconds: the",
-             "# solve's wall time on the shared 2-core machine.",
+             "# test/drivers/test_gas_linearised_bgk.sh, 'finer' a refinement of both. Iterations:",
+             "# sweeps, or COMET's outer iterations (method). Seconds: the solve's wall time on the",
+             "# shared 2-core machine.",
              f"# Command: /usr/bin/python3 python/kinetic_published_runs.py --bin {args.bin}, "
              f"{datetime.date.today()} (commit {commit}; 1-minute load average {load}).",
-             "problem,delta,role,cells,velocity_points,velocities,sweeps,seconds,value"]
-    for delta, cells, across, role in RUNS:
-        d = run(driver, delta, cells, across)
+             "problem,delta,role,cells,velocity_points,velocities,method,iterations,seconds,value"]
+    for problem, delta, cells, across, solver, role in RUNS:
+        d = run(driver, problem, delta, cells, across, solver)
         s = d["solver"]
-        lines.append(f"poiseuille,{delta:g},{role},{cells},3x{across}x3,"
-                     f"{d['velocity_grid']['ordinates']},{s['iterations']},{s['seconds']:.3g},"
-                     f"{d['flow_rate']['normalised_flow_rate']:.6f}")
+        lines.append(f"{problem},{delta:.10g},{role},{cells},3x{across}x3,"
+                     f"{d['velocity_grid']['ordinates']},{s['method']},{s['iterations']},"
+                     f"{s['seconds']:.3g},{VALUE[problem](d):.7f}")
         print(lines[-1], file=sys.stderr)
     OUT.write_text("\n".join(lines) + "\n")
 

@@ -478,25 +478,34 @@ def velocity_grids_goal():
 
 
 def kinetic_published_tables():
-    """rfmems-gas's Poiseuille G (docs/data/kinetic_published_runs.csv, from
-    python/kinetic_published_runs.py) against the published linearised-BGK table
+    """rfmems-gas's Poiseuille G and Couette P (docs/data/kinetic_published_runs.csv, from
+    python/kinetic_published_runs.py) against the published linearised-BGK solutions
     (docs/data/kinetic_published_bgk.csv) and the in-repo discrete-ordinates reference."""
     def rows_of(name):
         with open(DATA / name, newline="") as f:
             return list(csv.DictReader(line for line in f if not line.startswith("#")))
     runs, published = rows_of("kinetic_published_runs.csv"), rows_of("kinetic_published_bgk.csv")
-    ordinates = {"0.1": 2.0327143, "1": 1.5386784, "10": 2.7686424}  # linearised_bgk_reference.py
-    out = [["delta", "ours: test grid", "ours: finer grid", "in-repo reference", "published",
-            "source", "test grid - published", "finer - published"]]
-    for delta in ("0.1", "1", "10"):
-        test = next(r for r in runs if r["delta"] == delta and r["role"] == "test")
-        finer = next(r for r in runs if r["delta"] == delta and r["role"] == "finer")
-        grid = lambda r: (f"{float(r['value']):.5f} ({r['velocity_points'].replace('x', ' x ')}, "
+    # python/linearised_bgk_reference.py (N = 1600, Richardson-extrapolated), per problem and delta.
+    ordinates = {("poiseuille", 0.1): 2.0327143, ("poiseuille", 1): 1.5386784,
+                 ("poiseuille", 10): 2.7686424, ("couette", 1 / 0.3): 0.1868997,
+                 ("couette", 10): 0.0831122, ("couette", 1 / 0.03): 0.0282760}
+    names = {"poiseuille": "Poiseuille G", "couette": "Couette P"}
+    digits = {"poiseuille": 5, "couette": 7}
+    out = [["problem", "delta", "ours: test grid", "ours: finer grid", "in-repo reference",
+            "published", "source", "test grid - published", "finer - published"]]
+    same = lambda a, b: abs(float(a) / float(b) - 1) < 1e-6
+    for (problem, delta), reference in ordinates.items():
+        pick = lambda role: next(r for r in runs if r["problem"] == problem
+                                 and same(r["delta"], delta) and r["role"] == role)
+        test, finer = pick("test"), pick("finer")
+        n = digits[problem]
+        grid = lambda r: (f"{float(r['value']):.{n}f} ({r['velocity_points'].replace('x', ' x ')}, "
                           f"{r['cells']} cells, {float(r['seconds']):.2g} s)")
-        for p in (x for x in published if x["delta"] == delta):
+        for p in (x for x in published if x["problem"] == problem and same(x["delta"], delta)):
             v = float(p["published"])
-            out.append([delta, grid(test), grid(finer), f"{ordinates[delta]:.5f}", p["published"],
-                        p["source"], f"{100 * (float(test['value']) / v - 1):+.3f} %",
+            out.append([names[problem], f"{delta:.6g}", grid(test), grid(finer),
+                        f"{reference:.{n}f}", p["published"], p["source"],
+                        f"{100 * (float(test['value']) / v - 1):+.3f} %",
                         f"{100 * (float(finer['value']) / v - 1):+.3f} %"])
     head = comment_lines("kinetic_published_runs.csv")
     return markdown(out) + "\n" + next(x for x in head if x.startswith("Command:")) + "\n"
