@@ -16,9 +16,9 @@
 // solution (w0/h = 3 (1 - nu^2) P/16, Poisson's clamped plate). The centre deflection is
 // converged to 1e-9 in the number of steps.
 //
-// Reference 2, published: Roark's Formulas for Stress and Strain (W. C. Young, R. G. Budynas,
-// 7th ed., 2002), sec. 11.11, Table 11.3, case 3 (uniform pressure over the entire plate, edge
-// fixed and held):
+// Reference 2, published: Roark's Formulas for Stress and Strain, 7th ed., sec. 11.11 (large
+// deflections of circular plates), eq. 11.11-1 with the constants of case 3 (uniform pressure
+// over the entire plate, edge fixed and held):
 //   q a^4/(E t^4) = 5.33/(1 - nu^2) (y/t) + 2.6/(1 - nu^2) (y/t)^3
 // with y the centre deflection and t the thickness: the same plate (nu = 0.3 here). It is an
 // approximate formula: its linear term is the exact small-deflection one (Poisson's
