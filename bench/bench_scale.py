@@ -88,7 +88,7 @@ def main():
                 value = summary["probes"][a.probe][a.component]
                 line = {"section": "run", "case": summary["case"], "mesh": mesh,
                         "unknowns": summary.get("unknowns"), "linear": linear,
-                        "wall_s": round(wall, 3), "cpu_s": round(cpu, 3),
+                        "linear_solver": s.get("linear_solver"), "wall_s": round(wall, 3), "cpu_s": round(cpu, 3),
                         "max_rss_gib": round(rss, 3), "newton_iterations": s["newton_iterations"],
                         "krylov_iterations": s.get("krylov_iterations"),
                         "multigrid_levels": s.get("multigrid_levels"),

@@ -578,8 +578,9 @@ def flow_factor_switch_plate():
 
 
 def scale_runs(name):
-    """bench_scale.py: rfmems-solid's static solve against the mesh, by linear solver; each
-    multigrid row's growth exponent d log(CPU) / d log(unknowns) from the previous row."""
+    """bench_scale.py: rfmems-solid's static solve against the mesh, by linear solver (direct:
+    KLU or UMFPACK, as the run's JSON names it); each row's growth exponent
+    d log(CPU) / d log(unknowns) from the previous row of its solver.linear."""
     def table():
         lines = read_jsonl(DATA / name)
         runs = [x for x in lines if x["section"] == "run"]
@@ -593,7 +594,7 @@ def scale_runs(name):
             previous[x["linear"]] = x
             mg = x["linear"] == "multigrid"
             rows.append([x["mesh"].replace(",", " x "), f"{x['unknowns']:,}",
-                         "BoomerAMG + GMRES" if mg else "KLU",
+                         "BoomerAMG + GMRES" if mg else x.get("linear_solver", "klu").upper(),
                          str(x["krylov_iterations"]) if mg else "-",
                          f"{x['multigrid_levels']}, {x['multigrid_operator_complexity']:.2f}" if mg else "-",
                          f"{x['wall_s']:.2f}", f"{x['cpu_s']:.2f}",

@@ -7,7 +7,10 @@ packages=(
   build-essential cmake pkg-config git
   clang-format                          # the C++ style check in the tests
   libsundials-dev                       # SUNDIALS 6.4: IDA, KINSOL, SUNLinSol_KLU, SPGMR
-  libsuitesparse-dev                    # KLU; UMFPACK (modal analysis of large structures)
+  libsuitesparse-dev                    # KLU; UMFPACK (large static solves and modal analyses)
+  libopenblas0-serial                   # the BLAS and LAPACK behind UMFPACK's dense fronts
+                                        # (3-5x the reference BLAS; serial: no threads beside
+                                        # the MPI ranks)
   libeigen3-dev                         # dense small blocks, least-squares gradients
   libspectra-dev                        # Arnoldi eigensolver (modal analysis), header-only
   libmetis-dev                          # mesh partitioning

@@ -27,10 +27,11 @@ KinsolSolver::KinsolSolver(SystemOperator& op, const KinsolOptions& options)
   scale_f_ = sundials::make_serial_vector(n, ctx_.get());
   zero_ = sundials::make_serial_vector(n, ctx_.get());
   jac_ = sundials::make_csr_matrix(op_.jacobian_pattern(), ctx_.get());
-  // Continuation reuses its factorisation's analysis and pivots; a single solve keeps SUNDIALS'
-  // own KLU interface.
-  solver_ = options_.keep_jacobian
-                ? sundials::make_reusing_klu_solver(ctx_.get(), options_.ordering, counts_)
+  // Continuation reuses its factorisation's analysis and pivots, and a large system factorises
+  // with UMFPACK; a small single solve keeps SUNDIALS' own KLU interface.
+  solver_ = options_.keep_jacobian || n >= options_.umfpack_from
+                ? sundials::make_sparse_direct_solver(ctx_.get(), options_.ordering, counts_,
+                                                      options_.umfpack_from)
                 : sundials::make_klu_solver(y_.get(), jac_.get(), ctx_.get());
   mem_ = KINCreate(ctx_.get());
   if (!mem_) throw SolverError("KINCreate failed");
@@ -120,10 +121,17 @@ NonlinearStats KinsolSolver::solve(Real t, std::span<Real> y) {
   stats.fresh_factorizations = counts_->fresh_factorizations;
   stats.refactorizations = counts_->refactorizations;
   stats.factor_entries = counts_->factor_entries;
+  stats.umfpack = counts_->umfpack;
   // The unscaled infinity norm (KINGetFuncNorm reports a scaled 2-norm).
   op_.residual(t_, yv, zero, f0);
   stats.final_residual = 0;
-  for (Real v : f0) stats.final_residual = std::max(stats.final_residual, std::abs(v));
+  for (Real v : f0) {
+    // A diverged iteration (an overflow to inf or NaN) can end with KINSOL's test met, as NaN
+    // compares false with every bound: it is a failure, not a solution.
+    if (!std::isfinite(v))
+      throw SolverError("KINSOL diverged: the residual at its last iterate is not finite");
+    stats.final_residual = std::max(stats.final_residual, std::abs(v));
+  }
   std::copy(yv.begin(), yv.end(), y.begin());
   return stats;
 }

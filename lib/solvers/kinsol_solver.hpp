@@ -1,7 +1,9 @@
 // Static (steady) solves of a SystemOperator, F(t, y, 0) = 0, with SUNDIALS KINSOL: Newton's
-// method with an exact Jacobian (rebuilt every iteration, or kept while Newton converges, then
-// with KLU refactorising on the pattern's one symbolic analysis: solvers/klu_linear_solver.hpp),
-// and optional line search.
+// method with an exact Jacobian (rebuilt every iteration, or kept while Newton converges) and
+// optional line search. The linear solves: SUNDIALS' KLU for a small system solved once; the
+// sparse direct solver that refactorises on the pattern's one symbolic analysis (KLU, or
+// UMFPACK from kUmfpackFrom unknowns: solvers/sparse_direct_solver.hpp) for continuation and
+// for large systems.
 //
 // The stopping test is scaled to the problem: ||F||_inf <= relative_tolerance x the residual
 // scale (||F(y0)||_inf, or residual_scale), and with round_off_floor never below the residual's
@@ -17,7 +19,7 @@
 
 #include "core/system_operator.hpp"
 #include "solvers/callback_guard.hpp"
-#include "solvers/klu_linear_solver.hpp"
+#include "solvers/sparse_direct_solver.hpp"
 #include "solvers/sundials_handles.hpp"
 
 namespace rfmems {
@@ -44,14 +46,18 @@ struct KinsolOptions {
   // Newton step first, then the tolerance raised to the floor measured there. Off, KINSOL's
   // own test alone (as penalty-contact solves need, whose floor is set by the penalty).
   bool round_off_floor = false;
-  KluOrdering ordering = KluOrdering::BySize;  // with keep_jacobian
+  KluOrdering ordering = KluOrdering::BySize;  // of the sparse direct solver's KLU
+  // The size from which the factorisation is UMFPACK's (solvers/umfpack_factorization.hpp).
+  Index umfpack_from = kUmfpackFrom;
 };
 
 struct NonlinearStats {
   long newton_iters = 0, residual_evals = 0, jacobian_evals = 0, linear_iters = 0;
-  // KLU with keep_jacobian: factorisations with fresh pivoting and refactorisations keeping the
-  // pivots, over the solver's life (cumulative); entries of L + U.
+  // The sparse direct solver (keep_jacobian, or umfpack_from unknowns and more): factorisations
+  // with fresh pivoting (UMFPACK: with a fresh symbolic analysis) and refactorisations, over the
+  // solver's life (cumulative); entries of L + U; whether UMFPACK factorised.
   long fresh_factorizations = 0, refactorizations = 0, factor_entries = 0;
+  bool umfpack = false;
   Real initial_residual = 0, final_residual = 0;
 };
 
@@ -83,7 +89,7 @@ class KinsolSolver {
   sundials::Vector y_, scale_u_, scale_f_, zero_;
   sundials::Matrix jac_;
   sundials::LinearSolver solver_;
-  std::shared_ptr<sundials::KluCounts> counts_ = std::make_shared<sundials::KluCounts>();
+  std::shared_ptr<sundials::DirectCounts> counts_ = std::make_shared<sundials::DirectCounts>();
   bool solved_once_ = false;
   void* mem_ = nullptr;
   Real t_ = 0;

@@ -52,6 +52,8 @@ class PencilShiftSolve {
       shifted[k] -= sigma * mass_[i];
     }
     try {
+      // No iterative refinement: each step costs a residual and another solve, and the
+      // shift-invert iteration needs no more than the factorisation's accuracy.
       if (umfpack_)
         umfpack_lu_ = std::make_unique<UmfpackFactorization>(pattern_, shifted);
       else

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "core/system_operator.hpp"
+#include "solvers/umfpack_factorization.hpp"
 
 namespace rfmems {
 
@@ -38,9 +39,8 @@ struct ShiftInvertOptions {
   Real tolerance = 1e-10;  // Spectra's relative tolerance on the Ritz values of c T
   Index max_restarts = 1000;
   // The factorisation of K - sigma M: KLU (AMD ordering) below `umfpack_from` unknowns, UMFPACK
-  // (multifrontal, METIS ordering) from there on (0: always KLU). Measured on the cubic plate:
-  // 480 unknowns, KLU 8 ms for the whole analysis; 30,000, UMFPACK 2-3x faster than KLU.
-  Index umfpack_from = 20000;
+  // (multifrontal, METIS ordering) from there on (solvers/umfpack_factorization.hpp).
+  Index umfpack_from = kUmfpackFrom;
 };
 
 struct ShiftInvertStats {

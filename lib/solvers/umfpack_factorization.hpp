@@ -2,8 +2,10 @@
 // through BLAS), factorised once and reused for many solves. For large 2D meshes with wide
 // stencils, whose LU fill makes KLU's left-looking, column-by-column factorisation slow: the
 // 40,000-cell cubic plate of bench/bench_modal.cpp (120,000 unknowns, 6.3e6 nonzeros)
-// factorises in 78 s with KLU (METIS nested dissection) and in about 25 s with UMFPACK (METIS),
-// CPU on a loaded machine (docs/modal.md).
+// factorises in 78 s with KLU (METIS nested dissection) and in about 25 s with UMFPACK (METIS)
+// on a loaded machine with the reference BLAS, 5.3 s with OpenBLAS (docs/modal.md); the
+// plane-stress cantilever at 640 x 64 (82,000 unknowns) in 1.6 s against KLU's 12 s
+// (docs/scale.md).
 #pragma once
 #include <span>
 
@@ -11,16 +13,30 @@
 
 namespace rfmems {
 
+// The size from which the sparse direct solves factorise with UMFPACK rather than KLU (the
+// modal solver's shift-invert, KINSOL's static solves): below it KLU's lower overhead wins
+// (480 unknowns: 8 ms for a whole modal analysis), above it the multifrontal method does
+// (30,000 unknowns: 2-3x; 82,000: 8x).
+constexpr Index kUmfpackFrom = 20000;
+
 class UmfpackFactorization {
  public:
-  // Factorises the CSR matrix (pattern, values), METIS ordering, no iterative refinement. Throws
-  // SolverError if singular or if UMFPACK fails.
-  UmfpackFactorization(const CsrPattern& pattern, std::span<const Real> values);
+  // Factorises the CSR matrix (pattern, values), METIS ordering; each solve then takes up to
+  // `refinement_steps` steps of iterative refinement (UMFPACK's, against the matrix itself: a
+  // residual and a solve each). Throws SolverError if singular or if UMFPACK fails.
+  UmfpackFactorization(const CsrPattern& pattern, std::span<const Real> values,
+                       int refinement_steps = 0);
   ~UmfpackFactorization();
   UmfpackFactorization(const UmfpackFactorization&) = delete;
   UmfpackFactorization& operator=(const UmfpackFactorization&) = delete;
+  // A new matrix of the same pattern: the numeric factorisation again (fresh partial pivoting)
+  // on the symbolic analysis (ordering, frontal structure) of the first. SolverError as above.
+  void refactor(std::span<const Real> values);
   // Solves A x = b in place.
   void solve(std::span<Real> b);
+  // Numeric factorisations so far (the first included), and the entries of L + U.
+  long factorizations() const;
+  long factor_entries() const;
 
  private:
   struct Impl;

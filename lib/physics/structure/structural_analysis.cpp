@@ -48,6 +48,7 @@ AnalysisStats run_static(StructuralModel& model, const AnalysisSettings& setting
     StaticSolution solution = solve_static(model.structure(), t, options);
     u = std::move(solution.y);
     stats.newton = solution.stats;
+    if (solution.stats.umfpack) stats.linear_solver = "umfpack";
   }
   observer.output(0, t, u, {});
   stats.n_outputs = 1;

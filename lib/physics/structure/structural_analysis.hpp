@@ -134,7 +134,8 @@ struct AnalysisStats {
   int n_outputs = 0;
   Real final_time = 0;
   int distributed_ranks = 0;  // > 0: solved distributed over this many ranks
-  // The linear solver that ran: "klu", "klu_subdomains" (GMRES, KLU on the parts) or
+  // The linear solver that ran: "klu", "umfpack" (a static solve of kUmfpackFrom unknowns or
+  // more: solvers/sparse_direct_solver.hpp), "klu_subdomains" (GMRES, KLU on the parts) or
   // "multigrid" (GMRES, BoomerAMG); with multigrid its hierarchy's levels and operator
   // complexity (static solves).
   std::string linear_solver = "klu";

@@ -4,9 +4,13 @@
 //  - fixed-step mode with max order 1 is exactly backward Euler (discrete recurrence);
 //  - a RecoverableError in the residual makes IDA retry with a smaller step;
 //  - KINSOL with the exact Jacobian on a nonlinear system, and the one-step linear case;
+//  - KINSOL's sparse direct solver with UMFPACK (solvers/sparse_direct_solver.hpp) gives KLU's
+//    answer and Newton history on a coupled nonlinear chain, refactorising when the Jacobian is
+//    kept, and one step on a linear one;
 //  - IDA one-step mode (step) to a stop time, and per-unknown absolute tolerances.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.hpp"
@@ -50,6 +54,42 @@ class Oscillators : public SecondOrderOperator {
 
  private:
   std::vector<double> k_, c_, f_;
+  CsrPattern pattern_;
+};
+
+// A chain of n unit springs between fixed ends, each node also on a linear spring g and a cubic
+// spring c to the ground: (2 + g) u_i - u_{i-1} - u_{i+1} + c u_i^3 = f_i = a (1 + i mod 7)
+// (u_0 = u_{n+1} = 0):
+// coupled, tridiagonal; well conditioned with g = 1, soft (smallest eigenvalue ~ (pi/n)^2) with
+// g = 0.
+class Chain : public SecondOrderOperator {
+ public:
+  Chain(Index n, double cubic, double ground = 1, double load = 0.2)
+      : n_(n), c_(cubic), g_(ground), a_(load) {
+    for (Index i = 0; i < n; ++i) {
+      for (Index j = std::max<Index>(i - 1, 0); j <= std::min<Index>(i + 1, n - 1); ++j)
+        pattern_.col_idx.push_back(j);
+      pattern_.row_ptr.push_back(pattern_.nnz());
+    }
+  }
+  Index size() const override { return n_; }
+  void internal_residual(Real, std::span<const Real> y, std::span<Real> r) override {
+    for (Index i = 0; i < n_; ++i) {
+      const double left = i > 0 ? y[i - 1] : 0.0, right = i + 1 < n_ ? y[i + 1] : 0.0;
+      r[i] = (2 + g_) * y[i] - left - right + c_ * std::pow(y[i], 3) - a_ * (1 + i % 7);
+    }
+  }
+  const CsrPattern& stiffness_pattern() const override { return pattern_; }
+  void stiffness(Real, std::span<const Real> y, std::span<Real> v) override {
+    for (Index i = 0; i < n_; ++i)
+      for (Index p = pattern_.row_ptr[i]; p < pattern_.row_ptr[i + 1]; ++p)
+        v[p] = pattern_.col_idx[p] == i ? 2 + g_ + 3 * c_ * y[i] * y[i] : -1.0;
+  }
+  std::vector<Real> mass_diagonal() const override { return std::vector<Real>(n_, 1.0); }
+
+ private:
+  Index n_;
+  double c_, g_, a_;
   CsrPattern pattern_;
 };
 
@@ -154,6 +194,55 @@ TEST(Kinsol, LinearProblemTakesOneNewtonStep) {
   EXPECT_EQ(s.stats.newton_iters, 1);
   EXPECT_NEAR(s.y[0], 2.0, 1e-12);
   EXPECT_NEAR(s.y[1], -2.0, 1e-12);
+}
+
+TEST(Kinsol, UmfpackGivesKlusAnswer) {
+  Chain chain(300, 5.0);
+  std::vector<Real> start;  // keep_jacobian (continuation): from 0.95 x the solution
+  for (const bool keep : {false, true}) {
+    KinsolOptions options;
+    options.relative_tolerance = 1e-12;
+    options.keep_jacobian = keep;
+    const StaticSolution klu = solve_static(chain, 0.0, options, start);
+    options.umfpack_from = 0;  // every size
+    const StaticSolution umfpack = solve_static(chain, 0.0, options, start);
+    EXPECT_FALSE(klu.stats.umfpack);
+    EXPECT_TRUE(umfpack.stats.umfpack);
+    EXPECT_EQ(umfpack.stats.newton_iters, klu.stats.newton_iters) << "keep " << keep;
+    EXPECT_GE(umfpack.stats.newton_iters, 3);
+    EXPECT_GT(umfpack.stats.factor_entries, 0);
+    // One symbolic analysis; every later setup a numeric refactorisation.
+    EXPECT_EQ(umfpack.stats.fresh_factorizations, 1);
+    EXPECT_EQ(umfpack.stats.refactorizations, umfpack.stats.jacobian_evals - 1);
+    double largest = 0, difference = 0;
+    for (Index i = 0; i < chain.size(); ++i) {
+      ASSERT_TRUE(std::isfinite(umfpack.y[i]));
+      largest = std::max(largest, std::abs(klu.y[i]));
+      difference = std::max(difference, std::abs(umfpack.y[i] - klu.y[i]));
+    }
+    EXPECT_GT(largest, 0.1);
+    EXPECT_LT(difference, 1e-12 * largest) << "keep " << keep;
+    EXPECT_LT(umfpack.stats.final_residual, 1e-11);
+    start = klu.y;
+    for (Real& v : start) v *= 0.95;
+  }
+  // Linear: one Newton step, as with KLU.
+  Chain linear(300, 0.0);
+  KinsolOptions options;
+  options.umfpack_from = 0;
+  const StaticSolution s = solve_static(linear, 0.0, options);
+  EXPECT_TRUE(s.stats.umfpack);
+  EXPECT_EQ(s.stats.newton_iters, 1);
+}
+
+// Modified Newton (the Jacobian kept) from rest on the soft chain: the first step overshoots by
+// orders of magnitude, the cubic term then overflows; that is a failure, not a solution with a
+// residual of "0" (a NaN compares false with every bound).
+TEST(Kinsol, ANonFiniteStateIsAFailure) {
+  Chain soft(300, 5.0, 0.0, 0.01);
+  KinsolOptions options;
+  options.keep_jacobian = true;
+  EXPECT_THROW(solve_static(soft, 0.0, options), SolverError);
 }
 
 // step(): one internal step per call (Stepped), ending exactly at the stop time (Reached), with

@@ -1,4 +1,4 @@
-#include "solvers/klu_linear_solver.hpp"
+#include "solvers/sparse_direct_solver.hpp"
 
 #include <sunmatrix/sunmatrix_sparse.h>
 
@@ -11,12 +11,25 @@ namespace rfmems::sundials {
 
 namespace {
 
+// UMFPACK's iterative refinement in each solve: a Newton step's solve at the LU's backward
+// error, so that a linear problem converges in one step (solvers/kinsol_solver.hpp's
+// round-off floor) rather than paying a second factorisation.
+constexpr int kRefinementSteps = 2;
+
 struct Content {
   KluOrdering ordering;
-  std::shared_ptr<KluCounts> counts;
+  std::shared_ptr<DirectCounts> counts;
+  Index umfpack_from;
   CsrPattern pattern;
-  std::unique_ptr<KluFactorization> lu;
+  std::unique_ptr<KluFactorization> klu;
+  std::unique_ptr<UmfpackFactorization> umfpack;
   int last_flag = SUNLS_SUCCESS;
+
+  bool factorized() const { return klu || umfpack; }
+  void reset() {
+    klu.reset();
+    umfpack.reset();
+  }
 };
 
 Content& content(SUNLinearSolver s) { return *static_cast<Content*>(s->content); }
@@ -33,29 +46,47 @@ int setup(SUNLinearSolver s, SUNMatrix a) {
   const sunindextype* ptr = SUNSparseMatrix_IndexPointers(a);
   const std::span<const Real> values(SUNSparseMatrix_Data(a), static_cast<std::size_t>(ptr[n]));
   try {
-    if (!c.lu || c.pattern.nnz() != ptr[n]) {
+    if (!c.factorized() || c.pattern.nnz() != ptr[n]) {
       const sunindextype* idx = SUNSparseMatrix_IndexValues(a);
       c.pattern.row_ptr.assign(ptr, ptr + n + 1);
       c.pattern.col_idx.assign(idx, idx + ptr[n]);
-      c.lu =
-          std::make_unique<KluFactorization>(c.pattern, values, c.ordering, KluSystem::MixedUnits);
+      c.reset();
+      if (n >= c.umfpack_from)
+        c.umfpack = std::make_unique<UmfpackFactorization>(c.pattern, values, kRefinementSteps);
+      else
+        c.klu = std::make_unique<KluFactorization>(c.pattern, values, c.ordering,
+                                                   KluSystem::MixedUnits);
+    } else if (c.umfpack) {
+      c.umfpack->refactor(values);
     } else {
-      c.lu->refactor(values);
+      c.klu->refactor(values);
     }
   } catch (const std::exception&) {
-    c.lu.reset();
+    c.reset();
     return c.last_flag = SUNLS_PACKAGE_FAIL_REC;
   }
-  if (c.counts)
-    *c.counts = {c.lu->fresh_factorizations(), c.lu->refactorizations(), c.lu->factor_entries()};
+  if (c.counts) {
+    if (c.umfpack)
+      *c.counts = {1, c.umfpack->factorizations() - 1, c.umfpack->factor_entries(), true};
+    else
+      *c.counts = {c.klu->fresh_factorizations(), c.klu->refactorizations(),
+                   c.klu->factor_entries(), false};
+  }
   return c.last_flag = SUNLS_SUCCESS;
 }
 
 int solve(SUNLinearSolver s, SUNMatrix, N_Vector x, N_Vector b, realtype) {
   Content& c = content(s);
-  if (!c.lu) return c.last_flag = SUNLS_PACKAGE_FAIL_UNREC;
+  if (!c.factorized()) return c.last_flag = SUNLS_PACKAGE_FAIL_UNREC;
   N_VScale(1.0, b, x);
-  c.lu->solve(as_span(x));
+  try {
+    if (c.umfpack)
+      c.umfpack->solve(as_span(x));
+    else
+      c.klu->solve(as_span(x));
+  } catch (const std::exception&) {
+    return c.last_flag = SUNLS_PACKAGE_FAIL_UNREC;
+  }
   return c.last_flag = SUNLS_SUCCESS;
 }
 
@@ -68,11 +99,11 @@ int free_solver(SUNLinearSolver s) {
 
 }  // namespace
 
-LinearSolver make_reusing_klu_solver(SUNContext ctx, KluOrdering ordering,
-                                     std::shared_ptr<KluCounts> counts) {
+LinearSolver make_sparse_direct_solver(SUNContext ctx, KluOrdering ordering,
+                                       std::shared_ptr<DirectCounts> counts, Index umfpack_from) {
   SUNLinearSolver s = SUNLinSolNewEmpty(ctx);
   if (!s) throw SolverError("SUNLinSolNewEmpty failed");
-  s->content = new Content{ordering, std::move(counts), {}, nullptr};
+  s->content = new Content{ordering, std::move(counts), umfpack_from, {}, nullptr, nullptr};
   s->ops->gettype = get_type;
   s->ops->getid = get_id;
   s->ops->initialize = initialize;
