@@ -35,9 +35,10 @@
 // evaluated at the centroid from the cell's least-squares displacement gradient (the
 // operator's cell_gradients(), boundary values included).
 //
-// Jacobian (analytic): the u rows are constant (the operator is linear, sigma_p linear in q)
-// and assembled once; a q row of cell c depends on its own components and, through the
-// centroid gradient, on the displacements of c's reconstruction stencil.
+// Jacobian (analytic): the u rows are constant (the operator is linear, sigma_p linear in q;
+// but for the relaxation of a residual stress, below) and assembled once; a q row of cell c
+// depends on its own components and, through the centroid gradient, on the displacements of
+// c's reconstruction stencil.
 //
 // Relaxation of the residual stress (material.residual_stress sigma0 != 0; docs/creep.md
 // "Relaxation of the residual stress"). The creep law acts on the cell's full stress

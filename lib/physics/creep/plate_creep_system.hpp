@@ -27,9 +27,10 @@
 //   q[4 (c (N+1) + i) + j]    point i of cell c: eps_p,xx, eps_p,yy, eps_p,xy (tensor), eps_eff
 // Residual F_y = R_plate(t, y) + sum_f M_p,f(q) S_f (algebraic), F_q = q' - g(y, q).
 //
-// Jacobian (analytic): the y rows are constant (the plate is linear, M_p linear in q) and are
-// assembled once; a q row of point (c, i) depends on its own four states and, through kappa_c
-// (the centroid gradient of the plate's beta reconstruction), on the rotations of c's stencil.
+// Jacobian (analytic): the y rows are constant (the plate is linear, M_p linear in q; but for
+// the hold voltage and the relaxation of a residual stress, below) and are assembled once; a
+// q row of point (c, i) depends on its own four states and, through kappa_c (the centroid
+// gradient of the plate's beta reconstruction), on the rotations of c's stencil.
 //
 // Transverse shear creep (optional, shear_creep = true; docs/creep.md "Shear creep").
 // The thesis's plate lets only bending creep; the continuum's von Mises stress also carries
