@@ -335,6 +335,17 @@ std::vector<Vec3> PlateCreepSystem::plastic_moments(std::span<const Real> state)
   return m;
 }
 
+Vec3 PlateCreepSystem::face_slope(Real t, std::span<const Real> state,
+                                  const MembraneFace& m) const {
+  Vec3 g = Vec3::Zero();
+  for (Index k = m.begin; k < m.end; ++k) {
+    const PlateOperator::SlopeWeight& s = slope_weights_[k];
+    g += s.weight * (s.cell >= 0 ? state[3 * s.cell + PlateOperator::kW]
+                                 : plate_.boundary_deflection(s.face, t));
+  }
+  return g;
+}
+
 Vec3 PlateCreepSystem::cell_plastic_strain_integral(std::span<const Real> state, Index c) const {
   Vec3 integral = Vec3::Zero();
   for (Index i = 0; i < n_points(); ++i) {
@@ -359,12 +370,7 @@ void PlateCreepSystem::add_membrane_relaxation(Real t, std::span<const Real> slo
   for (Index c = 0; c < n_cells_; ++c) p[c] = cell_plastic_strain_integral(strain_state, c);
   const Mesh& mesh = plate_.mesh();
   for (const MembraneFace& m : membrane_faces_) {
-    Vec3 g = Vec3::Zero();
-    for (Index k = m.begin; k < m.end; ++k) {
-      const PlateOperator::SlopeWeight& s = slope_weights_[k];
-      g += s.weight * (s.cell >= 0 ? slope_state[3 * s.cell + PlateOperator::kW]
-                                   : plate_.boundary_deflection(s.face, t));
-    }
+    const Vec3 g = face_slope(t, slope_state, m);
     const Vec3 mean_p = m.neighbour >= 0 ? Vec3(0.5 * (p[m.owner] + p[m.neighbour])) : p[m.owner];
     const Vec3 dn = -C_ * mean_p;  // dN_f (Voigt)
     const Vec3& S = mesh.face_area(m.face);
@@ -442,14 +448,15 @@ void PlateCreepSystem::residual(Real t, std::span<const Real> y, std::span<const
   for (Index k = 0; k < size() - ns; ++k) rq[k] = yp[ns + k] - rq[k];
 }
 
-void PlateCreepSystem::structural_rows(Real t, std::span<const Real> y, std::span<Real> values) {
+void PlateCreepSystem::structural_rows(Real t, std::span<const Real> y,
+                                       std::span<Real> values) const {
   std::copy(structural_values_.begin(), structural_values_.end(), values.begin());
   if (hold_load_) {
     // The y columns of the y rows are the structural tangent alone (the sources are in q
     // columns): overwrite the constant K there with K + the hold load's tangent.
-    structural_tangent(y, tangent_values_);
-    for (std::size_t p = 0; p < tangent_values_.size(); ++p)
-      values[tangent_position_[p]] = tangent_values_[p];
+    std::vector<Real> tangent;
+    structural_tangent(y, tangent);
+    for (std::size_t p = 0; p < tangent.size(); ++p) values[tangent_position_[p]] = tangent[p];
   }
   if (membrane_faces_.empty()) return;
   // The relaxed membrane force's face flux F_f = b_f . dN_f, b_f = (g_x S_x, g_y S_y,
@@ -465,12 +472,7 @@ void PlateCreepSystem::structural_rows(Real t, std::span<const Real> y, std::spa
     position += 2;
   };
   for (const MembraneFace& m : membrane_faces_) {
-    Vec3 g = Vec3::Zero();
-    for (Index k = m.begin; k < m.end; ++k) {
-      const PlateOperator::SlopeWeight& s = slope_weights_[k];
-      g += s.weight * (s.cell >= 0 ? y[3 * s.cell + PlateOperator::kW]
-                                   : plate_.boundary_deflection(s.face, t));
-    }
+    const Vec3 g = face_slope(t, y, m);
     const Real a = m.neighbour >= 0 ? 0.5 : 1.0;
     const Vec3 mean_p = m.neighbour >= 0 ? Vec3(0.5 * (p[m.owner] + p[m.neighbour])) : p[m.owner];
     const Vec3 dn = -C_ * mean_p;
@@ -601,9 +603,7 @@ PlateCreepSystem::ShearPointRateJacobian PlateCreepSystem::shear_point_rate_jaco
 void PlateCreepSystem::preconditioner_setup(Real t, Real c_j, std::span<const Real> y,
                                             std::span<const Real>) {
   if (!has_preconditioner())
-    throw std::logic_error(
-        "PlateCreepSystem: no preconditioner with shear creep or a relaxing residual stress (use "
-        "KLU)");
+    throw std::logic_error("PlateCreepSystem: no preconditioner with shear creep (use KLU)");
   if (!schur_) {
     schur_ = std::make_unique<PlateCreepSchurComplement>(*this);
     schur_->set_refactor_tolerance(schur_refactor_tolerance_);

@@ -74,10 +74,11 @@
 // N enters their faces (q columns eps_p,xx, yy, xy of every point) and their w-w block on q,
 //   dF_w / dw_k = -sum_f +-(weight_fk . dN_f S_f),
 //   dF_w / d eps_p(c, i) = +-sum_f a_fc w_i (b_f^T C),  b_f = (g_x S_x, g_y S_y, g_x S_y + g_y S_x)
-// (a_fc = 1/2, 1 on an edge; g = grad w_f); the y rows are no longer constant, so the
-// Schur-complement preconditioner (which takes K and P = dF_y/dq constant, and P from the
-// moment sources only) is not offered in this mode: KLU on the full Jacobian. With sigma0 = 0
-// none of this is built: N = 0 by symmetry (eps_p is odd in z), and the system is the one above.
+// (a_fc = 1/2, 1 on an edge; g = grad w_f); the y rows are no longer constant: equilibrate
+// refactorises the y-y block of J, and the Schur-complement preconditioner takes that block
+// for K and adds the relaxation's P_m D^-1 G (plate_creep_schur_complement.hpp). With
+// sigma0 = 0 none of this is built: N = 0 by symmetry (eps_p is odd in z), and the system is
+// the one above.
 //
 // Hold voltage (set_hold_voltage, physics/creep/creep_hold_voltage.hpp): the parallel-plate
 // pressure on the gap elements, sampled where the pull-in samples it
@@ -139,8 +140,8 @@ class PlateCreepSystem : public CreepSystem {
   // Preconditioner: the exact Jacobian solve by the Schur complement on the plate unknowns
   // (physics/creep/plate_creep_schur_complement.hpp), so that IDA with SPGMR needs about one
   // Krylov iteration per Newton iteration and no factorisation of the full Jacobian.
-  // Not with shear creep nor with the relaxation of a residual stress (see above): KLU.
-  bool has_preconditioner() const override { return !shear_creep() && !relaxes_membrane(); }
+  // Not with shear creep (see above): KLU.
+  bool has_preconditioner() const override { return !shear_creep(); }
   void preconditioner_setup(Real t, Real c_j, std::span<const Real> y,
                             std::span<const Real> yp) override;
   void preconditioner_solve(std::span<const Real> r, std::span<Real> z) override;
@@ -237,7 +238,7 @@ class PlateCreepSystem : public CreepSystem {
   void add_membrane_relaxation(Real t, std::span<const Real> slope_state,
                                std::span<const Real> strain_state, std::span<Real> r) const;
   // The y rows of the Jacobian at the state (values [0, structural_nnz_)).
-  void structural_rows(Real t, std::span<const Real> y, std::span<Real> values);
+  void structural_rows(Real t, std::span<const Real> y, std::span<Real> values) const;
   void build_pattern();
   // Validates and installs the hold load; true if it changed structural_pattern().
   bool install_hold(CreepHoldVoltage hold);
@@ -292,6 +293,8 @@ class PlateCreepSystem : public CreepSystem {
     Index begin, end;              // into slope_weights_
   };
   std::vector<MembraneFace> membrane_faces_;
+  // grad w_f of a membrane face at the state (boundary deflections at t).
+  Vec3 face_slope(Real t, std::span<const Real> state, const MembraneFace& m) const;
   std::vector<PlateOperator::SlopeWeight> slope_weights_;
   // Per membrane face, in the order add_relaxation_jacobian visits them: the value positions of
   // (owner row, neighbour row) for each slope cell, then for each face cell, point, strain.
