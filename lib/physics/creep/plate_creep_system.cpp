@@ -203,7 +203,7 @@ void PlateCreepSystem::build_pattern() {
   for (Index row = 0; row < 3 * n_cells_; ++row)
     for (Index p = structural.row_ptr[row]; p < structural.row_ptr[row + 1]; ++p)
       tangent_position_.push_back(pattern_.find(row, structural.col_idx[p]));
-  // The relaxation's value positions, in add_relaxation_jacobian's order.
+  // The relaxation's value positions, in structural_rows' order.
   relaxation_position_.clear();
   for (const MembraneFace& m : membrane_faces_) {
     auto add = [&](Index col) {

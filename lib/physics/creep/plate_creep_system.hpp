@@ -296,7 +296,7 @@ class PlateCreepSystem : public CreepSystem {
   // grad w_f of a membrane face at the state (boundary deflections at t).
   Vec3 face_slope(Real t, std::span<const Real> state, const MembraneFace& m) const;
   std::vector<PlateOperator::SlopeWeight> slope_weights_;
-  // Per membrane face, in the order add_relaxation_jacobian visits them: the value positions of
+  // Per membrane face, in the order structural_rows visits them: the value positions of
   // (owner row, neighbour row) for each slope cell, then for each face cell, point, strain.
   std::vector<Index> relaxation_position_;
   CsrPattern tangent_pattern_;         // the y-y block of pattern_ (relaxation only)
