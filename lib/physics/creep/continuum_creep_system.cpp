@@ -43,8 +43,14 @@ ContinuumCreepSystem::ContinuumCreepSystem(ElasticityOperator& elasticity, const
   for (int k = 0; k < n_plastic_; ++k)
     plastic_stress_.col(k) = voigt(hooke(unit_tensor(components_[k].first, components_[k].second)));
 
+  sigma0_ = elasticity.material().residual_stress;
+  relaxes_prestress_ = sigma0_.cwiseAbs().maxCoeff() > 0;
+  for (int k = 0; k < n_plastic_; ++k)
+    component_stress_.push_back(hooke(unit_tensor(components_[k].first, components_[k].second)));
+
   build_plastic_source(source_reconstruction_degree);
   build_stress_weights();
+  build_prestress_faces();
   build_pattern();
 
   const std::vector<Real> zero(elasticity.size(), 0.0);
@@ -124,6 +130,30 @@ void ContinuumCreepSystem::build_plastic_source(int degree) {
   for (const auto& [key, B] : blocks) source_.push_back({key.first, key.second, B});
 }
 
+void ContinuumCreepSystem::build_prestress_faces() {
+  prestress_faces_.clear();
+  gradient_terms_.clear();
+  if (!relaxes_prestress_) return;
+  const Mesh& mesh = elasticity_.mesh();
+  for (Index f = 0; f < mesh.n_faces(); ++f) {
+    const Index n = mesh.face_neighbour(f);
+    Mat3 projection = Mat3::Identity();
+    if (n < 0) {
+      const Kind kind = elasticity_.boundaries()[mesh.face_patch(f)].kind;
+      if (kind == Kind::Traction) continue;  // no face gradient: the traction is prescribed
+      if (kind == Kind::Symmetry) {
+        const Vec3 u = mesh.face_area(f).normalized();
+        projection = u * u.transpose();
+      }
+    }
+    const std::vector<ElasticityOperator::GradientTerm> terms = elasticity_.face_gradient_terms(f);
+    const Index begin = static_cast<Index>(gradient_terms_.size());
+    gradient_terms_.insert(gradient_terms_.end(), terms.begin(), terms.end());
+    prestress_faces_.push_back(
+        {f, mesh.face_owner(f), n, projection, begin, static_cast<Index>(gradient_terms_.size())});
+  }
+}
+
 void ContinuumCreepSystem::build_stress_weights() {
   stress_weights_.assign(n_cells_, {});
   for (Index c = 0; c < n_cells_; ++c) {
@@ -144,6 +174,19 @@ void ContinuumCreepSystem::build_pattern() {
   const Index ns = structural_size();
   std::vector<std::vector<Index>> source_cols(n_cells_);
   for (const SourceBlock& b : source_) source_cols[b.row].push_back(b.col);
+  // The relaxed prestress: u rows of each face cell <- u of the face gradient's terms and the
+  // plastic strains of the face's cells.
+  std::vector<std::vector<Index>> prestress_cols(n_cells_);
+  for (const PrestressFace& pf : prestress_faces_)
+    for (Index row : {pf.owner, pf.neighbour}) {
+      if (row < 0) continue;
+      for (Index k = pf.begin; k < pf.end; ++k)
+        for (int b = 0; b < dim_; ++b)
+          prestress_cols[row].push_back(dim_ * gradient_terms_[k].cell + b);
+      for (Index c : {pf.owner, pf.neighbour})
+        if (c >= 0)
+          for (int j = 0; j < n_plastic_; ++j) prestress_cols[row].push_back(creep_index(c, j));
+    }
 
   pattern_ = CsrPattern{};
   std::vector<Index> cols;
@@ -152,12 +195,41 @@ void ContinuumCreepSystem::build_pattern() {
                 stiffness.col_idx.begin() + stiffness.row_ptr[row + 1]);
     for (Index k : source_cols[row / dim_])
       for (int j = 0; j < n_plastic_; ++j) cols.push_back(creep_index(k, j));
+    cols.insert(cols.end(), prestress_cols[row / dim_].begin(), prestress_cols[row / dim_].end());
     std::sort(cols.begin(), cols.end());
     cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
     pattern_.col_idx.insert(pattern_.col_idx.end(), cols.begin(), cols.end());
     pattern_.row_ptr.push_back(pattern_.nnz());
   }
   structural_nnz_ = pattern_.nnz();
+  // The relaxation's value positions, in structural_rows' order.
+  relaxation_position_.clear();
+  for (const PrestressFace& pf : prestress_faces_) {
+    auto add = [&](int a, Index col) {
+      relaxation_position_.push_back(pattern_.find(dim_ * pf.owner + a, col));
+      relaxation_position_.push_back(pf.neighbour >= 0 ? pattern_.find(dim_ * pf.neighbour + a, col)
+                                                       : -1);
+    };
+    for (Index k = pf.begin; k < pf.end; ++k)
+      for (int a = 0; a < dim_; ++a)
+        for (int b = 0; b < dim_; ++b) add(a, dim_ * gradient_terms_[k].cell + b);
+    for (Index c : {pf.owner, pf.neighbour})
+      if (c >= 0)
+        for (int j = 0; j < n_plastic_; ++j)
+          for (int a = 0; a < dim_; ++a) add(a, creep_index(c, j));
+  }
+  // The u-u block (equilibrate's tangent with the relaxation).
+  tangent_pattern_ = CsrPattern{};
+  tangent_source_.clear();
+  if (relaxes_prestress_)
+    for (Index row = 0; row < ns; ++row) {
+      for (Index p = pattern_.row_ptr[row]; p < pattern_.row_ptr[row + 1]; ++p)
+        if (pattern_.col_idx[p] < ns) {
+          tangent_pattern_.col_idx.push_back(pattern_.col_idx[p]);
+          tangent_source_.push_back(p);
+        }
+      tangent_pattern_.row_ptr.push_back(tangent_pattern_.nnz());
+    }
   for (Index c = 0; c < n_cells_; ++c)
     for (int j = 0; j < n_components(); ++j) {
       for (const StressWeight& w : stress_weights_[c])
@@ -216,7 +288,85 @@ Mat3 ContinuumCreepSystem::plastic_strain(std::span<const Real> state, Index c) 
 }
 
 Mat3 ContinuumCreepSystem::cell_stress(std::span<const Real> state, Index c, const Mat3& G) const {
-  return hooke(0.5 * (G + G.transpose()) - stress_plastic_strain(state, c));
+  const Mat3 s = hooke(0.5 * (G + G.transpose()) - stress_plastic_strain(state, c));
+  return relaxes_prestress_ ? Mat3(sigma0_ + s) : s;
+}
+
+std::vector<Mat3> ContinuumCreepSystem::prestresses(std::span<const Real> state) const {
+  std::vector<Mat3> s(n_cells_);
+  for (Index c = 0; c < n_cells_; ++c) s[c] = sigma0_ - hooke(stress_plastic_strain(state, c));
+  return s;
+}
+
+void ContinuumCreepSystem::add_prestress_relaxation(Real t, std::span<const Real> gradient_state,
+                                                    std::span<const Real> strain_state,
+                                                    std::span<Real> r) const {
+  if (prestress_faces_.empty()) return;
+  const std::vector<Mat3> G =
+      elasticity_.face_gradients(t, gradient_state.first(structural_size()));
+  std::vector<Mat3> sp(n_cells_);
+  for (Index c = 0; c < n_cells_; ++c) sp[c] = hooke(stress_plastic_strain(strain_state, c));
+  const Mesh& mesh = elasticity_.mesh();
+  for (const PrestressFace& pf : prestress_faces_) {
+    const Mat3 dsigma =
+        pf.neighbour >= 0 ? Mat3(-0.5 * (sp[pf.owner] + sp[pf.neighbour])) : Mat3(-sp[pf.owner]);
+    const Vec3 F = pf.projection * (G[pf.face] * (dsigma * mesh.face_area(pf.face)));
+    for (int a = 0; a < dim_; ++a) {
+      r[dim_ * pf.owner + a] -= F[a];
+      if (pf.neighbour >= 0) r[dim_ * pf.neighbour + a] += F[a];
+    }
+  }
+}
+
+void ContinuumCreepSystem::structural_rows(Real t, std::span<const Real> y,
+                                           std::span<Real> values) const {
+  std::copy(structural_values_.begin(), structural_values_.end(), values.begin());
+  if (prestress_faces_.empty()) return;
+  // F = P G_f (dsigma_f S_f): dF/du_k = (h_k . dsigma_f S_f) P T_k,
+  // dF/d eps_p,j(c) = -a_c P G_f (C E_j S_f); row owner -F, row neighbour +F.
+  const std::vector<Mat3> G = elasticity_.face_gradients(t, y.first(structural_size()));
+  std::vector<Mat3> sp(n_cells_);
+  for (Index c = 0; c < n_cells_; ++c) sp[c] = hooke(stress_plastic_strain(y, c));
+  const Mesh& mesh = elasticity_.mesh();
+  const Index* position = relaxation_position_.data();
+  auto add = [&](Real d) {
+    values[position[0]] -= d;
+    if (position[1] >= 0) values[position[1]] += d;
+    position += 2;
+  };
+  for (const PrestressFace& pf : prestress_faces_) {
+    const Real a_c = pf.neighbour >= 0 ? 0.5 : 1.0;
+    const Mat3 dsigma =
+        pf.neighbour >= 0 ? Mat3(-0.5 * (sp[pf.owner] + sp[pf.neighbour])) : Mat3(-sp[pf.owner]);
+    const Vec3& S = mesh.face_area(pf.face);
+    const Vec3 dsigma_S = dsigma * S;
+    for (Index k = pf.begin; k < pf.end; ++k) {
+      const ElasticityOperator::GradientTerm& term = gradient_terms_[k];
+      const Mat3 block = term.weight.dot(dsigma_S) * pf.projection * term.map;
+      for (int a = 0; a < dim_; ++a)
+        for (int b = 0; b < dim_; ++b) add(block(a, b));
+    }
+    for (Index c : {pf.owner, pf.neighbour})
+      if (c >= 0)
+        for (int j = 0; j < n_plastic_; ++j) {
+          const Vec3 d = -a_c * (pf.projection * (G[pf.face] * (component_stress_[j] * S)));
+          for (int a = 0; a < dim_; ++a) add(d[a]);
+        }
+  }
+}
+
+KluFactorization& ContinuumCreepSystem::structural_factors(Real t, std::span<const Real> state) {
+  if (!relaxes_prestress_) return *stiffness_lu_;
+  jacobian_scratch_.resize(structural_nnz_);
+  structural_rows(t, state, jacobian_scratch_);
+  tangent_values_.resize(tangent_source_.size());
+  for (std::size_t k = 0; k < tangent_source_.size(); ++k)
+    tangent_values_[k] = jacobian_scratch_[tangent_source_[k]];
+  if (relaxed_lu_)
+    relaxed_lu_->refactor(tangent_values_);
+  else
+    relaxed_lu_ = std::make_unique<KluFactorization>(tangent_pattern_, tangent_values_);
+  return *relaxed_lu_;
 }
 
 std::vector<Mat3> ContinuumCreepSystem::cell_stresses(Real t, std::span<const Real> state) const {
@@ -270,6 +420,7 @@ void ContinuumCreepSystem::residual(Real t, std::span<const Real> y, std::span<c
   const Index ns = structural_size();
   elasticity_.internal_residual(t, y.first(ns), r.first(ns));
   add_plastic_source(y, r);
+  add_prestress_relaxation(t, y, y, r);
   std::span<Real> rq = r.subspan(ns);
   creep_rates(t, y, rq);
   for (Index k = 0; k < size() - ns; ++k) rq[k] = yp[ns + k] - rq[k];
@@ -277,7 +428,7 @@ void ContinuumCreepSystem::residual(Real t, std::span<const Real> y, std::span<c
 
 void ContinuumCreepSystem::jacobian(Real t, Real c_j, std::span<const Real> y,
                                     std::span<const Real>, std::span<Real> values) {
-  std::copy(structural_values_.begin(), structural_values_.end(), values.begin());
+  structural_rows(t, y, values);
   const std::vector<Mat3> G = elasticity_.cell_gradients(t, y.first(structural_size()));
   RateJacobian d_sigma;
   RateVector d_eps_eff;
@@ -301,12 +452,14 @@ void ContinuumCreepSystem::jacobian(Real t, Real c_j, std::span<const Real> y,
 }
 
 void ContinuumCreepSystem::equilibrate(Real t, std::span<Real> state) {
-  // The elastic operator is linear: one Newton step on its factorised stiffness is exact.
+  // The elastic operator is linear, and for fixed q so is the relaxation term: one Newton step
+  // on the factorised tangent is exact.
   const Index ns = structural_size();
   scratch_.assign(ns, 0.0);
   elasticity_.internal_residual(t, state.first(ns), scratch_);
   add_plastic_source(state, scratch_);
-  stiffness_lu_->solve(scratch_);
+  add_prestress_relaxation(t, state, state, scratch_);
+  structural_factors(t, state).solve(scratch_);
   for (Index k = 0; k < ns; ++k) state[k] -= scratch_[k];
 }
 
@@ -317,10 +470,12 @@ void ContinuumCreepSystem::initial_state(Real t, std::vector<Real>& state,
   equilibrate(t, state);
   state_dot.assign(size(), 0.0);
   creep_rates(t, state, std::span<Real>(state_dot).subspan(ns));
-  // K u' + (dR/dq) q' = 0, the source linear in q: apply it to q'.
+  // T u' + (dR/dq) q' = 0 (T: the tangent), the sources linear in q (the relaxation at the
+  // state's face gradients): apply them to q'.
   scratch_.assign(ns, 0.0);
   add_plastic_source(state_dot, scratch_);
-  stiffness_lu_->solve(scratch_);
+  add_prestress_relaxation(t, state, state_dot, scratch_);
+  structural_factors(t, state).solve(scratch_);
   for (Index k = 0; k < ns; ++k) state_dot[k] = -scratch_[k];
 }
 

@@ -35,9 +35,30 @@
 // evaluated at the centroid from the cell's least-squares displacement gradient (the
 // operator's cell_gradients(), boundary values included).
 //
-// Jacobian (analytic): the u rows are constant (the operator is linear, sigma_p linear in q)
-// and assembled once; a q row of cell c depends on its own components and, through the
-// centroid gradient, on the displacements of c's reconstruction stencil.
+// Jacobian (analytic): the u rows are constant (the operator is linear, sigma_p linear in q;
+// but for the relaxation of a residual stress, below) and assembled once; a q row of cell c
+// depends on its own components and, through the centroid gradient, on the displacements of
+// c's reconstruction stencil.
+//
+// Relaxation of the residual stress (material.residual_stress sigma0 != 0; docs/creep.md
+// "Relaxation of the residual stress"). The creep law acts on the cell's full stress
+//   sigma = sigma0 + C (eps - eps_p)
+// and the plastic strain relaxes the prestress of the geometric stiffness (the operator's
+// G_f sigma0 S_f on every face but traction faces) to sigma0 - C eps_p per cell, so the system
+// adds, on those faces,
+//   R_P += -P G_f (dsigma_f S_f),  dsigma_f = -(sigma_p,P + sigma_p,N)/2 (the owner's on a
+//   boundary face),  sigma_p = C eps_p,
+// P the operator's projection (the normal on a symmetry face, else I), with the receiving
+// cell's sign. The face value is the mean of the two cells' (not the reconstruction of the
+// sigma_p source): the relaxation varies as slowly as the stress, and the mean keeps a u row's
+// new q columns to its face neighbours. Like the plate's, the relaxed prestress is the local
+// one: sigma0 - C eps_p is not re-equilibrated (its divergence is the plastic source, which
+// the displacement answers, but the geometric term keeps the local value), exact for a uniform
+// relaxation. The term is bilinear in (u, q): its exact Jacobian has
+//   dF/du_k = (h_k . dsigma_f S_f) P T_k (the face gradient's terms, G_f = sum (T_k u_k) h_k^T),
+//   dF/d eps_p,j(c) = -a_c P G_f (C E_j) S_f  (E_j the unit tensor of component j),
+// so the u rows are not constant when sigma0 != 0 (equilibrate's tangent is refactorised).
+// With sigma0 = 0 none of this is built.
 //
 // Linear solves: KLU on the full Jacobian (no preconditioner). Unlike the plate (21 points of 4
 // states per cell, whose Jacobian fills in until a Schur complement is needed) a cell holds
@@ -102,8 +123,13 @@ class ContinuumCreepSystem : public CreepSystem {
   // Post-processing.
   // Plastic strain tensor of cell c (plane stress: eps_p,zz = -(xx + yy)).
   Mat3 plastic_strain(std::span<const Real> state, Index c) const;
-  // Full 3 x 3 Cauchy stress of every cell [Pa].
+  // Full 3 x 3 Cauchy stress of every cell [Pa], sigma0 included.
   std::vector<Mat3> cell_stresses(Real t, std::span<const Real> state) const;
+
+  // True when the material holds a residual stress, whose relaxation the system models.
+  bool relaxes_prestress() const { return relaxes_prestress_; }
+  // The relaxed prestress sigma0 - C eps_p of every cell [Pa].
+  std::vector<Mat3> prestresses(std::span<const Real> state) const;
 
   const ElasticityOperator& elasticity() const { return elasticity_; }
   const CreepLaw& law() const { return law_; }
@@ -143,6 +169,16 @@ class ContinuumCreepSystem : public CreepSystem {
   void build_stress_weights();
   void build_pattern();
   void add_plastic_source(std::span<const Real> state, std::span<Real> r) const;
+  // The faces of the relaxed prestress with their gradient terms (relaxes_prestress()).
+  void build_prestress_faces();
+  // r_u += the relaxation term with the face gradients of gradient_state (boundary values at
+  // t) and dsigma = -C eps_p of strain_state (linear in it: with q' it is dF_u/dq q').
+  void add_prestress_relaxation(Real t, std::span<const Real> gradient_state,
+                                std::span<const Real> strain_state, std::span<Real> r) const;
+  // The u rows of the Jacobian at the state (values [0, structural_nnz_)).
+  void structural_rows(Real t, std::span<const Real> y, std::span<Real> values) const;
+  // The factorised dF_u/du at the state: K, or with the relaxation the u-u block.
+  KluFactorization& structural_factors(Real t, std::span<const Real> state);
 
   ElasticityOperator& elasticity_;
   CreepLaw law_;
@@ -160,6 +196,25 @@ class ContinuumCreepSystem : public CreepSystem {
   std::vector<Real> structural_values_;
   Index structural_nnz_ = 0;
   std::unique_ptr<KluFactorization> stiffness_lu_;
+  // Relaxation of the residual stress.
+  bool relaxes_prestress_ = false;
+  Mat3 sigma0_ = Mat3::Zero();
+  std::vector<Mat3> component_stress_;  // C E_j per plastic component j
+  struct PrestressFace {
+    Index face, owner, neighbour;  // neighbour < 0 on a boundary face
+    Mat3 projection;               // of the force onto what the cells receive
+    Index begin, end;              // into gradient_terms_
+  };
+  std::vector<PrestressFace> prestress_faces_;
+  std::vector<ElasticityOperator::GradientTerm> gradient_terms_;
+  // Per prestress face, in structural_rows' order: for each term, each (row component a,
+  // column component b), the positions of (owner row, neighbour row); then for each face cell,
+  // each plastic component j, each row component a, the same pair.
+  std::vector<Index> relaxation_position_;
+  CsrPattern tangent_pattern_;         // the u-u block of pattern_ (relaxation only)
+  std::vector<Index> tangent_source_;  // its entries' positions in pattern_
+  std::unique_ptr<KluFactorization> relaxed_lu_;
+  std::vector<Real> tangent_values_, jacobian_scratch_;
   std::vector<Real> scratch_;
 };
 

@@ -18,6 +18,11 @@ Real von_mises(const Vec3& s) {
 
 PlateCreepSystem& as_plate(CreepSystem& system) { return dynamic_cast<PlateCreepSystem&>(system); }
 
+// A section with an in-plane residual stress, whose creep relaxation the system models.
+bool relaxes_membrane(const CreepCase& c) {
+  return c.plate->section.residual_stress.topLeftCorner<2, 2>().cwiseAbs().maxCoeff() > 0;
+}
+
 // The gap point where the plate is lowest: the smallest gap, sampled where the hold load and
 // the pull-in sample it (ParallelPlateActuation::elements(): Simpson points on quadrilaterals).
 const GapPoint& lowest_point(const CreepCase& c, std::span<const Real> state) {
@@ -44,6 +49,8 @@ CreepRunModel make_plate_creep_model(const CreepCase& c) {
   if (c.has_gap) m.series_columns.push_back("min_gap");
   m.series_columns.push_back("max_surface_von_mises");
   m.series_columns.push_back("max_creep_strain");
+  // The relaxing membrane stress N_xx / h, the mean over the cells.
+  if (relaxes_membrane(c)) m.series_columns.push_back("mean_membrane_stress_xx");
 
   m.sample = [&c, min_gap = m.min_gap](CreepSystem& system, Real t, std::span<const Real> state) {
     PlateCreepSystem& plate = as_plate(system);
@@ -60,6 +67,11 @@ CreepRunModel make_plate_creep_model(const CreepCase& c) {
       for (Index i = 0; i < plate.n_points(); ++i)
         eps = std::max(eps, state[plate.creep_index(cell, i, PlateCreepSystem::kEff)]);
     row.push_back(eps);
+    if (plate.relaxes_membrane()) {
+      Real n = 0;
+      for (const Vec3& v : plate.membrane_forces(state)) n += v[0];
+      row.push_back(n / (plate.n_cells() * plate.plate().section().thickness));
+    }
     return row;
   };
 
@@ -76,6 +88,10 @@ CreepRunModel make_plate_creep_model(const CreepCase& c) {
       auto& vm = f[name];
       for (const Vec3& s : plate.fibre_stress(t, state, i)) vm.push_back(von_mises(s));
     }
+    if (plate.relaxes_membrane()) {
+      auto& n = f["membrane_force"];
+      for (const Vec3& v : plate.membrane_forces(state)) n.insert(n.end(), {v[0], v[1], v[2]});
+    }
     auto& eps = f["creep_strain"];
     eps.assign(nc, 0.0);
     for (Index cell = 0; cell < nc; ++cell)
@@ -91,6 +107,9 @@ void write_plate_creep_output(const CreepCase& c, ResultWriter& writer, int inde
   c.plate->write_fields(writer, index, out.time, out.fields.at("structure"), {});
   writer.write_cell_field_at(index, out.time, "plastic_moment", out.fields.at("plastic_moment"), 3,
                              {"Mp_xx", "Mp_yy", "Mp_xy"});
+  if (out.fields.count("membrane_force"))
+    writer.write_cell_field_at(index, out.time, "membrane_force", out.fields.at("membrane_force"),
+                               3, {"N_xx", "N_yy", "N_xy"});
   for (const char* name : {"von_mises_top", "von_mises_bottom", "creep_strain"})
     writer.write_cell_field_at(index, out.time, name, out.fields.at(name), 1);
 }

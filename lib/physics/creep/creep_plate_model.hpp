@@ -8,10 +8,12 @@
 //              there;
 //   series     per probe its deflection w [m]; min_gap [m] (with a gap); the largest von Mises
 //              stress over the two surfaces (z = +-h/2, where creep is fastest) [Pa]; the largest
-//              effective creep strain [-];
+//              effective creep strain [-]; with a residual stress, mean_membrane_stress_xx
+//              (the cell mean of the relaxing N_xx / h) [Pa];
 //   fields     the plate's own (deflection, rotation, elastic moment, shear force: PlateScene),
 //              plastic_moment (M_p,xx, M_p,yy, M_p,xy) [N m/m], von_mises_top, von_mises_bottom
-//              [Pa] and creep_strain (max over the thickness of eps_eff) per cell.
+//              [Pa] and creep_strain (max over the thickness of eps_eff) per cell; with a
+//              residual stress, membrane_force (N_xx, N_yy, N_xy) [N/m] per cell.
 #pragma once
 #include "io/result_writer.hpp"
 #include "physics/creep/creep_case.hpp"

@@ -21,10 +21,26 @@ PlateCreepSchurComplement::PlateCreepSchurComplement(const PlateCreepSystem& sys
     : system_(system) {
   const Index n_cells = system.n_cells(), ns = 3 * n_cells;
   const CsrPattern& structural = system.structural_pattern();  // K's (with the hold's stencils)
+  const bool relaxes = system.relaxes_membrane();
   std::vector<std::vector<Index>> rows(ns);
   for (Index row = 0; row < ns; ++row)
     rows[row].assign(structural.col_idx.begin() + structural.row_ptr[row],
                      structural.col_idx.begin() + structural.row_ptr[row + 1]);
+  // The relaxed membrane force: the y-y block of J (K and the relaxation's w-w part), and
+  // P_m D^-1 G's w rows <- the rotations of the face cells' curvature stencils.
+  const CsrPattern& full = system.pattern_;
+  if (relaxes) {
+    for (Index row = 0; row < ns; ++row)
+      for (Index p = full.row_ptr[row]; p < full.row_ptr[row + 1]; ++p)
+        if (full.col_idx[p] < ns) rows[row].push_back(full.col_idx[p]);
+    for (const auto& m : system.membrane_faces_)
+      for (Index row : {m.owner, m.neighbour})
+        if (row >= 0)
+          for (Index c : {m.owner, m.neighbour})
+            if (c >= 0)
+              for (const auto& w : system.curvature_weights_[c])
+                for (int l = 1; l <= 2; ++l) rows[3 * row].push_back(3 * w.cell + l);
+  }
   for (const auto& b : system.source_)
     for (const auto& w : system.curvature_weights_[b.col])
       for (int a = 1; a <= 2; ++a)
@@ -38,6 +54,22 @@ PlateCreepSchurComplement::PlateCreepSchurComplement(const PlateCreepSystem& sys
   for (Index row = 0; row < ns; ++row)
     for (Index p = structural.row_ptr[row]; p < structural.row_ptr[row + 1]; ++p)
       plate_position_.push_back(pattern_.find(row, structural.col_idx[p]));
+  if (relaxes) {
+    for (Index row = 0; row < ns; ++row)
+      for (Index p = full.row_ptr[row]; p < full.row_ptr[row + 1]; ++p)
+        if (full.col_idx[p] < ns)
+          tangent_position_.push_back({p, pattern_.find(row, full.col_idx[p])});
+    for (const auto& m : system.membrane_faces_)
+      for (Index c : {m.owner, m.neighbour})
+        if (c >= 0)
+          for (const auto& w : system.curvature_weights_[c])
+            for (int l = 1; l <= 2; ++l) {
+              membrane_position_.push_back(pattern_.find(3 * m.owner, 3 * w.cell + l));
+              membrane_position_.push_back(
+                  m.neighbour >= 0 ? pattern_.find(3 * m.neighbour, 3 * w.cell + l) : -1);
+            }
+    membrane_z_.resize(n_cells);
+  }
   for (const auto& b : system.source_) {
     coupling_offset_.push_back(static_cast<Index>(coupling_position_.size()));
     for (const auto& w : system.curvature_weights_[b.col])
@@ -58,6 +90,7 @@ void PlateCreepSchurComplement::setup(Real t, Real c_j, std::span<const Real> st
   const std::vector<Vec3> kappa = sys.curvatures(t, state);
   for (Index k = 0; k < n_cells; ++k) {
     Eigen::Matrix3d weighted = Eigen::Matrix3d::Zero();  // sum_i w_i z_i [E_ki]_{eps_p}
+    Eigen::Matrix3d membrane = Eigen::Matrix3d::Zero();  // sum_i w_i [E_ki]_{eps_p}
     for (Index i = 0; i < np; ++i) {
       const auto d = sys.point_rate_jacobian(state, k, i, kappa[k]);
       Mat4 D = c_j * Mat4::Identity();
@@ -69,13 +102,45 @@ void PlateCreepSchurComplement::setup(Real t, Real c_j, std::span<const Real> st
       if (!d_inv.allFinite()) throw RecoverableError("plate creep Schur complement: singular D");
       e_[k * np + i] = d_inv * d.d_kappa;
       weighted += (sys.quadrature_.weight[i] * sys.quadrature_.z[i]) * e_[k * np + i].topRows<3>();
+      membrane += sys.quadrature_.weight[i] * e_[k * np + i].topRows<3>();
     }
     h_[k] = -sys.C_ * weighted;
+    if (!membrane_z_.empty()) membrane_z_[k] = membrane;
   }
   // S = K - sum_{r,k} B_rk H_k L_k.
   std::fill(values_.begin(), values_.end(), 0.0);
-  sys.structural_tangent(state, tangent_);
-  for (std::size_t p = 0; p < tangent_.size(); ++p) values_[plate_position_[p]] += tangent_[p];
+  if (sys.relaxes_membrane()) {
+    // K + the relaxation's w-w part: the y-y block of J at the state.
+    tangent_.resize(sys.structural_nnz_);
+    sys.structural_rows(t, state, tangent_);
+    for (const auto& [from, to] : tangent_position_) values_[to] += tangent_[from];
+    // - P_m D^-1 G: the w row of a face cell gets +-a_c (C^T b_f)^T Z_c L_c (see the header).
+    state_.assign(state.begin(), state.end());
+    t_ = t;
+    const Index* position = membrane_position_.data();
+    for (const auto& m : sys.membrane_faces_) {
+      const Vec3 g = sys.face_slope(t, state, m);
+      const Vec3& S = sys.plate_.mesh().face_area(m.face);
+      const Vec3 b(g.x() * S.x(), g.y() * S.y(), g.x() * S.y() + g.y() * S.x());
+      const Eigen::RowVector3d bc = (sys.C_.transpose() * b).transpose();
+      const Real a = m.neighbour >= 0 ? 0.5 : 1.0;
+      for (Index c : {m.owner, m.neighbour}) {
+        if (c < 0) continue;
+        const Eigen::RowVector3d v = a * bc * membrane_z_[c];
+        for (const auto& w : sys.curvature_weights_[c]) {
+          const Eigen::RowVector2d s = v * curvature_map(w.weight);
+          for (int l = 0; l < 2; ++l) {
+            values_[position[0]] += s[l];
+            if (position[1] >= 0) values_[position[1]] -= s[l];
+            position += 2;
+          }
+        }
+      }
+    }
+  } else {
+    sys.structural_tangent(state, tangent_);
+    for (std::size_t p = 0; p < tangent_.size(); ++p) values_[plate_position_[p]] += tangent_[p];
+  }
   for (std::size_t b = 0; b < sys.source_.size(); ++b) {
     const auto& block = sys.source_[b];
     const Eigen::Matrix<Real, 2, 3> bh = block.B * h_[block.col];
@@ -144,6 +209,11 @@ void PlateCreepSchurComplement::solve(std::span<const Real> r, std::span<Real> z
     const Eigen::Vector2d s = block.B * Eigen::Vector3d::Map(moment_.data() + 3 * block.col);
     rhs_[3 * block.row + 1] -= s[0];
     rhs_[3 * block.row + 2] -= s[1];
+  }
+  if (sys.relaxes_membrane()) {  // - P_m z_q': the relaxation applied to z_q' at the state
+    relaxation_.assign(ns, 0.0);
+    sys.add_membrane_relaxation(t_, state_, z, relaxation_);
+    for (Index k = 0; k < ns; ++k) rhs_[k] -= relaxation_[k];
   }
   lu_->solve(rhs_);
   std::copy(rhs_.begin(), rhs_.end(), z.begin());

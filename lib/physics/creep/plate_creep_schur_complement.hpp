@@ -26,6 +26,16 @@
 // (~50 cells per beta row). S's pattern is built once: KLU (COLAMD ordering) analyses it once
 // and refactors the numbers at a setup.
 //
+// Relaxation of a residual stress (PlateCreepSystem, "Relaxation of the residual stress"):
+// K becomes the y-y block of J (the plate's stiffness and the relaxed membrane force's w-w
+// part, which depends on q), and P gains P_m = dF_w/dq of the relaxed membrane force: the w
+// row of each face cell of face f gets +-a_c w_i (C^T b_f)^T on eps_p(c, i), b_f from the
+// slope at the state. Like H_k, P_m D^-1 G factors through the cell:
+//   P_m D^-1 G = -sum_f +-a_c (C^T b_f)^T Z_c L_c,   Z_c = sum_i w_i [D_ci^-1 (dg/dkappa)_i]_eps_p
+// (the zeroth moment where H_k takes the first), so S's w rows gain the rotations of the face
+// cells' curvature stencils, and the solve subtracts P_m z_q' (the relaxation term applied to
+// z_q' at the setup's slopes).
+//
 // Lagged factors (refactor_tolerance > 0): the per-point blocks D^-1, E and H are cheap and
 // always rebuilt exactly; only the refactorisation of S (~0.5 s on 81 x 21 cells, the bulk of
 // a run) is skipped while ||S_old^-1 (S - S_old)|| (four power iterations with the old
@@ -82,6 +92,15 @@ class PlateCreepSchurComplement {
   std::vector<Mat43> e_;
   std::vector<Eigen::Matrix3d> h_;
   std::vector<Real> tangent_, rhs_, moment_;
+  // The relaxation of a residual stress (PlateCreepSystem::relaxes_membrane()): the y-y block
+  // of J (pattern_ position in J -> in S), per membrane face and face cell the S positions of
+  // its w rows' rotation columns (owner, neighbour or -1), per cell Z_k = sum_i w_i [E_ki]_eps_p,
+  // and the state of the setup (P_m depends on its slopes).
+  std::vector<std::pair<Index, Index>> tangent_position_;
+  std::vector<Index> membrane_position_;
+  std::vector<Eigen::Matrix3d> membrane_z_;
+  std::vector<Real> state_, relaxation_;
+  Real t_ = 0;
 };
 
 }  // namespace rfmems

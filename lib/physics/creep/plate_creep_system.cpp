@@ -27,6 +27,9 @@ PlateCreepSystem::PlateCreepSystem(PlateOperator& plate, const CreepLaw& law,
   const Real E = plate.section().E, nu = plate.section().nu, c = E / (1 - nu * nu);
   C_ << c, c * nu, 0, c * nu, c, 0, 0, 0, E / (1 + nu);
   shear_modulus_ = E / (2 * (1 + nu));
+  const Mat3& sigma0 = plate.section().residual_stress;
+  sigma0_ = Vec3(sigma0(0, 0), sigma0(1, 1), sigma0(0, 1));
+  relaxes_membrane_ = sigma0_.cwiseAbs().maxCoeff() > 0;
   per_point_ = shear_creep ? 6 : kPerPoint;
   moment_rec_ = std::make_unique<PolynomialReconstruction>(
       plate.mesh(), [](Index) { return BoundaryPoint::None; }, 2);
@@ -54,6 +57,7 @@ PlateCreepSystem::PlateCreepSystem(PlateOperator& plate, const CreepLaw& law,
     }
   }
   build_plastic_source();
+  build_membrane_faces();
   if (hold) install_hold(std::move(*hold));
   build_pattern();
 
@@ -137,11 +141,41 @@ void PlateCreepSystem::build_plastic_source() {
   for (const auto& [key, B] : shear_blocks) shear_source_.push_back({key.first, key.second, B});
 }
 
+void PlateCreepSystem::build_membrane_faces() {
+  membrane_faces_.clear();
+  slope_weights_.clear();
+  if (!relaxes_membrane_) return;
+  const Mesh& mesh = plate_.mesh();
+  for (Index f = 0; f < mesh.n_faces(); ++f) {
+    const std::vector<PlateOperator::SlopeWeight> w = plate_.face_slope_weights(f);
+    if (w.empty()) continue;  // an edge without membrane force
+    const Index begin = static_cast<Index>(slope_weights_.size());
+    slope_weights_.insert(slope_weights_.end(), w.begin(), w.end());
+    membrane_faces_.push_back({f, mesh.face_owner(f), mesh.face_neighbour(f), begin,
+                               static_cast<Index>(slope_weights_.size())});
+  }
+}
+
 void PlateCreepSystem::build_pattern() {
   const CsrPattern& plate_pattern = plate_.stiffness_pattern();
   const CsrPattern& structural = structural_pattern();
   const Index np = n_points();
   std::vector<std::vector<Index>> source_cols(n_cells_), shear_cols(n_cells_);
+  // The relaxed membrane force: w row of each face cell <- w of the slope stencil and the
+  // plastic strains of the face's cells.
+  std::vector<std::vector<Index>> membrane_cols(n_cells_);
+  for (const MembraneFace& m : membrane_faces_)
+    for (Index row : {m.owner, m.neighbour}) {
+      if (row < 0) continue;
+      for (Index k = m.begin; k < m.end; ++k)
+        if (slope_weights_[k].cell >= 0)
+          membrane_cols[row].push_back(3 * slope_weights_[k].cell + PlateOperator::kW);
+      for (Index c : {m.owner, m.neighbour}) {
+        if (c < 0) continue;
+        for (Index i = 0; i < np; ++i)
+          for (int j = 0; j < 3; ++j) membrane_cols[row].push_back(creep_index(c, i, j));
+      }
+    }
   for (const SourceBlock& b : source_) source_cols[b.row].push_back(b.col);
   for (const ShearSourceBlock& b : shear_source_) shear_cols[b.row].push_back(b.col);
 
@@ -157,6 +191,8 @@ void PlateCreepSystem::build_pattern() {
     for (Index k : shear_cols[row / 3])
       for (Index i = 0; i < np; ++i)
         for (int j = kXZ; j <= kYZ; ++j) cols.push_back(creep_index(k, i, j));
+    if (row % 3 == PlateOperator::kW)
+      cols.insert(cols.end(), membrane_cols[row / 3].begin(), membrane_cols[row / 3].end());
     std::sort(cols.begin(), cols.end());
     cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
     pattern_.col_idx.insert(pattern_.col_idx.end(), cols.begin(), cols.end());
@@ -167,6 +203,34 @@ void PlateCreepSystem::build_pattern() {
   for (Index row = 0; row < 3 * n_cells_; ++row)
     for (Index p = structural.row_ptr[row]; p < structural.row_ptr[row + 1]; ++p)
       tangent_position_.push_back(pattern_.find(row, structural.col_idx[p]));
+  // The relaxation's value positions, in structural_rows' order.
+  relaxation_position_.clear();
+  for (const MembraneFace& m : membrane_faces_) {
+    auto add = [&](Index col) {
+      relaxation_position_.push_back(pattern_.find(3 * m.owner + PlateOperator::kW, col));
+      relaxation_position_.push_back(
+          m.neighbour >= 0 ? pattern_.find(3 * m.neighbour + PlateOperator::kW, col) : -1);
+    };
+    for (Index k = m.begin; k < m.end; ++k)
+      if (slope_weights_[k].cell >= 0) add(3 * slope_weights_[k].cell + PlateOperator::kW);
+    for (Index c : {m.owner, m.neighbour}) {
+      if (c < 0) continue;
+      for (Index i = 0; i < np; ++i)
+        for (int j = 0; j < 3; ++j) add(creep_index(c, i, j));
+    }
+  }
+  // The y-y block (the structural tangent of equilibrate with the relaxation).
+  tangent_pattern_ = CsrPattern{};
+  tangent_source_.clear();
+  if (relaxes_membrane_)
+    for (Index row = 0; row < 3 * n_cells_; ++row) {
+      for (Index p = pattern_.row_ptr[row]; p < pattern_.row_ptr[row + 1]; ++p)
+        if (pattern_.col_idx[p] < 3 * n_cells_) {
+          tangent_pattern_.col_idx.push_back(pattern_.col_idx[p]);
+          tangent_source_.push_back(p);
+        }
+      tangent_pattern_.row_ptr.push_back(tangent_pattern_.nnz());
+    }
   for (Index c = 0; c < n_cells_; ++c)
     for (Index i = 0; i < np; ++i)
       for (int j = 0; j < per_point_; ++j) {
@@ -271,11 +335,59 @@ std::vector<Vec3> PlateCreepSystem::plastic_moments(std::span<const Real> state)
   return m;
 }
 
+Vec3 PlateCreepSystem::face_slope(Real t, std::span<const Real> state,
+                                  const MembraneFace& m) const {
+  Vec3 g = Vec3::Zero();
+  for (Index k = m.begin; k < m.end; ++k) {
+    const PlateOperator::SlopeWeight& s = slope_weights_[k];
+    g += s.weight * (s.cell >= 0 ? state[3 * s.cell + PlateOperator::kW]
+                                 : plate_.boundary_deflection(s.face, t));
+  }
+  return g;
+}
+
+Vec3 PlateCreepSystem::cell_plastic_strain_integral(std::span<const Real> state, Index c) const {
+  Vec3 integral = Vec3::Zero();
+  for (Index i = 0; i < n_points(); ++i) {
+    const Index q = creep_index(c, i, 0);
+    integral += quadrature_.weight[i] * Vec3(state[q + kXX], state[q + kYY], state[q + kXY]);
+  }
+  return integral;
+}
+
+std::vector<Vec3> PlateCreepSystem::membrane_forces(std::span<const Real> state) const {
+  std::vector<Vec3> n(n_cells_);
+  const Vec3 n0 = plate_.section().thickness * sigma0_;
+  for (Index c = 0; c < n_cells_; ++c) n[c] = n0 - C_ * cell_plastic_strain_integral(state, c);
+  return n;
+}
+
+void PlateCreepSystem::add_membrane_relaxation(Real t, std::span<const Real> slope_state,
+                                               std::span<const Real> strain_state,
+                                               std::span<Real> r) const {
+  if (membrane_faces_.empty()) return;
+  std::vector<Vec3> p(n_cells_);
+  for (Index c = 0; c < n_cells_; ++c) p[c] = cell_plastic_strain_integral(strain_state, c);
+  const Mesh& mesh = plate_.mesh();
+  for (const MembraneFace& m : membrane_faces_) {
+    const Vec3 g = face_slope(t, slope_state, m);
+    const Vec3 mean_p = m.neighbour >= 0 ? Vec3(0.5 * (p[m.owner] + p[m.neighbour])) : p[m.owner];
+    const Vec3 dn = -C_ * mean_p;  // dN_f (Voigt)
+    const Vec3& S = mesh.face_area(m.face);
+    // (dN g) . S = dN_xx g_x S_x + dN_yy g_y S_y + dN_xy (g_x S_y + g_y S_x)
+    const Real F =
+        dn[0] * g.x() * S.x() + dn[1] * g.y() * S.y() + dn[2] * (g.x() * S.y() + g.y() * S.x());
+    r[3 * m.owner + PlateOperator::kW] -= F;
+    if (m.neighbour >= 0) r[3 * m.neighbour + PlateOperator::kW] += F;
+  }
+}
+
 Vec3 PlateCreepSystem::point_stress(std::span<const Real> state, Index c, Index i,
                                     const Vec3& kappa) const {
   const Index q = creep_index(c, i, 0);
   const Vec3 eps_p(state[q + kXX], state[q + kYY], state[q + kXY]);
-  return C_ * (quadrature_.z[i] * kappa - eps_p);
+  const Vec3 bending = C_ * (quadrature_.z[i] * kappa - eps_p);
+  return relaxes_membrane_ ? Vec3(sigma0_ + bending) : bending;
 }
 
 std::vector<Vec3> PlateCreepSystem::fibre_stress(Real t, std::span<const Real> state,
@@ -330,21 +442,61 @@ void PlateCreepSystem::residual(Real t, std::span<const Real> y, std::span<const
   const Index ns = structural_size();
   structural_residual(t, y, r);
   add_plastic_source(y, r);
+  add_membrane_relaxation(t, y, y, r);
   std::span<Real> rq = r.subspan(ns);
   creep_rates(t, y, rq);
   for (Index k = 0; k < size() - ns; ++k) rq[k] = yp[ns + k] - rq[k];
 }
 
-void PlateCreepSystem::jacobian(Real t, Real c_j, std::span<const Real> y, std::span<const Real>,
-                                std::span<Real> values) {
+void PlateCreepSystem::structural_rows(Real t, std::span<const Real> y,
+                                       std::span<Real> values) const {
   std::copy(structural_values_.begin(), structural_values_.end(), values.begin());
   if (hold_load_) {
     // The y columns of the y rows are the structural tangent alone (the sources are in q
     // columns): overwrite the constant K there with K + the hold load's tangent.
-    structural_tangent(y, tangent_values_);
-    for (std::size_t p = 0; p < tangent_values_.size(); ++p)
-      values[tangent_position_[p]] = tangent_values_[p];
+    std::vector<Real> tangent;
+    structural_tangent(y, tangent);
+    for (std::size_t p = 0; p < tangent.size(); ++p) values[tangent_position_[p]] = tangent[p];
   }
+  if (membrane_faces_.empty()) return;
+  // The relaxed membrane force's face flux F_f = b_f . dN_f, b_f = (g_x S_x, g_y S_y,
+  // g_x S_y + g_y S_x), dN_f = -C (a_P P_P + a_N P_N): dF/dw_k = weight_k . (dN_f S_f),
+  // dF/d eps_p(c, i) = -a_c w_i b_f^T C; row owner -F, row neighbour +F.
+  std::vector<Vec3> p(n_cells_);
+  for (Index c = 0; c < n_cells_; ++c) p[c] = cell_plastic_strain_integral(y, c);
+  const Mesh& mesh = plate_.mesh();
+  const Index* position = relaxation_position_.data();
+  auto add = [&](Real d) {  // d = dF/d(column): owner row -d, neighbour row +d
+    values[position[0]] -= d;
+    if (position[1] >= 0) values[position[1]] += d;
+    position += 2;
+  };
+  for (const MembraneFace& m : membrane_faces_) {
+    const Vec3 g = face_slope(t, y, m);
+    const Real a = m.neighbour >= 0 ? 0.5 : 1.0;
+    const Vec3 mean_p = m.neighbour >= 0 ? Vec3(0.5 * (p[m.owner] + p[m.neighbour])) : p[m.owner];
+    const Vec3 dn = -C_ * mean_p;
+    const Vec3& S = mesh.face_area(m.face);
+    const Eigen::Vector2d force(dn[0] * S.x() + dn[2] * S.y(), dn[2] * S.x() + dn[1] * S.y());
+    for (Index k = m.begin; k < m.end; ++k) {
+      const PlateOperator::SlopeWeight& s = slope_weights_[k];
+      if (s.cell >= 0) add(s.weight.x() * force[0] + s.weight.y() * force[1]);
+    }
+    const Vec3 b(g.x() * S.x(), g.y() * S.y(), g.x() * S.y() + g.y() * S.x());
+    const Vec3 bc = C_.transpose() * b;
+    for (Index c : {m.owner, m.neighbour}) {
+      if (c < 0) continue;
+      for (Index i = 0; i < n_points(); ++i) {
+        const Real factor = -a * quadrature_.weight[i];
+        for (int j = 0; j < 3; ++j) add(factor * bc[j]);
+      }
+    }
+  }
+}
+
+void PlateCreepSystem::jacobian(Real t, Real c_j, std::span<const Real> y, std::span<const Real>,
+                                std::span<Real> values) {
+  structural_rows(t, y, values);
   const std::vector<Vec3> kappa = curvatures(t, y);
   if (shear_creep()) {
     const std::vector<Vec3> q_el = plate_.shear_forces(t, y.first(structural_size()));
@@ -450,7 +602,7 @@ PlateCreepSystem::ShearPointRateJacobian PlateCreepSystem::shear_point_rate_jaco
 
 void PlateCreepSystem::preconditioner_setup(Real t, Real c_j, std::span<const Real> y,
                                             std::span<const Real>) {
-  if (shear_creep())
+  if (!has_preconditioner())
     throw std::logic_error("PlateCreepSystem: no preconditioner with shear creep (use KLU)");
   if (!schur_) {
     schur_ = std::make_unique<PlateCreepSchurComplement>(*this);
@@ -486,7 +638,8 @@ void PlateCreepSystem::equilibrate(Real t, std::span<Real> state) {
     scratch_.assign(ns, 0.0);
     structural_residual(t, state, scratch_);
     add_plastic_source(state, scratch_);
-    structural_factors(state).solve(scratch_);
+    add_membrane_relaxation(t, state, state, scratch_);
+    structural_factors(t, state).solve(scratch_);
     Real update = 0, size = 0;
     for (Index k = 0; k < ns; ++k) {
       state[k] -= scratch_[k];
@@ -514,17 +667,19 @@ void PlateCreepSystem::initial_state(Real t, std::vector<Real>& state,
   equilibrate(t, state);
   state_dot.assign(size(), 0.0);
   creep_rates(t, state, std::span<Real>(state_dot).subspan(ns));
-  // T y' + (dR/dq) q' = 0 (T: the structural tangent): the source is linear in q, so apply it
-  // to q'.
+  // T y' + (dR/dq) q' = 0 (T: the structural tangent): the sources are linear in q (the
+  // relaxed membrane force at the state's slope), so apply them to q'.
   scratch_.assign(ns, 0.0);
   add_plastic_source(state_dot, scratch_);
-  structural_factors(state).solve(scratch_);
+  add_membrane_relaxation(t, state, state_dot, scratch_);
+  structural_factors(t, state).solve(scratch_);
   for (Index k = 0; k < ns; ++k) state_dot[k] = -scratch_[k];
 }
 
 void PlateCreepSystem::set_hold_voltage(CreepHoldVoltage hold) {
   if (!install_hold(std::move(hold))) return;  // another voltage: the factors' pattern stays
   tangent_lu_.reset();
+  relaxed_lu_.reset();
   schur_.reset();
   build_pattern();
 }
@@ -586,7 +741,19 @@ void PlateCreepSystem::structural_tangent(std::span<const Real> state,
   hold_load_->stiffness(0, state.first(structural_size()), values);
 }
 
-KluFactorization& PlateCreepSystem::structural_factors(std::span<const Real> state) {
+KluFactorization& PlateCreepSystem::structural_factors(Real t, std::span<const Real> state) {
+  if (relaxes_membrane_) {
+    jacobian_scratch_.resize(structural_nnz_);
+    structural_rows(t, state, jacobian_scratch_);
+    tangent_values_.resize(tangent_source_.size());
+    for (std::size_t k = 0; k < tangent_source_.size(); ++k)
+      tangent_values_[k] = jacobian_scratch_[tangent_source_[k]];
+    if (relaxed_lu_)
+      relaxed_lu_->refactor(tangent_values_);
+    else
+      relaxed_lu_ = std::make_unique<KluFactorization>(tangent_pattern_, tangent_values_);
+    return *relaxed_lu_;
+  }
   if (!hold_) {
     if (!plate_lu_)
       plate_lu_ = std::make_unique<KluFactorization>(plate_.stiffness_pattern(), plate_stiffness_);

@@ -27,9 +27,10 @@
 //   q[4 (c (N+1) + i) + j]    point i of cell c: eps_p,xx, eps_p,yy, eps_p,xy (tensor), eps_eff
 // Residual F_y = R_plate(t, y) + sum_f M_p,f(q) S_f (algebraic), F_q = q' - g(y, q).
 //
-// Jacobian (analytic): the y rows are constant (the plate is linear, M_p linear in q) and are
-// assembled once; a q row of point (c, i) depends on its own four states and, through kappa_c
-// (the centroid gradient of the plate's beta reconstruction), on the rotations of c's stencil.
+// Jacobian (analytic): the y rows are constant (the plate is linear, M_p linear in q; but for
+// the hold voltage and the relaxation of a residual stress, below) and are assembled once; a
+// q row of point (c, i) depends on its own four states and, through kappa_c (the centroid
+// gradient of the plate's beta reconstruction), on the rotations of c's stencil.
 //
 // Transverse shear creep (optional, shear_creep = true; docs/creep.md "Shear creep").
 // The thesis's plate lets only bending creep; the continuum's von Mises stress also carries
@@ -46,6 +47,38 @@
 // reconstructed like M_p,f. The Jacobian gains the constant y-q blocks of that source and, in
 // the q rows, dg/dQ_el times the plate's linear map of Q_el (shear_force_weights). No
 // Schur-complement preconditioner in this mode (it assumes 4 states per point): use KLU.
+//
+// Relaxation of the residual stress (a section with an in-plane sigma0, PlateSection::
+// residual_stress; docs/creep.md "Relaxation of the residual stress"). The stress of a point is
+//   sigma(z) = sigma0 + C (z kappa - eps_p(z))
+// and the creep law acts on it (with shear creep, plus the transverse shear above), so a
+// deposited film creeps under its own stress even when the plate does not bend. Its plastic
+// strain relaxes the membrane force of the cell,
+//   N_c = h sigma0 - C P_c,   P_c = int eps_p dz   (Simpson's rule, the quadrature of M_p),
+// which replaces N0 = h sigma0 in the plate's geometric stiffness on every face that carries
+// one (interior faces and edges whose deflection is held; free and loaded edges carry none):
+//   R_w += -sum_f (N_f grad w_f) . S_f,   N_f = (N_P + N_N)/2 (owner's N on an edge),
+// grad w_f the plate's face slope (PlateOperator::face_slope_weights). The plate keeps the
+// N0 part; this system adds the relaxation -sum_f (dN_f grad w_f) . S_f, dN = -C P.
+// N_f is the mean of the two cells' values, not a reconstruction like M_p,f: the relaxation
+// is driven by the local stress and varies as slowly as the stress itself, the slope it
+// multiplies is a second-order face value already, and the mean keeps each w row's q columns
+// to its face neighbours (21 points x 3 strains each) instead of a reconstruction stencil.
+// Approximation: the linear plate has no in-plane displacements, so N is the local relaxed
+// value: every fibre's total in-plane strain stays z kappa (the film held in its plane) and
+// the in-plane redistribution of a non-uniform relaxation (div N = 0, N n = 0 on a free edge)
+// is ignored. Exact for a uniform film held on all edges; for a film with free edges (a
+// bridge with free sides, sigma0 = [s (1 - nu), 0, 0]) the relaxed N_yy, which the free sides
+// would release, is kept.
+// The term is bilinear in (w, q): the w rows depend on the plastic strains of the cells whose
+// N enters their faces (q columns eps_p,xx, yy, xy of every point) and their w-w block on q,
+//   dF_w / dw_k = -sum_f +-(weight_fk . dN_f S_f),
+//   dF_w / d eps_p(c, i) = +-sum_f a_fc w_i (b_f^T C),  b_f = (g_x S_x, g_y S_y, g_x S_y + g_y S_x)
+// (a_fc = 1/2, 1 on an edge; g = grad w_f); the y rows are no longer constant: equilibrate
+// refactorises the y-y block of J, and the Schur-complement preconditioner takes that block
+// for K and adds the relaxation's P_m D^-1 G (plate_creep_schur_complement.hpp). With
+// sigma0 = 0 none of this is built: N = 0 by symmetry (eps_p is odd in z), and the system is
+// the one above.
 //
 // Hold voltage (set_hold_voltage, physics/creep/creep_hold_voltage.hpp): the parallel-plate
 // pressure on the gap elements, sampled where the pull-in samples it
@@ -107,6 +140,7 @@ class PlateCreepSystem : public CreepSystem {
   // Preconditioner: the exact Jacobian solve by the Schur complement on the plate unknowns
   // (physics/creep/plate_creep_schur_complement.hpp), so that IDA with SPGMR needs about one
   // Krylov iteration per Newton iteration and no factorisation of the full Jacobian.
+  // Not with shear creep (see above): KLU.
   bool has_preconditioner() const override { return !shear_creep(); }
   void preconditioner_setup(Real t, Real c_j, std::span<const Real> y,
                             std::span<const Real> yp) override;
@@ -138,8 +172,12 @@ class PlateCreepSystem : public CreepSystem {
   std::vector<Vec3> plastic_moments(std::span<const Real> state) const;
   // Plastic shear forces (Q_p,x, Q_p,y, 0) per cell [N/m]; zero without shear creep.
   std::vector<Vec3> plastic_shear_forces(std::span<const Real> state) const;
-  // In-plane stress (xx, yy, xy) at point i of every cell [Pa].
+  // In-plane stress (xx, yy, xy) at point i of every cell [Pa], sigma0 included.
   std::vector<Vec3> fibre_stress(Real t, std::span<const Real> state, Index i) const;
+  // True when the section holds an in-plane residual stress, whose relaxation the system models.
+  bool relaxes_membrane() const { return relaxes_membrane_; }
+  // Membrane force N_c = h sigma0 - C int eps_p dz per cell (N_xx, N_yy, N_xy) [N/m].
+  std::vector<Vec3> membrane_forces(std::span<const Real> state) const;
 
   const PlateOperator& plate() const { return plate_; }
   const CreepLaw& law() const { return law_; }
@@ -190,6 +228,17 @@ class PlateCreepSystem : public CreepSystem {
   Vec3 cell_plastic_shear_force(std::span<const Real> state, Index c) const;
 
   void build_plastic_source();
+  // The faces of the relaxed membrane force with their slope weights (relaxes_membrane()).
+  void build_membrane_faces();
+  // int eps_p dz of one cell (Voigt xx, yy, xy tensor), Simpson's rule.
+  Vec3 cell_plastic_strain_integral(std::span<const Real> state, Index c) const;
+  // r_w += the relaxation term -sum_f (dN_f grad w_f) . S_f with the slopes of slope_state's
+  // w (boundary deflections at t) and dN = -C P of strain_state's plastic strains (linear in
+  // them: with strain_state = q' it is dF_w/dq q').
+  void add_membrane_relaxation(Real t, std::span<const Real> slope_state,
+                               std::span<const Real> strain_state, std::span<Real> r) const;
+  // The y rows of the Jacobian at the state (values [0, structural_nnz_)).
+  void structural_rows(Real t, std::span<const Real> y, std::span<Real> values) const;
   void build_pattern();
   // Validates and installs the hold load; true if it changed structural_pattern().
   bool install_hold(CreepHoldVoltage hold);
@@ -209,7 +258,9 @@ class PlateCreepSystem : public CreepSystem {
   // dR_y/dy in structural_pattern(): K plus the hold load's tangent.
   void structural_tangent(std::span<const Real> state, std::vector<Real>& values) const;
   // The factorised structural tangent at the state (the plate's own factors without a hold).
-  KluFactorization& structural_factors(std::span<const Real> state);
+  // With the relaxation, the tangent also holds dF_w/dw of the relaxed membrane force (the
+  // y-y block of the Jacobian).
+  KluFactorization& structural_factors(Real t, std::span<const Real> state);
 
   PlateOperator& plate_;
   CreepLaw law_;
@@ -234,6 +285,24 @@ class PlateCreepSystem : public CreepSystem {
   std::vector<Index> tangent_position_;  // per structural_pattern() entry: its index in pattern_
   std::unique_ptr<KluFactorization> tangent_lu_;  // K + hold tangent, refactorised per use
   std::vector<Real> tangent_values_;
+  // Relaxation of the residual stress (relaxes_membrane_).
+  bool relaxes_membrane_ = false;
+  Vec3 sigma0_ = Vec3::Zero();  // in-plane residual stress, Voigt (xx, yy, xy)
+  struct MembraneFace {
+    Index face, owner, neighbour;  // neighbour < 0 on an edge
+    Index begin, end;              // into slope_weights_
+  };
+  std::vector<MembraneFace> membrane_faces_;
+  // grad w_f of a membrane face at the state (boundary deflections at t).
+  Vec3 face_slope(Real t, std::span<const Real> state, const MembraneFace& m) const;
+  std::vector<PlateOperator::SlopeWeight> slope_weights_;
+  // Per membrane face, in the order structural_rows visits them: the value positions of
+  // (owner row, neighbour row) for each slope cell, then for each face cell, point, strain.
+  std::vector<Index> relaxation_position_;
+  CsrPattern tangent_pattern_;         // the y-y block of pattern_ (relaxation only)
+  std::vector<Index> tangent_source_;  // its entries' positions in pattern_
+  std::unique_ptr<KluFactorization> relaxed_lu_;
+  std::vector<Real> jacobian_scratch_;
   std::unique_ptr<PlateCreepSchurComplement> schur_;
   Real schur_refactor_tolerance_ = 0.1;
   std::vector<Real> scratch_;

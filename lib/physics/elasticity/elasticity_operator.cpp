@@ -279,6 +279,37 @@ void ElasticityOperator::append_side_terms(const FaceSide& s, Real grad_factor, 
   terms.push_back({s.cell, value_map, value_factor * (1 - value_sum) * e});
 }
 
+std::vector<Mat3> ElasticityOperator::face_gradients(Real t, std::span<const Real> u) const {
+  compute_point_deltas(t, u);
+  std::vector<Mat3> G(mesh_.n_faces(), Mat3::Zero());
+  for (Index f = 0; f < mesh_.n_faces(); ++f)
+    if (!face_gradient(f, t, u, false, G[f])) G[f].setZero();
+  return G;
+}
+
+std::vector<ElasticityOperator::GradientTerm> ElasticityOperator::face_gradient_terms(
+    Index f) const {
+  // The terms stiffness() differentiates the face force with.
+  std::vector<Term> terms;
+  const Index n = mesh_.face_neighbour(f);
+  const Vec3& e = face_e_[f];
+  const Real inv_d = 1.0 / face_d_[f];
+  if (n >= 0) {
+    append_side_terms(side(f, 0), 0.5, -inv_d, Mat3::Identity(), e, terms);
+    append_side_terms(side(f, 1), 0.5, inv_d, Mat3::Identity(), e, terms);
+  } else {
+    const Kind kind = boundaries_[mesh_.face_patch(f)].kind;
+    if (kind == Kind::Fixed)
+      append_side_terms(side(f, 0), 1.0, -inv_d, Mat3::Identity(), e, terms);
+    else if (kind == Kind::Symmetry)
+      append_side_terms(side(f, 0), 1.0, -inv_d, normal_projector(mesh_.face_area(f)), e, terms);
+  }
+  std::vector<GradientTerm> out;
+  out.reserve(terms.size());
+  for (const Term& term : terms) out.push_back({term.cell, term.T, term.h});
+  return out;
+}
+
 void ElasticityOperator::stiffness(Real t, std::span<const Real> u, std::span<Real> values) {
   std::fill(values.begin(), values.end(), 0.0);
   std::vector<Term> terms;

@@ -120,6 +120,13 @@ class ElasticityOperator : public SecondOrderOperator {
     Vec3 weight;
   };
   std::vector<GradientTerm> centroid_gradient_terms(Index c) const;
+  // The face gradients G_f of the face forces (see above) of every face at the state (zero on
+  // traction faces, which have none), and one face's as a linear map of the unknowns:
+  //   G_f = G_b(t) + sum_terms (map u_cell) weight^T
+  // (empty on a traction face). For terms whose prestress is not sigma0 (the creep relaxation
+  // of the residual stress). Small deformations.
+  std::vector<Mat3> face_gradients(Real t, std::span<const Real> u) const;
+  std::vector<GradientTerm> face_gradient_terms(Index f) const;
 
   // The implicit "primary" part of each displacement component (segregated formulation):
   // kappa (e.S)/|d| per face, Dirichlet faces on the diagonal, symmetry faces on the

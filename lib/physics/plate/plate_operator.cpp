@@ -675,6 +675,43 @@ std::vector<PlateOperator::CellWeight> PlateOperator::centroid_gradient_weights(
   return out;
 }
 
+std::vector<PlateOperator::SlopeWeight> PlateOperator::face_slope_weights(Index f) const {
+  // build_membrane_weights() with the force direction a = N0 S_f left out: the same face
+  // gradient, interior grad w_f = (grad p_P + grad p_N)(x_f)/2 + (p_N - p_P)(x_f) e/|d|,
+  // w given grad w_f = grad p_P(x_f) + (w_b - p_P(x_f)) e/|d|.
+  std::vector<SlopeWeight> out;
+  const Index p = mesh_.face_owner(f), n = mesh_.face_neighbour(f);
+  if (n < 0 && !boundaries_[mesh_.face_patch(f)].prescribes_deflection()) return out;
+  const Vec3& xf = mesh_.face_centroid(f);
+  const Vec3 jump = face_e_[f] / face_d_[f];
+  std::vector<Real> value;
+  std::vector<Vec3> gradient;
+  auto add_side = [&](Index c, Real grad_factor, const Vec3& value_factor) {
+    w_rec_->weights_at(c, xf, value, gradient);
+    auto points = w_rec_->points(c);
+    Vec3 own = value_factor;
+    for (std::size_t j = 0; j < points.size(); ++j) {
+      const Vec3 k = grad_factor * gradient[j] + value_factor * value[j];
+      own -= k;
+      if (points[j].kind == StencilPoint::Kind::Cell)
+        out.push_back({points[j].cell, -1, k});
+      else if (points[j].kind == StencilPoint::Kind::BoundaryValue)
+        out.push_back({-1, points[j].face, k});
+      else
+        throw std::logic_error("plate: mirror stencil points are not supported");
+    }
+    out.push_back({c, -1, own});
+  };
+  if (n >= 0) {
+    add_side(p, 0.5, -jump);
+    add_side(n, 0.5, jump);
+  } else {
+    add_side(p, 1.0, -jump);
+    out.push_back({-1, f, jump});
+  }
+  return out;
+}
+
 std::vector<PlateOperator::CellBlock> PlateOperator::shear_force_weights(Index c) const {
   // gamma_c = sum_k weight_k g_f over the cell's faces, g_f = sum (a . y_cell) for a face with
   // a strain (strain_terms), a constant on load/free faces.

@@ -158,6 +158,21 @@ class PlateOperator : public SecondOrderOperator {
     Mat3 T;
   };
   std::vector<CellBlock> shear_force_weights(Index c) const;
+  // The face slope grad w_f of the membrane term (see "Residual stress" above) as an affine map
+  // of the deflections, whatever the residual stress: grad w_f = sum weight w, w the deflection
+  // of `cell` (cell >= 0) or the prescribed deflection of boundary face `face` (cell < 0).
+  // Empty on the edges that carry no membrane force (free and loaded). For terms whose
+  // membrane force is not h sigma0 (the creep relaxation of the residual stress).
+  struct SlopeWeight {
+    Index cell;
+    Index face;
+    Vec3 weight;
+  };
+  std::vector<SlopeWeight> face_slope_weights(Index f) const;
+  // The prescribed deflection of boundary face f at t (0 on a clamped edge).
+  Real boundary_deflection(Index f, Real t) const {
+    return bc_value(boundaries_[mesh_.face_patch(f)], mesh_.face_centroid(f), t)[0];
+  }
 
  private:
   // Evaluation weights of one cell's beta reconstruction at one point.
