@@ -8,8 +8,9 @@
 //    factorisation with fresh pivoting, of a refactorisation keeping the pivots, and of one
 //    solve (each the median of --repeat).
 // 2. --section trace: the whole curve (the case's 40 points to 0.9 g0, fold to 0.01 V) on each
-//    mesh with each ordering: wall and CPU time, solves, Newton iterations, KLU factorisations
-//    with fresh pivoting and refactorisations, V_PI.
+//    mesh with KLU and each ordering, and with UMFPACK at every size (`umfpack`): wall and CPU
+//    time, solves, Newton iterations, factorisations with fresh pivoting (UMFPACK: with a
+//    symbolic analysis) and refactorisations, V_PI.
 //
 // Output: one JSON object per line on stdout.
 //   bench_quasi_static_trace [--nx 40 80 160] [--section orderings trace] [--repeat 3]
@@ -95,12 +96,16 @@ void orderings(int nx, int repeat) {
 }
 
 void trace(int nx, const std::vector<std::string>& only) {
-  for (const auto& [name, ordering] : kOrderings) {
+  // KLU with each ordering, then UMFPACK (its own METIS ordering) at every size.
+  std::vector<std::pair<std::string, KluOrdering>> variants = kOrderings;
+  variants.push_back({"umfpack", KluOrdering::BySize});
+  for (const auto& [name, ordering] : variants) {
     if (std::find(only.begin(), only.end(), name) == only.end()) continue;
     auto sc = plate_switch(nx);
+    QuasiStaticOptions options = case_sampling(ordering);
+    if (name == "umfpack") options.umfpack_from = 0;
     const double w0 = now(), c0 = cpu_now();
-    const QuasiStaticPullIn r =
-        trace_pull_in(*sc->scene.actuation, sc->scene.control, case_sampling(ordering));
+    const QuasiStaticPullIn r = trace_pull_in(*sc->scene.actuation, sc->scene.control, options);
     const double wall = now() - w0, cpu = cpu_now() - c0;
     emit(json{{"section", "trace"},
               {"nx", nx},
@@ -125,10 +130,10 @@ int main(int argc, char** argv) {
   std::vector<int> nx{40, 80, 160};
   std::vector<std::string> sections{"orderings", "trace"};
   int repeat = 3;
-  std::vector<std::string> only{"amd", "colamd", "nested_dissection"};
+  std::vector<std::string> only{"amd", "colamd", "nested_dissection", "umfpack"};
   app.add_option("--nx", nx, "cells along the switch (nx x nx/10)");
   app.add_option("--section", sections, "orderings, trace");
-  app.add_option("--ordering", only, "the orderings of the trace section");
+  app.add_option("--ordering", only, "the orderings of the trace section (and umfpack)");
   app.add_option("--repeat", repeat, "repetitions of each factorisation (median)");
   CLI11_PARSE(app, argc, argv);
   for (const std::string& s : sections)

@@ -129,6 +129,7 @@ KinsolOptions displacement_control_kinsol(const QuasiStaticOptions& options) {
   kin.keep_jacobian = true;
   kin.round_off_floor = true;
   kin.ordering = options.ordering;
+  kin.umfpack_from = options.umfpack_from;
   return kin;
 }
 

@@ -16,6 +16,7 @@
 // Points with |delta| below the fold's are the stable branch, beyond it the unstable one.
 #pragma once
 #include <functional>
+#include <limits>
 #include <vector>
 
 #include "physics/electrostatics/parallel_plate_actuation.hpp"
@@ -34,6 +35,12 @@ struct QuasiStaticOptions {
   // Per solve; the Jacobian is refreshed every 10 iterations (modified Newton).
   int max_newton_iterations = 100;
   KluOrdering ordering = KluOrdering::BySize;  // of the bordered Jacobian's factorisation
+  // The size from which it factorises with UMFPACK instead (solvers/sparse_direct_solver.hpp):
+  // by default never. The voltage's column couples every loaded unknown, and UMFPACK's METIS
+  // ordering of the bordered matrix fills 3.7x more than KLU's nested dissection (80 x 8 plate:
+  // 2.4e6 entries against 6.5e5, the trace 3.0 s against 0.87 s CPU;
+  // bench/bench_quasi_static_trace --ordering umfpack).
+  Index umfpack_from = std::numeric_limits<Index>::max();
 };
 
 struct PullInPoint {
