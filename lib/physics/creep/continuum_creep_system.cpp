@@ -219,17 +219,7 @@ void ContinuumCreepSystem::build_pattern() {
           for (int a = 0; a < dim_; ++a) add(a, creep_index(c, j));
   }
   // The u-u block (equilibrate's tangent with the relaxation).
-  tangent_pattern_ = CsrPattern{};
-  tangent_source_.clear();
-  if (relaxes_prestress_)
-    for (Index row = 0; row < ns; ++row) {
-      for (Index p = pattern_.row_ptr[row]; p < pattern_.row_ptr[row + 1]; ++p)
-        if (pattern_.col_idx[p] < ns) {
-          tangent_pattern_.col_idx.push_back(pattern_.col_idx[p]);
-          tangent_source_.push_back(p);
-        }
-      tangent_pattern_.row_ptr.push_back(tangent_pattern_.nnz());
-    }
+  relaxed_block_.set_pattern(pattern_, relaxes_prestress_ ? ns : 0);
   for (Index c = 0; c < n_cells_; ++c)
     for (int j = 0; j < n_components(); ++j) {
       for (const StressWeight& w : stress_weights_[c])
@@ -359,14 +349,7 @@ KluFactorization& ContinuumCreepSystem::structural_factors(Real t, std::span<con
   if (!relaxes_prestress_) return *stiffness_lu_;
   jacobian_scratch_.resize(structural_nnz_);
   structural_rows(t, state, jacobian_scratch_);
-  tangent_values_.resize(tangent_source_.size());
-  for (std::size_t k = 0; k < tangent_source_.size(); ++k)
-    tangent_values_[k] = jacobian_scratch_[tangent_source_[k]];
-  if (relaxed_lu_)
-    relaxed_lu_->refactor(tangent_values_);
-  else
-    relaxed_lu_ = std::make_unique<KluFactorization>(tangent_pattern_, tangent_values_);
-  return *relaxed_lu_;
+  return relaxed_block_.factorize(jacobian_scratch_);
 }
 
 std::vector<Mat3> ContinuumCreepSystem::cell_stresses(Real t, std::span<const Real> state) const {

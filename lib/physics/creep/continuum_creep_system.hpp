@@ -76,6 +76,7 @@
 #include "fv/polynomial_reconstruction.hpp"
 #include "materials/creep_law.hpp"
 #include "physics/creep/creep_system.hpp"
+#include "physics/creep/leading_block_factors.hpp"
 #include "physics/elasticity/elasticity_operator.hpp"
 #include "solvers/klu_factorization.hpp"
 
@@ -211,10 +212,8 @@ class ContinuumCreepSystem : public CreepSystem {
   // column component b), the positions of (owner row, neighbour row); then for each face cell,
   // each plastic component j, each row component a, the same pair.
   std::vector<Index> relaxation_position_;
-  CsrPattern tangent_pattern_;         // the u-u block of pattern_ (relaxation only)
-  std::vector<Index> tangent_source_;  // its entries' positions in pattern_
-  std::unique_ptr<KluFactorization> relaxed_lu_;
-  std::vector<Real> tangent_values_, jacobian_scratch_;
+  LeadingBlockFactors relaxed_block_;  // the u-u block of pattern_ (relaxation only)
+  std::vector<Real> jacobian_scratch_;
   std::vector<Real> scratch_;
 };
 

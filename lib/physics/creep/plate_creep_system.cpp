@@ -220,17 +220,7 @@ void PlateCreepSystem::build_pattern() {
     }
   }
   // The y-y block (the structural tangent of equilibrate with the relaxation).
-  tangent_pattern_ = CsrPattern{};
-  tangent_source_.clear();
-  if (relaxes_membrane_)
-    for (Index row = 0; row < 3 * n_cells_; ++row) {
-      for (Index p = pattern_.row_ptr[row]; p < pattern_.row_ptr[row + 1]; ++p)
-        if (pattern_.col_idx[p] < 3 * n_cells_) {
-          tangent_pattern_.col_idx.push_back(pattern_.col_idx[p]);
-          tangent_source_.push_back(p);
-        }
-      tangent_pattern_.row_ptr.push_back(tangent_pattern_.nnz());
-    }
+  relaxed_block_.set_pattern(pattern_, relaxes_membrane_ ? 3 * n_cells_ : 0);
   for (Index c = 0; c < n_cells_; ++c)
     for (Index i = 0; i < np; ++i)
       for (int j = 0; j < per_point_; ++j) {
@@ -679,7 +669,7 @@ void PlateCreepSystem::initial_state(Real t, std::vector<Real>& state,
 void PlateCreepSystem::set_hold_voltage(CreepHoldVoltage hold) {
   if (!install_hold(std::move(hold))) return;  // another voltage: the factors' pattern stays
   tangent_lu_.reset();
-  relaxed_lu_.reset();
+  relaxed_block_.reset();
   schur_.reset();
   build_pattern();
 }
@@ -745,14 +735,7 @@ KluFactorization& PlateCreepSystem::structural_factors(Real t, std::span<const R
   if (relaxes_membrane_) {
     jacobian_scratch_.resize(structural_nnz_);
     structural_rows(t, state, jacobian_scratch_);
-    tangent_values_.resize(tangent_source_.size());
-    for (std::size_t k = 0; k < tangent_source_.size(); ++k)
-      tangent_values_[k] = jacobian_scratch_[tangent_source_[k]];
-    if (relaxed_lu_)
-      relaxed_lu_->refactor(tangent_values_);
-    else
-      relaxed_lu_ = std::make_unique<KluFactorization>(tangent_pattern_, tangent_values_);
-    return *relaxed_lu_;
+    return relaxed_block_.factorize(jacobian_scratch_);
   }
   if (!hold_) {
     if (!plate_lu_)

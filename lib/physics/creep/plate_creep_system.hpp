@@ -100,6 +100,7 @@
 #include "materials/creep_law.hpp"
 #include "physics/creep/creep_hold_voltage.hpp"
 #include "physics/creep/creep_system.hpp"
+#include "physics/creep/leading_block_factors.hpp"
 #include "physics/creep/thickness_quadrature.hpp"
 #include "physics/electrostatics/parallel_plate_actuation.hpp"
 #include "physics/plate/plate_operator.hpp"
@@ -299,9 +300,7 @@ class PlateCreepSystem : public CreepSystem {
   // Per membrane face, in the order structural_rows visits them: the value positions of
   // (owner row, neighbour row) for each slope cell, then for each face cell, point, strain.
   std::vector<Index> relaxation_position_;
-  CsrPattern tangent_pattern_;         // the y-y block of pattern_ (relaxation only)
-  std::vector<Index> tangent_source_;  // its entries' positions in pattern_
-  std::unique_ptr<KluFactorization> relaxed_lu_;
+  LeadingBlockFactors relaxed_block_;  // the y-y block of pattern_ (relaxation only)
   std::vector<Real> jacobian_scratch_;
   std::unique_ptr<PlateCreepSchurComplement> schur_;
   Real schur_refactor_tolerance_ = 0.1;

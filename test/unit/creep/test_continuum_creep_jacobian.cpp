@@ -11,6 +11,7 @@
 #include <memory>
 #include <random>
 
+#include "../../support/creep_continuum_fixture.hpp"
 #include "../../support/jacobian_check.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/creep/continuum_creep_system.hpp"
@@ -20,47 +21,12 @@ using Kind = ElasticityBoundary::Kind;
 
 namespace {
 
-Mesh distorted_mesh(int dim, int nx, int ny, int nz, unsigned seed) {
-  auto rng = std::make_shared<std::mt19937>(seed);
-  BoxSpec spec;
-  spec.dim = dim;
-  spec.upper = Vec3(2.0, 1.2, dim == 3 ? 0.8 : 0.0);
-  spec.n[0] = nx;
-  spec.n[1] = ny;
-  spec.n[2] = nz;
-  spec.grading[0] = 1.6;
-  return make_structured_mesh(spec, [rng, dim](const Vec3& x) {
-    std::uniform_real_distribution<double> jitter(-0.03, 0.03);
-    Vec3 y = x;
-    y.x() += 0.12 * std::sin(2.0 * x.y()) + jitter(*rng);
-    y.y() += 0.08 * std::sin(3.0 * x.x()) + jitter(*rng);
-    if (dim == 3) y.z() += 0.05 * std::sin(2.0 * x.x()) + 0.5 * jitter(*rng);
-    return y;
-  });
-}
-
-// left fixed (a non-zero displacement), right symmetry, bottom loaded, the rest free.
-std::vector<ElasticityBoundary> mixed_boundaries(const Mesh& mesh) {
-  std::vector<ElasticityBoundary> bcs(mesh.patches().size());
-  for (std::size_t p = 0; p < bcs.size(); ++p) {
-    const std::string& name = mesh.patches()[p].name;
-    if (name == "left") {
-      bcs[p].kind = Kind::Fixed;
-      bcs[p].value = [](const Vec3& x, Real) { return Vec3(1e-4 * x.y(), -2e-4, 0); };
-    } else if (name == "right") {
-      bcs[p].kind = Kind::Symmetry;
-    } else if (name == "bottom") {
-      bcs[p].value = [](const Vec3& x, Real) { return Vec3(3e7 * x.x(), -5e7, 1e7); };
-    }
-  }
-  return bcs;
-}
-
 LinearElastic steel(Hypothesis h) { return {200e9, 0.3, 7854, h}; }
 
 void check_jacobian_of(int dim, Hypothesis h, bool bending_only = false) {
-  const Mesh mesh = dim == 2 ? distorted_mesh(2, 6, 4, 1, 4) : distorted_mesh(3, 4, 3, 2, 5);
-  ElasticityOperator op(mesh, steel(h), mixed_boundaries(mesh));
+  const Mesh mesh =
+      dim == 2 ? test::creep_test_mesh(2, 6, 4, 1, 4) : test::creep_test_mesh(3, 4, 3, 2, 5);
+  ElasticityOperator op(mesh, steel(h), test::creep_test_boundaries(mesh));
   // Moderate hardening so that every term of the rate Jacobian is visible at this state.
   ContinuumCreepSystem system(op, CreepLaw{1e-3, 3e3, 2.5, 1.5, 1e9});
   if (bending_only) system.set_creep_stress_mask({true, false, true, false, false, false});
@@ -68,20 +34,8 @@ void check_jacobian_of(int dim, Hypothesis h, bool bending_only = false) {
   ASSERT_EQ(nq, h == Hypothesis::PlaneStress ? 4 : h == Hypothesis::PlaneStrain ? 5 : 7);
   ASSERT_EQ(system.size(), (dim + nq) * mesh.n_cells());
 
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<Real> u(-1, 1);
   const Index ns = system.structural_size();
-  std::vector<Real> y(system.size()), yp(system.size()), steps(system.size()),
-      scales(system.size());
-  for (Index k = 0; k < system.size(); ++k) {
-    // Displacements ~1e-3 m over ~1 m (strain ~1e-3, stress ~1e8 Pa); plastic strains 1e-4.
-    const Real scale = k < ns ? 1e-3 : 1e-4;
-    y[k] = scale * u(rng);
-    yp[k] = scale * u(rng);
-    if (k >= ns && (k - ns) % nq == system.effective_component()) y[k] = std::abs(y[k]);
-    steps[k] = 1e-5 * scale;
-    scales[k] = scale;
-  }
+  const auto [y, yp, steps, scales] = test::random_continuum_creep_state(system, 7);
   for (Real c_j : {0.0, 2.5e2}) {
     const auto check = test_support::check_jacobian(system, 0.3, c_j, y, yp, steps, scales);
     // Round-off of the central differences bounds both measures: a wrong term is O(1) off.

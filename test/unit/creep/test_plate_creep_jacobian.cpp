@@ -13,6 +13,7 @@
 
 #include "../../support/distorted_plate.hpp"
 #include "../../support/jacobian_check.hpp"
+#include "../../support/plate_creep_state.hpp"
 #include "physics/creep/plate_creep_system.hpp"
 #include "physics/plate/plate_scene.hpp"
 
@@ -31,28 +32,6 @@ PlateSection section() {
   return s;
 }
 
-// A random bending-creep state (w ~ 1e-4 m, beta ~ 2e-3: curvature ~ 1e-3 /m, ~1e8 Pa;
-// plastic strains ~ 1e-4, eps_eff >= 0) with the Jacobian check's steps and column scales.
-struct RandomState {
-  std::vector<Real> y, yp, steps, scales;
-};
-RandomState random_state(const PlateCreepSystem& system, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<Real> u(-1, 1);
-  const Index n = system.size(), ns = system.structural_size();
-  RandomState r{std::vector<Real>(n), std::vector<Real>(n), std::vector<Real>(n),
-                std::vector<Real>(n)};
-  for (Index k = 0; k < n; ++k) {
-    const Real scale = k < ns ? (k % 3 == 0 ? 1e-4 : 2e-3) : 1e-4;
-    r.y[k] = scale * u(rng);
-    r.yp[k] = scale * u(rng);
-    if (k >= ns && (k - ns) % 4 == PlateCreepSystem::kEff) r.y[k] = std::abs(r.y[k]);
-    r.steps[k] = 1e-5 * scale;
-    r.scales[k] = scale;
-  }
-  return r;
-}
-
 }  // namespace
 
 TEST(PlateCreepSystem, JacobianMatchesFiniteDifferences) {
@@ -64,7 +43,7 @@ TEST(PlateCreepSystem, JacobianMatchesFiniteDifferences) {
   PlateCreepSystem system(plate, law, 6);
   ASSERT_EQ(system.size(), 3 * mesh.n_cells() + 4 * 7 * mesh.n_cells());
 
-  const auto [y, yp, steps, scales] = random_state(system, 7);
+  const auto [y, yp, steps, scales] = test::random_plate_creep_state(system, 7);
   for (Real c_j : {0.0, 2.5e2}) {
     const auto check = test_support::check_jacobian(system, 0.3, c_j, y, yp, steps, scales);
     // Round-off of the central differences (it scales as 1/step) bounds both measures: a
@@ -190,7 +169,7 @@ TEST(PlateCreepSystem, JacobianWithHoldVoltageMatchesFiniteDifferences) {
     if (at_points) hold.elements = plate_gap_elements(mesh, plate);
     system.set_hold_voltage(hold);
 
-    const auto [y, yp, steps, scales] = random_state(system, 11);
+    const auto [y, yp, steps, scales] = test::random_plate_creep_state(system, 11);
     // The w rows reach other cells' w only through the gap points (the plate's own w rows do
     // too, through its shear stencil: count the columns beyond the plate's pattern).
     Index widened = 0;

@@ -18,6 +18,7 @@
 
 #include "../../support/distorted_plate.hpp"
 #include "../../support/jacobian_check.hpp"
+#include "../../support/plate_creep_state.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/creep/plate_creep_system.hpp"
 #include "solvers/ida_integrator.hpp"
@@ -202,32 +203,9 @@ TEST(PlateCreepRelaxation, ClampedStripSagsAsItsTensionRelaxes) {
 
 namespace {
 
-struct RandomState {
-  std::vector<Real> y, yp, steps, scales;
-};
-// A random state (w ~ 1e-4 m, beta ~ 2e-3, plastic strains ~ 1e-4, eps_eff >= 0) with the
-// Jacobian check's steps and column scales.
-RandomState random_state(const PlateCreepSystem& system, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<Real> u(-1, 1);
-  const Index n = system.size(), ns = system.structural_size();
-  RandomState r{std::vector<Real>(n), std::vector<Real>(n), std::vector<Real>(n),
-                std::vector<Real>(n)};
-  for (Index k = 0; k < n; ++k) {
-    const Real scale = k < ns ? (k % 3 == 0 ? 1e-4 : 2e-3) : 1e-4;
-    r.y[k] = scale * u(rng);
-    r.yp[k] = scale * u(rng);
-    if (k >= ns && (k - ns) % system.per_point() == PlateCreepSystem::kEff)
-      r.y[k] = std::abs(r.y[k]);
-    r.steps[k] = 1e-5 * scale;
-    r.scales[k] = scale;
-  }
-  return r;
-}
-
 // check_jacobian's entry-relative measure for given analytic values, over the w rows (where
 // the relaxation enters the balances) or the q rows (the rates at sigma0 + C (z kappa - eps_p)).
-Real max_entry_relative(PlateCreepSystem& system, Real c_j, const RandomState& s,
+Real max_entry_relative(PlateCreepSystem& system, Real c_j, const test::PlateCreepState& s,
                         const std::vector<Real>& values, bool w_rows) {
   const CsrPattern& pattern = system.jacobian_pattern();
   std::vector<Real> row_scaled(system.size(), 0.0);
@@ -268,7 +246,7 @@ TEST(PlateCreepRelaxation, JacobianMatchesFiniteDifferencesAndCatchesAPlantedErr
   for (bool shear : {false, true}) {
     PlateCreepSystem system(plate, CreepLaw{1e-3, 3e3, 2.5, 1.5, 1e9}, 6, shear);
     ASSERT_TRUE(system.relaxes_membrane());
-    const RandomState s = random_state(system, 7);
+    const test::PlateCreepState s = test::random_plate_creep_state(system, 7);
     const Index ns = system.structural_size();
     const CsrPattern& pattern = system.jacobian_pattern();
     // The relaxed membrane force is a sizeable change of N at this state.
@@ -338,7 +316,7 @@ TEST(PlateCreepRelaxation, InitialStateIsConsistentWithTheRelaxedMembraneForce) 
   PlateOperator plate(mesh, thick_section(), mixed_boundaries(mesh),
                       [](const Vec3&, Real) { return -3e5; });
   PlateCreepSystem system(plate, CreepLaw{1e-3, 3e3, 2.0, 2.0, 1e9}, 4);
-  RandomState s = random_state(system, 3);
+  test::PlateCreepState s = test::random_plate_creep_state(system, 3);
   const Index ns = system.structural_size();
   std::vector<Real> state = s.y, state_dot;
   for (Index k = 0; k < ns; ++k) state[k] = 0;
