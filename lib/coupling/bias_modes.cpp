@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "solvers/static_solve.hpp"
-
 namespace rfmems {
 
 std::vector<BiasedModes> modes_along_curve(ParallelPlateActuation& actuation, Index control,
@@ -12,12 +10,7 @@ std::vector<BiasedModes> modes_along_curve(ParallelPlateActuation& actuation, In
                                            std::span<const Real> mass, Index n_modes,
                                            const QuasiStaticOptions& options) {
   const Index n = actuation.size();
-  // Displacement control continues from a solved, deflected state (structure unknowns, then
-  // V^2): the static solution at a tenth of the pull-in voltage.
-  const Real v_start = 0.1 * curve.pull_in_voltage;
-  actuation.set_voltage_squared([v_start](Real) { return v_start * v_start; });
-  std::vector<Real> state = solve_static(actuation, 0.0).y;
-  state.push_back(v_start * v_start);
+  std::vector<Real> state = displacement_control_start(actuation, curve);
 
   std::vector<BiasedModes> out;
   std::vector<Real> y(n, 0.0);

@@ -33,12 +33,8 @@ std::vector<Real> equilibrium_at_voltage(ParallelPlateActuation& actuation, Inde
       break;
     }
   }
-  // Displacement control from a solved state (structure unknowns, then V^2) at a tenth of the
-  // fold's voltage to the deflection interpolated in V^2 (the curve is near-linear in it).
-  const Real v_start = 0.1 * curve.pull_in_voltage;
-  actuation.set_voltage_squared([v_start](Real) { return v_start * v_start; });
-  std::vector<Real> state = solve_static(actuation, 0.0).y;
-  state.push_back(v_start * v_start);
+  // Displacement control to the deflection interpolated in V^2 (the curve is near-linear in it).
+  std::vector<Real> state = displacement_control_start(actuation, curve);
   const Real fraction = (voltage * voltage - v_low * v_low) / (v_high * v_high - v_low * v_low);
   const Real guess = d_low + fraction * (d_high - d_low);
   if (guess != 0) state = follow_displacement(actuation, control, state, {guess}, options);

@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "coupling/displacement_control_system.hpp"
+#include "solvers/static_solve.hpp"
 
 namespace rfmems {
 
@@ -219,6 +220,15 @@ QuasiStaticPullIn trace_pull_in(ParallelPlateActuation& act, Index control,
   result.solves = solves;
   result.last = last;
   return result;
+}
+
+std::vector<Real> displacement_control_start(ParallelPlateActuation& actuation,
+                                             const QuasiStaticPullIn& curve) {
+  const Real v = 0.1 * curve.pull_in_voltage;
+  actuation.set_voltage_squared([v](Real) { return v * v; });
+  std::vector<Real> state = solve_static(actuation, 0.0).y;
+  state.push_back(v * v);
+  return state;
 }
 
 std::vector<Real> follow_displacement(ParallelPlateActuation& act, Index control,

@@ -76,6 +76,12 @@ std::vector<Real> follow_displacement(ParallelPlateActuation& actuation, Index c
                                       std::span<const Real> from, const std::vector<Real>& path,
                                       const QuasiStaticOptions& options = {});
 
+// A solved, deflected state to follow the curve from by displacement control (structure
+// unknowns, then V^2): the static equilibrium at a tenth of the curve's fold voltage, by Newton
+// from rest. The actuation's voltage function is overwritten.
+std::vector<Real> displacement_control_start(ParallelPlateActuation& actuation,
+                                             const QuasiStaticPullIn& curve);
+
 // The sampling and fold search on their own, for any equilibrium solver under displacement
 // control (the field-coupled structure's in field_coupled_structure.hpp): `solve(delta, from)`
 // returns the equilibrium at control deflection delta, starting from the solved sample `from`

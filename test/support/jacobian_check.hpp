@@ -123,4 +123,17 @@ inline JacobianCheck check_jacobian(SystemOperator& op, double t, double c_j,
   return check_jacobian(op, t, c_j, y, yp, std::vector<double>(y.size(), step));
 }
 
+// The drift of an initial state along its derivative: max_{k < n_rows} |F(t, y + d y', y')_k|.
+// For a consistent (y, y') of a system whose first n_rows rows are algebraic it is O(d^2): the
+// initial-state tests assert the ratio at d and d/2 near 4.
+inline double drift_along_derivative(SystemOperator& op, double t, const std::vector<double>& y,
+                                     const std::vector<double>& yp, Index n_rows, double d) {
+  std::vector<double> moved(y), r(y.size());
+  for (std::size_t k = 0; k < y.size(); ++k) moved[k] += d * yp[k];
+  op.residual(t, moved, yp, r);
+  double m = 0;
+  for (Index k = 0; k < n_rows; ++k) m = std::max(m, std::abs(r[k]));
+  return m;
+}
+
 }  // namespace rfmems::test_support

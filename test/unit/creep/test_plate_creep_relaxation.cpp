@@ -328,12 +328,7 @@ TEST(PlateCreepRelaxation, InitialStateIsConsistentWithTheRelaxedMembraneForce) 
   for (Real v : r) worst = std::max(worst, std::abs(v));
   EXPECT_LT(worst, 1e-9 * force_scale);
   auto drift = [&](Real d) {
-    std::vector<Real> moved(state);
-    for (Index k = 0; k < system.size(); ++k) moved[k] += d * state_dot[k];
-    system.residual(0, moved, state_dot, r);
-    Real m = 0;
-    for (Index k = 0; k < ns; ++k) m = std::max(m, std::abs(r[k]));
-    return m;
+    return test_support::drift_along_derivative(system, 0.0, state, state_dot, ns, d);
   };
   // Measured on the time scale of the rates: d = 1e-3 / max |q'|.
   Real rate = 0;

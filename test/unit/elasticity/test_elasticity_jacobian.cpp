@@ -47,6 +47,18 @@ std::vector<double> random_state(Index n, unsigned seed) {
   return test_support::random_state(n, seed, 1e-3);
 }
 
+// The box [0, 1.5] x [0, 1] (x [0, 1]) on 4 x 3 (x 3) cells, its nodes moved by distortion(0.03,
+// seed): the prestressed and stiffness-product tests' body in 2D and 3D.
+Mesh skewed_box(int dim, unsigned seed) {
+  BoxSpec spec;
+  spec.dim = dim;
+  spec.upper = Vec3(1.5, 1.0, 1.0);
+  spec.n[0] = 4;
+  spec.n[1] = 3;
+  spec.n[2] = dim == 3 ? 3 : 1;
+  return make_structured_mesh(spec, distortion(0.03, seed));
+}
+
 }  // namespace
 
 TEST(ElasticityJacobian, MatchesFiniteDifferences2DPlaneStrainSkewed) {
@@ -101,13 +113,7 @@ TEST(ElasticityJacobian, MatchesFiniteDifferences3DSkewedBox) {
 // moduli so that its terms are not hidden in the elastic ones, in 2D and 3D.
 TEST(ElasticityJacobian, PrestressedMatchesFiniteDifferences) {
   for (int dim : {2, 3}) {
-    BoxSpec spec;
-    spec.dim = dim;
-    spec.upper = Vec3(1.5, 1.0, 1.0);
-    spec.n[0] = 4;
-    spec.n[1] = 3;
-    spec.n[2] = dim == 3 ? 3 : 1;
-    Mesh mesh = make_structured_mesh(spec, distortion(0.03, 19));
+    Mesh mesh = skewed_box(dim, 19);
     LinearElastic steel{200e9, 0.3, 7854, dim == 3 ? Hypothesis::ThreeD : Hypothesis::PlaneStress};
     steel.residual_stress << 9e10, 4e10, -2e10, 4e10, -6e10, 3e10, -2e10, 3e10, 7e10;
     if (dim == 2) steel.residual_stress.col(2).setZero(), steel.residual_stress.row(2).setZero();
@@ -180,13 +186,7 @@ TEST(ElasticityJacobian, DampingForceIsBetaTimesTheStiffnessTimesTheVelocity) {
 // out), and is not offered with large deformations (where K depends on u).
 TEST(ElasticityJacobian, StiffnessProductEqualsTheAssembledStiffness) {
   for (const int dim : {2, 3}) {
-    BoxSpec spec;
-    spec.dim = dim;
-    spec.upper = Vec3(1.5, 1.0, 1.0);
-    spec.n[0] = 4;
-    spec.n[1] = 3;
-    spec.n[2] = dim == 3 ? 3 : 1;
-    const Mesh mesh = make_structured_mesh(spec, distortion(0.03, 21));
+    const Mesh mesh = skewed_box(dim, 21);
     LinearElastic steel{200e9, 0.3, 7854, dim == 3 ? Hypothesis::ThreeD : Hypothesis::PlaneStress};
     steel.residual_stress << 9e8, 4e8, -2e8, 4e8, -6e8, 3e8, -2e8, 3e8, 7e8;
     if (dim == 2) steel.residual_stress.col(2).setZero(), steel.residual_stress.row(2).setZero();
