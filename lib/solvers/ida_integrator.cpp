@@ -58,9 +58,14 @@ IdaIntegrator::IdaIntegrator(SystemOperator& op, const IdaOptions& options)
   const Index n = op_.size();
   y_ = sundials::make_serial_vector(n, ctx_.get());
   yp_ = sundials::make_serial_vector(n, ctx_.get());
-  if (options_.linear_solver == IdaOptions::LinearSolver::Klu) {
+  if (options_.linear_solver == IdaOptions::LinearSolver::Direct) {
     jac_ = sundials::make_csr_matrix(op_.jacobian_pattern(), ctx_.get());
-    solver_ = sundials::make_klu_solver(y_.get(), jac_.get(), ctx_.get());
+    solver_ = n >= options_.umfpack_from
+                  ? sundials::make_sparse_direct_solver(
+                        ctx_.get(), KluOrdering::Amd,
+                        direct_counts_ = std::make_shared<sundials::DirectCounts>(),
+                        options_.umfpack_from, /*refinement_steps=*/0)
+                  : sundials::make_klu_solver(y_.get(), jac_.get(), ctx_.get());
   } else {
     solver_ = sundials::LinearSolver(
         SUNLinSol_SPGMR(y_.get(), SUN_PREC_LEFT, options_.krylov_dimension, ctx_.get()));
@@ -327,7 +332,11 @@ IntegratorStats ida_memory_stats(void* mem) {
   return s;
 }
 
-IntegratorStats IdaIntegrator::stats() const { return ida_memory_stats(mem_); }
+IntegratorStats IdaIntegrator::stats() const {
+  IntegratorStats s = ida_memory_stats(mem_);
+  s.umfpack = direct_counts_ && direct_counts_->umfpack;
+  return s;
+}
 
 int IdaIntegrator::residual_trampoline(Real t, N_Vector y, N_Vector yp, N_Vector r, void* self) {
   auto* me = static_cast<IdaIntegrator*>(self);

@@ -1,5 +1,6 @@
 // Transient integration of a SystemOperator with SUNDIALS IDA (variable-order, variable-step
-// BDF) and a KLU sparse direct linear solver, with optional root functions for events.
+// BDF) and a sparse direct linear solver (KLU, or UMFPACK on large systems) or preconditioned
+// GMRES, with optional root functions for events.
 #pragma once
 #include <exception>
 #include <functional>
@@ -9,15 +10,25 @@
 #include "core/system_operator.hpp"
 #include "solvers/callback_guard.hpp"
 #include "solvers/jacobian_lu_preconditioner.hpp"
+#include "solvers/sparse_direct_solver.hpp"
 #include "solvers/sundials_handles.hpp"
 
 namespace rfmems {
 
 struct IdaOptions {
-  // Klu: sparse direct Newton solves. Spgmr: GMRES preconditioned by the operator's own
-  // preconditioner, or by an LU factorisation of its Jacobian lagged between setups.
-  enum class LinearSolver { Klu, Spgmr };
-  LinearSolver linear_solver = LinearSolver::Klu;
+  // Direct: sparse LU Newton solves, SUNDIALS' KLU below umfpack_from unknowns and UMFPACK
+  // (solvers/sparse_direct_solver.hpp: METIS ordering, dense fronts through BLAS, refactorised
+  // on one symbolic analysis) from there on, where KLU's fill on a 3D mesh makes each
+  // factorisation slow. Spgmr: GMRES preconditioned by the operator's own preconditioner, or
+  // by an LU factorisation of its Jacobian lagged between setups.
+  enum class LinearSolver { Direct, Spgmr };
+  LinearSolver linear_solver = LinearSolver::Direct;
+  // Higher than KINSOL's kUmfpackFrom: IDA solves many times per factorisation, and KLU's
+  // solves on AMD's ordering are the cheaper ones below this size. Measured on creep runs
+  // (bench_creep_plate_vs_continuum): plane stress 481 x 12 (34,632 unknowns) KLU 16.5 s against
+  // UMFPACK 21.4 s; 3D 121 x 8 x 3 (29,040) equal, 30 s; 3D 241 x 8 x 4 (77,120) UMFPACK 171 s
+  // for 1 h of creep, KLU stopped after 10 minutes.
+  Index umfpack_from = 50000;
   int krylov_dimension = 30;
   // IDA's eps_lin (IDASetEpsLin): a Krylov solve stops at ||P^-1 r||_WRMS <= factor x the
   // Newton tolerance (0.33). The error of the correction, (P^-1 J)^-1 P^-1 r, is that times up
@@ -78,6 +89,7 @@ struct IntegratorStats {
   // Krylov solves that stopped short of IDA's linear tolerance (IDAGetNumLinConvFails); 0 with
   // KLU.
   long linear_conv_fails = 0;
+  bool umfpack = false;  // the direct solver factorised with UMFPACK (IdaOptions::umfpack_from)
   int last_order = 0;
   Real last_step = 0;
 };
@@ -163,6 +175,7 @@ class IdaIntegrator {
   RootFunction roots_;
   CallbackGuard guard_;
   std::unique_ptr<JacobianLuPreconditioner> fallback_preconditioner_;
+  std::shared_ptr<sundials::DirectCounts> direct_counts_;  // with UMFPACK only
 };
 
 }  // namespace rfmems

@@ -11,15 +11,11 @@ namespace rfmems::sundials {
 
 namespace {
 
-// UMFPACK's iterative refinement in each solve: a Newton step's solve at the LU's backward
-// error, so that a linear problem converges in one step (solvers/kinsol_solver.hpp's
-// round-off floor) rather than paying a second factorisation.
-constexpr int kRefinementSteps = 2;
-
 struct Content {
   KluOrdering ordering;
   std::shared_ptr<DirectCounts> counts;
   Index umfpack_from;
+  int refinement_steps;
   CsrPattern pattern;
   std::unique_ptr<KluFactorization> klu;
   std::unique_ptr<UmfpackFactorization> umfpack;
@@ -52,7 +48,7 @@ int setup(SUNLinearSolver s, SUNMatrix a) {
       c.pattern.col_idx.assign(idx, idx + ptr[n]);
       c.reset();
       if (n >= c.umfpack_from)
-        c.umfpack = std::make_unique<UmfpackFactorization>(c.pattern, values, kRefinementSteps);
+        c.umfpack = std::make_unique<UmfpackFactorization>(c.pattern, values, c.refinement_steps);
       else
         c.klu = std::make_unique<KluFactorization>(c.pattern, values, c.ordering,
                                                    KluSystem::MixedUnits);
@@ -100,10 +96,12 @@ int free_solver(SUNLinearSolver s) {
 }  // namespace
 
 LinearSolver make_sparse_direct_solver(SUNContext ctx, KluOrdering ordering,
-                                       std::shared_ptr<DirectCounts> counts, Index umfpack_from) {
+                                       std::shared_ptr<DirectCounts> counts, Index umfpack_from,
+                                       int refinement_steps) {
   SUNLinearSolver s = SUNLinSolNewEmpty(ctx);
   if (!s) throw SolverError("SUNLinSolNewEmpty failed");
-  s->content = new Content{ordering, std::move(counts), umfpack_from, {}, nullptr, nullptr};
+  s->content = new Content{ordering, std::move(counts), umfpack_from, refinement_steps,
+                           {},       nullptr,           nullptr};
   s->ops->gettype = get_type;
   s->ops->getid = get_id;
   s->ops->initialize = initialize;

@@ -25,9 +25,17 @@ struct DirectCounts {
   bool umfpack = false;  // which factorisation the last setup used
 };
 
+// UMFPACK's iterative refinement in each of KINSOL's solves: a Newton step's solve at the LU's
+// backward error, so that a linear problem converges in one step (solvers/kinsol_solver.hpp's
+// round-off floor) rather than paying a second factorisation. IDA's Newton iteration, with its
+// lagged Jacobian, corrects the solve's error itself and asks for none (each step costs a
+// solve and a product: 2 steps took the 481 x 12 plane creep run from 21 to 36 s).
+constexpr int kRefinementSteps = 2;
+
 // The solver for CSR matrices of `pattern`'s shape. `counts` (optional) is kept up to date.
 LinearSolver make_sparse_direct_solver(SUNContext ctx, KluOrdering ordering,
                                        std::shared_ptr<DirectCounts> counts = nullptr,
-                                       Index umfpack_from = kUmfpackFrom);
+                                       Index umfpack_from = kUmfpackFrom,
+                                       int refinement_steps = kRefinementSteps);
 
 }  // namespace rfmems::sundials

@@ -29,6 +29,7 @@ CreepRunResult integrate(System& system, const IdaOptions& options, Real end_tim
   std::vector<Real> y, yp;
   system.initial_state(0, y, yp);
   r.w_elastic = deflection(std::span<const Real>(y));
+  r.elastic_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   IdaIntegrator ida(system, options);
   ida.initialize(0, y, yp);
   ida.advance(end_time);
@@ -75,18 +76,21 @@ CreepRunResult run_plate_creep(const FixedFixedCreepProblem& problem, int nx, in
   const auto plate = make_fixed_fixed_creep_plate(problem, nx, ny, thickness_intervals);
   const Index centre = plate->centre;
   IdaOptions o = options;
-  if (problem.plate_shear_creep) o.linear_solver = IdaOptions::LinearSolver::Klu;  // no Schur
+  if (problem.plate_shear_creep) o.linear_solver = IdaOptions::LinearSolver::Direct;  // no Schur
   return integrate(*plate->system, o, end_time, start,
                    [centre](std::span<const Real> y) { return y[3 * centre]; });
 }
 
 CreepRunResult run_continuum_creep(const FixedFixedCreepProblem& problem, int nx, int nz,
-                                   const IdaOptions& options, Real end_time) {
+                                   const IdaOptions& options, Real end_time, int width_cells) {
   const auto start = Clock::now();
+  const bool three_d = width_cells > 0;
   BoxSpec spec;
-  spec.upper = Vec3(problem.length, problem.thickness(), 0);
+  spec.dim = three_d ? 3 : 2;
+  spec.upper = Vec3(problem.length, problem.thickness(), three_d ? problem.width : 0);
   spec.n[0] = nx;
   spec.n[1] = nz;
+  if (three_d) spec.n[2] = width_cells;
   const Mesh mesh = make_structured_mesh(spec);
   std::vector<ElasticityBoundary> bcs(mesh.patches().size());
   const Real q = problem.load;
@@ -95,11 +99,13 @@ CreepRunResult run_continuum_creep(const FixedFixedCreepProblem& problem, int nx
     if (name == "left" || name == "right") bcs[k].kind = ElasticityBoundary::Kind::Fixed;
     if (name == "top") bcs[k].value = [q](const Vec3&, Real) { return Vec3(0, -q, 0); };
   }
-  ElasticityOperator op(
-      mesh, LinearElastic{problem.E, problem.nu, problem.rho, Hypothesis::PlaneStress}, bcs);
+  ElasticityOperator op(mesh,
+                        LinearElastic{problem.E, problem.nu, problem.rho,
+                                      three_d ? Hypothesis::ThreeD : Hypothesis::PlaneStress},
+                        bcs, {}, problem.continuum_reconstruction_degree);
   ContinuumCreepSystem system(op, problem.law, problem.continuum_source_degree);
   system.set_creep_stress_mask(problem.continuum_creep_stress);
-  const Vec3 centre(problem.length / 2, problem.thickness() / 2, 0);
+  const Vec3 centre(problem.length / 2, problem.thickness() / 2, three_d ? problem.width / 2 : 0);
   const Index cell = nearest_cell(mesh, centre);
   return integrate(system, options, end_time, start, [&](std::span<const Real> y) {
     const auto G = op.cell_gradients(0, y.first(system.structural_size()));

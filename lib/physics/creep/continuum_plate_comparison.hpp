@@ -5,7 +5,8 @@
 //   plate      PlateCreepSystem on the mid-surface (L x width), ends Clamped, long edges Free,
 //              q on the mid-surface; Simpson points through the thickness.
 //   continuum  ContinuumCreepSystem on the x-z section (L x h) in plane stress, ends Fixed
-//              (u = 0), q as a traction on the top face, the bottom face free.
+//              (u = 0), q as a traction on the top face, the bottom face free; or on the 3D
+//              strip (L x h x width), the same ends and load, its long side faces free.
 //
 // Which 2D continuum: a plate with free long edges bends anticlastically (M_yy = 0 away from
 // the clamps: sigma_yy = 0 in every fibre), i.e. as a narrow beam with modulus E, which is the
@@ -36,6 +37,7 @@ struct FixedFixedCreepProblem {
   Real E = 200e9, nu = 0.3, rho = 7854;
   CreepLaw law{8.33e-6, 1.8e8, 2, 2, 1e9};  // thesis Table 4.1 (grain-boundary sliding)
   int continuum_source_degree = 2;          // ContinuumCreepSystem's sigma_p reconstruction degree
+  int continuum_reconstruction_degree = 0;  // the displacement's (ElasticityOperator; 0: default)
   // Diagnostic: the stress components the continuum's creep law sees (Voigt xx, yy, zz, xy,
   // yz, xz; ContinuumCreepSystem::set_creep_stress_mask). kBendingOnly keeps the axial stress
   // alone, dropping the section's transverse shear xy and through-thickness yy: the plate's
@@ -54,7 +56,8 @@ struct CreepRunResult {
   Real w_plastic = 0;  // w(t_end) - w(0) [m]
   Index unknowns = 0;
   IntegratorStats stats;
-  double wall_seconds = 0;  // set-up, initial state and integration
+  double wall_seconds = 0;     // set-up, initial state and integration
+  double elastic_seconds = 0;  // set-up and the initial (elastic, static) state
 };
 
 // The plate model of the problem, for runs that drive its creep system themselves (the
@@ -72,8 +75,9 @@ std::unique_ptr<FixedFixedCreepPlate> make_fixed_fixed_creep_plate(
 // options (the Schur-complement preconditioned SPGMR of the plate if linear_solver is Spgmr).
 CreepRunResult run_plate_creep(const FixedFixedCreepProblem& problem, int nx, int ny,
                                int thickness_intervals, const IdaOptions& options, Real end_time);
-// nx x nz cells on the x-z section, plane stress.
+// nx x nz cells on the x-z section, plane stress; with width_cells > 0 the 3D strip of width
+// problem.width (the thesis's comparison), nx x nz x width_cells cells, its long faces free.
 CreepRunResult run_continuum_creep(const FixedFixedCreepProblem& problem, int nx, int nz,
-                                   const IdaOptions& options, Real end_time);
+                                   const IdaOptions& options, Real end_time, int width_cells = 0);
 
 }  // namespace rfmems

@@ -93,13 +93,16 @@ class Chain : public SecondOrderOperator {
   CsrPattern pattern_;
 };
 
-void run_oscillators(IdaOptions::LinearSolver solver) {
+// umfpack_from: the direct solver factorises with UMFPACK from this many unknowns (the
+// oscillators have 6).
+void run_oscillators(IdaOptions::LinearSolver solver, Index umfpack_from = 50000) {
   Oscillators osc({1.0, 4.0, 25.0});  // w = 1, 2, 5
   FirstOrderSystem system(osc);
   IdaOptions options;
   options.rtol = 1e-9;
   options.atol = 1e-12;
   options.linear_solver = solver;
+  options.umfpack_from = umfpack_from;
   IdaIntegrator ida(system, options);
   std::vector<double> y0 = {1, 1, 1, 0, 0, 0}, yp0 = {0, 0, 0, -1, -4, -25};
   ida.initialize(0.0, y0, yp0);
@@ -109,6 +112,7 @@ void run_oscillators(IdaOptions::LinearSolver solver) {
     EXPECT_NEAR(ida.y()[i], std::cos(w[i] * 3.0), 1e-6) << "oscillator " << i;
   IntegratorStats s = ida.stats();
   EXPECT_GT(s.steps, 50);
+  EXPECT_EQ(s.umfpack, solver == IdaOptions::LinearSolver::Direct && umfpack_from <= 6);
   if (solver == IdaOptions::LinearSolver::Spgmr) {
     EXPECT_GT(s.linear_iters, 0);
   }
@@ -116,7 +120,8 @@ void run_oscillators(IdaOptions::LinearSolver solver) {
 
 }  // namespace
 
-TEST(Ida, OscillatorsWithKlu) { run_oscillators(IdaOptions::LinearSolver::Klu); }
+TEST(Ida, OscillatorsWithKlu) { run_oscillators(IdaOptions::LinearSolver::Direct); }
+TEST(Ida, OscillatorsWithUmfpack) { run_oscillators(IdaOptions::LinearSolver::Direct, 1); }
 TEST(Ida, OscillatorsWithPreconditionedSpgmr) { run_oscillators(IdaOptions::LinearSolver::Spgmr); }
 
 TEST(Ida, RootFindingLocatesTheFirstZero) {
