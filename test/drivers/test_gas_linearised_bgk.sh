@@ -283,20 +283,22 @@ TABLE
 #     (1 - Pr) delta (1/4 - y^2) to the BGK solution at Pr delta, so
 #     G_ES(delta) = G_B(Pr delta) + (1 - Pr) delta / 6: Cercignani & Tironi's relation ("Some
 #     applications of a linearized kinetic model with correct Prandtl number", Nuovo Cimento B 43
-#     (1966) 64, Q_ES(Kn, Pr) = Q_BGK(Kn / Pr) + Q_HS (1 - Pr) / Kn in Kn ~ 1 / delta and
-#     Q_HS / Kn = delta / 6, as quoted in the LaTeX source github.com/olegrog/latex,
-#     science/02_poiseuille/poiseuille.tex; their paper was not readable from here).
-# Both keep the free-molecular limit (1 / sqrt(pi); -ln(delta) / sqrt(pi)) and the continuum
-# 1 / delta, delta / 6 + sigma_P. On fine grids (160 cells, 3 x 24 x 3 for Couette at delta = 1,
-# 3 x 48 x 3 for Poiseuille) rfmems-gas meets them to 1e-5 with the in-repo reference. BGK values
-# at Pr delta: Jiang & Luo's P_B at delta_B = 10/3, 10, 100/3 (ES delta = 5, 15, 50) and Sharipov
-# & Seleznev's Table 1 G_B at 0.1, 1, 10 (ES delta = 0.15, 1.5, 15; the same two entries left out
-# as above), both as above; at ES delta = 0.1, 1, 10 the in-repo discrete-ordinates reference at
-# Pr delta = 1/15, 2/3, 20/3 (python/linearised_bgk_reference.py, N = 1600, Richardson). Grids:
-# Gauss-Hermite along the walls, half-range Gauss-Hermite across them. What tells the models
-# apart: BGK run on the same rows is 0.6 % and 1.0 % off in Couette P at delta = 0.1 and 1 and
-# 0.5 to 7 % off in Poiseuille G, but only 0.1 % in P at delta >= 5, where both tend to 1 / delta
-# (viscosity-based delta) and differ by their slip coefficients: those rows check the set-up.
+#     (1966) 64: Q_ES(Kn, Pr) = Q_BGK(Kn / Pr) + Q_HS (1 - Pr) / Kn, with Kn ~ 1 / delta and
+#     Q_HS / Kn the no-slip flow rate delta / 6, as quoted in the LaTeX source
+#     github.com/olegrog/latex, science/02_poiseuille/poiseuille.tex; their paper was not
+#     readable from here).
+# Both keep the free-molecular behaviour (P -> 1 / sqrt(pi), G ~ -ln(delta) / sqrt(pi)) and give
+# the continuum 1 / delta and delta / 6 + sigma_P. On fine grids at delta = 1 (160 cells; 3 x 24
+# x 3 for Couette, 3 x 48 x 3 for Poiseuille) rfmems-gas meets them to 1e-5 with the in-repo
+# reference. BGK values at Pr delta: Jiang & Luo's P_B at delta_B = 10/3, 10, 100/3 (ES delta =
+# 5, 15, 50) and Sharipov & Seleznev's Table 1 G_B at 0.1, 1, 10 (ES delta = 0.15, 1.5, 15; the
+# same two entries left out as above), both as above; at ES delta = 0.1, 1, 10 the in-repo
+# discrete-ordinates reference at Pr delta = 1/15, 2/3, 20/3 (python/linearised_bgk_reference.py,
+# N = 1600, Richardson). Grids: Gauss-Hermite along the walls, half-range Gauss-Hermite across
+# them. What tells the models apart: BGK run on the same rows is 0.6 % and 1.0 % off in Couette P
+# at delta = 0.1 and 1 and 0.5 to 7 % off in Poiseuille G, but only 0.1 % in P at delta >= 5,
+# where both tend to 1 / delta (viscosity-based delta) and differ by their slip coefficients:
+# those rows check the set-up.
 while read -r problem delta cells points solver bgk sources; do
   name="esbgk_${problem}_$delta"
   if run "$name" "$problem" "$delta" "$cells" "$points" "$solver" gh+hr esbgk &&
