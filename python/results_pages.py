@@ -480,7 +480,9 @@ def velocity_grids_goal():
 def kinetic_published_tables():
     """rfmems-gas's Poiseuille G and Couette P (docs/data/kinetic_published_runs.csv, from
     python/kinetic_published_runs.py) against the published linearised-BGK solutions
-    (docs/data/kinetic_published_bgk.csv) and the in-repo discrete-ordinates reference."""
+    (docs/data/kinetic_published_bgk.csv) and the in-repo discrete-ordinates reference; ES-BGK's
+    (Pr = 2/3) at delta_B / Pr against the same through the exact relations of
+    test/drivers/test_gas_linearised_bgk.sh."""
     def rows_of(name):
         with open(DATA / name, newline="") as f:
             return list(csv.DictReader(line for line in f if not line.startswith("#")))
@@ -494,19 +496,32 @@ def kinetic_published_tables():
     out = [["problem", "delta", "ours: test grid", "ours: finer grid", "in-repo reference",
             "published", "source", "test grid - published", "finer - published"]]
     same = lambda a, b: abs(float(a) / float(b) - 1) < 1e-6
-    for (problem, delta), reference in ordinates.items():
-        pick = lambda role: next(r for r in runs if r["problem"] == problem
-                                 and same(r["delta"], delta) and r["role"] == role)
-        test, finer = pick("test"), pick("finer")
-        n = digits[problem]
-        grid = lambda r: (f"{float(r['value']):.{n}f} ({r['velocity_points'].replace('x', ' x ')}, "
-                          f"{r['cells']} cells, {float(r['seconds']):.2g} s)")
-        for p in (x for x in published if x["problem"] == problem and same(x["delta"], delta)):
-            v = float(p["published"])
-            out.append([names[problem], f"{delta:.6g}", grid(test), grid(finer),
-                        f"{reference:.{n}f}", p["published"], p["source"],
-                        f"{100 * (float(test['value']) / v - 1):+.3f} %",
-                        f"{100 * (float(finer['value']) / v - 1):+.3f} %"])
+    pick = lambda problem, delta, role: next(r for r in runs if r["problem"] == problem
+                                             and same(r["delta"], delta) and r["role"] == role)
+    # ES-BGK at delta from BGK at Pr delta: P_B / (1 + (1 - Pr) delta P_B), G_B + (1 - Pr) delta / 6.
+    pr = 2 / 3
+    to_es = {"poiseuille": lambda b, delta: b + (1 - pr) * delta / 6,
+             "couette": lambda b, delta: b / (1 + (1 - pr) * delta * b)}
+    for model in ("bgk", "esbgk"):
+        for (problem, delta_b), reference in ordinates.items():
+            delta = delta_b if model == "bgk" else delta_b / pr
+            convert = (lambda b: b) if model == "bgk" else (lambda b: to_es[problem](b, delta))
+            run = problem if model == "bgk" else problem + "_esbgk"
+            test, finer = pick(run, delta, "test"), pick(run, delta, "finer")
+            n = digits[problem]
+            grid = lambda r: (f"{float(r['value']):.{n}f} "
+                              f"({r['velocity_points'].replace('x', ' x ')}, "
+                              f"{r['cells']} cells, {float(r['seconds']):.2g} s)")
+            for p in (x for x in published if x["problem"] == problem
+                      and same(x["delta"], delta_b)):
+                v = convert(float(p["published"]))
+                shown = (p["published"] if model == "bgk" else
+                         f"{v:.{n}f} (BGK {p['published']} at Pr delta = {delta_b:.6g})")
+                out.append([names[problem] if model == "bgk" else "ES-BGK " + names[problem],
+                            f"{delta:.6g}", grid(test), grid(finer),
+                            f"{convert(reference):.{n}f}", shown, p["source"],
+                            f"{100 * (float(test['value']) / v - 1):+.3f} %",
+                            f"{100 * (float(finer['value']) / v - 1):+.3f} %"])
     head = comment_lines("kinetic_published_runs.csv")
     return markdown(out) + "\n" + next(x for x in head if x.startswith("Command:")) + "\n"
 
