@@ -643,10 +643,49 @@ def scale_ranks():
     return markdown(rows) + f"\nCommands: {commands}, {headers[0]['date']}.\n"
 
 
+def creep_plate_vs_3d():
+    """bench_creep_plate_vs_continuum --solid-meshes: the fixed-fixed strip's creep in the plate
+    and in the 3D continuum, each model's runs with their mesh error against its finest mesh
+    (elastic and creep deflection), then the ratios at equal accuracy from the summary line."""
+    lines = read_jsonl(DATA / "creep_plate_vs_3d.jsonl")
+    header = next(x for x in lines if x.get("kind") == "header")
+    runs = [x for x in lines if x.get("kind") == "run"]
+    rows = [["model", "mesh", "unknowns", "linear solver", "IDA steps", "factorisations",
+             "w elastic [m]", "mesh error", "w creep, 500 h [m]", "mesh error",
+             "static solve [s]", "whole run [s]"]]
+    for model in ("plate", "3d"):
+        of = [x for x in runs if x["model"] == model]
+        finest = of[-1]
+        for x in of:
+            ref = "ref." if x is finest else None
+            rows.append([model if model == "plate" else "3D", " x ".join(str(n) for n in x["mesh"]),
+                         f"{x['unknowns']:,}",
+                         "Schur + GMRES" if model == "plate" else ("UMFPACK" if x["umfpack"] else "KLU"),
+                         str(x["steps"]), str(x["linear_setups"]),
+                         f"{x['w_elastic']:.4e}",
+                         ref or f"{100 * (x['w_elastic'] / finest['w_elastic'] - 1):+.2f} %",
+                         f"{x['w_plastic']:.4e}",
+                         ref or f"{100 * (x['w_plastic'] / finest['w_plastic'] - 1):+.2f} %",
+                         f"{x['elastic_s']:.3f}", f"{x['wall_s']:.2f}"])
+    m = next(x for x in lines if x.get("kind") == "summary" and x["model"] == "3d")
+    mesh = lambda v: " x ".join(str(n) for n in v if n)
+    return (markdown(rows) +
+            f"\nAt {100 * m['target']:g} % of each model's finest mesh: creep, plate "
+            f"{mesh(m['plate_mesh'])} in {m['plate_wall_s']:.2f} s against 3D "
+            f"{mesh(m['continuum_mesh'])} in {m['continuum_wall_s']:.1f} s, **{m['wall_ratio']:.0f}x**; "
+            f"static deflection, plate {mesh(m['plate_static_mesh'])} in {m['plate_static_s']:.4f} s "
+            f"against 3D {mesh(m['continuum_static_mesh'])} in {m['continuum_static_s']:.2f} s, "
+            f"**{m['static_ratio']:.0f}x**. Plate against 3D (finest meshes): elastic "
+            f"{100 * m['plate_elastic_error']:+.2f} %, creep {100 * m['plate_error']:+.2f} % "
+            f"(1 - w_plate / w_3D).\n\nCommand: `{header['command']}` (commit {header['commit']}, "
+            f"load average {header['load_average']}), {header['date']}.\n")
+
+
 TABLES = {
     "verification-checks": csv_table("verification_checks.csv"),
     "performance-ratios": csv_table("performance_ratios.csv"),
     "creep-plate-vs-continuum": csv_table("creep_plate_vs_continuum.csv"),
+    "creep-plate-vs-3d": creep_plate_vs_3d,
     "pullin-time-check": csv_table("pullin_time_check.csv"),
     "pullin-laplace-dynamic": pullin_laplace_dynamic,
     "coupling-default-study-ab": coupling_default_study_ab,
