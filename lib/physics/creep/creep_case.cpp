@@ -122,8 +122,8 @@ CreepCase read_creep_case(const CaseNode& root, const std::string& case_dir) {
   c.thickness_intervals = static_cast<int>(points - 1);
   c.shear_creep = creep.get_bool("shear_creep", false);
   creep.require(!(c.shear_creep && c.plate->von_karman), "shear_creep",
-                "not with model.geometric_nonlinearity (the von Karman plate's creep is in-plane "
-                "only)");
+                "not with model.geometric_nonlinearity (the transverse shear creep is the linear "
+                "plate's only)");
   c.settings = read_settings(creep);
 
   const bool lifetime = creep.has("lifetime");

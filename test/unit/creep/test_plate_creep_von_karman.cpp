@@ -6,6 +6,7 @@
 //     simply supported, free and loaded edges; a residual stress), and a planted 1 % error in
 //     each new block is caught: dF_u/d eps_p, the plastic membrane force's part of the w-w
 //     block, and the q rows' (w, u, v) columns (the membrane strain).
+//   - the same under a hold voltage (the parallel-plate load built on the von Karman plate);
 //   - initial_state is consistent (Newton on the von Karman plate with the plastic membrane
 //     force) and y' keeps it so to first order.
 //   - A flat film held on all edges under an equibiaxial sigma0 relaxes uniformly as the closed
@@ -22,6 +23,7 @@
 #include "../../support/jacobian_check.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/creep/plate_creep_system.hpp"
+#include "physics/plate/plate_scene.hpp"
 #include "physics/plate/von_karman_plate.hpp"
 #include "solvers/ida_integrator.hpp"
 
@@ -203,6 +205,42 @@ TEST(PlateCreepVonKarman, JacobianMatchesFiniteDifferencesAndCatchesPlantedError
     EXPECT_GT(planted_uq, 5e-3);
     EXPECT_GT(planted_ww, 5e-3);
     EXPECT_GT(planted_qm, 5e-3);
+  }
+}
+
+// Under a hold voltage the w rows also carry the parallel-plate load V^2 A sum_q a_q p1(g0 +
+// u_q) at the plate's gap points (3 x 3 Simpson points of the w reconstruction), built on the
+// von Karman plate: its tangent joins the von Karman tangent in the y rows. Gap 5e-3 m against
+// w ~ 2e-3 m and 3e6 V make the load's tangent a visible part of the w-w diagonal.
+TEST(PlateCreepVonKarman, JacobianWithHoldVoltageMatchesFiniteDifferences) {
+  const Mesh mesh = distorted_mesh(7, 5, 4);
+  PlateOperator plate(mesh, thick_section(true), mixed_boundaries(mesh),
+                      [](const Vec3& x, Real) { return -1e4 * (1 + x.y()); });
+  VonKarmanPlate vk(plate);
+  CreepHoldVoltage hold;
+  hold.initial_gap = 5e-3;
+  hold.voltage = 3e6;
+  hold.elements = plate_gap_elements(mesh, plate);
+  PlateCreepSystem system(vk, CreepLaw{1e-3, 3e3, 2.5, 1.5, 1e9}, 6, hold);
+  PlateCreepSystem unheld(vk, CreepLaw{1e-3, 3e3, 2.5, 1.5, 1e9}, 6);
+  const State s = random_state(system, 11);
+  const std::vector<Real> held_j = test_support::analytic_jacobian(system, 0.3, 0, s.y, s.yp),
+                          free_j = test_support::analytic_jacobian(unheld, 0.3, 0, s.y, s.yp);
+  Real change = 0;
+  for (Index c = 0; c < mesh.n_cells(); ++c) {
+    const Real a = held_j[system.jacobian_pattern().find(3 * c, 3 * c)],
+               b = free_j[unheld.jacobian_pattern().find(3 * c, 3 * c)];
+    change = std::max(change, std::abs(a - b) / std::abs(b));
+  }
+  std::printf("hold load: the w-w diagonal changes by up to %.2e\n", change);
+  EXPECT_GT(change, 0.01);
+  for (Real c_j : {0.0, 2.5e2}) {
+    const auto check = test_support::check_jacobian(system, 0.3, c_j, s.y, s.yp, s.steps, s.scales);
+    std::printf("hold voltage, c_j %g: entry-relative %.2e, row-relative %.2e\n", c_j,
+                check.max_entry_relative, check.max_row_relative);
+    EXPECT_LT(check.max_entry_relative, 2e-3)
+        << "c_j " << c_j << " row " << check.worst_entry_row << " col " << check.worst_entry_col;
+    EXPECT_LT(check.max_row_relative, 1e-6) << "c_j " << c_j << " row " << check.worst_row;
   }
 }
 
