@@ -11,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "physics/creep/plate_creep_schur_complement.hpp"
+#include "physics/creep/point_block_schur_complement.hpp"
 
 namespace rfmems {
 
@@ -718,7 +719,16 @@ PlateCreepSystem::ShearPointRateJacobian PlateCreepSystem::shear_point_rate_jaco
 }
 
 void PlateCreepSystem::preconditioner_setup(Real t, Real c_j, std::span<const Real> y,
-                                            std::span<const Real>) {
+                                            std::span<const Real> yp) {
+  if (vk_) {
+    if (!block_schur_)
+      block_schur_ = std::make_unique<PointBlockSchurComplement>(
+          pattern_, structural_size(), n_points() * per_point_, per_point_);
+    full_jacobian_.resize(pattern_.nnz());
+    jacobian(t, c_j, y, yp, full_jacobian_);
+    block_schur_->setup(full_jacobian_);
+    return;
+  }
   if (!has_preconditioner())
     throw std::logic_error(
         "PlateCreepSystem: no preconditioner with shear creep or geometric nonlinearity (use "
@@ -739,10 +749,15 @@ void PlateCreepSystem::set_schur_refactor_tolerance(Real tolerance) {
 }
 
 long PlateCreepSystem::schur_factorizations() const {
+  if (block_schur_) return block_schur_->factorizations();
   return schur_ ? schur_->factorizations() : 0;
 }
 
 void PlateCreepSystem::preconditioner_solve(std::span<const Real> r, std::span<Real> z) {
+  if (block_schur_) {
+    block_schur_->solve(r, z);
+    return;
+  }
   if (!schur_) throw std::logic_error("PlateCreepSystem: preconditioner_solve before setup");
   schur_->solve(r, z);
 }
@@ -807,6 +822,7 @@ void PlateCreepSystem::set_hold_voltage(CreepHoldVoltage hold) {
   tangent_lu_.reset();
   relaxed_block_.reset();
   schur_.reset();
+  block_schur_.reset();
   build_pattern();
 }
 
