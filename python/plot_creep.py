@@ -6,7 +6,7 @@
                        probes (pressure-only runs); the end of life marked.
 
 Several result files (e.g. hold voltages of a lifetime study) go on the same axes, labelled
-by case name and hold voltage.
+by case name and hold voltage (and "von Karman" for runs with model.geometric_nonlinearity).
 
 Usage: plot_creep.py RESULT.h5 [RESULT.h5 ...] [-o PREFIX]   (PREFIX: the first RESULT without .h5)
 """
@@ -47,6 +47,8 @@ def main():
         t, values, columns, s = read(path)
         probes = list(s["probes"].keys())
         label = s["case"] + (f", {s['hold_voltage_V']:g} V" if s["hold_voltage_V"] > 0 else "")
+        if s.get("geometric_nonlinearity"):
+            label += ", von Karman"
         for p in probes:
             top.plot(t, values[:, columns.index(p)] * 1e6, label=f"{label}: {p}")
         if "min_gap" in columns:

@@ -14,7 +14,8 @@ std::optional<std::string> units_of(const std::string& name) {
       {"rotation", "rad"},
       {"moment", "N"},  // moment resultants per unit length, N m / m
       {"shear_force", "N/m"},
-      {"membrane_force", "N/m"},  // the von Karman plate's stretching resultants
+      {"membrane_force", "N/m"},        // the von Karman plate's stretching resultants
+      {"total_membrane_force", "N/m"},  // creep of the von Karman plate: h sigma0 + A:eps - C P
       {"plastic_moment", "N"},
       {"von_mises_top", "Pa"},
       {"von_mises_bottom", "Pa"},

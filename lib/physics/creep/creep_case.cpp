@@ -89,11 +89,6 @@ CreepCase read_creep_case(const CaseNode& root, const std::string& case_dir) {
   root.require(!root.has("analysis"), "analysis", "rfmems-creep runs a creep analysis; remove it");
 
   c.structure = build_structure(root, case_dir, AnalysisType::Static);
-  if (const auto* plate = dynamic_cast<const PlateScene*>(c.structure.get());
-      plate && plate->von_karman)
-    model.fail("geometric_nonlinearity",
-               "creep runs use the linear plate (the creep strains are bending strains about the "
-               "flat mid-surface)");
   if (root.has("actuation")) {
     // The hold voltage's field: the parallel-plate law the pull-in study uses.
     const CaseNode act = root.child("actuation");
@@ -126,6 +121,9 @@ CreepCase read_creep_case(const CaseNode& root, const std::string& case_dir) {
   creep.require(points % 2 == 1, "thickness_points", "must be odd (Simpson's rule)");
   c.thickness_intervals = static_cast<int>(points - 1);
   c.shear_creep = creep.get_bool("shear_creep", false);
+  creep.require(!(c.shear_creep && c.plate->von_karman), "shear_creep",
+                "not with model.geometric_nonlinearity (the transverse shear creep is the linear "
+                "plate's only)");
   c.settings = read_settings(creep);
 
   const bool lifetime = creep.has("lifetime");

@@ -1,8 +1,9 @@
 // A creep run as a case file describes it (rfmems-creep): a plate structure (the keys of
 // physics/plate/plate_scene.hpp: mesh, material, model.structure: plate, thickness,
-// boundaries, pressure), optionally the switch's actuation
-// (physics/electrostatics/parallel_plate_field.hpp keys: gap, electrode, control, dielectric,
-// fringing) with a hold voltage, and the creep section:
+// boundaries, pressure; model.geometric_nonlinearity: the von Karman plate, whose membrane
+// the plastic strains relax too, physics/creep/plate_creep_system.hpp), optionally the switch's
+// actuation (physics/electrostatics/parallel_plate_field.hpp keys: gap, electrode, control,
+// dielectric, fringing) with a hold voltage, and the creep section:
 //
 //   creep:
 //     law: {A: 8.33e-6, B: 1.8e8, m: 2, n: 2, sigma_y0: 1 GPa}   # A [1/s] (number or Hz)

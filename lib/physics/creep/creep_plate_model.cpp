@@ -18,9 +18,11 @@ Real von_mises(const Vec3& s) {
 
 PlateCreepSystem& as_plate(CreepSystem& system) { return dynamic_cast<PlateCreepSystem&>(system); }
 
-// A section with an in-plane residual stress, whose creep relaxation the system models.
-bool relaxes_membrane(const CreepCase& c) {
-  return c.plate->section.residual_stress.topLeftCorner<2, 2>().cwiseAbs().maxCoeff() > 0;
+// A membrane force to report: an in-plane residual stress, whose creep relaxation the system
+// models, or the stretching von Karman plate (PlateCreepSystem::has_membrane_force()).
+bool has_membrane_force(const CreepCase& c) {
+  return c.plate->von_karman ||
+         c.plate->section.residual_stress.topLeftCorner<2, 2>().cwiseAbs().maxCoeff() > 0;
 }
 
 // The gap point where the plate is lowest: the smallest gap, sampled where the hold load and
@@ -34,6 +36,9 @@ const GapPoint& lowest_point(const CreepCase& c, std::span<const Real> state) {
 CreepRunModel make_plate_creep_model(const CreepCase& c) {
   CreepRunModel m;
   m.make_system = [&c]() -> std::unique_ptr<CreepSystem> {
+    if (c.plate->von_karman)
+      return std::make_unique<PlateCreepSystem>(*c.plate->von_karman, c.law, c.thickness_intervals,
+                                                c.hold);
     return std::make_unique<PlateCreepSystem>(*c.plate->op, c.law, c.thickness_intervals,
                                               c.shear_creep, c.hold);
   };
@@ -49,8 +54,8 @@ CreepRunModel make_plate_creep_model(const CreepCase& c) {
   if (c.has_gap) m.series_columns.push_back("min_gap");
   m.series_columns.push_back("max_surface_von_mises");
   m.series_columns.push_back("max_creep_strain");
-  // The relaxing membrane stress N_xx / h, the mean over the cells.
-  if (relaxes_membrane(c)) m.series_columns.push_back("mean_membrane_stress_xx");
+  // The membrane stress N_xx / h (relaxing, or stretching too), the mean over the cells.
+  if (has_membrane_force(c)) m.series_columns.push_back("mean_membrane_stress_xx");
 
   m.sample = [&c, min_gap = m.min_gap](CreepSystem& system, Real t, std::span<const Real> state) {
     PlateCreepSystem& plate = as_plate(system);
@@ -67,9 +72,9 @@ CreepRunModel make_plate_creep_model(const CreepCase& c) {
       for (Index i = 0; i < plate.n_points(); ++i)
         eps = std::max(eps, state[plate.creep_index(cell, i, PlateCreepSystem::kEff)]);
     row.push_back(eps);
-    if (plate.relaxes_membrane()) {
+    if (plate.has_membrane_force()) {
       Real n = 0;
-      for (const Vec3& v : plate.membrane_forces(state)) n += v[0];
+      for (const Vec3& v : plate.membrane_forces(state, t)) n += v[0];
       row.push_back(n / (plate.n_cells() * plate.plate().section().thickness));
     }
     return row;
@@ -88,9 +93,11 @@ CreepRunModel make_plate_creep_model(const CreepCase& c) {
       auto& vm = f[name];
       for (const Vec3& s : plate.fibre_stress(t, state, i)) vm.push_back(von_mises(s));
     }
-    if (plate.relaxes_membrane()) {
-      auto& n = f["membrane_force"];
-      for (const Vec3& v : plate.membrane_forces(state)) n.insert(n.end(), {v[0], v[1], v[2]});
+    if (plate.has_membrane_force()) {
+      // The von Karman plate's fields already hold its stretching part A : eps_m as
+      // membrane_force: the whole force under its own name.
+      auto& n = f[plate.geometric_nonlinearity() ? "total_membrane_force" : "membrane_force"];
+      for (const Vec3& v : plate.membrane_forces(state, t)) n.insert(n.end(), {v[0], v[1], v[2]});
     }
     auto& eps = f["creep_strain"];
     eps.assign(nc, 0.0);
@@ -107,9 +114,10 @@ void write_plate_creep_output(const CreepCase& c, ResultWriter& writer, int inde
   c.plate->write_fields(writer, index, out.time, out.fields.at("structure"), {});
   writer.write_cell_field_at(index, out.time, "plastic_moment", out.fields.at("plastic_moment"), 3,
                              {"Mp_xx", "Mp_yy", "Mp_xy"});
-  if (out.fields.count("membrane_force"))
-    writer.write_cell_field_at(index, out.time, "membrane_force", out.fields.at("membrane_force"),
-                               3, {"N_xx", "N_yy", "N_xy"});
+  for (const char* name : {"membrane_force", "total_membrane_force"})
+    if (out.fields.count(name))
+      writer.write_cell_field_at(index, out.time, name, out.fields.at(name), 3,
+                                 {"N_xx", "N_yy", "N_xy"});
   for (const char* name : {"von_mises_top", "von_mises_bottom", "creep_strain"})
     writer.write_cell_field_at(index, out.time, name, out.fields.at(name), 1);
 }

@@ -36,6 +36,7 @@ Json creep_summary(const CreepCase& creep, const CreepRunModel& model,
   const bool implicit = settings.integration == CreepRunSettings::Integration::Implicit;
   Json summary;
   summary["model"] = creep.structure->kind();
+  summary["geometric_nonlinearity"] = creep.plate->von_karman != nullptr;  // the von Karman plate
   summary["mesh"] = {{"cells", creep.plate->mesh->n_cells()}};
   summary["integration"] = implicit ? "implicit" : "explicit";
   if (!implicit) summary["dt_s"] = settings.explicit_dt;

@@ -98,7 +98,11 @@ std::function<std::optional<Real>(Real)> case_probe_gap(const CreepCase& c, std:
   // One system for every trial; only the hold load changes. Each trial's Newton (a tangent
   // factorisation per iteration, the cost here: ~1 s on 3000 cells) starts from the last
   // equilibrium found, which is close (3 iterations where 5-6 from the unloaded plate).
-  auto system = std::make_shared<PlateCreepSystem>(*c.plate->op, c.law, c.thickness_intervals);
+  // With geometric nonlinearity the von Karman plate (its equilibrium a Newton iteration too).
+  auto system =
+      c.plate->von_karman
+          ? std::make_shared<PlateCreepSystem>(*c.plate->von_karman, c.law, c.thickness_intervals)
+          : std::make_shared<PlateCreepSystem>(*c.plate->op, c.law, c.thickness_intervals);
   auto last = std::make_shared<std::vector<Real>>(system->size(), 0.0);
   return [&c, probe, system, last](Real voltage) -> std::optional<Real> {
     // V = 0 before any hold is set: the plate is linear, one solve with its own factors.

@@ -92,7 +92,7 @@ void PlateCreepSchurComplement::setup(Real t, Real c_j, std::span<const Real> st
     Eigen::Matrix3d weighted = Eigen::Matrix3d::Zero();  // sum_i w_i z_i [E_ki]_{eps_p}
     Eigen::Matrix3d membrane = Eigen::Matrix3d::Zero();  // sum_i w_i [E_ki]_{eps_p}
     for (Index i = 0; i < np; ++i) {
-      const auto d = sys.point_rate_jacobian(state, k, i, kappa[k]);
+      const auto d = sys.point_rate_jacobian(state, k, i, kappa[k], Vec3::Zero());
       Mat4 D = c_j * Mat4::Identity();
       D.leftCols<3>() -= d.d_eps_p;
       D.col(3) -= d.d_eps_eff;

@@ -11,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "physics/creep/plate_creep_schur_complement.hpp"
+#include "physics/creep/point_block_schur_complement.hpp"
 
 namespace rfmems {
 
@@ -19,7 +20,17 @@ using Kind = PlateBoundary::Kind;
 PlateCreepSystem::PlateCreepSystem(PlateOperator& plate, const CreepLaw& law,
                                    int thickness_intervals, bool shear_creep,
                                    std::optional<CreepHoldVoltage> hold)
+    : PlateCreepSystem(plate, nullptr, law, thickness_intervals, shear_creep, std::move(hold)) {}
+
+PlateCreepSystem::PlateCreepSystem(VonKarmanPlate& plate, const CreepLaw& law,
+                                   int thickness_intervals, std::optional<CreepHoldVoltage> hold)
+    : PlateCreepSystem(plate.plate(), &plate, law, thickness_intervals, false, std::move(hold)) {}
+
+PlateCreepSystem::PlateCreepSystem(PlateOperator& plate, VonKarmanPlate* von_karman,
+                                   const CreepLaw& law, int thickness_intervals, bool shear_creep,
+                                   std::optional<CreepHoldVoltage> hold)
     : plate_(plate),
+      vk_(von_karman),
       law_(law),
       quadrature_(ThicknessQuadrature::simpson(plate.section().thickness, thickness_intervals)),
       n_cells_(plate.mesh().n_cells()) {
@@ -29,7 +40,10 @@ PlateCreepSystem::PlateCreepSystem(PlateOperator& plate, const CreepLaw& law,
   shear_modulus_ = E / (2 * (1 + nu));
   const Mat3& sigma0 = plate.section().residual_stress;
   sigma0_ = Vec3(sigma0(0, 0), sigma0(1, 1), sigma0(0, 1));
-  relaxes_membrane_ = sigma0_.cwiseAbs().maxCoeff() > 0;
+  // With geometric nonlinearity the residual stress relaxes through the membrane instead.
+  relaxes_membrane_ = !vk_ && sigma0_.cwiseAbs().maxCoeff() > 0;
+  if (vk_ && shear_creep)
+    throw InputError("plate creep: no transverse shear creep with geometric nonlinearity");
   per_point_ = shear_creep ? 6 : kPerPoint;
   moment_rec_ = std::make_unique<PolynomialReconstruction>(
       plate.mesh(), [](Index) { return BoundaryPoint::None; }, 2);
@@ -54,6 +68,26 @@ PlateCreepSystem::PlateCreepSystem(PlateOperator& plate, const CreepLaw& law,
         if (!inserted) it->second.shear_weight += b.T;
       }
       for (const auto& [k, r] : merged) rate_stencil_[cell].push_back(r);
+    }
+  }
+  if (vk_) {
+    membrane_ = std::make_unique<VonKarmanCreepMembrane>(*vk_, C_);
+    membrane_rate_columns_.resize(n_cells_);
+    for (Index cell = 0; cell < n_cells_; ++cell) {
+      std::vector<MembraneRateColumn>& cols = membrane_rate_columns_[cell];
+      // kappa = (G_xx, G_yy, (G_xy + G_yx)/2), G = sum_k beta_k w_k^T.
+      for (const auto& w : curvature_weights_[cell]) {
+        cols.push_back(
+            {3 * w.cell + PlateOperator::kBetaX, Vec3(w.weight.x(), 0, 0.5 * w.weight.y()), -1});
+        cols.push_back(
+            {3 * w.cell + PlateOperator::kBetaY, Vec3(0, w.weight.y(), 0.5 * w.weight.x()), -1});
+      }
+      const std::vector<Index>& dofs = membrane_->strain_dofs(cell);
+      for (std::size_t k = 0; k < dofs.size(); ++k)
+        cols.push_back({dofs[k], Vec3::Zero(), static_cast<Index>(k)});
+      std::sort(
+          cols.begin(), cols.end(),
+          [](const MembraneRateColumn& a, const MembraneRateColumn& b) { return a.dof < b.dof; });
     }
   }
   build_plastic_source();
@@ -181,9 +215,28 @@ void PlateCreepSystem::build_pattern() {
 
   pattern_ = CsrPattern{};
   std::vector<Index> cols;
-  for (Index row = 0; row < 3 * n_cells_; ++row) {
+  const Index ns = structural_size();
+  // The plastic membrane force (geometric nonlinearity): its rows' y and q columns.
+  std::vector<std::vector<Index>> plastic_membrane_cols(ns);
+  if (membrane_) {
+    for (const auto& e : membrane_->structural_entries())
+      plastic_membrane_cols[e.row].push_back(e.col);
+    for (const auto& e : membrane_->strain_entries())
+      for (Index i = 0; i < np; ++i)
+        for (int j = 0; j < 3; ++j)
+          plastic_membrane_cols[e.row].push_back(creep_index(e.cell, i, j));
+  }
+  for (Index row = 0; row < ns; ++row) {
     cols.assign(structural.col_idx.begin() + structural.row_ptr[row],
                 structural.col_idx.begin() + structural.row_ptr[row + 1]);
+    cols.insert(cols.end(), plastic_membrane_cols[row].begin(), plastic_membrane_cols[row].end());
+    if (row >= 3 * n_cells_) {  // the in-plane rows
+      std::sort(cols.begin(), cols.end());
+      cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
+      pattern_.col_idx.insert(pattern_.col_idx.end(), cols.begin(), cols.end());
+      pattern_.row_ptr.push_back(pattern_.nnz());
+      continue;
+    }
     if (row % 3 != PlateOperator::kW)
       for (Index k : source_cols[row / 3])
         for (Index i = 0; i < np; ++i)
@@ -200,7 +253,7 @@ void PlateCreepSystem::build_pattern() {
   }
   structural_nnz_ = pattern_.nnz();
   tangent_position_.clear();
-  for (Index row = 0; row < 3 * n_cells_; ++row)
+  for (Index row = 0; row < ns; ++row)
     for (Index p = structural.row_ptr[row]; p < structural.row_ptr[row + 1]; ++p)
       tangent_position_.push_back(pattern_.find(row, structural.col_idx[p]));
   // The relaxation's value positions, in structural_rows' order.
@@ -219,12 +272,26 @@ void PlateCreepSystem::build_pattern() {
         for (int j = 0; j < 3; ++j) add(creep_index(c, i, j));
     }
   }
-  // The y-y block (the structural tangent of equilibrate with the relaxation).
-  relaxed_block_.set_pattern(pattern_, relaxes_membrane_ ? 3 * n_cells_ : 0);
+  membrane_structural_position_.clear();
+  membrane_strain_position_.clear();
+  if (membrane_) {
+    for (const auto& e : membrane_->structural_entries())
+      membrane_structural_position_.push_back(pattern_.find(e.row, e.col));
+    for (const auto& e : membrane_->strain_entries())
+      for (Index i = 0; i < np; ++i)
+        for (int j = 0; j < 3; ++j)
+          membrane_strain_position_.push_back(pattern_.find(e.row, creep_index(e.cell, i, j)));
+  }
+  // The y-y block (the structural tangent of equilibrate with the relaxation, or of the
+  // von Karman plate).
+  relaxed_block_.set_pattern(pattern_, relaxes_membrane_ || vk_ ? ns : 0);
   for (Index c = 0; c < n_cells_; ++c)
     for (Index i = 0; i < np; ++i)
       for (int j = 0; j < per_point_; ++j) {
-        if (shear_creep()) {
+        if (vk_) {
+          for (const MembraneRateColumn& col : membrane_rate_columns_[c])
+            pattern_.col_idx.push_back(col.dof);
+        } else if (shear_creep()) {
           for (const auto& s : rate_stencil_[c])
             for (int k = 0; k < 3; ++k) pattern_.col_idx.push_back(3 * s.cell + k);
         } else {
@@ -237,14 +304,16 @@ void PlateCreepSystem::build_pattern() {
         pattern_.row_ptr.push_back(pattern_.nnz());
       }
 
-  // The constant y rows: plate stiffness and dR_beta/dq = B (w_i z_i C).
+  // The constant y rows: plate stiffness (the linear plate) and dR_beta/dq = B (w_i z_i C).
   structural_values_.assign(structural_nnz_, 0.0);
-  const std::vector<Real> zero(plate_.size(), 0.0);
-  std::vector<Real> k(plate_pattern.nnz());
-  plate_.stiffness(0, zero, k);
-  for (Index row = 0; row < 3 * n_cells_; ++row)
-    for (Index p = plate_pattern.row_ptr[row]; p < plate_pattern.row_ptr[row + 1]; ++p)
-      structural_values_[pattern_.find(row, plate_pattern.col_idx[p])] += k[p];
+  if (!vk_) {
+    const std::vector<Real> zero(plate_.size(), 0.0);
+    std::vector<Real> k(plate_pattern.nnz());
+    plate_.stiffness(0, zero, k);
+    for (Index row = 0; row < 3 * n_cells_; ++row)
+      for (Index p = plate_pattern.row_ptr[row]; p < plate_pattern.row_ptr[row + 1]; ++p)
+        structural_values_[pattern_.find(row, plate_pattern.col_idx[p])] += k[p];
+  }
   for (const SourceBlock& b : source_)
     for (Index i = 0; i < np; ++i) {
       const Mat23 d = b.B * (quadrature_.weight[i] * quadrature_.z[i]) * C_;
@@ -309,7 +378,7 @@ std::vector<Vec3> PlateCreepSystem::plastic_shear_forces(std::span<const Real> s
 
 Mat3 PlateCreepSystem::point_stress_tensor(std::span<const Real> state, Index c, Index i,
                                            const Vec3& kappa, const Vec3& q_el) const {
-  Mat3 sigma = stress_tensor(point_stress(state, c, i, kappa));
+  Mat3 sigma = stress_tensor(point_stress(state, c, i, kappa, Vec3::Zero()));
   if (!shear_creep()) return sigma;
   const Real h = plate_.section().thickness, z = quadrature_.z[i];
   const Real phi = 1.5 * (1 - 4 * z * z / (h * h));
@@ -345,11 +414,30 @@ Vec3 PlateCreepSystem::cell_plastic_strain_integral(std::span<const Real> state,
   return integral;
 }
 
-std::vector<Vec3> PlateCreepSystem::membrane_forces(std::span<const Real> state) const {
+std::vector<Vec3> PlateCreepSystem::membrane_forces(std::span<const Real> state, Real t) const {
   std::vector<Vec3> n(n_cells_);
-  const Vec3 n0 = plate_.section().thickness * sigma0_;
+  const Real h = plate_.section().thickness;
+  const Vec3 n0 = h * sigma0_;
   for (Index c = 0; c < n_cells_; ++c) n[c] = n0 - C_ * cell_plastic_strain_integral(state, c);
+  if (vk_) {
+    const std::vector<Vec3> eps = membrane_->cell_strains(t, state);
+    for (Index c = 0; c < n_cells_; ++c) n[c] += h * (C_ * eps[c]);
+  }
   return n;
+}
+
+std::vector<Vec3> PlateCreepSystem::membrane_strains(Real t, std::span<const Real> state) const {
+  if (!vk_) return std::vector<Vec3>(n_cells_, Vec3::Zero());
+  return membrane_->cell_strains(t, state);
+}
+
+void PlateCreepSystem::add_plastic_membrane_force(Real t, std::span<const Real> slope_state,
+                                                  std::span<const Real> strain_state,
+                                                  std::span<Real> r) const {
+  if (!membrane_) return;
+  std::vector<Vec3> p(n_cells_);
+  for (Index c = 0; c < n_cells_; ++c) p[c] = cell_plastic_strain_integral(strain_state, c);
+  membrane_->add_plastic_force(t, slope_state, p, r);
 }
 
 void PlateCreepSystem::add_membrane_relaxation(Real t, std::span<const Real> slope_state,
@@ -373,18 +461,20 @@ void PlateCreepSystem::add_membrane_relaxation(Real t, std::span<const Real> slo
 }
 
 Vec3 PlateCreepSystem::point_stress(std::span<const Real> state, Index c, Index i,
-                                    const Vec3& kappa) const {
+                                    const Vec3& kappa, const Vec3& membrane) const {
   const Index q = creep_index(c, i, 0);
   const Vec3 eps_p(state[q + kXX], state[q + kYY], state[q + kXY]);
+  if (vk_) return sigma0_ + C_ * (membrane + quadrature_.z[i] * kappa - eps_p);
   const Vec3 bending = C_ * (quadrature_.z[i] * kappa - eps_p);
   return relaxes_membrane_ ? Vec3(sigma0_ + bending) : bending;
 }
 
 std::vector<Vec3> PlateCreepSystem::fibre_stress(Real t, std::span<const Real> state,
                                                  Index i) const {
-  const std::vector<Mat3> G = plate_.rotation_gradients(t, state.first(structural_size()));
+  const std::vector<Mat3> G = plate_.rotation_gradients(t, state.first(3 * n_cells_));
+  const std::vector<Vec3> eps_m = membrane_strains(t, state);
   std::vector<Vec3> s(n_cells_);
-  for (Index c = 0; c < n_cells_; ++c) s[c] = point_stress(state, c, i, curvature(G[c]));
+  for (Index c = 0; c < n_cells_; ++c) s[c] = point_stress(state, c, i, curvature(G[c]), eps_m[c]);
   return s;
 }
 
@@ -404,16 +494,18 @@ void PlateCreepSystem::add_plastic_source(std::span<const Real> state, std::span
 }
 
 void PlateCreepSystem::creep_rates(Real t, std::span<const Real> state, std::span<Real> rates) {
-  const std::vector<Mat3> G = plate_.rotation_gradients(t, state.first(structural_size()));
+  const std::vector<Mat3> G = plate_.rotation_gradients(t, state.first(3 * n_cells_));
   std::vector<Vec3> q_el;
-  if (shear_creep()) q_el = plate_.shear_forces(t, state.first(structural_size()));
+  if (shear_creep()) q_el = plate_.shear_forces(t, state.first(3 * n_cells_));
+  const std::vector<Vec3> eps_m = vk_ ? membrane_->cell_strains(t, state) : std::vector<Vec3>{};
   for (Index c = 0; c < n_cells_; ++c) {
     const Vec3 kappa = curvature(G[c]);
     const Vec3 qc = shear_creep() ? q_el[c] : Vec3::Zero();
     for (Index i = 0; i < n_points(); ++i) {
       const Index q = creep_index(c, i, 0);
-      const CreepRate rate =
-          law_.rate(point_stress_tensor(state, c, i, kappa, qc), state[q + kEff]);
+      const Mat3 sigma = vk_ ? stress_tensor(point_stress(state, c, i, kappa, eps_m[c]))
+                             : point_stress_tensor(state, c, i, kappa, qc);
+      const CreepRate rate = law_.rate(sigma, state[q + kEff]);
       Real* out = rates.data() + (q - structural_size());
       out[kXX] = rate.strain_rate(0, 0);
       out[kYY] = rate.strain_rate(1, 1);
@@ -433,6 +525,7 @@ void PlateCreepSystem::residual(Real t, std::span<const Real> y, std::span<const
   structural_residual(t, y, r);
   add_plastic_source(y, r);
   add_membrane_relaxation(t, y, y, r);
+  add_plastic_membrane_force(t, y, y, r);
   std::span<Real> rq = r.subspan(ns);
   creep_rates(t, y, rq);
   for (Index k = 0; k < size() - ns; ++k) rq[k] = yp[ns + k] - rq[k];
@@ -441,12 +534,26 @@ void PlateCreepSystem::residual(Real t, std::span<const Real> y, std::span<const
 void PlateCreepSystem::structural_rows(Real t, std::span<const Real> y,
                                        std::span<Real> values) const {
   std::copy(structural_values_.begin(), structural_values_.end(), values.begin());
-  if (hold_load_) {
+  if (hold_load_ || vk_) {
     // The y columns of the y rows are the structural tangent alone (the sources are in q
-    // columns): overwrite the constant K there with K + the hold load's tangent.
+    // columns): overwrite the constant K there with K + the hold load's tangent (or with the
+    // von Karman plate's tangent at the state).
     std::vector<Real> tangent;
-    structural_tangent(y, tangent);
+    structural_tangent(y, tangent, t);
     for (std::size_t p = 0; p < tangent.size(); ++p) values[tangent_position_[p]] = tangent[p];
+  }
+  if (membrane_) {
+    std::vector<Real> dy;
+    std::vector<Vec3> dp;
+    std::vector<Vec3> p(n_cells_);
+    for (Index c = 0; c < n_cells_; ++c) p[c] = cell_plastic_strain_integral(y, c);
+    membrane_->plastic_force_jacobian(t, y, p, dy, dp);
+    for (std::size_t k = 0; k < dy.size(); ++k) values[membrane_structural_position_[k]] += dy[k];
+    // dF/d eps_p(c, i, j) = w_i dF/dP_c,j.
+    const Index* position = membrane_strain_position_.data();
+    for (const Vec3& d : dp)
+      for (Index i = 0; i < n_points(); ++i)
+        for (int j = 0; j < 3; ++j) values[*position++] += quadrature_.weight[i] * d[j];
   }
   if (membrane_faces_.empty()) return;
   // The relaxed membrane force's face flux F_f = b_f . dN_f, b_f = (g_x S_x, g_y S_y,
@@ -488,6 +595,26 @@ void PlateCreepSystem::jacobian(Real t, Real c_j, std::span<const Real> y, std::
                                 std::span<Real> values) {
   structural_rows(t, y, values);
   const std::vector<Vec3> kappa = curvatures(t, y);
+  if (vk_) {
+    const std::vector<Vec3> eps_m = membrane_->cell_strains(t, y);
+    std::vector<Vec3> d_strain;
+    for (Index c = 0; c < n_cells_; ++c) {
+      membrane_->strain_derivatives(t, y, c, d_strain);
+      for (Index i = 0; i < n_points(); ++i) {
+        const Index q = creep_index(c, i, 0);
+        const PointRateJacobian d = point_rate_jacobian(y, c, i, kappa[c], eps_m[c]);
+        for (int j = 0; j < kPerPoint; ++j) {
+          Real* row = values.data() + pattern_.row_ptr[q + j];
+          for (const MembraneRateColumn& col : membrane_rate_columns_[c])
+            *row++ = col.strain < 0 ? -d.d_kappa.row(j).dot(col.dkappa)
+                                    : -d.d_membrane.row(j).dot(d_strain[col.strain]);
+          for (int l = 0; l < 3; ++l) *row++ = (j == l ? c_j : 0.0) - d.d_eps_p(j, l);
+          *row++ = (j == kEff ? c_j : 0.0) - d.d_eps_eff[j];
+        }
+      }
+    }
+    return;
+  }
   if (shear_creep()) {
     const std::vector<Vec3> q_el = plate_.shear_forces(t, y.first(structural_size()));
     for (Index c = 0; c < n_cells_; ++c)
@@ -513,7 +640,7 @@ void PlateCreepSystem::jacobian(Real t, Real c_j, std::span<const Real> y, std::
     const auto& stencil = curvature_weights_[c];
     for (Index i = 0; i < n_points(); ++i) {
       const Index q = creep_index(c, i, 0);
-      const PointRateJacobian d = point_rate_jacobian(y, c, i, kappa[c]);
+      const PointRateJacobian d = point_rate_jacobian(y, c, i, kappa[c], Vec3::Zero());
       for (int j = 0; j < kPerPoint; ++j) {
         Real* row = values.data() + pattern_.row_ptr[q + j];
         for (const auto& w : stencil) {
@@ -529,21 +656,21 @@ void PlateCreepSystem::jacobian(Real t, Real c_j, std::span<const Real> y, std::
 }
 
 std::vector<Vec3> PlateCreepSystem::curvatures(Real t, std::span<const Real> state) const {
-  const std::vector<Mat3> G = plate_.rotation_gradients(t, state.first(structural_size()));
+  const std::vector<Mat3> G = plate_.rotation_gradients(t, state.first(3 * n_cells_));
   std::vector<Vec3> kappa(n_cells_);
   for (Index c = 0; c < n_cells_; ++c) kappa[c] = curvature(G[c]);
   return kappa;
 }
 
 PlateCreepSystem::PointRateJacobian PlateCreepSystem::point_rate_jacobian(
-    std::span<const Real> state, Index c, Index i, const Vec3& kappa) const {
+    std::span<const Real> state, Index c, Index i, const Vec3& kappa, const Vec3& membrane) const {
   static const Mat3 unit[3] = {stress_tensor(Vec3(1, 0, 0)), stress_tensor(Vec3(0, 1, 0)),
                                stress_tensor(Vec3(0, 0, 1))};
   auto as_vector = [](const CreepRate& r) {
     return Eigen::Vector4d(r.strain_rate(0, 0), r.strain_rate(1, 1), r.strain_rate(0, 1),
                            r.effective_rate);
   };
-  const Mat3 sigma = stress_tensor(point_stress(state, c, i, kappa));
+  const Mat3 sigma = stress_tensor(point_stress(state, c, i, kappa, membrane));
   const Real eps = state[creep_index(c, i, kEff)];
   Mat43 d_sigma;  // d g / d sigma (Voigt)
   for (int d = 0; d < 3; ++d)
@@ -552,6 +679,7 @@ PlateCreepSystem::PointRateJacobian PlateCreepSystem::point_rate_jacobian(
   out.d_eps_p = -d_sigma * C_;
   out.d_eps_eff = as_vector(law_.rate_hardening_derivative(sigma, eps));
   out.d_kappa = quadrature_.z[i] * d_sigma * C_;
+  out.d_membrane = d_sigma * C_;
   return out;
 }
 
@@ -591,9 +719,20 @@ PlateCreepSystem::ShearPointRateJacobian PlateCreepSystem::shear_point_rate_jaco
 }
 
 void PlateCreepSystem::preconditioner_setup(Real t, Real c_j, std::span<const Real> y,
-                                            std::span<const Real>) {
+                                            std::span<const Real> yp) {
+  if (vk_) {
+    if (!block_schur_)
+      block_schur_ = std::make_unique<PointBlockSchurComplement>(
+          pattern_, structural_size(), n_points() * per_point_, per_point_);
+    full_jacobian_.resize(pattern_.nnz());
+    jacobian(t, c_j, y, yp, full_jacobian_);
+    block_schur_->setup(full_jacobian_);
+    return;
+  }
   if (!has_preconditioner())
-    throw std::logic_error("PlateCreepSystem: no preconditioner with shear creep (use KLU)");
+    throw std::logic_error(
+        "PlateCreepSystem: no preconditioner with shear creep or geometric nonlinearity (use "
+        "KLU)");
   if (!schur_) {
     schur_ = std::make_unique<PlateCreepSchurComplement>(*this);
     schur_->set_refactor_tolerance(schur_refactor_tolerance_);
@@ -610,10 +749,15 @@ void PlateCreepSystem::set_schur_refactor_tolerance(Real tolerance) {
 }
 
 long PlateCreepSystem::schur_factorizations() const {
+  if (block_schur_) return block_schur_->factorizations();
   return schur_ ? schur_->factorizations() : 0;
 }
 
 void PlateCreepSystem::preconditioner_solve(std::span<const Real> r, std::span<Real> z) {
+  if (block_schur_) {
+    block_schur_->solve(r, z);
+    return;
+  }
   if (!schur_) throw std::logic_error("PlateCreepSystem: preconditioner_solve before setup");
   schur_->solve(r, z);
 }
@@ -623,12 +767,15 @@ void PlateCreepSystem::equilibrate(Real t, std::span<Real> state) {
   // Without a hold voltage the plate is linear: one Newton step is exact. With one, Newton on
   // the tangent until the update is at round-off of the deflection (quadratic convergence:
   // 3-5 iterations from the previous state); no convergence means no equilibrium (pull-in).
-  const int max_iterations = hold_ ? 50 : 1;
+  // The von Karman plate is nonlinear too (Newton on the y-y block of the Jacobian).
+  const bool nonlinear = hold_ || vk_;
+  const int max_iterations = vk_ ? 100 : hold_ ? 50 : 1;
   for (int iteration = 0; iteration < max_iterations; ++iteration) {
     scratch_.assign(ns, 0.0);
     structural_residual(t, state, scratch_);
     add_plastic_source(state, scratch_);
     add_membrane_relaxation(t, state, state, scratch_);
+    add_plastic_membrane_force(t, state, state, scratch_);
     structural_factors(t, state).solve(scratch_);
     Real update = 0, size = 0;
     for (Index k = 0; k < ns; ++k) {
@@ -636,8 +783,11 @@ void PlateCreepSystem::equilibrate(Real t, std::span<Real> state) {
       update = std::max(update, std::abs(scratch_[k]));
       size = std::max(size, std::abs(state[k]));
     }
-    if (!hold_ || update <= 1e-13 * size) return;
+    if (!nonlinear || update <= 1e-13 * size) return;
   }
+  if (!hold_)
+    throw SolverError(
+        fmt::format("plate creep: no von Karman equilibrium at t = {:.6g} s (Newton)", t));
   throw SolverError(fmt::format(
       "plate creep: no equilibrium under the hold voltage {} V at t = {:.6g} s (pull-in?)",
       hold_->voltage, t));
@@ -662,6 +812,7 @@ void PlateCreepSystem::initial_state(Real t, std::vector<Real>& state,
   scratch_.assign(ns, 0.0);
   add_plastic_source(state_dot, scratch_);
   add_membrane_relaxation(t, state, state_dot, scratch_);
+  add_plastic_membrane_force(t, state, state_dot, scratch_);
   structural_factors(t, state).solve(scratch_);
   for (Index k = 0; k < ns; ++k) state_dot[k] = -scratch_[k];
 }
@@ -671,6 +822,7 @@ void PlateCreepSystem::set_hold_voltage(CreepHoldVoltage hold) {
   tangent_lu_.reset();
   relaxed_block_.reset();
   schur_.reset();
+  block_schur_.reset();
   build_pattern();
 }
 
@@ -692,8 +844,8 @@ bool PlateCreepSystem::install_hold(CreepHoldVoltage hold) {
               "plate creep hold voltage: a gap point of dof {} reads dof {}, not a plate unknown",
               e.dof, term.dof));
   }
-  auto load =
-      std::make_unique<ParallelPlateActuation>(plate_, hold.elements, hold.initial_gap, hold.law);
+  auto load = std::make_unique<ParallelPlateActuation>(structure(), hold.elements, hold.initial_gap,
+                                                       hold.law);
   const Real v2 = hold.voltage * hold.voltage;
   load->set_voltage_squared([v2](Real) { return v2; });
   const CsrPattern& before = structural_pattern();
@@ -714,25 +866,32 @@ void PlateCreepSystem::structural_residual(Real t, std::span<const Real> state, 
   if (hold_load_)
     hold_load_->internal_residual(t, state.first(ns), r.first(ns));
   else
-    plate_.internal_residual(t, state.first(ns), r.first(ns));
+    structure().internal_residual(t, state.first(ns), r.first(ns));
+}
+
+SecondOrderOperator& PlateCreepSystem::structure() {
+  return vk_ ? static_cast<SecondOrderOperator&>(*vk_) : plate_;
 }
 
 const CsrPattern& PlateCreepSystem::structural_pattern() const {
-  return hold_load_ ? hold_load_->stiffness_pattern() : plate_.stiffness_pattern();
+  if (hold_load_) return hold_load_->stiffness_pattern();
+  return vk_ ? vk_->stiffness_pattern() : plate_.stiffness_pattern();
 }
 
-void PlateCreepSystem::structural_tangent(std::span<const Real> state,
-                                          std::vector<Real>& values) const {
-  if (!hold_load_) {
+void PlateCreepSystem::structural_tangent(std::span<const Real> state, std::vector<Real>& values,
+                                          Real t) const {
+  if (!hold_load_ && !vk_) {
     values = plate_stiffness_;
     return;
   }
-  values.resize(hold_load_->stiffness_pattern().nnz());
-  hold_load_->stiffness(0, state.first(structural_size()), values);
+  // The operators' stiffness is non-const (scratch); the system's state is not changed.
+  SecondOrderOperator& op = hold_load_ ? static_cast<SecondOrderOperator&>(*hold_load_) : *vk_;
+  values.resize(op.stiffness_pattern().nnz());
+  op.stiffness(vk_ ? t : 0, state.first(structural_size()), values);
 }
 
 KluFactorization& PlateCreepSystem::structural_factors(Real t, std::span<const Real> state) {
-  if (relaxes_membrane_) {
+  if (relaxes_membrane_ || vk_) {
     jacobian_scratch_.resize(structural_nnz_);
     structural_rows(t, state, jacobian_scratch_);
     return relaxed_block_.factorize(jacobian_scratch_);

@@ -90,6 +90,29 @@
 // constant ones but for the structural tangent K + V^2 A_e a_q p1'(g_q) weight_qk (row w_e, the
 // columns of the reconstruction's stencil, so the y rows' pattern is the actuation's), and
 // equilibrate() becomes a Newton iteration on it.
+//
+// Geometric nonlinearity (the constructor on a VonKarmanPlate, von_karman_plate.hpp): the
+// mid-surface stretches and the plastic strains enter the membrane
+// (physics/creep/von_karman_creep_membrane.hpp). The fibre at height z strains
+//   eps(z) = eps_m + z kappa,   eps_m = sym grad u + 1/2 grad w (x) grad w,
+// the creep law acts on sigma(z) = sigma0 + C (eps_m + z kappa - eps_p(z)), and the membrane
+// force
+//   N = h sigma0 + A : eps_m - C int eps_p dz,   A = h C,
+// enters the in-plane balance div N = 0 (quasi-static, as the creep system neglects all
+// inertia) and the transverse term div(N grad w); the moments M = D kappa - C int z eps_p dz
+// are those above. A residual stress then relaxes through in-plane equilibrium, not the local
+// rule of the linear plate (which is off). State: [w, beta_x, beta_y per cell | u, v per cell
+// (the von Karman plate's numbering) | q], structural_size() = 5 n_cells.
+// Jacobian: exact. The y rows hold the von Karman plate's tangent at the state (or that of the
+// hold load built on it), the constant plastic-moment source, and the plastic membrane force,
+// bilinear in (w, q); the q rows depend on the rotations of the curvature stencil and on the
+// (w, u, v) of the membrane strain's stencil, dg/dy = dg/dsigma C (z dkappa/dy + deps_m/dy).
+// equilibrate() is a Newton iteration on the y-y block of the Jacobian (the structure is
+// nonlinear). Linear solves: the hand-factored Schur complement below covers the plate
+// unknowns only, not u, v; the preconditioner is the Schur complement on (w, beta, u, v)
+// formed numerically from J's entries (physics/creep/point_block_schur_complement.hpp), as
+// exact (8x faster than KLU on the full Jacobian, whose q rows reach ~100 structural columns
+// each and fill in). Not with shear creep.
 #pragma once
 #include <Eigen/Dense>
 #include <memory>
@@ -102,6 +125,7 @@
 #include "physics/creep/creep_system.hpp"
 #include "physics/creep/leading_block_factors.hpp"
 #include "physics/creep/thickness_quadrature.hpp"
+#include "physics/creep/von_karman_creep_membrane.hpp"
 #include "physics/electrostatics/parallel_plate_actuation.hpp"
 #include "physics/plate/plate_operator.hpp"
 #include "solvers/klu_factorization.hpp"
@@ -109,6 +133,7 @@
 namespace rfmems {
 
 class PlateCreepSchurComplement;
+class PointBlockSchurComplement;
 
 class PlateCreepSystem : public CreepSystem {
  public:
@@ -118,18 +143,23 @@ class PlateCreepSystem : public CreepSystem {
   // hold: as set_hold_voltage, at construction (the Jacobian's pattern is built once).
   PlateCreepSystem(PlateOperator& plate, const CreepLaw& law, int thickness_intervals = 20,
                    bool shear_creep = false, std::optional<CreepHoldVoltage> hold = std::nullopt);
+  // With geometric nonlinearity (see above): creep of the von Karman plate (built on its plate
+  // operator; both must outlive the system).
+  PlateCreepSystem(VonKarmanPlate& plate, const CreepLaw& law, int thickness_intervals = 20,
+                   std::optional<CreepHoldVoltage> hold = std::nullopt);
   ~PlateCreepSystem() override;
 
   // Layout.
   Index n_cells() const { return n_cells_; }
   Index n_points() const { return quadrature_.size(); }  // per cell
-  Index structural_size() const override { return 3 * n_cells_; }
+  Index structural_size() const override { return vk_ ? 5 * n_cells_ : 3 * n_cells_; }
+  bool geometric_nonlinearity() const { return vk_ != nullptr; }
   bool shear_creep() const { return per_point_ == 6; }
   int per_point() const { return per_point_; }  // states per point: 4, or 6 with shear creep
   Index creep_index(Index c, Index i, int component) const {
-    return 3 * n_cells_ + per_point_ * (c * n_points() + i) + component;
+    return structural_size() + per_point_ * (c * n_points() + i) + component;
   }
-  Index size() const override { return 3 * n_cells_ + per_point_ * n_cells_ * n_points(); }
+  Index size() const override { return structural_size() + per_point_ * n_cells_ * n_points(); }
 
   std::vector<Real> differential_components() const override;
   void residual(Real t, std::span<const Real> y, std::span<const Real> yp,
@@ -141,7 +171,8 @@ class PlateCreepSystem : public CreepSystem {
   // Preconditioner: the exact Jacobian solve by the Schur complement on the plate unknowns
   // (physics/creep/plate_creep_schur_complement.hpp), so that IDA with SPGMR needs about one
   // Krylov iteration per Newton iteration and no factorisation of the full Jacobian.
-  // Not with shear creep (see above): KLU.
+  // Not with shear creep (see above): KLU. With geometric nonlinearity the Schur complement
+  // formed from J's entries (point_block_schur_complement.hpp).
   bool has_preconditioner() const override { return !shear_creep(); }
   void preconditioner_setup(Real t, Real c_j, std::span<const Real> y,
                             std::span<const Real> yp) override;
@@ -175,10 +206,15 @@ class PlateCreepSystem : public CreepSystem {
   std::vector<Vec3> plastic_shear_forces(std::span<const Real> state) const;
   // In-plane stress (xx, yy, xy) at point i of every cell [Pa], sigma0 included.
   std::vector<Vec3> fibre_stress(Real t, std::span<const Real> state, Index i) const;
-  // True when the section holds an in-plane residual stress, whose relaxation the system models.
+  // True when the section holds an in-plane residual stress whose relaxation the linear plate
+  // models by the local rule (never with geometric nonlinearity).
   bool relaxes_membrane() const { return relaxes_membrane_; }
-  // Membrane force N_c = h sigma0 - C int eps_p dz per cell (N_xx, N_yy, N_xy) [N/m].
-  std::vector<Vec3> membrane_forces(std::span<const Real> state) const;
+  // True when the membrane force is not zero in general: a relaxing residual stress, or the
+  // stretching von Karman plate.
+  bool has_membrane_force() const { return relaxes_membrane_ || vk_ != nullptr; }
+  // Membrane force per cell (N_xx, N_yy, N_xy) [N/m]: N_c = h sigma0 - C int eps_p dz, and
+  // with geometric nonlinearity + A : eps_m,c (the cell's membrane strain at t).
+  std::vector<Vec3> membrane_forces(std::span<const Real> state, Real t = 0) const;
 
   const PlateOperator& plate() const { return plate_; }
   const CreepLaw& law() const { return law_; }
@@ -193,9 +229,12 @@ class PlateCreepSystem : public CreepSystem {
     Mat43 d_eps_p;
     Eigen::Vector4d d_eps_eff;
     Mat43 d_kappa;
+    Mat43 d_membrane;  // dg/d eps_m
   };
   PointRateJacobian point_rate_jacobian(std::span<const Real> state, Index c, Index i,
-                                        const Vec3& kappa) const;
+                                        const Vec3& kappa, const Vec3& membrane) const;
+  // The cells' membrane strains eps_m,c (Voigt; zero without geometric nonlinearity).
+  std::vector<Vec3> membrane_strains(Real t, std::span<const Real> state) const;
   // Curvature of every cell at the state (kappa = sym grad beta at the centroid).
   std::vector<Vec3> curvatures(Real t, std::span<const Real> state) const;
   struct SourceBlock {  // moment rows of cell `row` += B M_p(col)
@@ -245,8 +284,11 @@ class PlateCreepSystem : public CreepSystem {
   bool install_hold(CreepHoldVoltage hold);
   // Plastic moments of one cell from its points (Voigt xx, yy, xy).
   Vec3 cell_plastic_moment(std::span<const Real> state, Index c) const;
-  // sigma = C (z kappa - eps_p) of point (c, i), Voigt.
-  Vec3 point_stress(std::span<const Real> state, Index c, Index i, const Vec3& kappa) const;
+  // sigma = C (z kappa - eps_p) of point (c, i), Voigt; plus sigma0 with a relaxing residual
+  // stress; sigma0 + C (eps_m + z kappa - eps_p) with geometric nonlinearity (membrane: eps_m
+  // of the cell, ignored without).
+  Vec3 point_stress(std::span<const Real> state, Index c, Index i, const Vec3& kappa,
+                    const Vec3& membrane) const;
   static Mat3 stress_tensor(const Vec3& s);
   static Vec3 curvature(const Mat3& G);
   void add_plastic_source(std::span<const Real> state, std::span<Real> r) const;
@@ -256,14 +298,38 @@ class PlateCreepSystem : public CreepSystem {
   // The pattern of dR_y/dy: the plate's stiffness pattern, widened by the hold load's point
   // stencils (the actuation's).
   const CsrPattern& structural_pattern() const;
-  // dR_y/dy in structural_pattern(): K plus the hold load's tangent.
-  void structural_tangent(std::span<const Real> state, std::vector<Real>& values) const;
+  // dR_y/dy in structural_pattern(): K plus the hold load's tangent (with geometric
+  // nonlinearity: the von Karman plate's tangent at (t, state)).
+  void structural_tangent(std::span<const Real> state, std::vector<Real>& values, Real t = 0) const;
+  // The von Karman plate (geometric nonlinearity) or the plate operator.
+  SecondOrderOperator& structure();
+  // r += the plastic membrane force (geometric nonlinearity) with the slopes of slope_state and
+  // the plastic strains of strain_state (linear in them).
+  void add_plastic_membrane_force(Real t, std::span<const Real> slope_state,
+                                  std::span<const Real> strain_state, std::span<Real> r) const;
   // The factorised structural tangent at the state (the plate's own factors without a hold).
   // With the relaxation, the tangent also holds dF_w/dw of the relaxed membrane force (the
   // y-y block of the Jacobian).
   KluFactorization& structural_factors(Real t, std::span<const Real> state);
 
+  PlateCreepSystem(PlateOperator& plate, VonKarmanPlate* von_karman, const CreepLaw& law,
+                   int thickness_intervals, bool shear_creep, std::optional<CreepHoldVoltage> hold);
+
   PlateOperator& plate_;
+  VonKarmanPlate* vk_ = nullptr;  // geometric nonlinearity
+  std::unique_ptr<VonKarmanCreepMembrane> membrane_;
+  // Geometric nonlinearity: per cell, the structural columns of its points' rate rows (sorted):
+  // a rotation of the curvature stencil (dkappa/dy of that unknown) or a (w, u, v) of the
+  // membrane strain's stencil (its index in membrane_->strain_dofs(c)).
+  struct MembraneRateColumn {
+    Index dof;
+    Vec3 dkappa;
+    Index strain;  // -1: a rotation
+  };
+  std::vector<std::vector<MembraneRateColumn>> membrane_rate_columns_;
+  // Value positions of membrane_->structural_entries(), and of strain_entries() expanded to
+  // (point i, strain j) in the order i, j.
+  std::vector<Index> membrane_structural_position_, membrane_strain_position_;
   CreepLaw law_;
   ThicknessQuadrature quadrature_;
   Index n_cells_;
@@ -303,6 +369,8 @@ class PlateCreepSystem : public CreepSystem {
   LeadingBlockFactors relaxed_block_;  // the y-y block of pattern_ (relaxation only)
   std::vector<Real> jacobian_scratch_;
   std::unique_ptr<PlateCreepSchurComplement> schur_;
+  std::unique_ptr<PointBlockSchurComplement> block_schur_;  // geometric nonlinearity
+  std::vector<Real> full_jacobian_;
   Real schur_refactor_tolerance_ = 0.1;
   std::vector<Real> scratch_;
 };

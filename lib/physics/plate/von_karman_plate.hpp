@@ -40,6 +40,7 @@
 #pragma once
 #include <array>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "physics/plate/plate_operator.hpp"
@@ -54,6 +55,7 @@ class VonKarmanPlate : public SecondOrderOperator {
 
   Index size() const override { return 5 * mesh_.n_cells(); }
   const PlateOperator& plate() const { return plate_; }
+  PlateOperator& plate() { return plate_; }
   // The index of cell c's in-plane displacement component i (0: u, 1: v).
   Index in_plane_index(Index c, int i) const { return 3 * mesh_.n_cells() + 2 * c + i; }
 
@@ -68,8 +70,10 @@ class VonKarmanPlate : public SecondOrderOperator {
   // values (N_xx, N_yy, N_xy in a Mat3, 2 x 2 used), for output.
   std::vector<Mat3> membrane_forces(Real t, std::span<const Real> y) const;
 
- private:
-  // grad w_f = sum over [offset_[k], offset_[k+1]) of w times w of `cell` (>= 0) or the
+  // The face gradients, for a model that adds its own membrane force on the same faces (the
+  // plate creep system's plastic membrane force). Membrane face k (0 <= k <
+  // n_membrane_faces()) is mesh face membrane_face(k): the interior faces and the edges held
+  // in-plane. grad w_f = sum over face_weights(k) of w times w of `cell` (>= 0) or the
   // prescribed w at boundary face `face` (cell < 0); grad u_f the same with u (u_b = 0).
   struct GradientWeight {
     Index cell;
@@ -81,8 +85,17 @@ class VonKarmanPlate : public SecondOrderOperator {
     Mat3 gu;  // grad u_f (rows u, v)
     Mat3 N;   // A : eps_f
   };
-  FaceState face_state(Index k, Real t, std::span<const Real> y) const;  // k: into faces_
+  Index n_membrane_faces() const { return static_cast<Index>(faces_.size()); }
+  Index membrane_face(Index k) const { return faces_[k]; }
+  std::span<const GradientWeight> face_weights(Index k) const {
+    return std::span<const GradientWeight>(weights_).subspan(offset_[k],
+                                                             offset_[k + 1] - offset_[k]);
+  }
+  FaceState face_state(Index k, Real t, std::span<const Real> y) const;
+  // The prescribed deflection at boundary face `face` at t (0 on clamped and free edges).
   Real boundary_w(Index face, Real t) const;
+
+ private:
   Mat3 membrane(const Mat3& eps) const;
 
   PlateOperator& plate_;
