@@ -27,6 +27,8 @@
 //       [--rtol 1e-6] [--width-ratio 0.01] [--target 0.01] [--creep-stress xx,yy,zz,xy]
 //       [--plate-meshes "21,3;41,3;81,5"] [--plane-meshes "241,8;481,12;481,16" | none]
 //       [--solid-meshes "nx,nz,nw;..."] [--umfpack-from N] [--quick]
+#include <sys/resource.h>
+
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <array>
@@ -47,17 +49,26 @@ struct Run {
   CreepRunResult result;
 };
 
+// The process's peak resident memory so far (getrusage: KiB on Linux).
+double max_rss_gib() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / (1024.0 * 1024.0);
+}
+
 void print(const Run& r, Real slenderness) {
   std::printf(
       "{\"kind\": \"run\", \"model\": \"%s\", \"slenderness\": %g, \"mesh\": [%d, %d%s], "
       "\"unknowns\": %ld, \"w_elastic\": %.8e, \"w_plastic\": %.8e, \"steps\": %ld, "
       "\"newton_iters\": %ld, \"linear_iters\": %ld, \"linear_setups\": %ld, "
-      "\"umfpack\": %s, \"elastic_s\": %.4f, \"wall_s\": %.4f}\n",
+      "\"umfpack\": %s, \"elastic_s\": %.4f, \"wall_s\": %.4f, \"elastic_cpu_s\": %.4f, "
+      "\"cpu_s\": %.4f, \"max_rss_gib\": %.2f}\n",
       r.model.c_str(), slenderness, r.n1, r.n2,
       r.n3 > 0 ? (", " + std::to_string(r.n3)).c_str() : "", static_cast<long>(r.result.unknowns),
       r.result.w_elastic, r.result.w_plastic, r.result.stats.steps, r.result.stats.newton_iters,
       r.result.stats.linear_iters, r.result.stats.linear_setups,
-      r.result.stats.umfpack ? "true" : "false", r.result.elastic_seconds, r.result.wall_seconds);
+      r.result.stats.umfpack ? "true" : "false", r.result.elastic_seconds, r.result.wall_seconds,
+      r.result.elastic_cpu_seconds, r.result.cpu_seconds, max_rss_gib());
   std::fflush(stdout);
 }
 
@@ -116,7 +127,10 @@ void print_summary(const std::vector<Run>& plate_runs, const std::vector<Run>& r
       "\"w_elastic_plate\": %.8e, \"w_elastic_continuum\": %.8e, \"plate_elastic_error\": %.5f, "
       "\"plate_static_mesh\": [%d, %d], \"plate_static_s\": %.4f, "
       "\"continuum_static_mesh\": [%d, %d, %d], \"continuum_static_s\": %.4f, "
-      "\"static_ratio\": %.2f}\n",
+      "\"static_ratio\": %.2f, \"plate_cpu_s\": %.4f, \"continuum_cpu_s\": %.4f, \"cpu_ratio\": "
+      "%.2f, "
+      "\"plate_static_cpu_s\": %.4f, \"continuum_static_cpu_s\": %.4f, \"static_cpu_ratio\": "
+      "%.2f}\n",
       runs.back().model.c_str(), problem.slenderness, problem.load, law.c_str(), hours, width_ratio,
       creep_stress.c_str(), target, wp_plate, wp, 1 - wp_plate / wp, plate.n1, plate.n2,
       plate.result.wall_seconds, continuum.n1, continuum.n2, continuum.n3,
@@ -124,7 +138,11 @@ void print_summary(const std::vector<Run>& plate_runs, const std::vector<Run>& r
       we_plate, we, 1 - we_plate / we, plate_static.n1, plate_static.n2,
       plate_static.result.elastic_seconds, continuum_static.n1, continuum_static.n2,
       continuum_static.n3, continuum_static.result.elastic_seconds,
-      continuum_static.result.elastic_seconds / plate_static.result.elastic_seconds);
+      continuum_static.result.elastic_seconds / plate_static.result.elastic_seconds,
+      plate.result.cpu_seconds, continuum.result.cpu_seconds,
+      continuum.result.cpu_seconds / plate.result.cpu_seconds,
+      plate_static.result.elastic_cpu_seconds, continuum_static.result.elastic_cpu_seconds,
+      continuum_static.result.elastic_cpu_seconds / plate_static.result.elastic_cpu_seconds);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "physics/creep/continuum_plate_comparison.hpp"
 
 #include <chrono>
+#include <ctime>
 
 #include "mesh/structured_mesh.hpp"
 #include "physics/creep/continuum_creep_system.hpp"
@@ -24,12 +25,13 @@ Index nearest_cell(const Mesh& mesh, const Vec3& x) {
 // Runs IDA from the system's initial state; deflection(state) is the centre deflection.
 template <class System, class Deflection>
 CreepRunResult integrate(System& system, const IdaOptions& options, Real end_time,
-                         Clock::time_point start, Deflection&& deflection) {
+                         Clock::time_point start, double cpu_start, Deflection&& deflection) {
   CreepRunResult r;
   std::vector<Real> y, yp;
   system.initial_state(0, y, yp);
   r.w_elastic = deflection(std::span<const Real>(y));
   r.elastic_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  r.elastic_cpu_seconds = std::clock() / static_cast<double>(CLOCKS_PER_SEC) - cpu_start;
   IdaIntegrator ida(system, options);
   ida.initialize(0, y, yp);
   ida.advance(end_time);
@@ -37,6 +39,7 @@ CreepRunResult integrate(System& system, const IdaOptions& options, Real end_tim
   r.unknowns = system.size();
   r.stats = ida.stats();
   r.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  r.cpu_seconds = std::clock() / static_cast<double>(CLOCKS_PER_SEC) - cpu_start;
   return r;
 }
 
@@ -73,17 +76,19 @@ std::unique_ptr<FixedFixedCreepPlate> make_fixed_fixed_creep_plate(
 CreepRunResult run_plate_creep(const FixedFixedCreepProblem& problem, int nx, int ny,
                                int thickness_intervals, const IdaOptions& options, Real end_time) {
   const auto start = Clock::now();
+  const double cpu_start = std::clock() / static_cast<double>(CLOCKS_PER_SEC);
   const auto plate = make_fixed_fixed_creep_plate(problem, nx, ny, thickness_intervals);
   const Index centre = plate->centre;
   IdaOptions o = options;
   if (problem.plate_shear_creep) o.linear_solver = IdaOptions::LinearSolver::Direct;  // no Schur
-  return integrate(*plate->system, o, end_time, start,
+  return integrate(*plate->system, o, end_time, start, cpu_start,
                    [centre](std::span<const Real> y) { return y[3 * centre]; });
 }
 
 CreepRunResult run_continuum_creep(const FixedFixedCreepProblem& problem, int nx, int nz,
                                    const IdaOptions& options, Real end_time, int width_cells) {
   const auto start = Clock::now();
+  const double cpu_start = std::clock() / static_cast<double>(CLOCKS_PER_SEC);
   const bool three_d = width_cells > 0;
   BoxSpec spec;
   spec.dim = three_d ? 3 : 2;
@@ -107,7 +112,7 @@ CreepRunResult run_continuum_creep(const FixedFixedCreepProblem& problem, int nx
   system.set_creep_stress_mask(problem.continuum_creep_stress);
   const Vec3 centre(problem.length / 2, problem.thickness() / 2, three_d ? problem.width / 2 : 0);
   const Index cell = nearest_cell(mesh, centre);
-  return integrate(system, options, end_time, start, [&](std::span<const Real> y) {
+  return integrate(system, options, end_time, start, cpu_start, [&](std::span<const Real> y) {
     const auto G = op.cell_gradients(0, y.first(system.structural_size()));
     return op.displacement_at(cell, centre, y.first(system.structural_size()), G).y();
   });

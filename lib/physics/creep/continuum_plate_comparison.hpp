@@ -58,6 +58,7 @@ struct CreepRunResult {
   IntegratorStats stats;
   double wall_seconds = 0;     // set-up, initial state and integration
   double elastic_seconds = 0;  // set-up and the initial (elastic, static) state
+  double cpu_seconds = 0, elastic_cpu_seconds = 0;  // the same in the process's CPU time
 };
 
 // The plate model of the problem, for runs that drive its creep system themselves (the
