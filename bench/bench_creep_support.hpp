@@ -78,7 +78,8 @@ inline CreepRun run_creep_implicit(CreepPlate& p, Real rtol, bool schur, Real en
   IdaOptions options;
   options.rtol = rtol;
   options.atol = 1e-5 * rtol;
-  options.linear_solver = schur ? IdaOptions::LinearSolver::Spgmr : IdaOptions::LinearSolver::Direct;
+  options.linear_solver =
+      schur ? IdaOptions::LinearSolver::Spgmr : IdaOptions::LinearSolver::Direct;
   options.krylov_dimension = 10;
   IdaIntegrator ida(*p.system, options);
   ida.initialize(0, y, yp);

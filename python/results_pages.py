@@ -644,41 +644,74 @@ def scale_ranks():
 
 
 def creep_plate_vs_3d():
-    """bench_creep_plate_vs_continuum --solid-meshes: the fixed-fixed strip's creep in the plate
-    and in the 3D continuum, each model's runs with their mesh error against its finest mesh
-    (elastic and creep deflection), then the ratios at equal accuracy from the summary line."""
+    """bench_creep_plate_vs_continuum --solid-meshes (two processes, each with its header line):
+    the fixed-fixed strip's creep in the plate and in the 3D continuum. Each run's mesh error
+    against its model's finest mesh (elastic and 500 h creep deflection); the elastic deflection
+    against the Timoshenko beam; the 3D creep deflection's last changes along the span and
+    through the thickness; then the ratios at equal accuracy from the summary line of the
+    process that ran the finest 3D mesh."""
     lines = read_jsonl(DATA / "creep_plate_vs_3d.jsonl")
-    header = next(x for x in lines if x.get("kind") == "header")
-    runs = [x for x in lines if x.get("kind") == "run"]
+    headers = [x for x in lines if x.get("kind") == "header"]
+    plate = [x for x in lines if x.get("kind") == "run" and x["model"] == "plate"]
+    plate = plate[:len(plate) // len(headers)]  # every process ran the same plate meshes
+    solid = sorted((x for x in lines if x.get("kind") == "run" and x["model"] == "3d"),
+                   key=lambda x: (x["mesh"][0], x["mesh"][1], x["mesh"][2]))
     rows = [["model", "mesh", "unknowns", "linear solver", "IDA steps", "factorisations",
              "w elastic [m]", "mesh error", "w creep, 500 h [m]", "mesh error",
-             "static solve [s]", "whole run [s]"]]
-    for model in ("plate", "3d"):
-        of = [x for x in runs if x["model"] == model]
-        finest = of[-1]
-        for x in of:
+             "static solve CPU [s]", "whole run CPU [s]", "peak memory [GiB]"]]
+    for model, runs in (("plate", plate), ("3D", solid)):
+        finest = max(runs, key=lambda x: x["unknowns"])
+        for x in runs:
             ref = "ref." if x is finest else None
-            rows.append([model if model == "plate" else "3D", " x ".join(str(n) for n in x["mesh"]),
-                         f"{x['unknowns']:,}",
+            rows.append([model, " x ".join(str(n) for n in x["mesh"]), f"{x['unknowns']:,}",
                          "Schur + GMRES" if model == "plate" else ("UMFPACK" if x["umfpack"] else "KLU"),
-                         str(x["steps"]), str(x["linear_setups"]),
-                         f"{x['w_elastic']:.4e}",
+                         str(x["steps"]), str(x["linear_setups"]), f"{x['w_elastic']:.4e}",
                          ref or f"{100 * (x['w_elastic'] / finest['w_elastic'] - 1):+.2f} %",
                          f"{x['w_plastic']:.4e}",
                          ref or f"{100 * (x['w_plastic'] / finest['w_plastic'] - 1):+.2f} %",
-                         f"{x['elastic_s']:.3f}", f"{x['wall_s']:.2f}"])
-    m = next(x for x in lines if x.get("kind") == "summary" and x["model"] == "3d")
+                         f"{x['elastic_cpu_s']:.3f}", f"{x['cpu_s']:.2f}", f"{x['max_rss_gib']:.2f}"])
+
+    def change(a, b, key):
+        """Relative change of key from run a to run b, in %."""
+        return 100 * (b[key] / a[key] - 1)
+
+    def run(nx, nz):
+        return next(x for x in solid if x["mesh"][0] == nx and x["mesh"][1] == nz)
+
+    # The elastic deflection against the clamped-clamped Timoshenko beam: q L^4 / (32 E h^3)
+    # (Euler-Bernoulli, 12 q L^4 / (384 E h^3) per unit width) plus the shear part
+    # q L^2 / (8 k G h), k = 5/6, G = E / (2 (1 + nu)); E = 200 GPa, nu = 0.3, L = 240 um (the
+    # bench's FixedFixedCreepProblem).
+    summary = next(x for x in lines if x.get("kind") == "summary")
+    E, nu, L = 200e9, 0.3, 240e-6
+    q, h = summary["load"], L / summary["slenderness"]
+    timoshenko = -(q * L ** 4 / (32 * E * h ** 3) + q * L ** 2 / (8 * 5 / 6 * E / (2 * (1 + nu)) * h))
+    finest = max(solid, key=lambda x: x["unknowns"])
+    nx, nz = finest["mesh"][0], finest["mesh"][1]
+    notes = (f"Timoshenko beam: elastic w = {timoshenko:.4e} m; the finest 3D mesh "
+             f"{100 * (finest['w_elastic'] / timoshenko - 1):+.2f} % from it, the finest plate "
+             f"{100 * (plate[-1]['w_elastic'] / timoshenko - 1):+.2f} %. The 3D creep deflection "
+             f"changes {change(run(nx // 2 + 1, 12), run(nx, 12), 'w_plastic'):+.2f} % from "
+             f"nx = {nx // 2 + 1} to {nx} (nz = 12) and "
+             f"{change(run(nx, 12), run(nx, nz), 'w_plastic'):+.2f} % from nz = 12 to {nz} "
+             f"(nx = {nx}); plate error against the finest 3D mesh 1 - w_plate / w_3D = "
+             f"{100 * (1 - plate[-1]['w_plastic'] / finest['w_plastic']):+.2f} % (creep), "
+             f"{100 * (1 - plate[-1]['w_elastic'] / finest['w_elastic']):+.2f} % (elastic).")
+    finest = max(solid, key=lambda x: x["unknowns"])
+    m = next(x for x in lines if x.get("kind") == "summary" and x["model"] == "3d"
+             and x["continuum_mesh"][:2] == finest["mesh"][:2])
     mesh = lambda v: " x ".join(str(n) for n in v if n)
+    commands = "; ".join(f"`{h['command']}` (commit {h['commit']}, load average "
+                         f"{h['load_average']})" for h in headers)
     return (markdown(rows) +
-            f"\nAt {100 * m['target']:g} % of each model's finest mesh: creep, plate "
-            f"{mesh(m['plate_mesh'])} in {m['plate_wall_s']:.2f} s against 3D "
-            f"{mesh(m['continuum_mesh'])} in {m['continuum_wall_s']:.1f} s, **{m['wall_ratio']:.0f}x**; "
-            f"static deflection, plate {mesh(m['plate_static_mesh'])} in {m['plate_static_s']:.4f} s "
-            f"against 3D {mesh(m['continuum_static_mesh'])} in {m['continuum_static_s']:.2f} s, "
-            f"**{m['static_ratio']:.0f}x**. Plate against 3D (finest meshes): elastic "
-            f"{100 * m['plate_elastic_error']:+.2f} %, creep {100 * m['plate_error']:+.2f} % "
-            f"(1 - w_plate / w_3D).\n\nCommand: `{header['command']}` (commit {header['commit']}, "
-            f"load average {header['load_average']}), {header['date']}.\n")
+            f"\n{notes}\n\n"
+            f"Ratios in one process, each model at {100 * m['target']:g} % of its finest mesh: "
+            f"creep, plate {mesh(m['plate_mesh'])} in {m['plate_cpu_s']:.2f} s CPU against 3D "
+            f"{mesh(m['continuum_mesh'])} in {m['continuum_cpu_s']:.0f} s, **{m['cpu_ratio']:.0f}x** "
+            f"(wall {m['wall_ratio']:.0f}x); static deflection, plate {mesh(m['plate_static_mesh'])} "
+            f"in {m['plate_static_cpu_s']:.4f} s against 3D {mesh(m['continuum_static_mesh'])} in "
+            f"{m['continuum_static_cpu_s']:.1f} s, **{m['static_cpu_ratio']:.0f}x**.\n\n"
+            f"Commands: {commands}, {headers[0]['date']}.\n")
 
 
 TABLES = {

@@ -113,8 +113,9 @@ SegmentEnd implicit_segment(const CreepRunModel& model, const CreepRunSettings& 
   // Start where the previous segment's steps had grown to (IDA cuts it if the error test
   // fails): saves most of the restart's ramp-up from a tiny first step.
   options.initial_step = s.segment_initial_step_from_previous ? r.last_step : 0;
-  options.linear_solver = s.krylov && system.has_preconditioner() ? IdaOptions::LinearSolver::Spgmr
-                                                                  : IdaOptions::LinearSolver::Direct;
+  options.linear_solver = s.krylov && system.has_preconditioner()
+                              ? IdaOptions::LinearSolver::Spgmr
+                              : IdaOptions::LinearSolver::Direct;
   IdaIntegrator ida(system, options);
   std::vector<int> root_kind;  // which End each root is
   if (s.gap_threshold_event) root_kind.push_back(static_cast<int>(End::GapThreshold));

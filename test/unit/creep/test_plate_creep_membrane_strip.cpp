@@ -106,7 +106,7 @@ Offsets run_strip(Real sags) {
   IdaOptions options;
   options.rtol = 1e-7;
   options.atol = 1e-14;
-  options.linear_solver = IdaOptions::LinearSolver::Klu;
+  options.linear_solver = IdaOptions::LinearSolver::Direct;
   IdaIntegrator ida(system, options);
   ida.initialize(0, y, yp);
 
