@@ -24,7 +24,7 @@
 //
 // Output: one JSON object per line on stdout (each run, then a summary); progress on stderr.
 //   bench_creep_plate_vs_continuum [--slenderness 60] [--load 6e4] [--hours 500] [--law table41]
-//       [--rtol 1e-6] [--width-ratio 0.01] [--target 0.01] [--creep-stress xx,yy,zz,xy]
+//       [--rtol 1e-6] [--width-ratio 0.01] [--target 0.01] [--creep-stress xx,yy,zz,xy,yz,xz]
 //       [--plate-meshes "21,3;41,3;81,5"] [--plane-meshes "241,8;481,12;481,16" | none]
 //       [--solid-meshes "nx,nz,nw;..."] [--umfpack-from N] [--quick]
 #include <sys/resource.h>

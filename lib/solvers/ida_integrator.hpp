@@ -26,8 +26,8 @@ struct IdaOptions {
   // Higher than KINSOL's kUmfpackFrom: IDA solves many times per factorisation, and KLU's
   // solves on AMD's ordering are the cheaper ones below this size. Measured on creep runs
   // (bench_creep_plate_vs_continuum): plane stress 481 x 12 (34,632 unknowns) KLU 16.5 s against
-  // UMFPACK 21.4 s; 3D 121 x 8 x 3 (29,040) equal, 30 s; 3D 241 x 8 x 4 (77,120) UMFPACK 171 s
-  // for 1 h of creep, KLU stopped after 10 minutes.
+  // UMFPACK 21.4 s; 3D 121 x 8 x 3 (29,040) equal, 30 s; 3D 241 x 8 x 4 (77,120) UMFPACK
+  // 171 s for 1 h of creep, where KLU had not finished 500 h after 10 minutes at 1.4 GB.
   Index umfpack_from = 50000;
   int krylov_dimension = 30;
   // IDA's eps_lin (IDASetEpsLin): a Krylov solve stops at ||P^-1 r||_WRMS <= factor x the
