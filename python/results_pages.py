@@ -697,7 +697,6 @@ def creep_plate_vs_3d():
              f"(nx = {nx}); plate error against the finest 3D mesh 1 - w_plate / w_3D = "
              f"{100 * (1 - plate[-1]['w_plastic'] / finest['w_plastic']):+.2f} % (creep), "
              f"{100 * (1 - plate[-1]['w_elastic'] / finest['w_elastic']):+.2f} % (elastic).")
-    finest = max(solid, key=lambda x: x["unknowns"])
     m = next(x for x in lines if x.get("kind") == "summary" and x["model"] == "3d"
              and x["continuum_mesh"][:2] == finest["mesh"][:2])
     mesh = lambda v: " x ".join(str(n) for n in v if n)

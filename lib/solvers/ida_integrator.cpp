@@ -60,12 +60,13 @@ IdaIntegrator::IdaIntegrator(SystemOperator& op, const IdaOptions& options)
   yp_ = sundials::make_serial_vector(n, ctx_.get());
   if (options_.linear_solver == IdaOptions::LinearSolver::Direct) {
     jac_ = sundials::make_csr_matrix(op_.jacobian_pattern(), ctx_.get());
-    solver_ = n >= options_.umfpack_from
-                  ? sundials::make_sparse_direct_solver(
-                        ctx_.get(), KluOrdering::Amd,
-                        direct_counts_ = std::make_shared<sundials::DirectCounts>(),
-                        options_.umfpack_from, /*refinement_steps=*/0)
-                  : sundials::make_klu_solver(y_.get(), jac_.get(), ctx_.get());
+    if (n >= options_.umfpack_from) {
+      direct_counts_ = std::make_shared<sundials::DirectCounts>();
+      solver_ = sundials::make_sparse_direct_solver(ctx_.get(), KluOrdering::Amd, direct_counts_,
+                                                    options_.umfpack_from, /*refinement_steps=*/0);
+    } else {
+      solver_ = sundials::make_klu_solver(y_.get(), jac_.get(), ctx_.get());
+    }
   } else {
     solver_ = sundials::LinearSolver(
         SUNLinSol_SPGMR(y_.get(), SUN_PREC_LEFT, options_.krylov_dimension, ctx_.get()));

@@ -12,6 +12,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// The process's CPU time [s].
+double cpu_now() { return std::clock() / static_cast<double>(CLOCKS_PER_SEC); }
+
 Index nearest_cell(const Mesh& mesh, const Vec3& x) {
   Index best = 0;
   Real distance = 1e300;
@@ -31,7 +34,7 @@ CreepRunResult integrate(System& system, const IdaOptions& options, Real end_tim
   system.initial_state(0, y, yp);
   r.w_elastic = deflection(std::span<const Real>(y));
   r.elastic_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  r.elastic_cpu_seconds = std::clock() / static_cast<double>(CLOCKS_PER_SEC) - cpu_start;
+  r.elastic_cpu_seconds = cpu_now() - cpu_start;
   IdaIntegrator ida(system, options);
   ida.initialize(0, y, yp);
   ida.advance(end_time);
@@ -39,7 +42,7 @@ CreepRunResult integrate(System& system, const IdaOptions& options, Real end_tim
   r.unknowns = system.size();
   r.stats = ida.stats();
   r.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  r.cpu_seconds = std::clock() / static_cast<double>(CLOCKS_PER_SEC) - cpu_start;
+  r.cpu_seconds = cpu_now() - cpu_start;
   return r;
 }
 
@@ -76,7 +79,7 @@ std::unique_ptr<FixedFixedCreepPlate> make_fixed_fixed_creep_plate(
 CreepRunResult run_plate_creep(const FixedFixedCreepProblem& problem, int nx, int ny,
                                int thickness_intervals, const IdaOptions& options, Real end_time) {
   const auto start = Clock::now();
-  const double cpu_start = std::clock() / static_cast<double>(CLOCKS_PER_SEC);
+  const double cpu_start = cpu_now();
   const auto plate = make_fixed_fixed_creep_plate(problem, nx, ny, thickness_intervals);
   const Index centre = plate->centre;
   IdaOptions o = options;
@@ -88,7 +91,7 @@ CreepRunResult run_plate_creep(const FixedFixedCreepProblem& problem, int nx, in
 CreepRunResult run_continuum_creep(const FixedFixedCreepProblem& problem, int nx, int nz,
                                    const IdaOptions& options, Real end_time, int width_cells) {
   const auto start = Clock::now();
-  const double cpu_start = std::clock() / static_cast<double>(CLOCKS_PER_SEC);
+  const double cpu_start = cpu_now();
   const bool three_d = width_cells > 0;
   BoxSpec spec;
   spec.dim = three_d ? 3 : 2;

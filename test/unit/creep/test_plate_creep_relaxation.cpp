@@ -20,6 +20,7 @@
 #include "../../support/distorted_plate.hpp"
 #include "../../support/jacobian_check.hpp"
 #include "../../support/plate_creep_state.hpp"
+#include "../../support/relaxing_film.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/creep/plate_creep_system.hpp"
 #include "solvers/ida_integrator.hpp"
@@ -30,31 +31,6 @@ using namespace rfmems::test;
 using Kind = PlateBoundary::Kind;
 
 namespace {
-
-// A film of polysilicon-like stiffness, 1 um thick.
-PlateSection film(Real thickness, Real sigma0) {
-  PlateSection s;
-  s.E = 160e9;
-  s.nu = 0.28;
-  s.rho = 2330;
-  s.thickness = thickness;
-  s.residual_stress = Mat3::Zero();
-  s.residual_stress(0, 0) = s.residual_stress(1, 1) = sigma0;
-  return s;
-}
-
-// Equibiaxial plane stress relaxing by creep (B = 0): sigma_eff = sigma, the flow rule gives
-// eps_p,xx' = eps_p,yy' = eps_eff'/2 and sigma = sigma0 - E/(1-nu) eps_p,xx, so
-//   d sigma/dt = -E/(2 (1-nu)) A (sigma/sigma_y)^m,
-//   m = 1: sigma = sigma0 exp(-E A t / (2 (1-nu) sigma_y)),
-//   m > 1: sigma^(1-m) = sigma0^(1-m) + (m-1) E A t / (2 (1-nu) sigma_y^m).
-Real equibiaxial_relaxation(const CreepLaw& law, Real E, Real nu, Real sigma0, Real t) {
-  const Real rate = E * law.A / (2 * (1 - nu));
-  if (law.m == 1) return sigma0 * std::exp(-rate * t / law.sigma_y0);
-  return std::pow(
-      std::pow(sigma0, 1 - law.m) + (law.m - 1) * rate * t / std::pow(law.sigma_y0, law.m),
-      1 / (1 - law.m));
-}
 
 // The static sag (-w) at the centre cell of a plate of this section under pressure q.
 Real static_centre_deflection(const Mesh& mesh, const PlateSection& section, Real q, Index centre) {
@@ -83,7 +59,7 @@ Index nearest_cell(const Mesh& mesh, const Vec3& x) {
 TEST(PlateCreepRelaxation, UniformFilmRelaxesAsTheEquibiaxialClosedForm) {
   const Real h = 1e-6, sigma0 = 100e6;
   const Mesh mesh = rectangle(100e-6, 80e-6, 5, 4);
-  const PlateSection section = film(h, sigma0);
+  const PlateSection section = relaxing_film(h, sigma0);
   using Solver = IdaOptions::LinearSolver;
   for (auto [m, solver] : {std::pair{1.0, Solver::Direct}, std::pair{3.0, Solver::Direct},
                            std::pair{1.0, Solver::Spgmr}, std::pair{3.0, Solver::Spgmr}}) {
@@ -139,7 +115,7 @@ TEST(PlateCreepRelaxation, ClampedStripSagsAsItsTensionRelaxes) {
   const Real h = 0.2e-6, sigma0 = 100e6, q = -100;
   const Mesh mesh = rectangle(400e-6, 100e-6, 24, 8);
   const Index centre = nearest_cell(mesh, Vec3(200e-6, 50e-6, 0));
-  const PlateSection section = film(h, sigma0);
+  const PlateSection section = relaxing_film(h, sigma0);
   PlateOperator plate(mesh, section, all_clamped(mesh), [q](const Vec3&, Real) { return q; });
   const CreepLaw law{1e-6, 0, 1, 0, 100e6};
   const Real tau = 2 * (1 - section.nu) * law.sigma_y0 / (section.E * law.A);  // 900 s
@@ -166,7 +142,7 @@ TEST(PlateCreepRelaxation, ClampedStripSagsAsItsTensionRelaxes) {
       const Real sigma = equibiaxial_relaxation(law, section.E, section.nu, sigma0, t);
       for (const Vec3& n : system.membrane_forces(state))
         EXPECT_NEAR(n[0] / h, sigma, 1e-5 * sigma);
-      PlateSection relaxed = film(h, sigma), membrane = film(h, sigma);
+      PlateSection relaxed = relaxing_film(h, sigma), membrane = relaxing_film(h, sigma);
       membrane.E *= 1e-4;
       const Real w = -state[3 * centre],
                  w_static = static_centre_deflection(mesh, relaxed, q, centre),

@@ -25,6 +25,7 @@
 #include "../../support/clamped_rectangle.hpp"
 #include "../../support/distorted_plate.hpp"
 #include "../../support/jacobian_check.hpp"
+#include "../../support/relaxing_film.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "physics/creep/plate_creep_system.hpp"
 #include "physics/plate/plate_scene.hpp"
@@ -324,35 +325,6 @@ TEST(PlateCreepVonKarman, InitialStateIsConsistent) {
   EXPECT_GT(r1 / r2, 3.5);  // second order: 4
 }
 
-namespace {
-
-// A film of polysilicon-like stiffness.
-PlateSection film(Real thickness, Real sigma0) {
-  PlateSection s;
-  s.E = 160e9;
-  s.nu = 0.28;
-  s.rho = 2330;
-  s.thickness = thickness;
-  s.residual_stress = Mat3::Zero();
-  s.residual_stress(0, 0) = s.residual_stress(1, 1) = sigma0;
-  return s;
-}
-
-// Equibiaxial plane stress relaxing by creep (B = 0): sigma_eff = sigma, the flow rule gives
-// eps_p,xx' = eps_p,yy' = eps_eff'/2 and sigma = sigma0 - E/(1-nu) eps_p,xx, so
-//   d sigma/dt = -E/(2 (1-nu)) A (sigma/sigma_y)^m,
-//   m = 1: sigma = sigma0 exp(-E A t / (2 (1-nu) sigma_y)),
-//   m > 1: sigma^(1-m) = sigma0^(1-m) + (m-1) E A t / (2 (1-nu) sigma_y^m).
-Real equibiaxial_relaxation(const CreepLaw& law, Real E, Real nu, Real sigma0, Real t) {
-  const Real rate = E * law.A / (2 * (1 - nu));
-  if (law.m == 1) return sigma0 * std::exp(-rate * t / law.sigma_y0);
-  return std::pow(
-      std::pow(sigma0, 1 - law.m) + (law.m - 1) * rate * t / std::pow(law.sigma_y0, law.m),
-      1 / (1 - law.m));
-}
-
-}  // namespace
-
 // Clamped and held in-plane all round, no load, sigma0 = 100 MPa equibiaxial: the plate stays
 // flat, the uniform relaxation needs no in-plane displacement (div N = 0 with N uniform), and
 // every cell's membrane force N = h sigma0 - C int eps_p dz relaxes by the closed form, for a
@@ -361,7 +333,7 @@ Real equibiaxial_relaxation(const CreepLaw& law, Real E, Real nu, Real sigma0, R
 TEST(PlateCreepVonKarman, UniformFilmRelaxesAsTheEquibiaxialClosedForm) {
   const Real h = 1e-6, sigma0 = 100e6;
   const Mesh mesh = rectangle(100e-6, 80e-6, 5, 4);
-  const PlateSection section = film(h, sigma0);
+  const PlateSection section = relaxing_film(h, sigma0);
   using Solver = IdaOptions::LinearSolver;
   for (auto [m, solver] : {std::pair{1.0, Solver::Direct}, std::pair{3.0, Solver::Direct},
                            std::pair{1.0, Solver::Spgmr}, std::pair{3.0, Solver::Spgmr}}) {
@@ -418,7 +390,7 @@ TEST(PlateCreepVonKarman, SmallLoadEqualsTheLinearPlateToSecondOrderInTheDeflect
   const Real h = 2e-6;
   const Mesh mesh = rectangle(200e-6, 100e-6, 12, 6);
   const Index centre = nearest_cell(mesh, Vec3(100e-6, 50e-6, 0));
-  const PlateSection section = film(h, 0);
+  const PlateSection section = relaxing_film(h, 0);
   const CreepLaw law{1e-6, 0, 1, 0, 100e6};
   const std::vector<Real> times{0.0, 900.0, 2700.0};
   auto run = [&](Real q, bool geometric) {
