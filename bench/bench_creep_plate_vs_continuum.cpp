@@ -26,7 +26,7 @@
 //   bench_creep_plate_vs_continuum [--slenderness 60] [--load 6e4] [--hours 500] [--law table41]
 //       [--rtol 1e-6] [--width-ratio 0.01] [--target 0.01] [--creep-stress xx,yy,zz,xy,yz,xz]
 //       [--plate-meshes "21,3;41,3;81,5"] [--plane-meshes "241,8;481,12;481,16" | none]
-//       [--solid-meshes "nx,nz,nw;..."] [--umfpack-from N] [--quick]
+//       [--solid-meshes "nx,nz,nw;..."] [--umfpack-from N] [--half-length] [--quick]
 #include <sys/resource.h>
 
 #include <CLI/CLI.hpp>
@@ -47,6 +47,7 @@ struct Run {
   std::string model;
   int n1, n2, n3;  // n3: cells across the width (3D), 0 for the plate and the section
   CreepRunResult result;
+  bool half_length = false;  // a continuum on x <= L/2: n1 counts the half's cells
 };
 
 // The process's peak resident memory so far (getrusage: KiB on Linux).
@@ -62,13 +63,14 @@ void print(const Run& r, Real slenderness) {
       "\"unknowns\": %ld, \"w_elastic\": %.8e, \"w_plastic\": %.8e, \"steps\": %ld, "
       "\"newton_iters\": %ld, \"linear_iters\": %ld, \"linear_setups\": %ld, "
       "\"umfpack\": %s, \"elastic_s\": %.4f, \"wall_s\": %.4f, \"elastic_cpu_s\": %.4f, "
-      "\"cpu_s\": %.4f, \"max_rss_gib\": %.2f}\n",
+      "\"cpu_s\": %.4f, \"max_rss_gib\": %.2f%s}\n",
       r.model.c_str(), slenderness, r.n1, r.n2,
       r.n3 > 0 ? (", " + std::to_string(r.n3)).c_str() : "", static_cast<long>(r.result.unknowns),
       r.result.w_elastic, r.result.w_plastic, r.result.stats.steps, r.result.stats.newton_iters,
       r.result.stats.linear_iters, r.result.stats.linear_setups,
       r.result.stats.umfpack ? "true" : "false", r.result.elastic_seconds, r.result.wall_seconds,
-      r.result.elastic_cpu_seconds, r.result.cpu_seconds, max_rss_gib());
+      r.result.elastic_cpu_seconds, r.result.cpu_seconds, max_rss_gib(),
+      r.half_length ? ", \"half_length\": true" : "");
   std::fflush(stdout);
 }
 
@@ -179,6 +181,9 @@ int main(int argc, char** argv) {
   app.add_option("--creep-stress", creep_stress,
                  "stress components the continuum's creep law sees (xx,zz: the plate's "
                  "bending-only assumption; default all)");
+  app.add_flag("--half-length", problem.continuum_half_length,
+               "continuum models on x <= L/2, a symmetry plane at the centre (nx: the half's "
+               "cells)");
   app.add_flag("--quick", quick, "two coarse meshes per model (a smoke run)");
   CLI11_PARSE(app, argc, argv);
   if (law == "coble") problem.law = CreepLaw{2.08e-10, 20, 1, 0.5, 0.7e9};
@@ -223,14 +228,15 @@ int main(int argc, char** argv) {
   }
   for (auto [nx, nz, unused] : plane_meshes) {
     std::fprintf(stderr, "plane stress %d x %d ...\n", nx, nz);
-    plane_runs.push_back(
-        {"plane_stress", nx, nz, 0, run_continuum_creep(problem, nx, nz, options, end)});
+    plane_runs.push_back({"plane_stress", nx, nz, 0,
+                          run_continuum_creep(problem, nx, nz, options, end),
+                          problem.continuum_half_length});
     print(plane_runs.back(), problem.slenderness);
   }
   for (auto [nx, nz, nw] : solid_meshes) {
     std::fprintf(stderr, "3D %d x %d x %d ...\n", nx, nz, nw);
-    solid_runs.push_back(
-        {"3d", nx, nz, nw, run_continuum_creep(problem, nx, nz, options, end, nw)});
+    solid_runs.push_back({"3d", nx, nz, nw, run_continuum_creep(problem, nx, nz, options, end, nw),
+                          problem.continuum_half_length});
     print(solid_runs.back(), problem.slenderness);
   }
   for (const auto* runs : {&plane_runs, &solid_runs})

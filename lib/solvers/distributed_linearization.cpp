@@ -1,6 +1,7 @@
 #include "solvers/distributed_linearization.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/error.hpp"
 
@@ -166,6 +167,20 @@ void DistributedLinearization::apply(Real c_j, std::span<const Real> v, std::spa
       sum += value * column_work_[full.col_idx[e]];
     }
     jv[i] = sum;
+  }
+}
+
+void DistributedLinearization::absolute_product(std::span<const Real> y, std::span<Real> out) {
+  const Index n = system_.owned_size();
+  for (Index i = 0; i < n; ++i) column_work_[i] = std::abs(y[i]);
+  system_.exchange_ghosts(column_work_);
+  const CsrPattern& pattern =
+      matrix_free_ ? system_.preconditioner_pattern() : system_.jacobian_pattern();
+  for (Index i = 0; i < n; ++i) {
+    Real sum = 0;
+    for (Index e = pattern.row_ptr[i]; e < pattern.row_ptr[i + 1]; ++e)
+      sum += std::abs(a_[e]) * column_work_[pattern.col_idx[e]];
+    out[i] = sum;
   }
 }
 

@@ -69,6 +69,11 @@ class DistributedLinearization {
   // z = P^-1 r with P the owned block at the last setup (rank-local; collective with the
   // additive Schwarz preconditioner).
   void precondition(std::span<const Real> r, std::span<Real> z);
+  // out = |A| |y| on the owned rows, A = dF/dy of the last setup (collective): the size of
+  // the terms that cancel in F at y, for its round-off floor (solvers/kinsol_solver.hpp).
+  // Matrix-free, A is the compact preconditioner matrix, whose entries discretise the same
+  // equations at the same scale.
+  void absolute_product(std::span<const Real> y, std::span<Real> out);
   long setups() const { return setups_; }
   // The Krylov tolerance factor (IDA's eps_lin, IdaOptions::krylov_tolerance_factor) that keeps
   // the correction's error, up to ||(P^-1 J)^-1|| times the preconditioned residual, beneath

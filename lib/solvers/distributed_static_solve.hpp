@@ -6,9 +6,12 @@
 // (solvers/distributed_linearization.hpp).
 //
 // The convergence test is the serial one (solvers/static_solve.hpp): ||R||_inf <=
-// relative_tolerance ||R(y0)||_inf. Each Newton step's Krylov solve is tight (constant
-// forcing term linear_tolerance, not Eisenstat-Walker), so a linear problem still takes one
-// Newton step, as with KLU.
+// relative_tolerance ||R(y0)||_inf, and with round_off_floor never below the residual's
+// round-off floor (solvers/kinsol_solver.hpp). Each Newton step's Krylov solve is tight
+// (constant forcing term linear_tolerance, not Eisenstat-Walker), so a linear problem still
+// takes one Newton step, as with KLU, at any tolerance: without the floor a tolerance beneath
+// it left Newton and GMRES iterating on round-off (a plane beam at L/h = 50 stopped after 50
+// Newton steps).
 #pragma once
 #include <vector>
 
@@ -21,6 +24,7 @@ namespace rfmems {
 struct DistributedNewtonOptions {
   Real relative_tolerance = 1e-6;  // as KinsolOptions
   int max_iterations = 50;
+  bool round_off_floor = true;  // as KinsolOptions
   // KINSOL's constant forcing term: each GMRES solve reduces the scaled residual of the
   // Newton system by this (2-norm).
   Real linear_tolerance = 1e-12;

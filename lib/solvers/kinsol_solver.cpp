@@ -145,20 +145,17 @@ int KinsolSolver::run_kinsol(long max_iterations, Real tolerance, bool setup_fir
 }
 
 Real KinsolSolver::round_off_floor(std::span<const Real> y) const {
-  // c: a margin over the LU solve's backward error (a small multiple of eps per row entry) and
-  // the residual's own summation; the plates of a/h = 5 to 1e5 stop after one step with it.
-  constexpr Real c = 10;
   const CsrPattern& pattern = op_.jacobian_pattern();
   const Real* values = SUNSparseMatrix_Data(jac_.get());
   const auto fscale = sundials::as_span(scale_f_.get());
-  Real floor = 0;
+  Real largest = 0;
   for (Index i = 0; i < pattern.n_rows(); ++i) {
     Real terms = 0;
     for (Index p = pattern.row_ptr[i]; p < pattern.row_ptr[i + 1]; ++p)
       terms += std::abs(values[p] * y[pattern.col_idx[p]]);
-    floor = std::max(floor, terms * fscale[i]);
+    largest = std::max(largest, terms * fscale[i]);
   }
-  return c * std::numeric_limits<Real>::epsilon() * floor;
+  return round_off_floor_of(largest);
 }
 
 int KinsolSolver::residual_trampoline(N_Vector y, N_Vector f, void* self) {

@@ -15,6 +15,7 @@
 // 1e-6 and Newton iterates on round-off; with it, it stops after its one exact step.
 #pragma once
 #include <exception>
+#include <limits>
 #include <memory>
 
 #include "core/system_operator.hpp"
@@ -23,6 +24,14 @@
 #include "solvers/sundials_handles.hpp"
 
 namespace rfmems {
+
+// The residual's round-off floor from the largest row of |J| |y| (scaled like F): c eps times
+// it, c = 10 a margin over the LU solve's backward error (a small multiple of eps per row
+// entry) and the residual's own summation; the plates of a/h = 5 to 1e5 stop after one step
+// with it.
+inline Real round_off_floor_of(Real largest_terms) {
+  return 10 * std::numeric_limits<Real>::epsilon() * largest_terms;
+}
 
 struct KinsolOptions {
   // Converged when ||F||_inf <= relative_tolerance * ||F(y0)||_inf (scaled by KINSOL's fscale).

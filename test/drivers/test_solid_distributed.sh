@@ -10,7 +10,8 @@
 # stops with exit 2 naming the key.
 # solver.linear multigrid (GMRES with BoomerAMG): the 3D box matrix-free on one rank and
 # distributed on 2 ranks equals the serial KLU run to 1e-8 at a 1e-10 Newton tolerance, in one
-# Newton step; auto picks multigrid for the case's 3D box (15,360 unknowns) and KLU for the
+# Newton step; at a tolerance beneath the round-off floor multigrid stops there in one Newton
+# step too; auto picks multigrid for the case's 3D box (15,360 unknowns) and KLU for the
 # plane cantilever; a modal analysis with multigrid is bad input.
 #
 # Usage: bash test_solid_distributed.sh <directory of the drivers> <source directory>
@@ -111,6 +112,22 @@ if "$DRIVER" "${FINE[@]}" --set "solver={linear: multigrid}" -o "$WORK/famg.h5" 
   pass "plane cantilever 320 x 32: UMFPACK in one Newton step = multigrid"
 else
   fail "plane 320 x 32 UMFPACK: $(head -3 "$WORK/err") $(linear_solver "$WORK/fumf.json")"
+fi
+# A Newton tolerance beneath the residual's round-off floor (this L/h = 50 beam's: ~2e-7 of
+# its initial residual): the Krylov path stops there after one Newton step, as the direct one
+# does, with the direct answer to that floor (solvers/distributed_static_solve.hpp).
+FLOOR=("$SRC/cases/cantilever_static/case.yaml" --set "mesh.cells=[160, 16]" --json --quiet)
+"$DRIVER" "${FLOOR[@]}" --set "solver={linear: direct, tolerance: 1e-10}" -o "$WORK/lklu.h5" \
+  >"$WORK/lklu.json" 2>"$WORK/err" || fail "plane 160 x 16, direct: $(cat "$WORK/err")"
+if "$DRIVER" "${FLOOR[@]}" --set "solver={linear: multigrid, tolerance: 1e-10}" \
+    -o "$WORK/lamg.h5" >"$WORK/lamg.json" 2>"$WORK/err" &&
+   [ "$(linear_solver "$WORK/lklu.json" | cut -d' ' -f1-2)" = "klu 1" ] &&
+   [ "$(linear_solver "$WORK/lamg.json" | cut -d' ' -f1-2)" = "multigrid 1" ] &&
+   [ "$(linear_solver "$WORK/lamg.json" | cut -d' ' -f3)" -le 300 ] &&
+   compare "$WORK/lklu.h5" "$WORK/lamg.h5" displacement 1e-6; then
+  pass "plane cantilever 160 x 16 at tolerance 1e-10: multigrid stops at the round-off floor in one Newton step: $(linear_solver "$WORK/lamg.json")"
+else
+  fail "multigrid beneath the round-off floor: $(head -3 "$WORK/err") $(linear_solver "$WORK/lamg.json")"
 fi
 "$DRIVER" "$SRC/cases/cantilever_box_3d/case.yaml" --json --quiet -o "$WORK/auto3d.h5" \
   >"$WORK/auto3d.json" 2>"$WORK/err" || fail "box, auto: $(cat "$WORK/err")"

@@ -95,7 +95,9 @@ CreepRunResult run_continuum_creep(const FixedFixedCreepProblem& problem, int nx
   const bool three_d = width_cells > 0;
   BoxSpec spec;
   spec.dim = three_d ? 3 : 2;
-  spec.upper = Vec3(problem.length, problem.thickness(), three_d ? problem.width : 0);
+  const bool half = problem.continuum_half_length;
+  spec.upper = Vec3(half ? problem.length / 2 : problem.length, problem.thickness(),
+                    three_d ? problem.width : 0);
   spec.n[0] = nx;
   spec.n[1] = nz;
   if (three_d) spec.n[2] = width_cells;
@@ -104,7 +106,9 @@ CreepRunResult run_continuum_creep(const FixedFixedCreepProblem& problem, int nx
   const Real q = problem.load;
   for (std::size_t k = 0; k < bcs.size(); ++k) {
     const std::string& name = mesh.patches()[k].name;
-    if (name == "left" || name == "right") bcs[k].kind = ElasticityBoundary::Kind::Fixed;
+    if (name == "left") bcs[k].kind = ElasticityBoundary::Kind::Fixed;
+    if (name == "right")
+      bcs[k].kind = half ? ElasticityBoundary::Kind::Symmetry : ElasticityBoundary::Kind::Fixed;
     if (name == "top") bcs[k].value = [q](const Vec3&, Real) { return Vec3(0, -q, 0); };
   }
   ElasticityOperator op(mesh,

@@ -48,6 +48,10 @@ struct FixedFixedCreepProblem {
   static constexpr std::array<bool, 6> kNoShear{true, true, true, false, true, true};
   // The plate model with transverse shear creep (PlateCreepSystem shear_creep; run with KLU).
   bool plate_shear_creep = false;
+  // The continuum on its half x <= L/2, the plane x = L/2 a symmetry boundary (u_x = 0, no
+  // shear traction): the strip, its load and its clamps are mirror-symmetric about it, so this
+  // is the same problem at half the unknowns. nx then counts the half's cells.
+  bool continuum_half_length = false;
   Real thickness() const { return length / slenderness; }
 };
 
