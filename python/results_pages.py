@@ -599,8 +599,9 @@ def scale_runs(name):
     def table():
         lines = read_jsonl(DATA / name)
         runs = [x for x in lines if x["section"] == "run"]
-        rows = [["mesh", "unknowns", "linear solver", "GMRES iterations", "levels, complexity",
-                 "wall [s]", "CPU [s]", "growth", "peak memory [GiB]", "probe error"]]
+        rows = [["mesh", "unknowns", "linear solver", "Newton", "GMRES iterations",
+                 "levels, complexity", "wall [s]", "CPU [s]", "growth", "peak memory [GiB]",
+                 "probe error"]]
         previous = {}
         for x in sorted(runs, key=lambda r: (r["linear"], r["unknowns"])):
             last = previous.get(x["linear"])
@@ -610,7 +611,7 @@ def scale_runs(name):
             mg = x["linear"] == "multigrid"
             rows.append([x["mesh"].replace(",", " x "), f"{x['unknowns']:,}",
                          "BoomerAMG + GMRES" if mg else x.get("linear_solver", "klu").upper(),
-                         str(x["krylov_iterations"]) if mg else "-",
+                         str(x["newton_iterations"]), str(x["krylov_iterations"]) if mg else "-",
                          f"{x['multigrid_levels']}, {x['multigrid_operator_complexity']:.2f}" if mg else "-",
                          f"{x['wall_s']:.2f}", f"{x['cpu_s']:.2f}",
                          f"n^{growth:.2f}" if growth is not None else "-",
@@ -639,7 +640,8 @@ def scale_ranks():
                      f"{x['wall_s']:.2f} -> {x['ranks_wall_s']:.2f}",
                      f"{x['max_rss_gib']:.2f} -> {x['ranks_max_rss_gib']:.2f}",
                      f"{x['ranks_field_difference']:.1e}"])
-    commands = "; ".join(f"`{h['command']}`" for h in headers)
+    commands = "; ".join(f"`{h['command']}` (load average {h['load_average']:.1f})"
+                         for h in headers)
     return markdown(rows) + f"\nCommands: {commands}, {headers[0]['date']}.\n"
 
 
@@ -748,6 +750,7 @@ TABLES = {
     "flow-factor-switch-plate": flow_factor_switch_plate,
     "scale-box-3d": scale_runs("scale_box_3d.jsonl"),
     "scale-plane-stress": scale_runs("scale_plane_stress.jsonl"),
+    "scale-plate": scale_runs("scale_plate.jsonl"),
     "scale-ranks": scale_ranks,
 }
 
