@@ -16,6 +16,7 @@ ValidityReport creep_case_validity(const CreepCase &creep) {
   s.width = hi.y() - lo.y();
   s.thickness = creep.plate->section.thickness;
   s.plate_shear_creep = creep.shear_creep;
+  s.plate_stretching = creep.plate->von_karman != nullptr;
   if (creep.has_gap) {
     s.gap = creep.initial_gap;
     s.fringing_factor = creep.gap_law.fringing_factor;

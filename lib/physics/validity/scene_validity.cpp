@@ -68,11 +68,12 @@ void check_plate(const SceneDescription &s, ValidityReport &r) {
   const Real limit = creep ? C::kCreepPlateMinSlenderness : C::kPlateMinSlenderness;
   if (slenderness < limit)
     r.warnings.push_back(creep ? fmt::format("plate creep: L/h = {:.3g} below {:g} (the plate "
-                                             "neglects shear "
-                                             "creep: 15 % at L/h = 10, 2.5 % at 30, "
-                                             "docs/creep.md; "
-                                             "creep.shear_creep: true includes it)",
-                                             slenderness, limit)
+                                             "neglects shear creep: 15 % at L/h = 10, 2.5 % at "
+                                             "30, docs/creep.md; {})",
+                                             slenderness, limit,
+                                             s.plate_stretching
+                                                 ? "the von Karman plate has no shear creep"
+                                                 : "creep.shear_creep: true includes it")
                                : fmt::format("plate: L/h = {:.3g} below {:g} (thick plate: "
                                              "through-thickness "
                                              "stresses the Mindlin plate neglects)",

@@ -71,6 +71,7 @@ struct SceneDescription {
   Analysis analysis = Analysis::Static;
   bool plate = true;               // Mindlin-Reissner plate (else a plane beam: no L/h check)
   bool plate_shear_creep = false;  // creep.shear_creep: the plate's transverse shear creeps too
+  bool plate_stretching = false;   // the von Karman plate, whose creep has no shear creep
   Real length = 0;                 // L [m]: the structure's extent along x
   Real width = 0;                  // b [m]: the extent in y (plates; 0: not modelled)
   Real thickness = 0;              // h [m]

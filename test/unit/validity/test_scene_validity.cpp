@@ -131,6 +131,13 @@ TEST(SceneValidity, PlateSlendernessForStaticDynamicAndCreep) {
   ValidityReport r = check_scene_validity(s);
   ASSERT_EQ(r.warnings.size(), 1u);
   EXPECT_EQ(count_containing(r, "plate creep: L/h = 13.3 below 20"), 1);
+  EXPECT_EQ(count_containing(r, "creep.shear_creep: true includes it"), 1);
+  s.plate_stretching = true;  // the von Karman plate: no shear creep to suggest
+  r = check_scene_validity(s);
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_EQ(count_containing(r, "the von Karman plate has no shear creep"), 1);
+  EXPECT_EQ(count_containing(r, "creep.shear_creep"), 0);
+  s.plate_stretching = false;
   s.plate_shear_creep = true;  // with shear creep the plate's limit is the Mindlin one
   EXPECT_TRUE(check_scene_validity(s).warnings.empty());
   s.thickness = 45e-6;  // L/h = 8.9
