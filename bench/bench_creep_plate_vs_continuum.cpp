@@ -15,6 +15,8 @@
 // continuum with a sparse LU of the full Jacobian (KLU, UMFPACK from IdaOptions::umfpack_from
 // unknowns or --umfpack-from). --creep-stress: the diagnostic of
 // ContinuumCreepSystem::set_creep_stress_mask ("xx,zz": the plate's bending-only creep).
+// --half-length: the continuum on x <= L/2 with a symmetry plane at the centre, the same
+// problem at half the unknowns (the 3D meshes that converge its creep deflection to 1 %).
 //
 // Accuracy: each model's mesh error, |w_p(mesh) - w_p(finest)| / |w_p(finest)| over its own
 // mesh sequence (the two models converge to values that differ by the model difference,

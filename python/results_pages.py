@@ -715,11 +715,89 @@ def creep_plate_vs_3d():
             f"Commands: {commands}, {headers[0]['date']}.\n")
 
 
+def creep_3d_half_span():
+    """bench_creep_plate_vs_continuum --half-length (one process a mesh, each with its header
+    line): the 3D strip on its half span, a symmetry plane at the centre, beside the full-span
+    runs of creep_plate_vs_3d.jsonl, every mesh named by its full-span cell count. The creep
+    deflection's observed order along the span (nz = 16: 481, 960, 1920 cells) and through the
+    thickness (about 960 cells: nz = 12, 16, 24), each direction's Richardson correction added
+    to the finest run's (the errors taken as separable), and every run's and the plate's
+    distance from that estimate; then the ratio, in one process, of the plate 21 x 3 against
+    the cheapest 3D run within 1 % of it."""
+    lines = read_jsonl(DATA / "creep_3d_half_span.jsonl")
+    full = read_jsonl(DATA / "creep_plate_vs_3d.jsonl")
+    headers = [x for x in lines if x.get("kind") == "header"]
+    runs = []  # (full-span cells along x, nz, nw, run, half, plate run of the same process)
+    plate = None
+    for x in lines:
+        if x.get("kind") != "run":
+            continue
+        if x["model"] == "plate":
+            plate = x if x["mesh"] == [21, 3] else plate
+            continue
+        half = x.get("half_length", False)
+        runs.append((2 * x["mesh"][0] if half else x["mesh"][0], x["mesh"][1], x["mesh"][2], x,
+                     half, plate))
+    for x in full:
+        if x.get("kind") == "run" and x["model"] == "3d":
+            runs.append((x["mesh"][0], x["mesh"][1], x["mesh"][2], x, False, None))
+    plate_finest = next(x for x in full if x.get("kind") == "run" and x["model"] == "plate"
+                        and x["mesh"] == [81, 5])
+
+    def w(nx, nz):
+        return next(r[3]["w_plastic"] for r in runs if r[0] == nx and r[1] == nz and r[2] == 3)
+
+    # Along the span, refinement ratio 2 (481 -> 960 -> 1920 at nz = 16).
+    dx1, dx2 = w(960, 16) - w(481, 16), w(1920, 16) - w(960, 16)
+    px = math.log(dx1 / dx2) / math.log(2)
+    cx = dx2 / (2 ** px - 1)
+    # Through the thickness, ratios 4/3 and 3/2: the order p solves
+    # (w16 - w12) / (w24 - w16) = (12^-p - 16^-p) / (16^-p - 24^-p).
+    dz1, dz2 = w(960, 16) - w(961, 12), w(960, 24) - w(960, 16)
+    ratio = lambda p: (12 ** -p - 16 ** -p) / (16 ** -p - 24 ** -p)
+    lo, hi = 0.1, 8.0
+    for _ in range(100):
+        mid = (lo + hi) / 2
+        lo, hi = (mid, hi) if ratio(mid) < dz1 / dz2 else (lo, mid)
+    pz = (lo + hi) / 2
+    cz = dz2 * 24 ** -pz / (16 ** -pz - 24 ** -pz)
+    estimate = w(960, 16) + dx2 + cx + dz2 + cz
+
+    rows = [["3D mesh (full span)", "computed", "unknowns", "w elastic [m]", "w creep, 500 h [m]",
+             "from the estimate", "whole run CPU [s]", "peak memory [GiB]"]]
+    for nx, nz, nw, x, half, _ in sorted(runs, key=lambda r: (r[0], r[1], r[2])):
+        rows.append([f"{nx} x {nz} x {nw}",
+                     f"half span, {x['mesh'][0]} x {nz} x {nw}" if half else "full span",
+                     f"{x['unknowns']:,}", f"{x['w_elastic']:.4e}", f"{x['w_plastic']:.4e}",
+                     f"{100 * (x['w_plastic'] / estimate - 1):+.2f} %", f"{x['cpu_s']:.0f}",
+                     f"{x['max_rss_gib']:.1f}"])
+    within = [r for r in runs if r[4] and abs(r[3]["w_plastic"] / estimate - 1) <= 0.01]
+    cheapest = min(within, key=lambda r: r[3]["cpu_s"]) if within else None
+    ratio_text = (
+        f"Ratio in one process: plate 21 x 3 in {cheapest[5]['cpu_s']:.2f} s CPU against 3D "
+        f"{cheapest[0]} x {cheapest[1]} x {cheapest[2]} (half span) in {cheapest[3]['cpu_s']:.0f} s, "
+        f"the cheapest 3D run within 1 % of the estimate: **{cheapest[3]['cpu_s'] / cheapest[5]['cpu_s']:.0f}x** CPU."
+        if cheapest else "No 3D run lies within 1 % of the estimate.")
+    commands = "; ".join(f"`{h['command']}` (commit {h['commit']}, load average "
+                         f"{h['load_average']})" for h in headers)
+    return (markdown(rows) +
+            f"\nObserved orders of the creep deflection: {px:.2f} along the span (changes "
+            f"{100 * dx1 / w(481, 16):+.2f} % and {100 * dx2 / w(960, 16):+.2f} %), {pz:.2f} "
+            f"through the thickness (changes {100 * dz1 / w(961, 12):+.2f} % and "
+            f"{100 * dz2 / w(960, 16):+.2f} %). Estimate w_3D = {estimate:.4e} m (Richardson "
+            f"corrections {100 * cx / estimate:+.2f} % along the span, {100 * cz / estimate:+.2f} % "
+            f"through the thickness). Plate against it, 1 - w_plate / w_3D: 21 x 3 "
+            f"{100 * (1 - plate['w_plastic'] / estimate):+.2f} %, 81 x 5 "
+            f"{100 * (1 - plate_finest['w_plastic'] / estimate):+.2f} %.\n\n{ratio_text}\n\n"
+            f"Commands: {commands}, {headers[0]['date']}.\n")
+
+
 TABLES = {
     "verification-checks": csv_table("verification_checks.csv"),
     "performance-ratios": csv_table("performance_ratios.csv"),
     "creep-plate-vs-continuum": csv_table("creep_plate_vs_continuum.csv"),
     "creep-plate-vs-3d": creep_plate_vs_3d,
+    "creep-3d-half-span": creep_3d_half_span,
     "pullin-time-check": csv_table("pullin_time_check.csv"),
     "pullin-laplace-dynamic": pullin_laplace_dynamic,
     "coupling-default-study-ab": coupling_default_study_ab,
