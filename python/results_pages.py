@@ -645,6 +645,12 @@ def scale_ranks():
     return markdown(rows) + f"\nCommands: {commands}, {headers[0]['date']}.\n"
 
 
+def commit_commands(headers):
+    """The commands of a benchmark's processes, each with its commit and machine load."""
+    return "; ".join(f"`{h['command']}` (commit {h['commit']}, load average "
+                     f"{h['load_average']})" for h in headers)
+
+
 def creep_plate_vs_3d():
     """bench_creep_plate_vs_continuum --solid-meshes (two processes, each with its header line):
     the fixed-fixed strip's creep in the plate and in the 3D continuum. Each run's mesh error
@@ -702,8 +708,7 @@ def creep_plate_vs_3d():
     m = next(x for x in lines if x.get("kind") == "summary" and x["model"] == "3d"
              and x["continuum_mesh"][:2] == finest["mesh"][:2])
     mesh = lambda v: " x ".join(str(n) for n in v if n)
-    commands = "; ".join(f"`{h['command']}` (commit {h['commit']}, load average "
-                         f"{h['load_average']})" for h in headers)
+    commands = commit_commands(headers)
     return (markdown(rows) +
             f"\n{notes}\n\n"
             f"Ratios in one process, each model at {100 * m['target']:g} % of its finest mesh: "
@@ -778,8 +783,7 @@ def creep_3d_half_span():
         f"{cheapest[0]} x {cheapest[1]} x {cheapest[2]} (half span) in {cheapest[3]['cpu_s']:.0f} s, "
         f"the cheapest 3D run within 1 % of the estimate: **{cheapest[3]['cpu_s'] / cheapest[5]['cpu_s']:.0f}x** CPU."
         if cheapest else "No 3D run lies within 1 % of the estimate.")
-    commands = "; ".join(f"`{h['command']}` (commit {h['commit']}, load average "
-                         f"{h['load_average']})" for h in headers)
+    commands = commit_commands(headers)
     return (markdown(rows) +
             f"\nObserved orders of the creep deflection: {px:.2f} along the span (changes "
             f"{100 * dx1 / w(481, 16):+.2f} % and {100 * dx2 / w(960, 16):+.2f} %), {pz:.2f} "
