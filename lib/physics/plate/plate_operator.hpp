@@ -74,6 +74,9 @@
 // Jacobian: the operator is linear, and dR/dy is assembled analytically (every reconstruction
 // stencil, the Simpson midpoints, the least-squares shear strain and the non-orthogonal
 // correction) once, in the constructor; a linear static plate converges in one Newton step.
+// With homogeneous data (no pressure, no point load, every boundary value zero) R(t, 0) = 0 and
+// the residual is evaluated as the product K y with that matrix; otherwise face by face as
+// above (the same values to round-off; test_plate_jacobian.cpp checks both).
 #pragma once
 #include <functional>
 #include <memory>
@@ -202,6 +205,8 @@ class PlateOperator : public SecondOrderOperator {
   };
 
   Vec3 bc_value(const PlateBoundary& bc, const Vec3& x, Real t) const;
+  // R(t, y) face by face from the reconstructions (the equations of the banner).
+  void reconstructed_residual(Real t, std::span<const Real> y, std::span<Real> r);
   Vec3 beta(std::span<const Real> y, Index c) const {
     return Vec3(y[3 * c + kBetaX], y[3 * c + kBetaY], 0.0);
   }
@@ -265,6 +270,8 @@ class PlateOperator : public SecondOrderOperator {
 
   CsrPattern pattern_;  // the structurally nonzero entries of dR/dy, and the diagonal
   std::vector<Real> stiffness_values_;
+  // No pressure and every boundary value zero: R(t, 0) = 0 without point loads.
+  bool homogeneous_data_ = false;
 };
 
 }  // namespace rfmems
