@@ -284,7 +284,7 @@ void PlateOperator::compute_strains(Real t, std::span<const Real> y, std::vector
 }
 
 void PlateOperator::internal_residual(Real t, std::span<const Real> y, std::span<Real> r) {
-  if (!homogeneous_data_ || !point_loads_.empty()) {
+  if (!residual_by_stiffness_ || !homogeneous_data_ || !point_loads_.empty()) {
     reconstructed_residual(t, y, r);
     return;
   }
