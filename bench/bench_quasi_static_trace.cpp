@@ -4,18 +4,21 @@
 //
 // 1. --section orderings: the bordered displacement-control Jacobian at the fold of each mesh
 //    factorised with each fill-reducing ordering KLU offers here (AMD on A + A^T, COLAMD,
-//    METIS nested dissection): entries of L + U, the time of the symbolic analysis with a
-//    factorisation with fresh pivoting, of a refactorisation keeping the pivots, and of one
-//    solve (each the median of --repeat).
+//    METIS nested dissection), and with UMFPACK (its METIS ordering; its symmetric strategy on
+//    the nested-dissection order): entries of L + U, the time of the symbolic analysis with a
+//    factorisation with fresh pivoting, of a refactorisation (KLU: keeping the pivots), and of
+//    one solve (each the median of --repeat).
 // 2. --section trace: the whole curve (the case's 40 points to 0.9 g0, fold to 0.01 V) on each
-//    mesh with KLU and each ordering, and with UMFPACK at every size (`umfpack`): wall and CPU
-//    time, solves, Newton iterations, factorisations with fresh pivoting (UMFPACK: with a
-//    symbolic analysis) and refactorisations, V_PI.
+//    mesh with KLU and each ordering, and with UMFPACK at every size (`umfpack`: its symmetric
+//    strategy on the nested-dissection order, QuasiStaticOptions' choice from 1000 unknowns):
+//    wall and CPU time, solves, Newton iterations, factorisations with fresh pivoting (UMFPACK:
+//    with a symbolic analysis) and refactorisations, V_PI.
 //
 // Output: one JSON object per line on stdout.
 //   bench_quasi_static_trace [--nx 40 80 160] [--section orderings trace] [--repeat 3]
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "bench_support.hpp"
@@ -24,6 +27,7 @@
 #include "coupling/quasi_static_pull_in.hpp"
 #include "coupling/switch_scene.hpp"
 #include "solvers/klu_factorization.hpp"
+#include "solvers/umfpack_factorization.hpp"
 
 using namespace rfmems;
 using namespace rfmems::bench;
@@ -93,6 +97,37 @@ void orderings(int nx, int repeat) {
               {"refactor_cpu_s", median(refactor)},
               {"solve_cpu_s", median(solve)}});
   }
+  // UMFPACK, its METIS ordering and its symmetric strategy on the nested-dissection order
+  // (the trace's from QuasiStaticOptions::umfpack_from), without iterative refinement.
+  for (const auto& [name, ordering] :
+       {std::pair{"umfpack_metis", UmfpackOrdering::Metis},
+        std::pair{"umfpack_symmetric_nd", UmfpackOrdering::SymmetricNestedDissection}}) {
+    std::vector<double> factor, refactor, solve;
+    long entries = 0;
+    for (int r = 0; r < repeat; ++r) {
+      double t0 = cpu_now();
+      UmfpackFactorization lu(pattern, values, 0, ordering);
+      factor.push_back(cpu_now() - t0);
+      t0 = cpu_now();
+      lu.refactor(values);
+      refactor.push_back(cpu_now() - t0);
+      std::vector<Real> b(system.size(), 1.0);
+      t0 = cpu_now();
+      lu.solve(b);
+      solve.push_back(cpu_now() - t0);
+      entries = lu.factor_entries();
+    }
+    emit(json{{"section", "orderings"},
+              {"nx", nx},
+              {"ny", nx / 10},
+              {"unknowns", system.size()},
+              {"matrix_entries", pattern.nnz()},
+              {"ordering", name},
+              {"factor_entries", entries},
+              {"analyze_factor_cpu_s", median(factor)},
+              {"refactor_cpu_s", median(refactor)},
+              {"solve_cpu_s", median(solve)}});
+  }
 }
 
 void trace(int nx, const std::vector<std::string>& only) {
@@ -103,7 +138,7 @@ void trace(int nx, const std::vector<std::string>& only) {
     if (std::find(only.begin(), only.end(), name) == only.end()) continue;
     auto sc = plate_switch(nx);
     QuasiStaticOptions options = case_sampling(ordering);
-    if (name == "umfpack") options.umfpack_from = 0;
+    options.umfpack_from = name == "umfpack" ? 0 : std::numeric_limits<Index>::max();
     const double w0 = now(), c0 = cpu_now();
     const QuasiStaticPullIn r = trace_pull_in(*sc->scene.actuation, sc->scene.control, options);
     const double wall = now() - w0, cpu = cpu_now() - c0;

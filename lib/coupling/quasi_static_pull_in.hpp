@@ -16,7 +16,6 @@
 // Points with |delta| below the fold's are the stable branch, beyond it the unstable one.
 #pragma once
 #include <functional>
-#include <limits>
 #include <vector>
 
 #include "physics/electrostatics/parallel_plate_actuation.hpp"
@@ -34,13 +33,15 @@ struct QuasiStaticOptions {
   Real newton_tolerance = 0;
   // Per solve; the Jacobian is refreshed every 10 iterations (modified Newton).
   int max_newton_iterations = 100;
-  KluOrdering ordering = KluOrdering::BySize;  // of the bordered Jacobian's factorisation
-  // The size from which it factorises with UMFPACK instead (solvers/sparse_direct_solver.hpp):
-  // by default never. The voltage's column couples every loaded unknown, and UMFPACK's METIS
-  // ordering of the bordered matrix fills 3.7x more than KLU's nested dissection (80 x 8 plate:
-  // 2.4e6 entries against 6.5e5, the trace 3.0 s against 0.87 s CPU;
-  // bench/bench_quasi_static_trace --ordering umfpack).
-  Index umfpack_from = std::numeric_limits<Index>::max();
+  KluOrdering ordering = KluOrdering::BySize;  // of the bordered Jacobian's KLU factorisation
+  // The size from which it factorises with UMFPACK instead (solvers/sparse_direct_solver.hpp),
+  // in its symmetric strategy on the nested-dissection order with the voltage last
+  // (UmfpackOrdering::SymmetricNestedDissection): the voltage's column couples every loaded
+  // unknown, and UMFPACK's own METIS ordering fills 5-8x more. Its dense fronts refactorise
+  // and solve 3-4x faster than KLU's columns: the 160 x 16 plate's trace takes 2.1 s CPU against
+  // KLU's 7.1 s, 80 x 8 0.27 s against 0.47 s; at 40 x 4 (481 unknowns) KLU is ahead
+  // (bench/bench_quasi_static_trace --ordering umfpack nested_dissection).
+  Index umfpack_from = 1000;
 };
 
 struct PullInPoint {

@@ -30,8 +30,9 @@ KinsolSolver::KinsolSolver(SystemOperator& op, const KinsolOptions& options)
   // Continuation reuses its factorisation's analysis and pivots, and a large system factorises
   // with UMFPACK; a small single solve keeps SUNDIALS' own KLU interface.
   solver_ = options_.keep_jacobian || n >= options_.umfpack_from
-                ? sundials::make_sparse_direct_solver(ctx_.get(), options_.ordering, counts_,
-                                                      options_.umfpack_from)
+                ? sundials::make_sparse_direct_solver(
+                      ctx_.get(), options_.ordering, counts_, options_.umfpack_from,
+                      options_.umfpack_refinement_steps, options_.umfpack_ordering)
                 : sundials::make_klu_solver(y_.get(), jac_.get(), ctx_.get());
   mem_ = KINCreate(ctx_.get());
   if (!mem_) throw SolverError("KINCreate failed");

@@ -56,8 +56,12 @@ struct KinsolOptions {
   // own test alone (as penalty-contact solves need, whose floor is set by the penalty).
   bool round_off_floor = false;
   KluOrdering ordering = KluOrdering::BySize;  // of the sparse direct solver's KLU
-  // The size from which the factorisation is UMFPACK's (solvers/umfpack_factorization.hpp).
+  // The size from which the factorisation is UMFPACK's (solvers/umfpack_factorization.hpp),
+  // in this ordering, with this many steps of iterative refinement per solve (see
+  // solvers/sparse_direct_solver.hpp's kRefinementSteps).
   Index umfpack_from = kUmfpackFrom;
+  UmfpackOrdering umfpack_ordering = UmfpackOrdering::Metis;
+  int umfpack_refinement_steps = sundials::kRefinementSteps;
 };
 
 struct NonlinearStats {

@@ -46,23 +46,37 @@ struct KluFactorization::Impl {
 
 namespace {
 
-// KLU's user ordering (klu_common.user_order): METIS_NodeND on the graph of A + A^T of the
-// compressed-column matrix (Ap, Ai); returns 1 on success, as KLU expects. Dense nodes (degree
-// above 10 sqrt(n), AMD's rule: the voltage of a bordered system, coupled to every unknown)
-// are left out of the graph and ordered last: a hub joined to every node leaves METIS no small
-// separator.
+// KLU's user ordering (klu_common.user_order): nested_dissection_order of the compressed-column
+// matrix (Ap, Ai), whose A + A^T graph is that of the CSR matrix with the same arrays; returns 1
+// on success, as KLU expects.
 SuiteSparse_long nested_dissection(SuiteSparse_long n, SuiteSparse_long* Ap, SuiteSparse_long* Ai,
                                    SuiteSparse_long* Perm, klu_l_common*) {
+  CsrPattern pattern;
+  pattern.row_ptr.assign(Ap, Ap + n + 1);
+  pattern.col_idx.assign(Ai, Ai + Ap[n]);
+  try {
+    const std::vector<Index> order = nested_dissection_order(pattern);
+    std::copy(order.begin(), order.end(), Perm);
+  } catch (const SolverError&) {
+    return 0;
+  }
+  return 1;
+}
+
+}  // namespace
+
+std::vector<Index> nested_dissection_order(const CsrPattern& pattern) {
+  const Index n = pattern.n_rows();
   std::vector<std::vector<idx_t>> adjacent(n);
-  for (SuiteSparse_long c = 0; c < n; ++c)
-    for (SuiteSparse_long k = Ap[c]; k < Ap[c + 1]; ++k)
-      if (Ai[k] != c) {
-        adjacent[Ai[k]].push_back(static_cast<idx_t>(c));
-        adjacent[c].push_back(static_cast<idx_t>(Ai[k]));
+  for (Index r = 0; r < n; ++r)
+    for (Index k = pattern.row_ptr[r]; k < pattern.row_ptr[r + 1]; ++k)
+      if (pattern.col_idx[k] != r) {
+        adjacent[pattern.col_idx[k]].push_back(static_cast<idx_t>(r));
+        adjacent[r].push_back(static_cast<idx_t>(pattern.col_idx[k]));
       }
   const double dense = std::max(16.0, 10.0 * std::sqrt(static_cast<double>(n)));
   std::vector<idx_t> local(n, -1), dense_nodes, sparse_nodes;
-  for (SuiteSparse_long i = 0; i < n; ++i) {
+  for (Index i = 0; i < n; ++i) {
     std::sort(adjacent[i].begin(), adjacent[i].end());
     adjacent[i].erase(std::unique(adjacent[i].begin(), adjacent[i].end()), adjacent[i].end());
     if (static_cast<double>(adjacent[i].size()) > dense) {
@@ -83,13 +97,13 @@ SuiteSparse_long nested_dissection(SuiteSparse_long n, SuiteSparse_long* Ap, Sui
   std::vector<idx_t> perm(nodes), inverse(nodes);
   if (nodes > 0 && METIS_NodeND(&nodes, xadj.data(), adjncy.data(), nullptr, nullptr, perm.data(),
                                 inverse.data()) != METIS_OK)
-    return 0;
-  for (std::size_t k = 0; k < perm.size(); ++k) Perm[k] = sparse_nodes[perm[k]];
-  std::copy(dense_nodes.begin(), dense_nodes.end(), Perm + perm.size());
-  return 1;
+    throw SolverError("METIS_NodeND failed");
+  std::vector<Index> order;
+  order.reserve(n);
+  for (const idx_t k : perm) order.push_back(sparse_nodes[k]);
+  order.insert(order.end(), dense_nodes.begin(), dense_nodes.end());
+  return order;
 }
-
-}  // namespace
 
 KluFactorization::KluFactorization(const CsrPattern& pattern, std::span<const Real> values,
                                    KluOrdering ordering, KluSystem system)

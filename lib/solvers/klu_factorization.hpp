@@ -2,6 +2,7 @@
 // (the segregated baseline and the "one factorisation" cost floor of the benchmarks).
 #pragma once
 #include <span>
+#include <vector>
 
 #include "core/system_operator.hpp"
 
@@ -27,6 +28,13 @@ enum class KluOrdering { Amd, Colamd, NestedDissection, BySize };
 //     factor 1e3 of its value at the fresh pivoting: scale-free, where an absolute floor would
 //     pivot afresh at every refactorisation.
 enum class KluSystem { Uniform, MixedUnits };
+
+// The nested-dissection order (METIS_NodeND) of the graph of A + A^T for the CSR pattern of A:
+// order[k] is the unknown eliminated k-th. Dense nodes (degree above 10 sqrt(n), AMD's rule: the
+// voltage of a bordered system, coupled to every unknown) are left out of the graph and ordered
+// last: a hub joined to every node leaves METIS no small separator. KluOrdering::
+// NestedDissection's order, and UMFPACK's with UmfpackOrdering::SymmetricNestedDissection.
+std::vector<Index> nested_dissection_order(const CsrPattern& pattern);
 
 class KluFactorization {
  public:

@@ -16,6 +16,7 @@ struct Content {
   std::shared_ptr<DirectCounts> counts;
   Index umfpack_from;
   int refinement_steps;
+  UmfpackOrdering umfpack_ordering;
   CsrPattern pattern;
   std::unique_ptr<KluFactorization> klu;
   std::unique_ptr<UmfpackFactorization> umfpack;
@@ -48,7 +49,8 @@ int setup(SUNLinearSolver s, SUNMatrix a) {
       c.pattern.col_idx.assign(idx, idx + ptr[n]);
       c.reset();
       if (n >= c.umfpack_from)
-        c.umfpack = std::make_unique<UmfpackFactorization>(c.pattern, values, c.refinement_steps);
+        c.umfpack = std::make_unique<UmfpackFactorization>(c.pattern, values, c.refinement_steps,
+                                                           c.umfpack_ordering);
       else
         c.klu = std::make_unique<KluFactorization>(c.pattern, values, c.ordering,
                                                    KluSystem::MixedUnits);
@@ -97,11 +99,12 @@ int free_solver(SUNLinearSolver s) {
 
 LinearSolver make_sparse_direct_solver(SUNContext ctx, KluOrdering ordering,
                                        std::shared_ptr<DirectCounts> counts, Index umfpack_from,
-                                       int refinement_steps) {
+                                       int refinement_steps, UmfpackOrdering umfpack_ordering) {
   SUNLinearSolver s = SUNLinSolNewEmpty(ctx);
   if (!s) throw SolverError("SUNLinSolNewEmpty failed");
-  s->content = new Content{ordering, std::move(counts), umfpack_from, refinement_steps,
-                           {},       nullptr,           nullptr};
+  s->content =
+      new Content{ordering, std::move(counts), umfpack_from, refinement_steps, umfpack_ordering,
+                  {},       nullptr,           nullptr};
   s->ops->gettype = get_type;
   s->ops->getid = get_id;
   s->ops->initialize = initialize;

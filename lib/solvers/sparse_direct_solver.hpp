@@ -36,6 +36,7 @@ constexpr int kRefinementSteps = 2;
 LinearSolver make_sparse_direct_solver(SUNContext ctx, KluOrdering ordering,
                                        std::shared_ptr<DirectCounts> counts = nullptr,
                                        Index umfpack_from = kUmfpackFrom,
-                                       int refinement_steps = kRefinementSteps);
+                                       int refinement_steps = kRefinementSteps,
+                                       UmfpackOrdering umfpack_ordering = UmfpackOrdering::Metis);
 
 }  // namespace rfmems::sundials

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "solvers/klu_factorization.hpp"
 
 namespace rfmems {
 
@@ -40,7 +41,7 @@ struct UmfpackFactorization::Impl {
 };
 
 UmfpackFactorization::UmfpackFactorization(const CsrPattern& pattern, std::span<const Real> values,
-                                           int refinement_steps)
+                                           int refinement_steps, UmfpackOrdering ordering)
     : impl_(new Impl) {
   Impl& u = *impl_;
   const auto n = static_cast<SuiteSparse_long>(pattern.n_rows());
@@ -54,8 +55,19 @@ UmfpackFactorization::UmfpackFactorization(const CsrPattern& pattern, std::span<
   // against 35.5 s with UMFPACK's default (AMD/COLAMD) ordering.
   u.control[UMFPACK_ORDERING] = UMFPACK_ORDERING_METIS;
   try {
-    const SuiteSparse_long status = umfpack_dl_symbolic(
-        n, n, u.ptr.data(), u.idx.data(), u.values.data(), &u.symbolic, u.control, u.info);
+    SuiteSparse_long status = 0;
+    if (ordering == UmfpackOrdering::SymmetricNestedDissection) {
+      // The order is symmetric (of A + A^T), so it serves A^T, which UMFPACK sees, as well.
+      const std::vector<Index> order = nested_dissection_order(pattern);
+      const std::vector<SuiteSparse_long> q(order.begin(), order.end());
+      u.control[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_SYMMETRIC;
+      u.control[UMFPACK_ORDERING] = UMFPACK_ORDERING_GIVEN;
+      status = umfpack_dl_qsymbolic(n, n, u.ptr.data(), u.idx.data(), u.values.data(), q.data(),
+                                    &u.symbolic, u.control, u.info);
+    } else {
+      status = umfpack_dl_symbolic(n, n, u.ptr.data(), u.idx.data(), u.values.data(), &u.symbolic,
+                                   u.control, u.info);
+    }
     if (status != UMFPACK_OK)
       throw SolverError(fmt::format("UMFPACK symbolic analysis failed (status {})", status));
     u.factorize();

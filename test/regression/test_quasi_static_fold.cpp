@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 
 #include "coupling/quasi_static_pull_in.hpp"
 #include "coupling/switch_scene.hpp"
@@ -83,4 +84,31 @@ TEST(QuasiStaticFold, CantileverFoldConvergesMonotonically) {
     EXPECT_GT(now, 0) << "refinement " << k;
     EXPECT_LT(now, 0.5 * previous) << "refinement " << k;
   }
+}
+
+// From 1000 unknowns the trace factorises with UMFPACK (its symmetric strategy on the
+// nested-dissection order with the voltage last) instead of KLU: on the default switch at
+// 80 x 8 (1921 unknowns) it must find KLU's fold, with the same Newton iterations (no solve is
+// less accurate), one symbolic analysis for the whole trace and a sparser factor.
+TEST(QuasiStaticFold, UmfpackFindsKlusFoldWithLessFill) {
+  auto s = load("switch_plate", {"mesh.cells=[80,8]"});
+  QuasiStaticOptions o;
+  o.voltage_tolerance = 1e-3;
+  ASSERT_GT(s->scene.actuation->size() + 1, o.umfpack_from);
+  const QuasiStaticPullIn umfpack = trace_pull_in(*s->scene.actuation, s->scene.control, o);
+  o.umfpack_from = std::numeric_limits<Index>::max();
+  const QuasiStaticPullIn klu = trace_pull_in(*s->scene.actuation, s->scene.control, o);
+  std::printf(
+      "80 x 8: V_PI %.6f V (UMFPACK) against %.6f V (KLU); Newton %ld against %ld; "
+      "L + U %ld against %ld\n",
+      umfpack.pull_in_voltage, klu.pull_in_voltage, umfpack.newton_iterations,
+      klu.newton_iterations, umfpack.last.factor_entries, klu.last.factor_entries);
+  EXPECT_TRUE(umfpack.last.umfpack);
+  EXPECT_FALSE(klu.last.umfpack);
+  EXPECT_NEAR(umfpack.pull_in_voltage, klu.pull_in_voltage, o.voltage_tolerance);
+  EXPECT_NEAR(static_cast<double>(umfpack.newton_iterations),
+              static_cast<double>(klu.newton_iterations), 0.05 * klu.newton_iterations);
+  EXPECT_EQ(umfpack.last.fresh_factorizations, 1);
+  EXPECT_LT(umfpack.last.refactorizations, umfpack.solves / 2);
+  EXPECT_LT(umfpack.last.factor_entries, klu.last.factor_entries);
 }
