@@ -70,12 +70,14 @@ void orderings(int nx, int repeat) {
   const CsrPattern& pattern = system.jacobian_pattern();
   std::vector<Real> values(pattern.nnz()), zero(system.size(), 0.0);
   system.jacobian(0.0, 0.0, fold.fold_state, zero, values);
-  for (const auto& [name, ordering] : kOrderings) {
+  // Analyse + factorise, refactorise and solve with the factorisation make() builds, each the
+  // median of `repeat`; one line of output.
+  auto measure = [&](const std::string& name, auto&& make) {
     std::vector<double> factor, refactor, solve;
     long entries = 0;
     for (int r = 0; r < repeat; ++r) {
       double t0 = cpu_now();
-      KluFactorization lu(pattern, values, ordering, KluSystem::MixedUnits);
+      auto lu = make();
       factor.push_back(cpu_now() - t0);
       t0 = cpu_now();
       lu.refactor(values);
@@ -96,38 +98,16 @@ void orderings(int nx, int repeat) {
               {"analyze_factor_cpu_s", median(factor)},
               {"refactor_cpu_s", median(refactor)},
               {"solve_cpu_s", median(solve)}});
-  }
+  };
+  for (const auto& [name, ordering] : kOrderings)
+    measure(name,
+            [&] { return KluFactorization(pattern, values, ordering, KluSystem::MixedUnits); });
   // UMFPACK, its METIS ordering and its symmetric strategy on the nested-dissection order
   // (the trace's from QuasiStaticOptions::umfpack_from), without iterative refinement.
   for (const auto& [name, ordering] :
        {std::pair{"umfpack_metis", UmfpackOrdering::Metis},
-        std::pair{"umfpack_symmetric_nd", UmfpackOrdering::SymmetricNestedDissection}}) {
-    std::vector<double> factor, refactor, solve;
-    long entries = 0;
-    for (int r = 0; r < repeat; ++r) {
-      double t0 = cpu_now();
-      UmfpackFactorization lu(pattern, values, 0, ordering);
-      factor.push_back(cpu_now() - t0);
-      t0 = cpu_now();
-      lu.refactor(values);
-      refactor.push_back(cpu_now() - t0);
-      std::vector<Real> b(system.size(), 1.0);
-      t0 = cpu_now();
-      lu.solve(b);
-      solve.push_back(cpu_now() - t0);
-      entries = lu.factor_entries();
-    }
-    emit(json{{"section", "orderings"},
-              {"nx", nx},
-              {"ny", nx / 10},
-              {"unknowns", system.size()},
-              {"matrix_entries", pattern.nnz()},
-              {"ordering", name},
-              {"factor_entries", entries},
-              {"analyze_factor_cpu_s", median(factor)},
-              {"refactor_cpu_s", median(refactor)},
-              {"solve_cpu_s", median(solve)}});
-  }
+        std::pair{"umfpack_symmetric_nd", UmfpackOrdering::SymmetricNestedDissection}})
+    measure(name, [&] { return UmfpackFactorization(pattern, values, 0, ordering); });
 }
 
 void trace(int nx, const std::vector<std::string>& only) {
