@@ -24,7 +24,7 @@ namespace rfmems {
 struct DistributedNewtonOptions {
   Real relative_tolerance = 1e-6;  // as KinsolOptions
   int max_iterations = 50;
-  bool round_off_floor = true;  // as KinsolOptions
+  bool round_off_floor = true;  // as the serial solve_static (KinsolOptions::round_off_floor)
   // KINSOL's constant forcing term: each GMRES solve reduces the scaled residual of the
   // Newton system by this (2-norm).
   Real linear_tolerance = 1e-12;
