@@ -22,6 +22,17 @@ struct CsrPattern {
   Index find(Index row, Index col) const;
 };
 
+// y = A x for the matrix with this pattern and these values.
+inline void multiply(const CsrPattern& pattern, std::span<const Real> values,
+                     std::span<const Real> x, std::span<Real> y) {
+  for (Index i = 0; i < pattern.n_rows(); ++i) {
+    Real sum = 0;
+    for (Index k = pattern.row_ptr[i]; k < pattern.row_ptr[i + 1]; ++k)
+      sum += values[k] * x[pattern.col_idx[k]];
+    y[i] = sum;
+  }
+}
+
 class SystemOperator {
  public:
   virtual ~SystemOperator() = default;

@@ -21,14 +21,7 @@ struct Operators {
 // z = A v
 int product(void* data, N_Vector v, N_Vector z) {
   const auto* op = static_cast<const Operators*>(data);
-  const std::span<const Real> x = sundials::as_span(v);
-  const std::span<Real> y = sundials::as_span(z);
-  for (Index i = 0; i < op->pattern.n_rows(); ++i) {
-    Real sum = 0;
-    for (Index k = op->pattern.row_ptr[i]; k < op->pattern.row_ptr[i + 1]; ++k)
-      sum += op->values[k] * x[op->pattern.col_idx[k]];
-    y[i] = sum;
-  }
+  multiply(op->pattern, op->values, sundials::as_span(v), sundials::as_span(z));
   return 0;
 }
 

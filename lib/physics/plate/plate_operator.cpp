@@ -290,12 +290,7 @@ void PlateOperator::internal_residual(Real t, std::span<const Real> y, std::span
   }
   // The operator is linear and R(t, 0) = 0, so R(t, y) = K y: one product with the assembled
   // stiffness instead of every reconstruction evaluated again.
-  for (Index i = 0; i < pattern_.n_rows(); ++i) {
-    Real sum = 0;
-    for (Index k = pattern_.row_ptr[i]; k < pattern_.row_ptr[i + 1]; ++k)
-      sum += stiffness_values_[k] * y[pattern_.col_idx[k]];
-    r[i] = sum;
-  }
+  multiply(pattern_, stiffness_values_, y, r);
 }
 
 void PlateOperator::reconstructed_residual(Real t, std::span<const Real> y, std::span<Real> r) {
