@@ -12,8 +12,10 @@
 // --law coble (sec. 4.6.2). IDA (adaptive BDF, --rtol, atol = 1e-2 rtol w_beam on every
 // unknown: the strains are of the size of w in metres; 1e-4 failed at t = 0 on 81 x 3); the
 // plate with its Schur-complement preconditioned SPGMR (the exact Jacobian solve), the
-// continuum with a sparse LU of the full Jacobian (KLU, UMFPACK from IdaOptions::umfpack_from
-// unknowns or --umfpack-from). --creep-stress: the diagnostic of
+// continuum with GMRES and the block preconditioner of
+// physics/creep/continuum_creep_preconditioner.hpp (the stiffness's LU; the full Jacobian never
+// factorised), or with --continuum-solver direct a sparse LU of the full Jacobian (KLU, UMFPACK
+// from IdaOptions::umfpack_from unknowns or --umfpack-from). --creep-stress: the diagnostic of
 // ContinuumCreepSystem::set_creep_stress_mask ("xx,zz": the plate's bending-only creep).
 // --half-length: the continuum on x <= L/2 with a symmetry plane at the centre, the same
 // problem at half the unknowns (the 3D meshes that converge its creep deflection to 1 %).
@@ -29,6 +31,7 @@
 //       [--rtol 1e-6] [--width-ratio 0.01] [--target 0.01] [--creep-stress xx,yy,zz,xy,yz,xz]
 //       [--plate-meshes "21,3;41,3;81,5"] [--plane-meshes "241,8;481,12;481,16" | none]
 //       [--solid-meshes "nx,nz,nw;..."] [--umfpack-from N] [--half-length] [--quick]
+//       [--continuum-solver krylov | direct]
 #include <sys/resource.h>
 
 #include <CLI/CLI.hpp>
@@ -50,6 +53,7 @@ struct Run {
   int n1, n2, n3;  // n3: cells across the width (3D), 0 for the plate and the section
   CreepRunResult result;
   bool half_length = false;  // a continuum on x <= L/2: n1 counts the half's cells
+  std::string solver;        // the linear solver of IDA's Newton steps
 };
 
 // The process's peak resident memory so far (getrusage: KiB on Linux).
@@ -65,13 +69,13 @@ void print(const Run& r, Real slenderness) {
       "\"unknowns\": %ld, \"w_elastic\": %.8e, \"w_plastic\": %.8e, \"steps\": %ld, "
       "\"newton_iters\": %ld, \"linear_iters\": %ld, \"linear_setups\": %ld, "
       "\"umfpack\": %s, \"elastic_s\": %.4f, \"wall_s\": %.4f, \"elastic_cpu_s\": %.4f, "
-      "\"cpu_s\": %.4f, \"max_rss_gib\": %.2f%s}\n",
+      "\"cpu_s\": %.4f, \"max_rss_gib\": %.2f, \"solver\": \"%s\"%s}\n",
       r.model.c_str(), slenderness, r.n1, r.n2,
       r.n3 > 0 ? (", " + std::to_string(r.n3)).c_str() : "", static_cast<long>(r.result.unknowns),
       r.result.w_elastic, r.result.w_plastic, r.result.stats.steps, r.result.stats.newton_iters,
       r.result.stats.linear_iters, r.result.stats.linear_setups,
       r.result.stats.umfpack ? "true" : "false", r.result.elastic_seconds, r.result.wall_seconds,
-      r.result.elastic_cpu_seconds, r.result.cpu_seconds, max_rss_gib(),
+      r.result.elastic_cpu_seconds, r.result.cpu_seconds, max_rss_gib(), r.solver.c_str(),
       r.half_length ? ", \"half_length\": true" : "");
   std::fflush(stdout);
 }
@@ -186,8 +190,16 @@ int main(int argc, char** argv) {
   app.add_flag("--half-length", problem.continuum_half_length,
                "continuum models on x <= L/2, a symmetry plane at the centre (nx: the half's "
                "cells)");
+  std::string continuum_solver = "krylov";
+  app.add_option("--continuum-solver", continuum_solver,
+                 "krylov (GMRES, block preconditioner with the stiffness's LU; the default) | "
+                 "direct (IDA's sparse LU of the full Jacobian)")
+      ->check(CLI::IsMember({"direct", "krylov"}));
   app.add_flag("--quick", quick, "two coarse meshes per model (a smoke run)");
   CLI11_PARSE(app, argc, argv);
+  using ContinuumSolver = ContinuumCreepSystem::LinearSolver;
+  problem.continuum_linear_solver =
+      continuum_solver == "krylov" ? ContinuumSolver::Krylov : ContinuumSolver::Direct;
   if (law == "coble") problem.law = CreepLaw{2.08e-10, 20, 1, 0.5, 0.7e9};
   problem.width = width_ratio * problem.length;
   const char* names[6] = {"xx", "yy", "zz", "xy", "yz", "xz"};
@@ -225,20 +237,21 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "plate %d x %d ...\n", nx, ny);
     IdaOptions o = options;
     if (plate_solver == "spgmr") o.linear_solver = IdaOptions::LinearSolver::Spgmr;
-    plate_runs.push_back({"plate", nx, ny, 0, run_plate_creep(problem, nx, ny, 20, o, end)});
+    plate_runs.push_back(
+        {"plate", nx, ny, 0, run_plate_creep(problem, nx, ny, 20, o, end), false, plate_solver});
     print(plate_runs.back(), problem.slenderness);
   }
   for (auto [nx, nz, unused] : plane_meshes) {
     std::fprintf(stderr, "plane stress %d x %d ...\n", nx, nz);
     plane_runs.push_back({"plane_stress", nx, nz, 0,
                           run_continuum_creep(problem, nx, nz, options, end),
-                          problem.continuum_half_length});
+                          problem.continuum_half_length, continuum_solver});
     print(plane_runs.back(), problem.slenderness);
   }
   for (auto [nx, nz, nw] : solid_meshes) {
     std::fprintf(stderr, "3D %d x %d x %d ...\n", nx, nz, nw);
     solid_runs.push_back({"3d", nx, nz, nw, run_continuum_creep(problem, nx, nz, options, end, nw),
-                          problem.continuum_half_length});
+                          problem.continuum_half_length, continuum_solver});
     print(solid_runs.back(), problem.slenderness);
   }
   for (const auto* runs : {&plane_runs, &solid_runs})

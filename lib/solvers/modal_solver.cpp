@@ -12,12 +12,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <random>
 
 #include "core/error.hpp"
-#include "solvers/klu_factorization.hpp"
-#include "solvers/umfpack_factorization.hpp"
+#include "solvers/sparse_lu.hpp"
 
 namespace rfmems {
 
@@ -54,10 +54,8 @@ class PencilShiftSolve {
     try {
       // No iterative refinement: each step costs a residual and another solve, and the
       // shift-invert iteration needs no more than the factorisation's accuracy.
-      if (umfpack_)
-        umfpack_lu_ = std::make_unique<UmfpackFactorization>(pattern_, shifted);
-      else
-        klu_ = std::make_unique<KluFactorization>(pattern_, shifted);
+      lu_ = std::make_unique<SparseLu>(pattern_, shifted,
+                                       umfpack_ ? 0 : std::numeric_limits<Index>::max());
     } catch (const SolverError&) {
       throw SolverError(fmt::format(
           "modal solve: K - sigma M is singular at sigma = {:g} (a shift on an eigenvalue, or a "
@@ -71,10 +69,7 @@ class PencilShiftSolve {
     const Index n = pattern_.n_rows();
     for (Index i = 0; i < n; ++i) y[i] = scale_ * mass_[i] * x[i];
     const std::span<Real> b(y, static_cast<std::size_t>(n));
-    if (umfpack_)
-      umfpack_lu_->solve(b);
-    else
-      klu_->solve(b);
+    lu_->solve(b);
     ++applications_;
   }
 
@@ -89,8 +84,7 @@ class PencilShiftSolve {
   std::span<const Real> mass_;
   bool umfpack_;
   // solve() is not const; perform_op must be.
-  std::unique_ptr<KluFactorization> klu_;
-  std::unique_ptr<UmfpackFactorization> umfpack_lu_;
+  std::unique_ptr<SparseLu> lu_;
   Real scale_ = 1;
   Real factor_seconds_ = 0;
   mutable Index applications_ = 0;

@@ -52,11 +52,7 @@ ContinuumCreepSystem::ContinuumCreepSystem(ElasticityOperator& elasticity, const
   build_stress_weights();
   build_prestress_faces();
   build_pattern();
-
-  const std::vector<Real> zero(elasticity.size(), 0.0);
-  std::vector<Real> k(elasticity.stiffness_pattern().nnz());
-  elasticity.stiffness(0, zero, k);
-  stiffness_lu_ = std::make_unique<KluFactorization>(elasticity.stiffness_pattern(), k);
+  set_linear_solver(LinearSolver::Krylov);
 }
 
 Mat3 ContinuumCreepSystem::unit_tensor(int i, int j) {
@@ -231,11 +227,11 @@ void ContinuumCreepSystem::build_pattern() {
   // The constant u rows: elastic stiffness and dR_u/dq = B.
   structural_values_.assign(structural_nnz_, 0.0);
   const std::vector<Real> zero(elasticity_.size(), 0.0);
-  std::vector<Real> k(stiffness.nnz());
-  elasticity_.stiffness(0, zero, k);
+  stiffness_values_.resize(stiffness.nnz());
+  elasticity_.stiffness(0, zero, stiffness_values_);
   for (Index row = 0; row < ns; ++row)
     for (Index p = stiffness.row_ptr[row]; p < stiffness.row_ptr[row + 1]; ++p)
-      structural_values_[pattern_.find(row, stiffness.col_idx[p])] += k[p];
+      structural_values_[pattern_.find(row, stiffness.col_idx[p])] += stiffness_values_[p];
   for (const SourceBlock& b : source_)
     for (int a = 0; a < dim_; ++a)
       for (int j = 0; j < n_plastic_; ++j)
@@ -345,11 +341,34 @@ void ContinuumCreepSystem::structural_rows(Real t, std::span<const Real> y,
   }
 }
 
-KluFactorization& ContinuumCreepSystem::structural_factors(Real t, std::span<const Real> state) {
-  if (!relaxes_prestress_) return *stiffness_lu_;
-  jacobian_scratch_.resize(structural_nnz_);
-  structural_rows(t, state, jacobian_scratch_);
-  return relaxed_block_.factorize(jacobian_scratch_);
+SparseLu& ContinuumCreepSystem::structural_factors(Real t, std::span<const Real> state) {
+  if (relaxes_prestress_) {
+    jacobian_scratch_.resize(structural_nnz_);
+    structural_rows(t, state, jacobian_scratch_);
+    return relaxed_block_.factorize(jacobian_scratch_);
+  }
+  if (!stiffness_lu_)
+    stiffness_lu_ = std::make_unique<SparseLu>(elasticity_.stiffness_pattern(), stiffness_values_);
+  return *stiffness_lu_;
+}
+
+void ContinuumCreepSystem::set_linear_solver(LinearSolver solver) {
+  linear_solver_ = solver;
+  preconditioner_.reset();
+  if (solver != LinearSolver::Direct)
+    preconditioner_ =
+        std::make_unique<ContinuumCreepPreconditioner>(pattern_, structural_size(), n_components());
+}
+
+void ContinuumCreepSystem::preconditioner_setup(Real t, Real c_j, std::span<const Real> y,
+                                                std::span<const Real> yp) {
+  jacobian(t, c_j, y, yp, preconditioner_->jacobian_values());
+  preconditioner_->setup();
+  tangent_factors_ = &structural_factors(t, y);
+}
+
+void ContinuumCreepSystem::preconditioner_solve(std::span<const Real> r, std::span<Real> z) {
+  preconditioner_->solve(r, z, [this](std::span<Real> x) { tangent_factors_->solve(x); });
 }
 
 std::vector<Mat3> ContinuumCreepSystem::cell_stresses(Real t, std::span<const Real> state) const {
@@ -442,7 +461,7 @@ void ContinuumCreepSystem::equilibrate(Real t, std::span<Real> state) {
   elasticity_.internal_residual(t, state.first(ns), scratch_);
   add_plastic_source(state, scratch_);
   add_prestress_relaxation(t, state, state, scratch_);
-  structural_factors(t, state).solve(scratch_);
+  structural_factors(t, state).solve_refined(scratch_);
   for (Index k = 0; k < ns; ++k) state[k] -= scratch_[k];
 }
 
@@ -458,7 +477,7 @@ void ContinuumCreepSystem::initial_state(Real t, std::vector<Real>& state,
   scratch_.assign(ns, 0.0);
   add_plastic_source(state_dot, scratch_);
   add_prestress_relaxation(t, state, state_dot, scratch_);
-  structural_factors(t, state).solve(scratch_);
+  structural_factors(t, state).solve_refined(scratch_);
   for (Index k = 0; k < ns; ++k) state_dot[k] = -scratch_[k];
 }
 

@@ -60,13 +60,19 @@
 // so the u rows are not constant when sigma0 != 0 (equilibrate's tangent is refactorised).
 // With sigma0 = 0 none of this is built.
 //
-// Linear solves: KLU on the full Jacobian (no preconditioner). Unlike the plate (21 points of 4
+// Linear solves (set_linear_solver). Both factorise the structural tangent for the equilibrium
+// (K, once; with a relaxing prestress the u-u block at each solve). Direct: IDA's sparse LU of
+// the full Jacobian (no preconditioner). Krylov: IDA's GMRES with the block preconditioner of
+// continuum_creep_preconditioner.hpp, whose structural solve is the tangent's LU: the full
+// Jacobian, with the creep states and its wider coupling, is never factorised. Direct was the
+// only path at first because, unlike the plate (21 points of 4
 // states per cell, whose Jacobian fills in until a Schur complement is needed) a cell holds
 // 4-7 creep states whose rows are lower-degree than the displacement rows, so AMD eliminates
 // them first; the factor then has about the fill of the Schur complement K - P D^-1 G an
 // explicit one would build (the source stencil composed with the gradient stencil). Measured
 // (perf, 241 x 12 cells, Table 4.1 law, 500 h): klu refactor 27 %, triangular solves 36 %
-// of the run; an explicit Schur complement would save only the q part of the solves.
+// of the run; an explicit Schur complement would save only the q part of the solves. But the
+// factor of a 3D mesh's full Jacobian is what bounds the meshes that fit (docs/creep.md).
 #pragma once
 #include <Eigen/Dense>
 #include <array>
@@ -75,10 +81,11 @@
 
 #include "fv/polynomial_reconstruction.hpp"
 #include "materials/creep_law.hpp"
+#include "physics/creep/continuum_creep_preconditioner.hpp"
 #include "physics/creep/creep_system.hpp"
 #include "physics/creep/leading_block_factors.hpp"
 #include "physics/elasticity/elasticity_operator.hpp"
-#include "solvers/klu_factorization.hpp"
+#include "solvers/sparse_lu.hpp"
 
 namespace rfmems {
 
@@ -110,6 +117,15 @@ class ContinuumCreepSystem : public CreepSystem {
   const CsrPattern& jacobian_pattern() const override { return pattern_; }
   void jacobian(Real t, Real c_j, std::span<const Real> y, std::span<const Real> yp,
                 std::span<Real> values) override;
+
+  // The linear solves (see the header; Krylov by default).
+  enum class LinearSolver { Direct, Krylov };
+  void set_linear_solver(LinearSolver solver);
+  LinearSolver linear_solver() const { return linear_solver_; }
+  bool has_preconditioner() const override { return linear_solver_ != LinearSolver::Direct; }
+  void preconditioner_setup(Real t, Real c_j, std::span<const Real> y,
+                            std::span<const Real> yp) override;
+  void preconditioner_solve(std::span<const Real> r, std::span<Real> z) override;
 
   void creep_rates(Real t, std::span<const Real> state, std::span<Real> rates) override;
   void equilibrate(Real t, std::span<Real> state) override;
@@ -178,8 +194,9 @@ class ContinuumCreepSystem : public CreepSystem {
                                 std::span<const Real> strain_state, std::span<Real> r) const;
   // The u rows of the Jacobian at the state (values [0, structural_nnz_)).
   void structural_rows(Real t, std::span<const Real> y, std::span<Real> values) const;
-  // The factorised dF_u/du at the state: K, or with the relaxation the u-u block.
-  KluFactorization& structural_factors(Real t, std::span<const Real> state);
+  // The factorised dF_u/du at the state: K (factorised on first use), or with the relaxation
+  // the u-u block (refactorised at each call).
+  SparseLu& structural_factors(Real t, std::span<const Real> state);
 
   ElasticityOperator& elasticity_;
   CreepLaw law_;
@@ -196,7 +213,12 @@ class ContinuumCreepSystem : public CreepSystem {
   CsrPattern pattern_;
   std::vector<Real> structural_values_;
   Index structural_nnz_ = 0;
-  std::unique_ptr<KluFactorization> stiffness_lu_;
+  std::vector<Real> stiffness_values_;  // K, in the elasticity operator's pattern
+  std::unique_ptr<SparseLu> stiffness_lu_;
+  LinearSolver linear_solver_ = LinearSolver::Direct;
+  std::unique_ptr<ContinuumCreepPreconditioner> preconditioner_;
+  SparseLu* tangent_factors_ = nullptr;  // the preconditioner's, from its set-up
+
   // Relaxation of the residual stress.
   bool relaxes_prestress_ = false;
   Mat3 sigma0_ = Mat3::Zero();

@@ -117,9 +117,12 @@ CreepRunResult run_continuum_creep(const FixedFixedCreepProblem& problem, int nx
                         bcs, {}, problem.continuum_reconstruction_degree);
   ContinuumCreepSystem system(op, problem.law, problem.continuum_source_degree);
   system.set_creep_stress_mask(problem.continuum_creep_stress);
+  system.set_linear_solver(problem.continuum_linear_solver);
+  IdaOptions o = options;
+  if (system.has_preconditioner()) o.linear_solver = IdaOptions::LinearSolver::Spgmr;
   const Vec3 centre(problem.length / 2, problem.thickness() / 2, three_d ? problem.width / 2 : 0);
   const Index cell = nearest_cell(mesh, centre);
-  return integrate(system, options, end_time, start, cpu_start, [&](std::span<const Real> y) {
+  return integrate(system, o, end_time, start, cpu_start, [&](std::span<const Real> y) {
     const auto G = op.cell_gradients(0, y.first(system.structural_size()));
     return op.displacement_at(cell, centre, y.first(system.structural_size()), G).y();
   });

@@ -23,6 +23,7 @@
 #include "materials/creep_law.hpp"
 #include "materials/linear_elastic.hpp"
 #include "mesh/mesh.hpp"
+#include "physics/creep/continuum_creep_system.hpp"
 #include "physics/creep/plate_creep_system.hpp"
 #include "physics/plate/plate_operator.hpp"
 #include "solvers/ida_integrator.hpp"
@@ -52,6 +53,9 @@ struct FixedFixedCreepProblem {
   // shear traction): the strip, its load and its clamps are mirror-symmetric about it, so this
   // is the same problem at half the unknowns. nx then counts the half's cells.
   bool continuum_half_length = false;
+  // The continuum's linear solves (ContinuumCreepSystem::set_linear_solver).
+  ContinuumCreepSystem::LinearSolver continuum_linear_solver =
+      ContinuumCreepSystem::LinearSolver::Krylov;
   Real thickness() const { return length / slenderness; }
 };
 

@@ -2,14 +2,15 @@
 // system's structural tangent (its structural rows' columns of structural unknowns), which
 // equilibrate() and the Schur-complement preconditioner factorise when a relaxing residual
 // stress makes it depend on the creep state. The block's pattern is taken once; its values are
-// gathered from the rows' and refactorised (KLU, the pivots kept) at each call.
+// gathered from the rows' and refactorised at each call (solvers/sparse_lu.hpp: KLU keeping its
+// pivots, or UMFPACK on its symbolic analysis).
 #pragma once
 #include <memory>
 #include <span>
 #include <vector>
 
 #include "core/system_operator.hpp"
-#include "solvers/klu_factorization.hpp"
+#include "solvers/sparse_lu.hpp"
 
 namespace rfmems {
 
@@ -30,13 +31,13 @@ class LeadingBlockFactors {
     }
   }
   // The factors of the block of `rows` (the first n rows' values, in the pattern's order).
-  KluFactorization& factorize(std::span<const Real> rows) {
+  SparseLu& factorize(std::span<const Real> rows) {
     values_.resize(source_.size());
     for (std::size_t k = 0; k < source_.size(); ++k) values_[k] = rows[source_[k]];
     if (lu_)
       lu_->refactor(values_);
     else
-      lu_ = std::make_unique<KluFactorization>(block_, values_);
+      lu_ = std::make_unique<SparseLu>(block_, values_);
     return *lu_;
   }
   // Forget the factors (a new pattern of the rows follows).
@@ -46,7 +47,7 @@ class LeadingBlockFactors {
   CsrPattern block_;
   std::vector<Index> source_;  // the block's entries' positions in the rows
   std::vector<Real> values_;
-  std::unique_ptr<KluFactorization> lu_;
+  std::unique_ptr<SparseLu> lu_;
 };
 
 }  // namespace rfmems

@@ -890,7 +890,7 @@ void PlateCreepSystem::structural_tangent(std::span<const Real> state, std::vect
   op.stiffness(vk_ ? t : 0, state.first(structural_size()), values);
 }
 
-KluFactorization& PlateCreepSystem::structural_factors(Real t, std::span<const Real> state) {
+SparseLu& PlateCreepSystem::structural_factors(Real t, std::span<const Real> state) {
   if (relaxes_membrane_ || vk_) {
     jacobian_scratch_.resize(structural_nnz_);
     structural_rows(t, state, jacobian_scratch_);
@@ -898,14 +898,14 @@ KluFactorization& PlateCreepSystem::structural_factors(Real t, std::span<const R
   }
   if (!hold_) {
     if (!plate_lu_)
-      plate_lu_ = std::make_unique<KluFactorization>(plate_.stiffness_pattern(), plate_stiffness_);
+      plate_lu_ = std::make_unique<SparseLu>(plate_.stiffness_pattern(), plate_stiffness_);
     return *plate_lu_;
   }
   structural_tangent(state, tangent_values_);
   if (tangent_lu_)
     tangent_lu_->refactor(tangent_values_);
   else
-    tangent_lu_ = std::make_unique<KluFactorization>(structural_pattern(), tangent_values_);
+    tangent_lu_ = std::make_unique<SparseLu>(structural_pattern(), tangent_values_);
   return *tangent_lu_;
 }
 

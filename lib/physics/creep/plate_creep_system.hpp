@@ -128,7 +128,7 @@
 #include "physics/creep/von_karman_creep_membrane.hpp"
 #include "physics/electrostatics/parallel_plate_actuation.hpp"
 #include "physics/plate/plate_operator.hpp"
-#include "solvers/klu_factorization.hpp"
+#include "solvers/sparse_lu.hpp"
 
 namespace rfmems {
 
@@ -310,7 +310,7 @@ class PlateCreepSystem : public CreepSystem {
   // The factorised structural tangent at the state (the plate's own factors without a hold).
   // With the relaxation, the tangent also holds dF_w/dw of the relaxed membrane force (the
   // y-y block of the Jacobian).
-  KluFactorization& structural_factors(Real t, std::span<const Real> state);
+  SparseLu& structural_factors(Real t, std::span<const Real> state);
 
   PlateCreepSystem(PlateOperator& plate, VonKarmanPlate* von_karman, const CreepLaw& law,
                    int thickness_intervals, bool shear_creep, std::optional<CreepHoldVoltage> hold);
@@ -346,11 +346,11 @@ class PlateCreepSystem : public CreepSystem {
   std::vector<Real> structural_values_;  // the constant y rows, in pattern order
   Index structural_nnz_ = 0;             // y rows occupy values [0, structural_nnz_)
   std::vector<Real> plate_stiffness_;
-  std::unique_ptr<KluFactorization> plate_lu_;  // dR_plate/dy, factorised once (linear), lazily
+  std::unique_ptr<SparseLu> plate_lu_;  // dR_plate/dy, factorised once (linear), lazily
   std::optional<CreepHoldVoltage> hold_;
   std::unique_ptr<ParallelPlateActuation> hold_load_;  // the plate under the hold voltage
-  std::vector<Index> tangent_position_;  // per structural_pattern() entry: its index in pattern_
-  std::unique_ptr<KluFactorization> tangent_lu_;  // K + hold tangent, refactorised per use
+  std::vector<Index> tangent_position_;   // per structural_pattern() entry: its index in pattern_
+  std::unique_ptr<SparseLu> tangent_lu_;  // K + hold tangent, refactorised per use
   std::vector<Real> tangent_values_;
   // Relaxation of the residual stress (relaxes_membrane_).
   bool relaxes_membrane_ = false;
