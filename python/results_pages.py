@@ -721,6 +721,84 @@ def creep_plate_vs_3d():
             f"Commands: {commands}, {headers[0]['date']}.\n")
 
 
+def amg_rigid_body_modes():
+    """bench_amg_rigid_body_modes: one static solve of the thin 3D strip by GMRES with a
+    BoomerAMG V-cycle, its interpolation unknown-based (rfmems-solid's setting) or fitted to the
+    rigid-body rotations too, mesh by mesh: iterations, hierarchy, CPU, the centre deflection
+    against a sparse LU solve's, and the ratios of the two variants."""
+    lines = read_jsonl(DATA / "amg_rigid_body_modes.jsonl")
+    header = next(x for x in lines if x.get("section") == "header")
+    runs = [x for x in lines if x.get("section") == "strip"]
+    rows = [["mesh (half span)", "unknowns", "interpolation", "GMRES iterations",
+             "levels, complexity", "set-up CPU [s]", "solve CPU [s]", "w centre / LU - 1",
+             "iterations unknown / rotations", "CPU unknown / rotations"]]
+    for x in runs:
+        mate = next(y for y in runs if y["mesh"] == x["mesh"] and y is not x)
+        rotations = x["variant"] == "rotations"
+        base, rbm = (mate, x) if rotations else (x, mate)
+        cpu = lambda r: r["setup_cpu_s"] + r["solve_cpu_s"]
+        rows.append([" x ".join(map(str, x["mesh"])), f"{x['unknowns']:,}",
+                     "rigid-body rotations" if rotations else "unknown-based",
+                     f"{x['iterations']}" + ("" if x["converged"] else " (not converged)"),
+                     f"{x['levels']}, {x['operator_complexity']:.2f}", f"{x['setup_cpu_s']:.2f}",
+                     f"{x['solve_cpu_s']:.2f}", f"{x['w_centre'] / x['w_centre_lu'] - 1:+.1e}",
+                     f"{base['iterations'] / rbm['iterations']:.1f}x" if rotations else "",
+                     f"{cpu(base) / cpu(rbm):.1f}x" if rotations else ""])
+    return markdown(rows) + (f"\nCommand: `{header['command']}`, {header['date']} (1-minute "
+                             f"load average {header['load_average_1min']:.1f} at the start).\n")
+
+
+CREEP_SOLVER_NAMES = {"krylov": "GMRES, block preconditioner",
+                      "direct": "sparse LU of the Jacobian"}
+
+
+def creep_continuum_solvers():
+    """python/creep_continuum_runs.py --set solvers (bench_creep_plate_vs_continuum, one process
+    per mesh and solver, each with its header line): the continuum creep runs with IDA's GMRES
+    and the block preconditioner (--continuum-solver krylov) beside IDA's sparse LU of the full
+    Jacobian (direct), mesh by mesh: CPU, peak memory, IDA steps, GMRES iterations a Newton
+    step, and how far apart the two creep deflections are."""
+    lines = read_jsonl(DATA / "creep_continuum_solvers.jsonl")
+    headers = [x for x in lines if x.get("kind") == "header"]
+    runs = {}
+    for x in lines:
+        if x.get("kind") == "run" and x["model"] != "plate":
+            runs[(x["model"], tuple(x["mesh"]), x.get("half_length", False), x["solver"])] = x
+    keys = sorted({k[:3] for k in runs}, key=lambda k: (k[0] != "plane_stress", runs[
+        k + ("krylov",)]["unknowns"]))
+    rows = [["model, mesh (full span)", "unknowns", "GMRES: CPU [s]", "memory [GiB]", "IDA steps",
+             "GMRES / Newton step", "sparse LU: CPU [s]", "memory [GiB]", "IDA steps",
+             "CPU LU / GMRES", "memory LU / GMRES", "w creep, 500 h: GMRES [m]",
+             "GMRES / LU - 1"]]
+    for model, mesh, half in keys:
+        k, d = runs[(model, mesh, half, "krylov")], runs.get((model, mesh, half, "direct"))
+        name = "plane stress" if model == "plane_stress" else "3D"
+        cells = [2 * mesh[0] if half else mesh[0]] + list(mesh[1:])
+        label = f"{name}, {' x '.join(map(str, cells))}" + (
+            f" (half span, {' x '.join(map(str, mesh))})" if half else "")
+        row = [label, f"{k['unknowns']:,}", f"{k['cpu_s']:.1f}", f"{k['max_rss_gib']:.2f}",
+               str(k["steps"]), f"{k['linear_iters'] / k['newton_iters']:.2f}"]
+        if d:
+            row += [f"{d['cpu_s']:.1f}", f"{d['max_rss_gib']:.2f}", str(d["steps"]),
+                    f"{d['cpu_s'] / k['cpu_s']:.1f}x", f"{d['max_rss_gib'] / k['max_rss_gib']:.1f}x",
+                    f"{k['w_plastic']:.6e}", f"{k['w_plastic'] / d['w_plastic'] - 1:+.1e}"]
+        else:
+            row += ["-"] * 5 + [f"{k['w_plastic']:.6e}", "-"]
+        rows.append(row)
+    return markdown(rows) + "\n" + runner_footer(headers, "solvers")
+
+
+def runner_footer(headers, which):
+    """The footer of a table from python/creep_continuum_runs.py: the runner's command, the
+    commits, the load averages at the processes' starts and the first start."""
+    commits = sorted({h["commit"] for h in headers})
+    loads = [float(h["load_average"].split()[0]) for h in headers]
+    return (f"Command: `/usr/bin/python3 python/creep_continuum_runs.py --set {which}` (one "
+            f"process per row and solver, e.g. `{headers[0]['command']}`; commit "
+            f"{', '.join(commits)}; 1-minute load average {min(loads):.1f}-{max(loads):.1f} at the "
+            f"processes' starts, two running side by side), {headers[0]['date']}.\n")
+
+
 def creep_3d_half_span():
     """bench_creep_plate_vs_continuum --half-length (one process a mesh, each with its header
     line): the 3D strip on its half span, a symmetry plane at the centre, beside the full-span
@@ -769,12 +847,13 @@ def creep_3d_half_span():
     cz = dz2 * 24 ** -pz / (16 ** -pz - 24 ** -pz)
     estimate = w(960, 16) + dx2 + cx + dz2 + cz
 
-    rows = [["3D mesh (full span)", "computed", "unknowns", "w elastic [m]", "w creep, 500 h [m]",
-             "from the estimate", "whole run CPU [s]", "peak memory [GiB]"]]
+    rows = [["3D mesh (full span)", "computed", "unknowns", "linear solver", "w elastic [m]",
+             "w creep, 500 h [m]", "from the estimate", "whole run CPU [s]", "peak memory [GiB]"]]
     for nx, nz, nw, x, half, _ in sorted(runs, key=lambda r: (r[0], r[1], r[2])):
         rows.append([f"{nx} x {nz} x {nw}",
                      f"half span, {x['mesh'][0]} x {nz} x {nw}" if half else "full span",
-                     f"{x['unknowns']:,}", f"{x['w_elastic']:.4e}", f"{x['w_plastic']:.4e}",
+                     f"{x['unknowns']:,}", CREEP_SOLVER_NAMES[x.get("solver", "direct")],
+                     f"{x['w_elastic']:.4e}", f"{x['w_plastic']:.4e}",
                      f"{100 * (x['w_plastic'] / estimate - 1):+.2f} %", f"{x['cpu_s']:.0f}",
                      f"{x['max_rss_gib']:.1f}"])
     within = [r for r in runs if r[4] and abs(r[3]["w_plastic"] / estimate - 1) <= 0.01]
@@ -803,6 +882,7 @@ TABLES = {
     "creep-plate-vs-continuum": csv_table("creep_plate_vs_continuum.csv"),
     "creep-plate-vs-3d": creep_plate_vs_3d,
     "creep-3d-half-span": creep_3d_half_span,
+    "creep-continuum-solvers": creep_continuum_solvers,
     "pullin-time-check": csv_table("pullin_time_check.csv"),
     "pullin-laplace-dynamic": pullin_laplace_dynamic,
     "coupling-default-study-ab": coupling_default_study_ab,
@@ -835,6 +915,7 @@ TABLES = {
     "scale-plane-stress": scale_runs("scale_plane_stress.jsonl"),
     "scale-plate": scale_runs("scale_plate.jsonl"),
     "scale-ranks": scale_ranks,
+    "amg-rigid-body-modes": amg_rigid_body_modes,
 }
 
 

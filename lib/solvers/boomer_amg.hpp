@@ -15,7 +15,8 @@
 // interpolation truncated to 4 entries a row (De Sterck, Yang & Heys 2006), the settings
 // hypre recommends for 3D problems on many ranks; it is a fixed linear operator, so plain
 // (not flexible) GMRES can use it. Interpolating the rigid-body modes as well (hypre's GM-2
-// variant with nodal coarsening) did not lower the iterations on the 3D box (73 either way).
+// variant with nodal coarsening) did not lower the iterations on the stocky 3D box (73 either
+// way), but does on thin bodies: AmgOptions::rigid_body_points.
 //
 // hypre needs MPI initialised (rfmems' drivers and MPI tests construct an MpiSession); the
 // serial communicator of a program without MPI is refused with a SolverError.
@@ -40,6 +41,16 @@ struct AmgOptions {
   // Levels of aggressive coarsening at the top of the hierarchy: one halves the operator
   // complexity of the 3D box (2.04 against 3.21 on 160 x 16 x 16) for a few more iterations.
   int aggressive_levels = 1;
+  // Elasticity of thin structures: the centroids of this rank's cells (one per
+  // unknowns_per_cell rows, which are then the displacement components; empty: not used). The
+  // interpolation then also fits the rigid-body rotations about the centroids' mean (hypre's
+  // GM variant 2 on nodal coarsening, Baker, Kolev & Yang, Numer. Linear Algebra Appl. 17
+  // (2010) 495), and aggressive_levels is ignored (with one aggressive level the rotations
+  // saved a quarter of the iterations instead of three quarters, in a one-off trial).
+  // Unknown-based interpolation reproduces translations but not rotations, the bending modes of
+  // a thin body: the 3D strip of L/h = 60 (bench_amg_rigid_body_modes) took 1089 GMRES
+  // iterations on 240 x 12 x 3 cells without, 294 with.
+  std::vector<Vec3> rigid_body_points;
 };
 
 struct AmgStats {

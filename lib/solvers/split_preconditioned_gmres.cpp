@@ -15,7 +15,7 @@ namespace {
 struct Operators {
   const CsrPattern& pattern;
   std::span<const Real> values;
-  KluFactorization& preconditioner;
+  const PreconditionerSolve& preconditioner;
 };
 
 // z = A v
@@ -29,14 +29,14 @@ int product(void* data, N_Vector v, N_Vector z) {
 int precondition(void* data, N_Vector r, N_Vector z, realtype, int) {
   const auto* op = static_cast<const Operators*>(data);
   N_VScale(1.0, r, z);
-  op->preconditioner.solve(sundials::as_span(z));
+  op->preconditioner(sundials::as_span(z));
   return 0;
 }
 
 }  // namespace
 
 SplitGmresResult split_preconditioned_gmres(const CsrPattern& pattern, std::span<const Real> values,
-                                            KluFactorization& preconditioner,
+                                            const PreconditionerSolve& preconditioner,
                                             std::span<const Real> b, std::span<Real> x,
                                             const SplitGmresOptions& options) {
   const Index n = pattern.n_rows();

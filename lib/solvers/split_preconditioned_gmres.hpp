@@ -1,19 +1,20 @@
-// GMRES on one sparse matrix preconditioned by the LU factorisation of another: PETSc's split
-// of the operator (Amat) from the matrix the preconditioner is built from (Pmat). SUNDIALS SPGMR,
+// GMRES on one sparse matrix preconditioned by another operator: PETSc's split of the operator
+// (Amat) from the one the preconditioner is built from (Pmat). SUNDIALS SPGMR,
 // right-preconditioned (its residual is the unpreconditioned b - A x), modified Gram-Schmidt,
-// restarted; P^-1 by a KLU factorisation of P.
+// restarted; P^-1 any fixed linear map (a KLU factorisation of P, a multigrid V-cycle).
 //
 // The residual is weighted per row by 1 / (the row's largest |A| entry), so that rows of
 // different units (a plate's forces and moments, a bordered voltage row) count alike: GMRES
 // stops when ||D (b - A x)||_2 <= relative_tolerance ||D b||_2.
 //
-// For measurements of a preconditioner's quality (its iterations against the mesh), e.g. a
-// compact-stencil Jacobian's LU for a wide-stencil one (bench/bench_compact_preconditioner.cpp).
+// For measurements of a preconditioner's quality (its iterations against the mesh): a
+// compact-stencil Jacobian's LU for a wide-stencil one (bench/bench_compact_preconditioner.cpp),
+// multigrid variants on a thin strip (bench/bench_amg_rigid_body_modes.cpp).
 #pragma once
+#include <functional>
 #include <span>
 
 #include "core/system_operator.hpp"
-#include "solvers/klu_factorization.hpp"
 
 namespace rfmems {
 
@@ -29,10 +30,13 @@ struct SplitGmresResult {
   bool converged = false;
 };
 
-// Solves A x = b (A: pattern, values) with P's factorisation as the preconditioner; x holds the
-// initial guess on entry.
+// z = P^-1 z in place.
+using PreconditionerSolve = std::function<void(std::span<Real>)>;
+
+// Solves A x = b (A: pattern, values) with the preconditioner; x holds the initial guess on
+// entry.
 SplitGmresResult split_preconditioned_gmres(const CsrPattern& pattern, std::span<const Real> values,
-                                            KluFactorization& preconditioner,
+                                            const PreconditionerSolve& preconditioner,
                                             std::span<const Real> b, std::span<Real> x,
                                             const SplitGmresOptions& options = {});
 

@@ -88,10 +88,8 @@ CreepRunResult run_plate_creep(const FixedFixedCreepProblem& problem, int nx, in
                    [centre](std::span<const Real> y) { return y[3 * centre]; });
 }
 
-CreepRunResult run_continuum_creep(const FixedFixedCreepProblem& problem, int nx, int nz,
-                                   const IdaOptions& options, Real end_time, int width_cells) {
-  const auto start = Clock::now();
-  const double cpu_start = cpu_now();
+ContinuumStrip make_continuum_strip(const FixedFixedCreepProblem& problem, int nx, int nz,
+                                    int width_cells) {
   const bool three_d = width_cells > 0;
   BoxSpec spec;
   spec.dim = three_d ? 3 : 2;
@@ -101,20 +99,32 @@ CreepRunResult run_continuum_creep(const FixedFixedCreepProblem& problem, int nx
   spec.n[0] = nx;
   spec.n[1] = nz;
   if (three_d) spec.n[2] = width_cells;
-  const Mesh mesh = make_structured_mesh(spec);
-  std::vector<ElasticityBoundary> bcs(mesh.patches().size());
+  ContinuumStrip strip{make_structured_mesh(spec),
+                       {},
+                       LinearElastic{problem.E, problem.nu, problem.rho,
+                                     three_d ? Hypothesis::ThreeD : Hypothesis::PlaneStress}};
+  strip.boundaries.resize(strip.mesh.patches().size());
   const Real q = problem.load;
-  for (std::size_t k = 0; k < bcs.size(); ++k) {
-    const std::string& name = mesh.patches()[k].name;
-    if (name == "left") bcs[k].kind = ElasticityBoundary::Kind::Fixed;
+  for (std::size_t k = 0; k < strip.boundaries.size(); ++k) {
+    const std::string& name = strip.mesh.patches()[k].name;
+    ElasticityBoundary& bc = strip.boundaries[k];
+    if (name == "left") bc.kind = ElasticityBoundary::Kind::Fixed;
     if (name == "right")
-      bcs[k].kind = half ? ElasticityBoundary::Kind::Symmetry : ElasticityBoundary::Kind::Fixed;
-    if (name == "top") bcs[k].value = [q](const Vec3&, Real) { return Vec3(0, -q, 0); };
+      bc.kind = half ? ElasticityBoundary::Kind::Symmetry : ElasticityBoundary::Kind::Fixed;
+    if (name == "top") bc.value = [q](const Vec3&, Real) { return Vec3(0, -q, 0); };
   }
-  ElasticityOperator op(mesh,
-                        LinearElastic{problem.E, problem.nu, problem.rho,
-                                      three_d ? Hypothesis::ThreeD : Hypothesis::PlaneStress},
-                        bcs, {}, problem.continuum_reconstruction_degree);
+  return strip;
+}
+
+CreepRunResult run_continuum_creep(const FixedFixedCreepProblem& problem, int nx, int nz,
+                                   const IdaOptions& options, Real end_time, int width_cells) {
+  const auto start = Clock::now();
+  const double cpu_start = cpu_now();
+  const bool three_d = width_cells > 0;
+  const ContinuumStrip strip = make_continuum_strip(problem, nx, nz, width_cells);
+  const Mesh& mesh = strip.mesh;
+  ElasticityOperator op(mesh, strip.material, strip.boundaries, {},
+                        problem.continuum_reconstruction_degree);
   ContinuumCreepSystem system(op, problem.law, problem.continuum_source_degree);
   system.set_creep_stress_mask(problem.continuum_creep_stress);
   system.set_linear_solver(problem.continuum_linear_solver);

@@ -19,6 +19,7 @@
 #pragma once
 #include <array>
 #include <memory>
+#include <vector>
 
 #include "materials/creep_law.hpp"
 #include "materials/linear_elastic.hpp"
@@ -84,8 +85,19 @@ std::unique_ptr<FixedFixedCreepPlate> make_fixed_fixed_creep_plate(
 // options (the Schur-complement preconditioned SPGMR of the plate if linear_solver is Spgmr).
 CreepRunResult run_plate_creep(const FixedFixedCreepProblem& problem, int nx, int ny,
                                int thickness_intervals, const IdaOptions& options, Real end_time);
-// nx x nz cells on the x-z section, plane stress; with width_cells > 0 the 3D strip of width
-// problem.width (the thesis's comparison), nx x nz x width_cells cells, its long faces free.
+// The continuum model's mesh, boundaries and material: nx x nz cells on the x-z section, plane
+// stress; with width_cells > 0 the 3D strip of width problem.width (the thesis's comparison),
+// nx x nz x width_cells cells, its long faces free; on the half span with
+// continuum_half_length.
+struct ContinuumStrip {
+  Mesh mesh;
+  std::vector<ElasticityBoundary> boundaries;
+  LinearElastic material;
+};
+ContinuumStrip make_continuum_strip(const FixedFixedCreepProblem& problem, int nx, int nz,
+                                    int width_cells = 0);
+
+// The continuum strip's creep run.
 CreepRunResult run_continuum_creep(const FixedFixedCreepProblem& problem, int nx, int nz,
                                    const IdaOptions& options, Real end_time, int width_cells = 0);
 
