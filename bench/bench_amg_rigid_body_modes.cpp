@@ -17,7 +17,6 @@
 //   build/bench/bench_amg_rigid_body_modes [--meshes "60,8;120,8;240,12;480,24"]
 //       [--slenderness 60] [--tolerance 1e-8] [--no-lu]
 #include <CLI/CLI.hpp>
-#include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -45,21 +44,13 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   bench::emit(bench::run_header<json>("bench_amg_rigid_body_modes", argc, argv));
 
-  std::vector<std::pair<int, int>> meshes;
-  for (std::size_t start = 0; start < meshes_arg.size();) {
-    const std::size_t end = std::min(meshes_arg.find(';', start), meshes_arg.size());
-    int nx = 0, nz = 0;
-    if (std::sscanf(meshes_arg.substr(start, end - start).c_str(), "%d,%d", &nx, &nz) != 2)
-      throw InputError("--meshes nx,nz;...");
-    meshes.emplace_back(nx, nz);
-    start = end + 1;
-  }
   FixedFixedCreepProblem problem;
   problem.slenderness = slenderness;
   problem.width = 0.01 * problem.length;
   problem.continuum_half_length = true;
   const Real length = problem.length, thickness = problem.thickness(), width = problem.width;
-  for (auto [nx, nz] : meshes) {
+  for (auto [nx, nz, unused] : bench::parse_meshes(meshes_arg, "--meshes")) {
+    if (nx < 1 || nz < 1) throw InputError("--meshes: '" + meshes_arg + "' needs nx,nz;...");
     const ContinuumStrip strip = make_continuum_strip(problem, nx, nz, 3);
     const Mesh& mesh = strip.mesh;
     ElasticityOperator op(mesh, strip.material, strip.boundaries, {}, 0),

@@ -42,6 +42,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_support.hpp"
 #include "physics/creep/continuum_plate_comparison.hpp"
 
 using namespace rfmems;
@@ -95,25 +96,6 @@ std::size_t cheapest_within(const std::vector<Run>& runs, Real target, Quantity&
 
 Real plastic(const Run& r) { return r.result.w_plastic; }
 Real elastic(const Run& r) { return r.result.w_elastic; }
-
-// "nx,ny;nx,ny" (or "nx,nz,nw;..." for 3D) -> {nx, ny, nw} with nw = 0 when absent.
-std::vector<std::array<int, 3>> parse_meshes(const std::string& text) {
-  std::vector<std::array<int, 3>> out;
-  std::size_t start = 0;
-  while (start < text.size()) {
-    const std::size_t end = std::min(text.find(';', start), text.size());
-    std::array<int, 3> mesh{0, 0, 0};
-    std::size_t from = start;
-    for (int d = 0; d < 3 && from < end; ++d) {
-      const std::size_t comma = std::min(text.find(',', from), end);
-      mesh[d] = std::stoi(text.substr(from, comma - from));
-      from = comma + 1;
-    }
-    out.push_back(mesh);
-    start = end + 1;
-  }
-  return out;
-}
 
 // The continuum model's comparison with the plate at equal accuracy: in the creep deflection
 // (whole run) and in the elastic deflection (set-up and static solve).
@@ -217,12 +199,14 @@ int main(int argc, char** argv) {
     plate_meshes = {{21, 3, 0}, {41, 3, 0}};
     plane_meshes = {{61, 4, 0}, {121, 6, 0}};
   }
-  if (!plate_meshes_arg.empty()) plate_meshes = parse_meshes(plate_meshes_arg);
+  if (!plate_meshes_arg.empty())
+    plate_meshes = bench::parse_meshes(plate_meshes_arg, "--plate-meshes");
   if (plane_meshes_arg == "none")
     plane_meshes.clear();
   else if (!plane_meshes_arg.empty())
-    plane_meshes = parse_meshes(plane_meshes_arg);
-  if (!solid_meshes_arg.empty()) solid_meshes = parse_meshes(solid_meshes_arg);
+    plane_meshes = bench::parse_meshes(plane_meshes_arg, "--plane-meshes");
+  if (!solid_meshes_arg.empty())
+    solid_meshes = bench::parse_meshes(solid_meshes_arg, "--solid-meshes");
 
   // atol from the elastic deflection scale (beam theory, clamped-clamped, plane stress).
   const Real h = problem.thickness();

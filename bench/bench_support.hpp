@@ -3,16 +3,19 @@
 #pragma once
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "core/dense_stiffness.hpp"
+#include "core/error.hpp"
 #include "core/system_operator.hpp"
 #include "solvers/ida_integrator.hpp"
 
@@ -51,6 +54,31 @@ J run_header(const std::string& program, int argc, char** argv) {
   loadavg >> load;
   return J{
       {"section", "header"}, {"command", command}, {"date", date}, {"load_average_1min", load}};
+}
+
+// A list of meshes "nx,ny;nx,ny" (or "nx,nz,nw;..." in 3D) -> {nx, ny, nw}, absent counts 0;
+// `option` names the command-line option in the error for an entry that is not a number.
+inline std::vector<std::array<int, 3>> parse_meshes(const std::string& text,
+                                                    const std::string& option) {
+  std::vector<std::array<int, 3>> out;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = std::min(text.find(';', start), text.size());
+    std::array<int, 3> mesh{0, 0, 0};
+    std::size_t from = start;
+    for (int d = 0; d < 3 && from < end; ++d) {
+      const std::size_t comma = std::min(text.find(',', from), end);
+      try {
+        mesh[d] = std::stoi(text.substr(from, comma - from));
+      } catch (const std::logic_error&) {
+        throw InputError(option + ": '" + text + "' is not a list nx,ny;...");
+      }
+      from = comma + 1;
+    }
+    out.push_back(mesh);
+    start = end + 1;
+  }
+  return out;
 }
 
 // The repository's cases/ directory, from this header's path (CMake compiles by absolute path).
