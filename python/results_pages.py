@@ -633,7 +633,7 @@ def scale_ranks():
     tolerance = None
     for x in lines:
         if x["section"] == "header":
-            tolerance = x["command"].split("tolerance: ")[1]
+            tolerance = x["command"].split("tolerance: ")[1].strip("'")
             continue
         rows.append([x["mesh"].replace(",", " x "), f"{x['unknowns']:,}", tolerance,
                      str(x["newton_iterations"]),
