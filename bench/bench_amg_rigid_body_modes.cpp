@@ -22,7 +22,6 @@
 #include <vector>
 
 #include "bench_support.hpp"
-#include "parallel/communicator.hpp"
 #include "physics/creep/continuum_plate_comparison.hpp"
 #include "solvers/boomer_amg.hpp"
 #include "solvers/sparse_lu.hpp"
@@ -48,47 +47,28 @@ int main(int argc, char** argv) {
   problem.slenderness = slenderness;
   problem.width = 0.01 * problem.length;
   problem.continuum_half_length = true;
-  const Real length = problem.length, thickness = problem.thickness(), width = problem.width;
   for (auto [nx, nz, unused] : bench::parse_meshes(meshes_arg, "--meshes")) {
     if (nx < 1 || nz < 1) throw InputError("--meshes: '" + meshes_arg + "' needs nx,nz;...");
     const ContinuumStrip strip = make_continuum_strip(problem, nx, nz, 3);
-    const Mesh& mesh = strip.mesh;
-    ElasticityOperator op(mesh, strip.material, strip.boundaries, {}, 0),
-        compact(mesh, strip.material, strip.boundaries, {}, 1);
-    const Index n = op.size();
-    std::vector<Real> zero(n, 0.0), f(n), k(op.stiffness_pattern().nnz()),
-        kc(compact.stiffness_pattern().nnz());
-    op.internal_residual(0, zero, f);
-    for (Real& x : f) x = -x;
-    op.stiffness(0, zero, k);
-    compact.stiffness(0, zero, kc);
-    // The probe: the cell nearest the strip's centre (x = L/2, mid-thickness, mid-width).
-    Index probe = 0;
-    Real best = 1e300;
-    const Vec3 centre(length / 2, thickness / 2, width / 2);
-    for (Index c = 0; c < mesh.n_cells(); ++c)
-      if ((mesh.cell_centroid(c) - centre).norm() < best) {
-        best = (mesh.cell_centroid(c) - centre).norm();
-        probe = c;
-      }
+    const ContinuumStripStatics statics(strip);
+    const Index n = statics.op.size(), probe = strip.centre_cell;
     Real w_lu = 0;
     if (!no_lu) {
-      std::vector<Real> u = f;
-      SparseLu lu(op.stiffness_pattern(), k);
+      std::vector<Real> u = statics.load;
+      SparseLu lu(statics.op.stiffness_pattern(), statics.stiffness);
       lu.solve_refined(u);
       w_lu = u[3 * probe + 1];
     }
     for (const bool rotations : {false, true}) {
       AmgOptions options;
       options.unknowns_per_cell = 3;
-      if (rotations)
-        for (Index c = 0; c < mesh.n_cells(); ++c)
-          options.rigid_body_points.push_back(mesh.cell_centroid(c));
-      std::vector<Index> columns(n);
-      for (Index i = 0; i < n; ++i) columns[i] = i;
+      if (rotations) {
+        const std::span<const Vec3> centroids = strip.mesh.cell_centroids();
+        options.rigid_body_points.assign(centroids.begin(), centroids.end());
+      }
       const double t0 = bench::cpu_now();
-      BoomerAmg amg(Communicator::serial(), compact.stiffness_pattern(), columns, 0, options);
-      amg.setup(kc);
+      BoomerAmg amg(statics.compact.stiffness_pattern(), options);
+      amg.setup(statics.compact_stiffness);
       const double t1 = bench::cpu_now();
       std::vector<Real> u(n, 0.0);
       SplitGmresOptions gmres;
@@ -96,7 +76,8 @@ int main(int argc, char** argv) {
       gmres.krylov_dimension = 100;
       gmres.max_restarts = 30;
       const SplitGmresResult r = split_preconditioned_gmres(
-          op.stiffness_pattern(), k, [&amg](std::span<Real> z) { amg.apply(z, z); }, f, u, gmres);
+          statics.op.stiffness_pattern(), statics.stiffness,
+          [&amg](std::span<Real> z) { amg.apply(z, z); }, statics.load, u, gmres);
       const double t2 = bench::cpu_now();
       const AmgStats stats = amg.stats();
       json j{{"section", "strip"},

@@ -42,6 +42,7 @@ class Mesh {
   std::span<const Index> cell_nodes(Index c) const;
   std::span<const Index> cell_faces(Index c) const;
   const Vec3& cell_centroid(Index c) const { return cell_centroid_[c]; }
+  std::span<const Vec3> cell_centroids() const { return cell_centroid_; }
   Real cell_volume(Index c) const { return cell_volume_[c]; }
   Index global_cell_id(Index c) const { return global_cell_id_[c]; }
 

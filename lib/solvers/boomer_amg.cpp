@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <numeric>
 
 #include "core/error.hpp"
 
@@ -35,6 +36,13 @@ HYPRE_BigInt big(Index i) {
   if (i > std::numeric_limits<HYPRE_BigInt>::max())
     throw SolverError(fmt::format("hypre: global index {} exceeds its integer type", i));
   return static_cast<HYPRE_BigInt>(i);
+}
+
+// 0, 1, ..., n - 1: a rank's columns when it holds the whole matrix.
+std::vector<Index> identity_columns(Index n) {
+  std::vector<Index> columns(n);
+  std::iota(columns.begin(), columns.end(), Index{0});
+  return columns;
 }
 
 }  // namespace
@@ -65,6 +73,9 @@ struct BoomerAmg::Impl {
     for (HYPRE_IJVector v : rotations) HYPRE_IJVectorDestroy(v);
   }
 };
+
+BoomerAmg::BoomerAmg(const CsrPattern& pattern, const AmgOptions& options)
+    : BoomerAmg(Communicator::serial(), pattern, identity_columns(pattern.n_rows()), 0, options) {}
 
 BoomerAmg::BoomerAmg(const Communicator& comm, const CsrPattern& pattern,
                      std::vector<Index> global_columns, Index first_row, const AmgOptions& options)

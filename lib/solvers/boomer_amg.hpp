@@ -67,6 +67,8 @@ class BoomerAmg {
   // The pattern is fixed for the object's life. Collective.
   BoomerAmg(const Communicator& comm, const CsrPattern& pattern, std::vector<Index> global_columns,
             Index first_row, const AmgOptions& options);
+  // The whole matrix on this rank alone (its columns numbered as its rows).
+  BoomerAmg(const CsrPattern& pattern, const AmgOptions& options);
   ~BoomerAmg();
   BoomerAmg(const BoomerAmg&) = delete;
   BoomerAmg& operator=(const BoomerAmg&) = delete;

@@ -113,28 +113,40 @@ ContinuumStrip make_continuum_strip(const FixedFixedCreepProblem& problem, int n
       bc.kind = half ? ElasticityBoundary::Kind::Symmetry : ElasticityBoundary::Kind::Fixed;
     if (name == "top") bc.value = [q](const Vec3&, Real) { return Vec3(0, -q, 0); };
   }
+  strip.centre = Vec3(problem.length / 2, problem.thickness() / 2, three_d ? problem.width / 2 : 0);
+  strip.centre_cell = nearest_cell(strip.mesh, strip.centre);
   return strip;
+}
+
+ContinuumStripStatics::ContinuumStripStatics(const ContinuumStrip& strip)
+    : op(strip.mesh, strip.material, strip.boundaries, {}, 0),
+      compact(strip.mesh, strip.material, strip.boundaries, {}, 1),
+      load(op.size()),
+      stiffness(op.stiffness_pattern().nnz()),
+      compact_stiffness(compact.stiffness_pattern().nnz()) {
+  const std::vector<Real> zero(op.size(), 0.0);
+  op.internal_residual(0, zero, load);
+  for (Real& x : load) x = -x;
+  op.stiffness(0, zero, stiffness);
+  compact.stiffness(0, zero, compact_stiffness);
 }
 
 CreepRunResult run_continuum_creep(const FixedFixedCreepProblem& problem, int nx, int nz,
                                    const IdaOptions& options, Real end_time, int width_cells) {
   const auto start = Clock::now();
   const double cpu_start = cpu_now();
-  const bool three_d = width_cells > 0;
   const ContinuumStrip strip = make_continuum_strip(problem, nx, nz, width_cells);
-  const Mesh& mesh = strip.mesh;
-  ElasticityOperator op(mesh, strip.material, strip.boundaries, {},
+  ElasticityOperator op(strip.mesh, strip.material, strip.boundaries, {},
                         problem.continuum_reconstruction_degree);
   ContinuumCreepSystem system(op, problem.law, problem.continuum_source_degree);
   system.set_creep_stress_mask(problem.continuum_creep_stress);
   system.set_linear_solver(problem.continuum_linear_solver);
   IdaOptions o = options;
   if (system.has_preconditioner()) o.linear_solver = IdaOptions::LinearSolver::Spgmr;
-  const Vec3 centre(problem.length / 2, problem.thickness() / 2, three_d ? problem.width / 2 : 0);
-  const Index cell = nearest_cell(mesh, centre);
   return integrate(system, o, end_time, start, cpu_start, [&](std::span<const Real> y) {
     const auto G = op.cell_gradients(0, y.first(system.structural_size()));
-    return op.displacement_at(cell, centre, y.first(system.structural_size()), G).y();
+    return op.displacement_at(strip.centre_cell, strip.centre, y.first(system.structural_size()), G)
+        .y();
   });
 }
 

@@ -89,13 +89,27 @@ CreepRunResult run_plate_creep(const FixedFixedCreepProblem& problem, int nx, in
 // stress; with width_cells > 0 the 3D strip of width problem.width (the thesis's comparison),
 // nx x nz x width_cells cells, its long faces free; on the half span with
 // continuum_half_length.
+// The comparison reads the deflection at the span's centre (x = L/2, mid-thickness and, in 3D,
+// mid-width), in the cell nearest to it.
 struct ContinuumStrip {
   Mesh mesh;
   std::vector<ElasticityBoundary> boundaries;
   LinearElastic material;
+  Vec3 centre;
+  Index centre_cell = 0;
 };
 ContinuumStrip make_continuum_strip(const FixedFixedCreepProblem& problem, int nx, int nz,
                                     int width_cells = 0);
+
+// The strip's linear elastic system at rest, for its static solves by sparse LU or by
+// multigrid: the operator's own stiffness K (the default reconstruction), the compact (linear
+// reconstruction) operator's K_c, the matrix a multigrid is built from, and the load
+// f = -R(0), the top's pressure. `strip` must outlive it.
+struct ContinuumStripStatics {
+  explicit ContinuumStripStatics(const ContinuumStrip& strip);
+  ElasticityOperator op, compact;
+  std::vector<Real> load, stiffness, compact_stiffness;
+};
 
 // The continuum strip's creep run.
 CreepRunResult run_continuum_creep(const FixedFixedCreepProblem& problem, int nx, int nz,
